@@ -1,0 +1,110 @@
+//! `newtonlab`: the command line of `NewtonLab`. With no subcommand it opens the app; `run`,
+//! `check`, `examples` and `bench` are headless.
+//!
+//! Exit codes, for every subcommand: 0 success; 1 the simulation failed (a non-finite
+//! value: the message names the particle and the time); 2 bad input (arguments or scene:
+//! every problem listed, each with line and column where the file has them).
+
+mod bench;
+mod run;
+mod scene_source;
+
+use std::process::ExitCode;
+
+use clap::{Parser, Subcommand};
+
+/// `NewtonLab`: a 2D physics sandbox. Without a subcommand, opens the app.
+#[derive(Debug, Parser)]
+#[command(name = "newtonlab", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Debug, Subcommand)]
+enum Command {
+    /// Run a scene and write its trajectory as CSV.
+    Run(run::RunArgs),
+    /// Check a scene file and list every problem with it.
+    Check {
+        /// A scene file (.toml or .json), or example:NAME for a built-in scene.
+        scene: String,
+    },
+    /// List the built-in example scenes.
+    Examples,
+    /// Measure simulation speed (steps per second, pair interactions per second).
+    Bench(bench::BenchArgs),
+}
+
+/// Why a command failed, and the exit code that says so.
+#[derive(Debug)]
+pub(crate) enum Failure {
+    /// Exit 1: the simulation failed.
+    Simulation(String),
+    /// Exit 2: bad arguments or a bad scene.
+    Input(String),
+}
+
+impl Failure {
+    fn exit(self) -> ExitCode {
+        let (code, message) = match self {
+            Self::Simulation(message) => (1, message),
+            Self::Input(message) => (2, message),
+        };
+        eprintln!("{message}");
+        ExitCode::from(code)
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        None => open_app(),
+        Some(Command::Run(args)) => run::run(&args),
+        Some(Command::Check { scene }) => check(&scene),
+        Some(Command::Examples) => {
+            examples();
+            Ok(())
+        }
+        Some(Command::Bench(args)) => bench::bench(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(failure) => failure.exit(),
+    }
+}
+
+fn open_app() -> Result<(), Failure> {
+    Err(Failure::Input(
+        "this build of newtonlab has no app yet; see `newtonlab --help` for the headless commands"
+            .to_owned(),
+    ))
+}
+
+fn check(source: &str) -> Result<(), Failure> {
+    let scene = scene_source::load(source)?;
+    #[expect(clippy::print_stdout, reason = "the command's report")]
+    {
+        println!(
+            "{source}: ok ({} particles, {} springs, {} ramps, integrator {}, time step {} s)",
+            scene.particles.len(),
+            scene.springs.len(),
+            scene.ramps.len(),
+            scene.simulation.integrator,
+            scene.simulation.time_step,
+        );
+    }
+    Ok(())
+}
+
+#[expect(clippy::print_stdout, reason = "the command's report")]
+fn examples() {
+    for example in physics::EXAMPLES {
+        let title = example
+            .scene()
+            .ok()
+            .and_then(|scene| scene.name)
+            .unwrap_or_default();
+        println!("example:{:<24} {title}", example.name);
+    }
+}

@@ -1,0 +1,218 @@
+//! `newtonlab run`: a scene's trajectory as CSV, sampled exactly at t = k·DT.
+
+use std::io::{self, BufWriter, IsTerminal, Write};
+
+use physics::Simulation;
+
+use crate::{Failure, scene_source};
+
+/// The most rows one run may write: beyond this a typo in --every is likelier than intent.
+const MAX_ROWS: f64 = 1e8;
+
+#[derive(Debug, clap::Args)]
+pub(crate) struct RunArgs {
+    /// A scene file (.toml or .json), or example:NAME for a built-in scene.
+    scene: String,
+    /// Simulated time to run to, seconds.
+    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    until: f64,
+    /// Sampling interval, seconds: rows at t = 0, DT, 2·DT, … and at T.
+    #[arg(
+        long,
+        value_name = "DT",
+        default_value_t = 0.01,
+        allow_negative_numbers = true
+    )]
+    every: f64,
+    /// Where to write the CSV; standard output when absent or `-`.
+    #[arg(long, value_name = "FILE")]
+    out: Option<String>,
+}
+
+pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
+    if !(args.until.is_finite() && args.until >= 0.0) {
+        return Err(Failure::Input(format!(
+            "--until must be a finite number of seconds, 0 or more; got {}",
+            args.until
+        )));
+    }
+    if !(args.every.is_finite() && args.every > 0.0) {
+        return Err(Failure::Input(format!(
+            "--every must be a finite number of seconds greater than 0; got {}",
+            args.every
+        )));
+    }
+    if args.until / args.every > MAX_ROWS {
+        return Err(Failure::Input(format!(
+            "--until {} with --every {} would write more than {MAX_ROWS} rows; choose a larger --every",
+            args.until, args.every
+        )));
+    }
+    let scene = scene_source::load(&args.scene)?;
+    let simulation = Simulation::new(&scene).map_err(|e| Failure::Input(e.to_string()))?;
+    let times = sample_times(args.until, args.every);
+    let sink: Box<dyn Write> = match args.out.as_deref() {
+        None | Some("-") => Box::new(io::stdout().lock()),
+        Some(path) => Box::new(std::fs::File::create(path).map_err(|error| {
+            Failure::Input(format!("cannot create the output file '{path}': {error}"))
+        })?),
+    };
+    let mut out = BufWriter::new(sink);
+    let written =
+        write_csv(simulation, &times, &mut out).and_then(|outcome| out.flush().map(|()| outcome));
+    match written {
+        Ok(outcome) => outcome,
+        // A reader that stops early (`| head`) is not an error of ours.
+        Err(error) if error.kind() == io::ErrorKind::BrokenPipe => Ok(()),
+        Err(error) => Err(Failure::Input(format!("cannot write the CSV: {error}"))),
+    }
+}
+
+/// t = k·DT for every k with k·DT ≤ T (each computed as k × DT, never accumulated), and T
+/// itself when it is not among them.
+fn sample_times(until: f64, every: f64) -> Vec<f64> {
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "until / every is finite, >= 0 and at most MAX_ROWS, checked by the caller"
+    )]
+    let mut last = (until / every).floor() as u64;
+    while (last + 1) as f64 * every <= until {
+        last += 1;
+    }
+    while last > 0 && last as f64 * every > until {
+        last -= 1;
+    }
+    let mut times: Vec<f64> = (0..=last).map(|k| k as f64 * every).collect();
+    if times.last() != Some(&until) {
+        times.push(until);
+    }
+    times
+}
+
+/// Writes the header and a row per sample; a simulation failure ends the table after the
+/// last good row and becomes the outcome.
+fn write_csv(
+    mut simulation: Simulation,
+    times: &[f64],
+    out: &mut impl Write,
+) -> io::Result<Result<(), Failure>> {
+    let mut header = vec!["t".to_owned()];
+    for name in simulation.names() {
+        for quantity in ["x", "y", "vx", "vy", "ax", "ay"] {
+            header.push(csv_field(&format!("{name}.{quantity}")));
+        }
+    }
+    header.extend(
+        [
+            "kinetic_energy",
+            "potential_energy",
+            "total_energy",
+            "momentum_x",
+            "momentum_y",
+        ]
+        .map(str::to_owned),
+    );
+    writeln!(out, "{}", header.join(","))?;
+
+    let progress = progress_bar(times.len() as u64);
+    let mut row = String::new();
+    for &t in times {
+        if let Err(error) = simulation.step_to(t) {
+            progress.finish_and_clear();
+            return Ok(Err(Failure::Simulation(error.to_string())));
+        }
+        let accelerations = simulation.accelerations();
+        let diagnostics = simulation.diagnostics();
+        row.clear();
+        push_number(&mut row, t);
+        for i in 0..simulation.len() {
+            let p = simulation.particle(i, &accelerations);
+            for value in [p.position, p.velocity, p.acceleration]
+                .iter()
+                .flat_map(|v| [v.x, v.y])
+            {
+                row.push(',');
+                push_number(&mut row, value);
+            }
+        }
+        let energy = diagnostics.energy;
+        for value in [
+            energy.kinetic,
+            energy.potential(),
+            energy.total(),
+            diagnostics.momentum.x,
+            diagnostics.momentum.y,
+        ] {
+            row.push(',');
+            push_number(&mut row, value);
+        }
+        writeln!(out, "{row}")?;
+        progress.inc(1);
+    }
+    progress.finish_and_clear();
+    Ok(Ok(()))
+}
+
+/// The shortest text that parses back to the same f64 (Rust's `Debug` form: `0.1`,
+/// `1e-7`, `-2.5e20`).
+fn push_number(row: &mut String, value: f64) {
+    use std::fmt::Write as _;
+    let _ = write!(row, "{value:?}");
+}
+
+/// A CSV field, quoted when a particle's name holds a comma, quote or line break.
+fn csv_field(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_owned()
+    }
+}
+
+/// A progress bar on stderr when it is a terminal; hidden otherwise.
+fn progress_bar(rows: u64) -> indicatif::ProgressBar {
+    if !io::stderr().is_terminal() {
+        return indicatif::ProgressBar::hidden();
+    }
+    let bar = indicatif::ProgressBar::new(rows);
+    if let Ok(style) =
+        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {eta} left")
+    {
+        bar.set_style(style);
+    }
+    bar
+}
+
+#[cfg(test)]
+mod tests {
+    use super::sample_times;
+
+    #[test]
+    fn samples_are_multiples_of_the_interval_and_end_at_until() {
+        // 3 × 0.1 = 0.30000000000000004 > 0.3, so the last multiple is 0.2 and 0.3 is added.
+        assert_eq!(
+            sample_times(0.3, 0.1),
+            vec![0.0, 0.1, 0.2, 0.3],
+            "0.3 by 0.1"
+        );
+        assert_eq!(
+            sample_times(1.0, 0.25),
+            vec![0.0, 0.25, 0.5, 0.75, 1.0],
+            "no duplicate end"
+        );
+        assert_eq!(
+            sample_times(1.05, 0.5),
+            vec![0.0, 0.5, 1.0, 1.05],
+            "end off the grid"
+        );
+        assert_eq!(sample_times(0.0, 0.1), vec![0.0], "zero duration");
+        let times = sample_times(20.0, 0.1);
+        assert_eq!(times.len(), 201, "20 s by 0.1 s");
+        assert_eq!(
+            times[7].to_bits(),
+            (7.0_f64 * 0.1).to_bits(),
+            "k·DT, not accumulated"
+        );
+    }
+}

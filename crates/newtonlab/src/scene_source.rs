@@ -1,0 +1,43 @@
+//! Where a scene comes from: a file path, or `example:NAME` for a built-in scene.
+
+use std::fmt::Write as _;
+
+use physics::{LoadError, Scene, SceneFormat};
+
+use crate::Failure;
+
+/// Loads and validates the scene `source` names; every problem goes into the message.
+pub(crate) fn load(source: &str) -> Result<Scene, Failure> {
+    if let Some(name) = source.strip_prefix("example:") {
+        let example = physics::example(name).ok_or_else(|| {
+            let names: Vec<&str> = physics::EXAMPLES.iter().map(|e| e.name).collect();
+            Failure::Input(format!(
+                "there is no built-in scene '{name}'; the examples are: {}",
+                names.join(", ")
+            ))
+        })?;
+        return example.scene().map_err(|error| describe(source, &error));
+    }
+    let text = std::fs::read_to_string(source).map_err(|error| {
+        Failure::Input(format!("cannot read the scene file '{source}': {error}"))
+    })?;
+    Scene::parse(&text, SceneFormat::from_file_name(source))
+        .map_err(|error| describe(source, &error))
+}
+
+fn describe(source: &str, error: &LoadError) -> Failure {
+    let count = error.problems.len();
+    let mut message = format!(
+        "{source}: {count} problem{} found:",
+        if count == 1 { "" } else { "s" }
+    );
+    for problem in &error.problems {
+        let place = match (problem.line, problem.column) {
+            (Some(line), Some(column)) => format!("{source}:{line}:{column}"),
+            (Some(line), None) => format!("{source}:{line}"),
+            _ => source.to_owned(),
+        };
+        let _ = write!(message, "\n  {place}: {}", problem.message);
+    }
+    Failure::Input(message)
+}

@@ -1,0 +1,279 @@
+//! The command-line contract (DESIGN.md), exercised on the real binary.
+
+use std::process::{Command, Output};
+
+fn newtonlab(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_newtonlab"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn stdout(output: &Output) -> String {
+    String::from_utf8(output.stdout.clone()).expect("UTF-8 output")
+}
+
+fn stderr(output: &Output) -> String {
+    String::from_utf8(output.stderr.clone()).expect("UTF-8 output")
+}
+
+/// A scene file in a fresh temporary directory.
+fn scene_file(name: &str, text: &str) -> (tempdir::Dir, String) {
+    let dir = tempdir::Dir::new();
+    let path = dir.path.join(name);
+    std::fs::write(&path, text).expect("the temporary directory is writable");
+    let path = path.to_string_lossy().into_owned();
+    (dir, path)
+}
+
+mod tempdir {
+    /// A directory removed when dropped.
+    pub struct Dir {
+        pub path: std::path::PathBuf,
+    }
+
+    impl Dir {
+        pub fn new() -> Self {
+            use std::sync::atomic::{AtomicU32, Ordering};
+            static COUNTER: AtomicU32 = AtomicU32::new(0);
+            let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+            let path =
+                std::env::temp_dir().join(format!("newtonlab-cli-{}-{n}", std::process::id()));
+            std::fs::create_dir_all(&path).expect("the temporary directory can be made");
+            Self { path }
+        }
+    }
+
+    impl Drop for Dir {
+        fn drop(&mut self) {
+            let _ = std::fs::remove_dir_all(&self.path);
+        }
+    }
+}
+
+/// The issue's acceptance command: the undamped spring for 20 s sampled every 0.1 s, and
+/// its x against the closed form 10 + 5 cos t.
+#[test]
+fn run_prints_the_undamped_spring_as_csv() {
+    let output = newtonlab(&[
+        "run",
+        "example:spring-undamped",
+        "--until",
+        "20",
+        "--every",
+        "0.1",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = stdout(&output);
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next().unwrap(),
+        "t,P.x,P.y,P.vx,P.vy,P.ax,P.ay,kinetic_energy,potential_energy,total_energy,momentum_x,momentum_y",
+        "header"
+    );
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
+        .collect();
+    assert_eq!(rows.len(), 201, "rows at 0, 0.1, …, 20");
+    for (k, row) in rows.iter().enumerate() {
+        let t = k as f64 * 0.1;
+        assert_eq!(row[0].to_bits(), t.to_bits(), "row {k} is at k·DT exactly");
+        assert!(
+            (row[1] - (10.0 + 5.0 * t.cos())).abs() < 1e-9,
+            "x at t = {t}: {}",
+            row[1]
+        );
+        assert!(
+            (row[5] - (-5.0 * t.cos())).abs() < 1e-9,
+            "ax at t = {t}: {}",
+            row[5]
+        );
+    }
+}
+
+#[test]
+fn every_number_parses_back_to_the_same_f64() {
+    let output = newtonlab(&["run", "example:orbit", "--until", "1", "--every", "0.25"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    for line in stdout(&output).lines().skip(1) {
+        for field in line.split(',') {
+            let value: f64 = field.parse().unwrap();
+            assert_eq!(
+                format!("{value:?}"),
+                field,
+                "printed as its shortest round-trip form"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_same_run_gives_bit_identical_csv() {
+    let args = [
+        "run",
+        "example:charged-pair",
+        "--until",
+        "3",
+        "--every",
+        "0.05",
+    ];
+    assert_eq!(
+        newtonlab(&args).stdout,
+        newtonlab(&args).stdout,
+        "two runs differ"
+    );
+}
+
+#[test]
+fn run_ends_with_a_row_at_until_and_writes_to_a_file() {
+    let dir = tempdir::Dir::new();
+    let out = dir.path.join("out.csv");
+    let out = out.to_string_lossy();
+    let output = newtonlab(&[
+        "run",
+        "example:kinematics-cartesian",
+        "--until",
+        "0.25",
+        "--every",
+        "0.1",
+        "--out",
+        &out,
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    assert!(output.stdout.is_empty(), "nothing on stdout with --out");
+    let text = std::fs::read_to_string(&*out).unwrap();
+    let times: Vec<&str> = text
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').next().unwrap())
+        .collect();
+    assert_eq!(times, ["0.0", "0.1", "0.2", "0.25"], "the last row is at T");
+    let last: Vec<f64> = text
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|f| f.parse().unwrap())
+        .collect();
+    let theory = 7.893 + 9.342 * 0.25 + 0.5 * 1.087 * 0.25 * 0.25;
+    assert!(
+        (last[1] - theory).abs() < 1e-12,
+        "x(0.25) = {} vs {theory}",
+        last[1]
+    );
+}
+
+#[test]
+fn a_bad_scene_exits_2_listing_every_problem_with_its_position() {
+    let (_dir, path) = scene_file(
+        "bad.toml",
+        "version = 1\n[[particle]]\nname = \"B\"\nmass = -2\nposition = [0, 0]\ncharge = \"x\"\n",
+    );
+    for command in ["check", "run"] {
+        let mut args = vec![command, path.as_str()];
+        if command == "run" {
+            args.extend(["--until", "1"]);
+        }
+        let output = newtonlab(&args);
+        assert_eq!(output.status.code(), Some(2), "{command}");
+        let message = stderr(&output);
+        assert!(
+            message.contains(&format!(
+                "{path}:4:8: particle 'B': mass must be greater than 0, got -2"
+            )),
+            "{message}"
+        );
+        assert!(
+            message.contains(&format!(
+                "{path}:6:10: particle 'B': charge must be a number, got text"
+            )),
+            "{message}"
+        );
+        assert!(!message.contains("panicked"), "{message}");
+    }
+}
+
+#[test]
+fn bad_arguments_exit_2() {
+    for args in [
+        vec!["run", "example:orbit", "--until", "-1"],
+        vec!["run", "example:orbit", "--until", "1", "--every", "0"],
+        vec!["run", "example:orbit", "--until", "nan"],
+        vec!["run", "example:orbit"],
+        vec!["run", "example:no-such-scene", "--until", "1"],
+        vec!["run", "/no/such/file.toml", "--until", "1"],
+        vec!["check", "example:no-such-scene"],
+        vec!["frobnicate"],
+    ] {
+        let output = newtonlab(&args);
+        assert_eq!(
+            output.status.code(),
+            Some(2),
+            "{args:?}: {}",
+            stderr(&output)
+        );
+        assert!(!stderr(&output).is_empty(), "{args:?} says why");
+    }
+}
+
+/// A spring of k = 10¹² N/m on 1 kg stepped by explicit Euler at 0.1 s multiplies the
+/// amplitude by about ωh = 10⁵ per step: it overflows within a few dozen steps.
+#[test]
+fn a_simulation_that_blows_up_exits_1_naming_the_particle_and_time() {
+    let (_dir, path) = scene_file(
+        "unstable.toml",
+        "version = 1\n[simulation]\nintegrator = \"euler\"\ntime_step = 0.1\n\
+         [[particle]]\nname = \"Wobbly\"\nmass = 1\nposition = [1.5, 0]\n\
+         [[spring]]\nfrom = [0, 0]\nto = \"Wobbly\"\nstiffness = 1e12\nnatural_length = 1\n",
+    );
+    let output = newtonlab(&["run", &path, "--until", "100", "--every", "1"]);
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    let message = stderr(&output);
+    assert!(message.contains("particle 'Wobbly'"), "{message}");
+    assert!(message.contains("at t = "), "{message}");
+    // The rows before the failure were written.
+    assert!(
+        stdout(&output).lines().count() >= 2,
+        "header and the row at t = 0"
+    );
+}
+
+#[test]
+fn examples_lists_every_built_in_scene() {
+    let output = newtonlab(&["examples"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = stdout(&output);
+    for example in [
+        "spring-undamped",
+        "kinematics-polar",
+        "orbit",
+        "charged-pair",
+    ] {
+        assert!(text.contains(&format!("example:{example}")), "{text}");
+    }
+    let check = newtonlab(&["check", "example:spring-undamped"]);
+    assert!(check.status.success(), "{}", stderr(&check));
+}
+
+#[test]
+fn json_scenes_run_too() {
+    let (_dir, path) = scene_file(
+        "drop.json",
+        r#"{ "version": 1, "particle": [ { "name": "Ball", "mass": 1, "position": [0, 10] } ] }"#,
+    );
+    let output = newtonlab(&["run", &path, "--until", "1", "--every", "1"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let last: Vec<f64> = stdout(&output)
+        .lines()
+        .last()
+        .unwrap()
+        .split(',')
+        .map(|f| f.parse().unwrap())
+        .collect();
+    // Free fall: y = 10 − g t²/2.
+    assert!(
+        (last[2] - (10.0 - 9.81 / 2.0)).abs() < 1e-12,
+        "y(1) = {}",
+        last[2]
+    );
+}

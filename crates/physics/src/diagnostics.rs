@@ -1,0 +1,126 @@
+//! What can be measured at an instant: energies by kind, momentum, and per-particle
+//! readouts. Conventions (DESIGN.md): uniform field and applied acceleration
+//! −m (g + a)·r, spring k (L − L0)²/2, gravitation −G m1 m2 / r, Coulomb k q1 q2 / r.
+//!
+//! Fixed particles have no kinetic energy or momentum and no potential energy in the
+//! uniform field (they never move, so it would be a constant); pairs in which both are
+//! fixed are left out for the same reason.
+
+use glam::DVec2;
+
+use crate::forces::{ForceModel, coulomb, gravitation, uniform};
+use crate::state::State;
+
+/// Energies at an instant, joules.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Energy {
+    /// Σ m v²/2 over moving particles.
+    pub kinetic: f64,
+    /// Potential of the uniform field and applied accelerations.
+    pub uniform: f64,
+    /// Elastic potential of the springs.
+    pub spring: f64,
+    /// Gravitational potential of the pairs.
+    pub gravitation: f64,
+    /// Electrostatic potential of the pairs.
+    pub electrostatic: f64,
+}
+
+impl Energy {
+    /// All potential energy, joules.
+    pub fn potential(&self) -> f64 {
+        self.uniform + self.spring + self.gravitation + self.electrostatic
+    }
+
+    /// Kinetic plus potential, joules.
+    pub fn total(&self) -> f64 {
+        self.kinetic + self.potential()
+    }
+}
+
+/// System-wide quantities at an instant.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Diagnostics {
+    /// Seconds.
+    pub time: f64,
+    /// Joules.
+    pub energy: Energy,
+    /// Σ m v over moving particles, kg·m/s.
+    pub momentum: DVec2,
+}
+
+/// One particle at an instant.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct ParticleReadout {
+    /// Metres.
+    pub position: DVec2,
+    /// Metres per second.
+    pub velocity: DVec2,
+    /// From the smooth forces, metres per second squared.
+    pub acceleration: DVec2,
+    /// |v|, metres per second.
+    pub speed: f64,
+    /// Joules.
+    pub kinetic_energy: f64,
+    /// kg·m/s.
+    pub momentum: DVec2,
+}
+
+pub(crate) fn measure(forces: &ForceModel, state: &State) -> Diagnostics {
+    let mut energy = Energy::default();
+    let mut momentum = DVec2::ZERO;
+    for i in 0..state.len() {
+        if forces.is_fixed(i) {
+            continue;
+        }
+        let (m, v) = (forces.mass[i], state.velocity[i]);
+        energy.kinetic += 0.5 * m * v.length_squared();
+        energy.uniform += uniform::potential(m, forces.uniform[i], state.position[i]);
+        momentum += m * v;
+    }
+    energy.spring = forces
+        .springs
+        .iter()
+        .map(|s| s.potential(&state.position))
+        .sum();
+    let g = forces.gravitational_constant.unwrap_or(0.0);
+    let k = forces.coulomb_constant.unwrap_or(0.0);
+    let ids = &forces.interacting;
+    for (n, &i) in ids.iter().enumerate() {
+        for &j in &ids[n + 1..] {
+            if forces.is_fixed(i) && forces.is_fixed(j) {
+                continue;
+            }
+            let r = state.position[i].distance(state.position[j]);
+            energy.gravitation += gravitation::potential(g, forces.mass[i], forces.mass[j], r);
+            energy.electrostatic += coulomb::potential(k, forces.charge[i], forces.charge[j], r);
+        }
+    }
+    Diagnostics {
+        time: state.time,
+        energy,
+        momentum,
+    }
+}
+
+pub(crate) fn particle(
+    forces: &ForceModel,
+    state: &State,
+    accelerations: &[DVec2],
+    i: usize,
+) -> ParticleReadout {
+    let (position, velocity) = (state.position[i], state.velocity[i]);
+    let mass = if forces.is_fixed(i) {
+        0.0
+    } else {
+        forces.mass[i]
+    };
+    ParticleReadout {
+        position,
+        velocity,
+        acceleration: accelerations.get(i).copied().unwrap_or_default(),
+        speed: velocity.length(),
+        kinetic_energy: 0.5 * mass * velocity.length_squared(),
+        momentum: mass * velocity,
+    }
+}

@@ -1,0 +1,135 @@
+//! The smooth forces: everything that depends only on positions and velocities at an
+//! instant (impacts are impulses, handled by the contact code). One file per law; this
+//! module owns the per-particle constants they read and sums them into accelerations.
+
+pub(crate) mod coulomb;
+pub(crate) mod gravitation;
+pub(crate) mod spring;
+pub(crate) mod uniform;
+
+use glam::DVec2;
+
+use crate::scene::{Endpoint, Scene};
+pub(crate) use spring::SpringLink;
+
+/// The constants of every force law, in runtime form (SI, indexed by particle).
+#[derive(Clone, Debug)]
+pub(crate) struct ForceModel {
+    /// Kilograms.
+    pub mass: Vec<f64>,
+    /// 1/kg; zero for fixed particles, which is what keeps them still.
+    pub inverse_mass: Vec<f64>,
+    /// Coulombs.
+    pub charge: Vec<f64>,
+    /// The uniform field plus the particle's own applied acceleration, m/s²; zero for
+    /// fixed particles.
+    pub uniform: Vec<DVec2>,
+    /// G when gravitation is on.
+    pub gravitational_constant: Option<f64>,
+    /// k when electrostatics is on.
+    pub coulomb_constant: Option<f64>,
+    /// The particles that take part in pairwise forces, ascending.
+    pub interacting: Vec<usize>,
+    pub springs: Vec<SpringLink>,
+}
+
+impl ForceModel {
+    /// Builds the model of a valid scene.
+    pub fn new(scene: &Scene) -> Self {
+        let gravity = scene.world.gravity.to_dvec2();
+        let gravitational_constant = (scene.world.gravitation
+            && scene.world.gravitational_constant != 0.0)
+            .then_some(scene.world.gravitational_constant);
+        let coulomb_constant = (scene.world.electrostatics && scene.world.coulomb_constant != 0.0)
+            .then_some(scene.world.coulomb_constant);
+        let particles = &scene.particles;
+        let interacting = (0..particles.len())
+            .filter(|&i| gravitational_constant.is_some() || particles[i].charge != 0.0)
+            .filter(|_| gravitational_constant.is_some() || coulomb_constant.is_some())
+            .collect();
+        let index = |end: &Endpoint| match end {
+            Endpoint::Particle(name) => {
+                spring::End::Particle(scene.particle_index(name).unwrap_or(0))
+            }
+            Endpoint::Point(point) => spring::End::Point(point.to_dvec2()),
+        };
+        Self {
+            mass: particles.iter().map(|p| p.mass).collect(),
+            inverse_mass: particles
+                .iter()
+                .map(|p| if p.fixed { 0.0 } else { 1.0 / p.mass })
+                .collect(),
+            charge: particles.iter().map(|p| p.charge).collect(),
+            uniform: particles
+                .iter()
+                .map(|p| {
+                    if p.fixed {
+                        DVec2::ZERO
+                    } else {
+                        gravity + p.acceleration.to_dvec2()
+                    }
+                })
+                .collect(),
+            gravitational_constant,
+            coulomb_constant,
+            interacting,
+            springs: scene
+                .springs
+                .iter()
+                .map(|s| SpringLink {
+                    from: index(&s.from),
+                    to: index(&s.to),
+                    stiffness: s.stiffness,
+                    natural_length: s.natural_length,
+                    damping: s.damping,
+                })
+                .collect(),
+        }
+    }
+
+    pub fn is_fixed(&self, i: usize) -> bool {
+        self.inverse_mass[i] == 0.0
+    }
+
+    /// Accelerations (m/s²) of every particle at positions `x` and velocities `v`.
+    ///
+    /// Pairwise and spring forces are summed as forces first, each applied equal and
+    /// opposite, so the total internal force is zero up to rounding and momentum is
+    /// conserved; then divided by mass.
+    pub fn accelerations(&self, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
+        out.fill(DVec2::ZERO);
+        self.pairwise(x, out);
+        for link in &self.springs {
+            link.add_forces(x, v, out);
+        }
+        for (i, a) in out.iter_mut().enumerate() {
+            *a = uniform::acceleration(self.uniform[i]) + *a * self.inverse_mass[i];
+        }
+    }
+
+    /// Gravitation and Coulomb in one pass over the pairs: both are central
+    /// inverse-square laws, so one distance computation serves both.
+    fn pairwise(&self, x: &[DVec2], force: &mut [DVec2]) {
+        let g = self.gravitational_constant.unwrap_or(0.0);
+        let k = self.coulomb_constant.unwrap_or(0.0);
+        let ids = &self.interacting;
+        for (n, &i) in ids.iter().enumerate() {
+            let (xi, mi, qi, fixed_i) = (x[i], self.mass[i], self.charge[i], self.is_fixed(i));
+            let mut fi = DVec2::ZERO;
+            for &j in &ids[n + 1..] {
+                if fixed_i && self.is_fixed(j) {
+                    continue;
+                }
+                // Attraction strength G·mi·mj − k·qi·qj, in N·m².
+                let strength = gravitation::strength(g, mi, self.mass[j])
+                    - coulomb::strength(k, qi, self.charge[j]);
+                let d = x[j] - xi;
+                let r2 = d.length_squared();
+                let f = d * (strength / (r2 * r2.sqrt()));
+                fi += f;
+                force[j] -= f;
+            }
+            force[i] += fi;
+        }
+    }
+}

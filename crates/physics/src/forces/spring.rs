@@ -1,0 +1,77 @@
+//! Hooke springs with damping along the spring axis (the paper's 23–24):
+//! the tension T = k (L − L0) + b (`v_to` − `v_from`)·u pulls the ends together along the
+//! unit vector u from `from` to `to`. Potential energy k (L − L0)² / 2.
+
+use glam::DVec2;
+
+/// One end of a spring in runtime form.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum End {
+    Particle(usize),
+    /// A fixed point, metres.
+    Point(DVec2),
+}
+
+impl End {
+    fn position(self, x: &[DVec2]) -> DVec2 {
+        match self {
+            Self::Particle(i) => x[i],
+            Self::Point(p) => p,
+        }
+    }
+
+    fn velocity(self, v: &[DVec2]) -> DVec2 {
+        match self {
+            Self::Particle(i) => v[i],
+            Self::Point(_) => DVec2::ZERO,
+        }
+    }
+
+    fn add_force(self, force: &mut [DVec2], f: DVec2) {
+        if let Self::Particle(i) = self {
+            force[i] += f;
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct SpringLink {
+    pub from: End,
+    pub to: End,
+    /// N/m.
+    pub stiffness: f64,
+    /// m.
+    pub natural_length: f64,
+    /// N·s/m.
+    pub damping: f64,
+}
+
+impl SpringLink {
+    /// Adds the spring's forces on its ends to `force`.
+    pub fn add_forces(&self, x: &[DVec2], v: &[DVec2], force: &mut [DVec2]) {
+        let d = self.to.position(x) - self.from.position(x);
+        let length = d.length();
+        let f = if length > 0.0 {
+            let axis = d / length;
+            let closing_speed = (self.to.velocity(v) - self.from.velocity(v)).dot(axis);
+            axis * (self.stiffness * (length - self.natural_length) + self.damping * closing_speed)
+        } else {
+            // Ends at one point: the axis is undefined and the elastic force
+            // −k (L − L0) u has no direction; only damping of the relative motion remains.
+            (self.to.velocity(v) - self.from.velocity(v)) * self.damping
+        };
+        self.from.add_force(force, f);
+        self.to.add_force(force, -f);
+    }
+
+    /// Current length, metres.
+    pub fn length(&self, x: &[DVec2]) -> f64 {
+        (self.to.position(x) - self.from.position(x)).length()
+    }
+
+    /// Elastic potential energy, joules.
+    pub fn potential(&self, x: &[DVec2]) -> f64 {
+        let stretch = self.length(x) - self.natural_length;
+        0.5 * self.stiffness * stretch * stretch
+    }
+}

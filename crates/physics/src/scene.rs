@@ -1,0 +1,478 @@
+//! The editable description of a scene: plain data, exactly the fields of the scene
+//! format (`DESIGN.md`, version 1), in the form the user typed them.
+//!
+//! Nothing here is derived or cached: a vector stays polar if it was typed polar, a
+//! colour stays the colour that was chosen. [`crate::Simulation::new`] converts a scene
+//! into runtime state; [`Scene::validate`] lists everything wrong with one.
+
+pub mod format;
+mod validate;
+
+use glam::DVec2;
+
+pub use validate::{FieldRef, Rule, Section, check_value};
+
+/// A 2D vector as the user typed it: Cartesian `[x, y]` or polar
+/// `{ magnitude, angle }` with the angle in degrees counter-clockwise from +x.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Vector {
+    /// Components along x and y.
+    Cartesian(DVec2),
+    /// A length and a direction.
+    Polar {
+        /// The length, in the vector's unit.
+        magnitude: f64,
+        /// Degrees, counter-clockwise from +x.
+        angle: f64,
+    },
+}
+
+impl Vector {
+    /// The zero vector, Cartesian.
+    pub const ZERO: Self = Self::Cartesian(DVec2::ZERO);
+
+    /// A Cartesian vector.
+    pub const fn cartesian(x: f64, y: f64) -> Self {
+        Self::Cartesian(DVec2::new(x, y))
+    }
+
+    /// A polar vector: `magnitude` at `angle` degrees counter-clockwise from +x.
+    pub const fn polar(magnitude: f64, angle: f64) -> Self {
+        Self::Polar { magnitude, angle }
+    }
+
+    /// The Cartesian components, whatever the form.
+    pub fn to_dvec2(self) -> DVec2 {
+        match self {
+            Self::Cartesian(v) => v,
+            Self::Polar { magnitude, angle } => {
+                let (sin, cos) = angle.to_radians().sin_cos();
+                DVec2::new(magnitude * cos, magnitude * sin)
+            }
+        }
+    }
+
+    /// The same vector in polar form, with the angle in (-180, 180].
+    #[must_use]
+    pub fn to_polar(self) -> Self {
+        match self {
+            Self::Polar { .. } => self,
+            Self::Cartesian(v) => Self::Polar {
+                magnitude: v.length(),
+                angle: v.y.atan2(v.x).to_degrees(),
+            },
+        }
+    }
+
+    /// The same vector in Cartesian form.
+    #[must_use]
+    pub fn to_cartesian(self) -> Self {
+        Self::Cartesian(self.to_dvec2())
+    }
+
+    /// Whether both numbers are finite.
+    pub fn is_finite(self) -> bool {
+        match self {
+            Self::Cartesian(v) => v.is_finite(),
+            Self::Polar { magnitude, angle } => magnitude.is_finite() && angle.is_finite(),
+        }
+    }
+}
+
+impl From<DVec2> for Vector {
+    fn from(v: DVec2) -> Self {
+        Self::Cartesian(v)
+    }
+}
+
+impl From<[f64; 2]> for Vector {
+    fn from([x, y]: [f64; 2]) -> Self {
+        Self::cartesian(x, y)
+    }
+}
+
+/// An sRGB colour, written `"#rrggbb"` in scene files.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Color(pub [u8; 3]);
+
+impl Color {
+    /// Parses `#rrggbb` (case-insensitive).
+    pub fn parse_hex(text: &str) -> Option<Self> {
+        let hex = text.strip_prefix('#')?;
+        if hex.len() != 6 || !hex.is_ascii() {
+            return None;
+        }
+        let channel = |i: usize| u8::from_str_radix(&hex[i..i + 2], 16).ok();
+        Some(Self([channel(0)?, channel(2)?, channel(4)?]))
+    }
+
+    /// `#rrggbb`, lower case.
+    pub fn to_hex(self) -> String {
+        let [r, g, b] = self.0;
+        format!("#{r:02x}{g:02x}{b:02x}")
+    }
+}
+
+/// A point mass with a radius: the paper's projectile.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Particle {
+    /// Unique among all objects of the scene.
+    pub name: String,
+    /// Kilograms, > 0.
+    pub mass: f64,
+    /// Metres, > 0. Default 0.5.
+    pub radius: f64,
+    /// Coulombs. Default 0.
+    pub charge: f64,
+    /// Metres.
+    pub position: Vector,
+    /// Metres per second. Default zero.
+    pub velocity: Vector,
+    /// A constant applied acceleration on top of all forces, metres per second squared.
+    /// Default zero.
+    pub acceleration: Vector,
+    /// A fixed particle never moves; it still attracts, repels and is hit, with infinite
+    /// inertia. Default false.
+    pub fixed: bool,
+    /// Display colour; `None` lets the app choose.
+    pub color: Option<Color>,
+}
+
+impl Particle {
+    /// A particle of `mass` kilograms at the origin, at rest, with the default radius.
+    #[must_use]
+    pub fn new(name: impl Into<String>, mass: f64) -> Self {
+        Self {
+            name: name.into(),
+            mass,
+            radius: 0.5,
+            charge: 0.0,
+            position: Vector::ZERO,
+            velocity: Vector::ZERO,
+            acceleration: Vector::ZERO,
+            fixed: false,
+            color: None,
+        }
+    }
+
+    /// Sets the position, metres.
+    #[must_use]
+    pub fn position(mut self, position: impl Into<Vector>) -> Self {
+        self.position = position.into();
+        self
+    }
+
+    /// Sets the velocity, metres per second.
+    #[must_use]
+    pub fn velocity(mut self, velocity: impl Into<Vector>) -> Self {
+        self.velocity = velocity.into();
+        self
+    }
+
+    /// Sets the constant applied acceleration, metres per second squared.
+    #[must_use]
+    pub fn acceleration(mut self, acceleration: impl Into<Vector>) -> Self {
+        self.acceleration = acceleration.into();
+        self
+    }
+
+    /// Sets the radius, metres.
+    #[must_use]
+    pub fn radius(mut self, radius: f64) -> Self {
+        self.radius = radius;
+        self
+    }
+
+    /// Sets the charge, coulombs.
+    #[must_use]
+    pub fn charge(mut self, charge: f64) -> Self {
+        self.charge = charge;
+        self
+    }
+
+    /// Makes the particle fixed.
+    #[must_use]
+    pub fn fixed(mut self) -> Self {
+        self.fixed = true;
+        self
+    }
+}
+
+/// One end of a spring.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Endpoint {
+    /// The particle with this name.
+    Particle(String),
+    /// A fixed point in the world, metres.
+    Point(Vector),
+}
+
+impl From<&str> for Endpoint {
+    fn from(name: &str) -> Self {
+        Self::Particle(name.to_owned())
+    }
+}
+
+impl From<[f64; 2]> for Endpoint {
+    fn from(point: [f64; 2]) -> Self {
+        Self::Point(point.into())
+    }
+}
+
+/// A Hooke spring with damping along its axis: F = −k·(L − L0) − b·v∥ (the paper's 23–24).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Spring {
+    /// Unique among all objects of the scene.
+    pub name: String,
+    /// First end.
+    pub from: Endpoint,
+    /// Second end.
+    pub to: Endpoint,
+    /// k, newtons per metre, >= 0.
+    pub stiffness: f64,
+    /// L0, metres, >= 0.
+    pub natural_length: f64,
+    /// b, newton-seconds per metre, >= 0. Default 0.
+    pub damping: f64,
+}
+
+impl Spring {
+    /// An undamped spring between two ends.
+    #[must_use]
+    pub fn new(
+        name: impl Into<String>,
+        from: impl Into<Endpoint>,
+        to: impl Into<Endpoint>,
+        stiffness: f64,
+        natural_length: f64,
+    ) -> Self {
+        Self {
+            name: name.into(),
+            from: from.into(),
+            to: to.into(),
+            stiffness,
+            natural_length,
+            damping: 0.0,
+        }
+    }
+
+    /// Sets the damping, newton-seconds per metre.
+    #[must_use]
+    pub fn damping(mut self, damping: f64) -> Self {
+        self.damping = damping;
+        self
+    }
+}
+
+/// A solid ramp: every point within `thickness / 2` of the segment `from`–`to`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Ramp {
+    /// Unique among all objects of the scene.
+    pub name: String,
+    /// One end of the segment, metres.
+    pub from: Vector,
+    /// The other end, metres.
+    pub to: Vector,
+    /// Metres, >= 0. Default 0.1.
+    pub thickness: f64,
+    /// Coefficient of restitution of impacts on the ramp, 0..=1. Default 1.
+    pub restitution: f64,
+    /// Coefficient of friction, static and kinetic, >= 0. Default 0.
+    pub friction: f64,
+}
+
+impl Ramp {
+    /// A frictionless, perfectly elastic ramp 0.1 m thick.
+    #[must_use]
+    pub fn new(name: impl Into<String>, from: impl Into<Vector>, to: impl Into<Vector>) -> Self {
+        Self {
+            name: name.into(),
+            from: from.into(),
+            to: to.into(),
+            thickness: Self::DEFAULT_THICKNESS,
+            restitution: 1.0,
+            friction: 0.0,
+        }
+    }
+
+    /// The thickness a ramp gets when the file does not say, metres.
+    pub const DEFAULT_THICKNESS: f64 = 0.1;
+
+    /// Sets the thickness, metres.
+    #[must_use]
+    pub fn thickness(mut self, thickness: f64) -> Self {
+        self.thickness = thickness;
+        self
+    }
+
+    /// Sets the restitution.
+    #[must_use]
+    pub fn restitution(mut self, restitution: f64) -> Self {
+        self.restitution = restitution;
+        self
+    }
+
+    /// Sets the friction coefficient.
+    #[must_use]
+    pub fn friction(mut self, friction: f64) -> Self {
+        self.friction = friction;
+        self
+    }
+}
+
+/// An axis-aligned reflecting box, metres.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Bounds {
+    /// Lower-left corner.
+    pub min: Vector,
+    /// Upper-right corner.
+    pub max: Vector,
+}
+
+/// Fields and constants that apply to the whole scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct World {
+    /// Uniform gravitational field, metres per second squared. Default `[0, -9.81]`.
+    pub gravity: Vector,
+    /// Whether particles attract each other by Newtonian gravitation. Default true.
+    pub gravitation: bool,
+    /// G, N·m²/kg². Default 6.6742e-11 (the paper's value).
+    pub gravitational_constant: f64,
+    /// Whether charged particles interact by Coulomb's law. Default true.
+    pub electrostatics: bool,
+    /// k, N·m²/C². Default 8.988e9.
+    pub coulomb_constant: f64,
+    /// Coefficient of restitution of particle–particle impacts, 0..=1. Default 1.
+    pub restitution: f64,
+    /// An optional reflecting box.
+    pub bounds: Option<Bounds>,
+}
+
+impl World {
+    /// The paper's gravitational constant, N·m²/kg².
+    pub const DEFAULT_GRAVITATIONAL_CONSTANT: f64 = 6.6742e-11;
+    /// The paper's Coulomb constant, N·m²/C².
+    pub const DEFAULT_COULOMB_CONSTANT: f64 = 8.988e9;
+
+    /// A world with no uniform field and everything else at its default.
+    #[must_use]
+    pub fn weightless() -> Self {
+        Self {
+            gravity: Vector::ZERO,
+            ..Self::default()
+        }
+    }
+}
+
+impl Default for World {
+    fn default() -> Self {
+        Self {
+            gravity: Vector::cartesian(0.0, -9.81),
+            gravitation: true,
+            gravitational_constant: Self::DEFAULT_GRAVITATIONAL_CONSTANT,
+            electrostatics: true,
+            coulomb_constant: Self::DEFAULT_COULOMB_CONSTANT,
+            restitution: 1.0,
+            bounds: None,
+        }
+    }
+}
+
+/// How the scene is integrated and played back.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Settings {
+    /// Default [`crate::Integrator::Rk4`].
+    pub integrator: crate::Integrator,
+    /// Seconds; for `dopri5` the largest step. Default 0.001.
+    pub time_step: f64,
+    /// `dopri5` only: relative and absolute error per step. Default 1e-9.
+    pub tolerance: f64,
+    /// App playback: simulated seconds per real second. Default 1.
+    pub time_scale: f64,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Self {
+            integrator: crate::Integrator::Rk4,
+            time_step: 0.001,
+            tolerance: 1e-9,
+            time_scale: 1.0,
+        }
+    }
+}
+
+/// A whole scene: what a scene file holds.
+#[derive(Clone, Debug, PartialEq, Default)]
+pub struct Scene {
+    /// A title, optional.
+    pub name: Option<String>,
+    /// A longer description, optional.
+    pub description: Option<String>,
+    /// Fields and constants.
+    pub world: World,
+    /// Integration and playback.
+    pub simulation: Settings,
+    /// In file order; CSV columns follow this order.
+    pub particles: Vec<Particle>,
+    /// In file order.
+    pub springs: Vec<Spring>,
+    /// In file order.
+    pub ramps: Vec<Ramp>,
+}
+
+impl Scene {
+    /// An empty scene with the default world.
+    #[must_use]
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    /// Replaces the world.
+    #[must_use]
+    pub fn with_world(mut self, world: World) -> Self {
+        self.world = world;
+        self
+    }
+
+    /// Replaces the integration settings.
+    #[must_use]
+    pub fn with_settings(mut self, settings: Settings) -> Self {
+        self.simulation = settings;
+        self
+    }
+
+    /// Sets the integrator and the time step (seconds).
+    #[must_use]
+    pub fn with_integrator(mut self, integrator: crate::Integrator, time_step: f64) -> Self {
+        self.simulation.integrator = integrator;
+        self.simulation.time_step = time_step;
+        self
+    }
+
+    /// Adds a particle.
+    #[must_use]
+    pub fn with_particle(mut self, particle: Particle) -> Self {
+        self.particles.push(particle);
+        self
+    }
+
+    /// Adds a spring.
+    #[must_use]
+    pub fn with_spring(mut self, spring: Spring) -> Self {
+        self.springs.push(spring);
+        self
+    }
+
+    /// Adds a ramp.
+    #[must_use]
+    pub fn with_ramp(mut self, ramp: Ramp) -> Self {
+        self.ramps.push(ramp);
+        self
+    }
+
+    /// The index of the particle with this name.
+    pub fn particle_index(&self, name: &str) -> Option<usize> {
+        self.particles.iter().position(|p| p.name == name)
+    }
+}

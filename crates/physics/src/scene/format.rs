@@ -1,0 +1,1055 @@
+//! Scene files, version 1: TOML (and JSON with the same structure), loaded with
+//! validation and saved in the same schema.
+//!
+//! Loading never stops at the first problem. The text is parsed into a small tree that
+//! remembers where every key and value stands in the file; a reader walks it, noting
+//! every unknown key, wrong type and missing field; the scene it builds is then checked by
+//! [`Scene::validate`] (the same rules the app uses), and each problem gets the line and
+//! column of the value it is about. JSON has no positions for values (`serde_json` keeps
+//! none), so only its syntax errors carry a line and column.
+
+use std::collections::{HashMap, HashSet};
+use std::fmt::{self, Write as _};
+use std::ops::Range;
+
+use super::validate::{FieldRef, Section};
+use super::{Bounds, Color, Endpoint, Particle, Ramp, Scene, Settings, Spring, Vector, World};
+use crate::Integrator;
+
+/// The scene-format version this library reads and writes.
+pub const VERSION: i64 = 1;
+
+/// The two encodings of a scene file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SceneFormat {
+    /// TOML, the usual one.
+    Toml,
+    /// JSON with the same structure.
+    Json,
+}
+
+impl SceneFormat {
+    /// JSON for a `.json` file name, TOML for anything else.
+    pub fn from_file_name(name: &str) -> Self {
+        if name.to_ascii_lowercase().ends_with(".json") {
+            Self::Json
+        } else {
+            Self::Toml
+        }
+    }
+}
+
+/// One thing wrong with a scene.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Problem {
+    /// What is wrong, in words a student understands, starting with the object it is
+    /// about: `particle 'B': mass must be greater than 0, got -2`.
+    pub message: String,
+    /// 1-based line in the file, where known.
+    pub line: Option<usize>,
+    /// 1-based column (in characters) in the file, where known.
+    pub column: Option<usize>,
+    /// The field the problem is about, where it is about one.
+    pub field: Option<FieldRef>,
+}
+
+impl fmt::Display for Problem {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match (self.line, self.column) {
+            (Some(line), Some(column)) => {
+                write!(f, "line {line}, column {column}: {}", self.message)
+            }
+            (Some(line), None) => write!(f, "line {line}: {}", self.message),
+            _ => f.write_str(&self.message),
+        }
+    }
+}
+
+/// Why a scene could not be loaded: every problem found, in file order.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub struct LoadError {
+    /// At least one.
+    pub problems: Vec<Problem>,
+}
+
+impl fmt::Display for LoadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, problem) in self.problems.iter().enumerate() {
+            if i > 0 {
+                f.write_str("\n")?;
+            }
+            write!(f, "{problem}")?;
+        }
+        Ok(())
+    }
+}
+
+impl Scene {
+    /// Loads a scene from text in the given format.
+    ///
+    /// # Errors
+    /// Every problem with the text or the scene it describes.
+    pub fn parse(text: &str, format: SceneFormat) -> Result<Self, LoadError> {
+        let root = match format {
+            SceneFormat::Toml => parse_toml(text)?,
+            SceneFormat::Json => parse_json(text)?,
+        };
+        let mut reader = Reader::new(text);
+        let scene = reader.scene(&root);
+        reader.finish(scene)
+    }
+
+    /// Loads a TOML scene.
+    ///
+    /// # Errors
+    /// Every problem with the text or the scene it describes.
+    pub fn from_toml(text: &str) -> Result<Self, LoadError> {
+        Self::parse(text, SceneFormat::Toml)
+    }
+
+    /// Loads a JSON scene.
+    ///
+    /// # Errors
+    /// Every problem with the text or the scene it describes.
+    pub fn from_json(text: &str) -> Result<Self, LoadError> {
+        Self::parse(text, SceneFormat::Json)
+    }
+
+    /// The scene as text in the given format.
+    pub fn to_text(&self, format: SceneFormat) -> String {
+        match format {
+            SceneFormat::Toml => self.to_toml(),
+            SceneFormat::Json => self.to_json(),
+        }
+    }
+
+    /// The scene as a TOML scene file.
+    pub fn to_toml(&self) -> String {
+        let mut out = String::new();
+        for section in self.document() {
+            let _ = match section.header {
+                Header::Root => Ok(()),
+                Header::Table(name) => write!(out, "\n[{name}]\n"),
+                Header::ArrayItem(name) => write!(out, "\n[[{name}]]\n"),
+            };
+            for (key, value) in &section.entries {
+                let _ = writeln!(out, "{key} = {}", value.to_toml());
+            }
+        }
+        out
+    }
+
+    /// The scene as a JSON scene file.
+    pub fn to_json(&self) -> String {
+        use serde_json::{Map, Value};
+        let mut root = Map::new();
+        for section in self.document() {
+            let entries: Map<String, Value> = section
+                .entries
+                .iter()
+                .map(|(key, value)| ((*key).to_owned(), value.to_json()))
+                .collect();
+            match section.header {
+                Header::Root => root.extend(entries),
+                Header::Table(name) => {
+                    root.insert(name.to_owned(), Value::Object(entries));
+                }
+                Header::ArrayItem(name) => {
+                    let list = root
+                        .entry(name.to_owned())
+                        .or_insert_with(|| Value::Array(Vec::new()));
+                    if let Value::Array(list) = list {
+                        list.push(Value::Object(entries));
+                    }
+                }
+            }
+        }
+        let mut text = serde_json::to_string_pretty(&Value::Object(root)).unwrap_or_default();
+        text.push('\n');
+        text
+    }
+
+    /// The scene as sections of key–value pairs: one description that both writers
+    /// render, so TOML and JSON can never disagree on the schema.
+    fn document(&self) -> Vec<OutSection> {
+        let mut root = vec![("version", Out::Integer(VERSION))];
+        if let Some(name) = &self.name {
+            root.push(("name", Out::Text(name.clone())));
+        }
+        if let Some(description) = &self.description {
+            root.push(("description", Out::Text(description.clone())));
+        }
+        let w = &self.world;
+        let mut world = vec![
+            ("gravity", Out::Vector(w.gravity)),
+            ("gravitation", Out::Bool(w.gravitation)),
+            (
+                "gravitational_constant",
+                Out::Number(w.gravitational_constant),
+            ),
+            ("electrostatics", Out::Bool(w.electrostatics)),
+            ("coulomb_constant", Out::Number(w.coulomb_constant)),
+            ("restitution", Out::Number(w.restitution)),
+        ];
+        if let Some(bounds) = w.bounds {
+            world.push(("bounds", Out::Bounds(bounds)));
+        }
+        let s = &self.simulation;
+        let simulation = vec![
+            ("integrator", Out::Text(s.integrator.as_str().to_owned())),
+            ("time_step", Out::Number(s.time_step)),
+            ("tolerance", Out::Number(s.tolerance)),
+            ("time_scale", Out::Number(s.time_scale)),
+        ];
+        let mut sections = vec![
+            OutSection {
+                header: Header::Root,
+                entries: root,
+            },
+            OutSection {
+                header: Header::Table("world"),
+                entries: world,
+            },
+            OutSection {
+                header: Header::Table("simulation"),
+                entries: simulation,
+            },
+        ];
+        for p in &self.particles {
+            let mut entries = vec![
+                ("name", Out::Text(p.name.clone())),
+                ("mass", Out::Number(p.mass)),
+                ("radius", Out::Number(p.radius)),
+                ("charge", Out::Number(p.charge)),
+                ("position", Out::Vector(p.position)),
+                ("velocity", Out::Vector(p.velocity)),
+                ("acceleration", Out::Vector(p.acceleration)),
+                ("fixed", Out::Bool(p.fixed)),
+            ];
+            if let Some(color) = p.color {
+                entries.push(("color", Out::Text(color.to_hex())));
+            }
+            sections.push(OutSection {
+                header: Header::ArrayItem("particle"),
+                entries,
+            });
+        }
+        for spring in &self.springs {
+            let end = |end: &Endpoint| match end {
+                Endpoint::Particle(name) => Out::Text(name.clone()),
+                Endpoint::Point(point) => Out::Vector(*point),
+            };
+            sections.push(OutSection {
+                header: Header::ArrayItem("spring"),
+                entries: vec![
+                    ("name", Out::Text(spring.name.clone())),
+                    ("from", end(&spring.from)),
+                    ("to", end(&spring.to)),
+                    ("stiffness", Out::Number(spring.stiffness)),
+                    ("natural_length", Out::Number(spring.natural_length)),
+                    ("damping", Out::Number(spring.damping)),
+                ],
+            });
+        }
+        for ramp in &self.ramps {
+            sections.push(OutSection {
+                header: Header::ArrayItem("ramp"),
+                entries: vec![
+                    ("name", Out::Text(ramp.name.clone())),
+                    ("from", Out::Vector(ramp.from)),
+                    ("to", Out::Vector(ramp.to)),
+                    ("thickness", Out::Number(ramp.thickness)),
+                    ("restitution", Out::Number(ramp.restitution)),
+                    ("friction", Out::Number(ramp.friction)),
+                ],
+            });
+        }
+        sections
+    }
+}
+
+enum Header {
+    Root,
+    Table(&'static str),
+    ArrayItem(&'static str),
+}
+
+struct OutSection {
+    header: Header,
+    entries: Vec<(&'static str, Out)>,
+}
+
+enum Out {
+    Integer(i64),
+    Number(f64),
+    Bool(bool),
+    Text(String),
+    Vector(Vector),
+    Bounds(Bounds),
+}
+
+/// A TOML float that parses back to the same `f64`: Rust's `Debug` for `f64` is the
+/// shortest round-tripping form and always has a `.` or an exponent, as TOML requires.
+fn toml_float(x: f64) -> String {
+    format!("{x:?}")
+}
+
+fn toml_vector(v: Vector) -> String {
+    match v {
+        Vector::Cartesian(v) => format!("[{}, {}]", toml_float(v.x), toml_float(v.y)),
+        Vector::Polar { magnitude, angle } => format!(
+            "{{ magnitude = {}, angle = {} }}",
+            toml_float(magnitude),
+            toml_float(angle)
+        ),
+    }
+}
+
+fn json_vector(v: Vector) -> serde_json::Value {
+    match v {
+        Vector::Cartesian(v) => serde_json::json!([v.x, v.y]),
+        Vector::Polar { magnitude, angle } => {
+            serde_json::json!({ "magnitude": magnitude, "angle": angle })
+        }
+    }
+}
+
+impl Out {
+    fn to_toml(&self) -> String {
+        match self {
+            Self::Integer(i) => i.to_string(),
+            Self::Number(x) => toml_float(*x),
+            Self::Bool(b) => b.to_string(),
+            Self::Text(text) => toml::Value::String(text.clone()).to_string(),
+            Self::Vector(v) => toml_vector(*v),
+            Self::Bounds(b) => format!(
+                "{{ min = {}, max = {} }}",
+                toml_vector(b.min),
+                toml_vector(b.max)
+            ),
+        }
+    }
+
+    fn to_json(&self) -> serde_json::Value {
+        match self {
+            Self::Integer(i) => (*i).into(),
+            Self::Number(x) => (*x).into(),
+            Self::Bool(b) => (*b).into(),
+            Self::Text(text) => text.clone().into(),
+            Self::Vector(v) => json_vector(*v),
+            Self::Bounds(b) => {
+                serde_json::json!({ "min": json_vector(b.min), "max": json_vector(b.max) })
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The parsed tree.
+
+type Span = Option<Range<usize>>;
+
+/// A parsed value with the byte range it came from (TOML only).
+struct Node {
+    value: Value,
+    span: Span,
+}
+
+enum Value {
+    Bool(bool),
+    Number(f64),
+    Text(String),
+    Array(Vec<Node>),
+    Table(Vec<Entry>),
+    /// A TOML date or time: never valid in a scene.
+    Datetime,
+}
+
+struct Entry {
+    key: String,
+    key_span: Span,
+    node: Node,
+}
+
+impl Value {
+    fn kind(&self) -> &'static str {
+        match self {
+            Self::Bool(_) => "true or false",
+            Self::Number(_) => "a number",
+            Self::Text(_) => "text",
+            Self::Array(_) => "a list",
+            Self::Table(_) => "a table",
+            Self::Datetime => "a date",
+        }
+    }
+}
+
+fn parse_toml(text: &str) -> Result<Node, LoadError> {
+    let (table, errors) = toml::de::DeTable::parse_recoverable(text);
+    if !errors.is_empty() {
+        let problems = errors
+            .iter()
+            .map(|error| {
+                let (line, column) = error.span().map_or((None, None), |span| {
+                    let (line, column) = line_column(text, span.start);
+                    (Some(line), Some(column))
+                });
+                Problem {
+                    message: format!("this is not valid TOML: {}", error.message().trim()),
+                    line,
+                    column,
+                    field: None,
+                }
+            })
+            .collect();
+        return Err(LoadError { problems });
+    }
+    let span = table.span();
+    Ok(Node {
+        value: toml_table(table.into_inner()),
+        span: Some(span),
+    })
+}
+
+fn toml_table(table: toml::de::DeTable<'_>) -> Value {
+    Value::Table(
+        table
+            .into_iter()
+            .map(|(key, value)| Entry {
+                key_span: Some(key.span()),
+                key: key.into_inner().into_owned(),
+                node: toml_node(value),
+            })
+            .collect(),
+    )
+}
+
+fn toml_node(node: toml::Spanned<toml::de::DeValue<'_>>) -> Node {
+    use toml::de::DeValue;
+    let span = Some(node.span());
+    let value = match node.into_inner() {
+        DeValue::String(s) => Value::Text(s.into_owned()),
+        DeValue::Integer(i) => Value::Number(
+            i64::from_str_radix(&i.as_str().replace('_', ""), i.radix())
+                .map_or(f64::NAN, |i| i as f64),
+        ),
+        DeValue::Float(f) => Value::Number(parse_toml_float(f.as_str())),
+        DeValue::Boolean(b) => Value::Bool(b),
+        DeValue::Datetime(_) => Value::Datetime,
+        DeValue::Array(items) => Value::Array(items.into_iter().map(toml_node).collect()),
+        DeValue::Table(table) => toml_table(table),
+    };
+    Node { value, span }
+}
+
+fn parse_toml_float(raw: &str) -> f64 {
+    let text = raw.replace('_', "");
+    match text.trim_start_matches('+') {
+        "inf" => f64::INFINITY,
+        "-inf" => f64::NEG_INFINITY,
+        "nan" | "-nan" => f64::NAN,
+        other => other.parse().unwrap_or(f64::NAN),
+    }
+}
+
+fn parse_json(text: &str) -> Result<Node, LoadError> {
+    match serde_json::from_str::<serde_json::Value>(text) {
+        Ok(value) => Ok(json_node(value)),
+        Err(error) => Err(LoadError {
+            problems: vec![Problem {
+                message: format!("this is not valid JSON: {error}"),
+                line: Some(error.line()),
+                column: Some(error.column()),
+                field: None,
+            }],
+        }),
+    }
+}
+
+fn json_node(value: serde_json::Value) -> Node {
+    use serde_json::Value as J;
+    let value = match value {
+        J::Null => Value::Datetime,
+        J::Bool(b) => Value::Bool(b),
+        J::Number(n) => Value::Number(n.as_f64().unwrap_or(f64::NAN)),
+        J::String(s) => Value::Text(s),
+        J::Array(items) => Value::Array(items.into_iter().map(json_node).collect()),
+        J::Object(map) => Value::Table(
+            map.into_iter()
+                .map(|(key, value)| Entry {
+                    key,
+                    key_span: None,
+                    node: json_node(value),
+                })
+                .collect(),
+        ),
+    };
+    Node { value, span: None }
+}
+
+/// 1-based line and column (in characters) of a byte offset.
+fn line_column(text: &str, offset: usize) -> (usize, usize) {
+    let before = text.get(..offset).unwrap_or(text);
+    let line = before.matches('\n').count() + 1;
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    let column = before[line_start..].chars().count() + 1;
+    (line, column)
+}
+
+// ---------------------------------------------------------------------------------------
+// The reader: tree → Scene, noting every structural problem.
+
+struct Reader<'t> {
+    text: &'t str,
+    problems: Vec<(Span, Problem)>,
+    /// Where each field's value stands, to place validation problems.
+    spans: HashMap<FieldRef, Range<usize>>,
+    /// Fields that already have a problem: validation would only repeat it.
+    failed: HashSet<FieldRef>,
+}
+
+/// One table being read: which keys were used, for reporting unknown ones.
+struct Table<'n> {
+    entries: &'n [Entry],
+    /// Where the table starts, for problems about keys it lacks.
+    span: Span,
+    used: Vec<bool>,
+    section: Section,
+    label: String,
+}
+
+impl<'n> Table<'n> {
+    fn get(&mut self, key: &str) -> Option<&'n Node> {
+        let index = self.entries.iter().position(|e| e.key == key)?;
+        self.used[index] = true;
+        Some(&self.entries[index].node)
+    }
+}
+
+const ROOT_KEYS: &[&str] = &[
+    "version",
+    "name",
+    "description",
+    "world",
+    "simulation",
+    "particle",
+    "spring",
+    "ramp",
+];
+const WORLD_KEYS: &[&str] = &[
+    "gravity",
+    "gravitation",
+    "gravitational_constant",
+    "electrostatics",
+    "coulomb_constant",
+    "restitution",
+    "bounds",
+];
+const SIMULATION_KEYS: &[&str] = &["integrator", "time_step", "tolerance", "time_scale"];
+const PARTICLE_KEYS: &[&str] = &[
+    "name",
+    "mass",
+    "radius",
+    "charge",
+    "position",
+    "velocity",
+    "acceleration",
+    "fixed",
+    "color",
+];
+const SPRING_KEYS: &[&str] = &[
+    "name",
+    "from",
+    "to",
+    "stiffness",
+    "natural_length",
+    "damping",
+];
+const RAMP_KEYS: &[&str] = &["name", "from", "to", "thickness", "restitution", "friction"];
+
+impl<'t> Reader<'t> {
+    fn new(text: &'t str) -> Self {
+        Self {
+            text,
+            problems: Vec::new(),
+            spans: HashMap::new(),
+            failed: HashSet::new(),
+        }
+    }
+
+    fn problem(&mut self, span: Span, field: Option<FieldRef>, message: String) {
+        if let Some(field) = field {
+            self.failed.insert(field);
+        }
+        let (line, column) = match &span {
+            Some(span) => {
+                let (line, column) = line_column(self.text, span.start);
+                (Some(line), Some(column))
+            }
+            None => (None, None),
+        };
+        self.problems.push((
+            span,
+            Problem {
+                message,
+                line,
+                column,
+                field,
+            },
+        ));
+    }
+
+    /// Opens `node` as a table, or reports that it is not one.
+    fn table<'n>(&mut self, node: &'n Node, section: Section, label: String) -> Option<Table<'n>> {
+        if let Value::Table(entries) = &node.value {
+            Some(Table {
+                entries,
+                span: node.span.clone(),
+                used: vec![false; entries.len()],
+                section,
+                label,
+            })
+        } else {
+            let kind = node.value.kind();
+            self.problem(
+                node.span.clone(),
+                None,
+                format!("{label} must be a table, got {kind}"),
+            );
+            None
+        }
+    }
+
+    /// Reports the keys of `table` that were never read.
+    fn close(&mut self, table: &Table<'_>, known: &[&str]) {
+        for (entry, used) in table.entries.iter().zip(&table.used) {
+            if !used {
+                let hint = closest(&entry.key, known).map_or_else(
+                    || format!("; the keys here are {}", known.join(", ")),
+                    |k| format!("; did you mean '{k}'?"),
+                );
+                let message = format!("{}: unknown key '{}'{hint}", table.label, entry.key);
+                self.problem(entry.key_span.clone(), None, message);
+            }
+        }
+    }
+
+    /// Reads `key` with `read`, remembering its span; `None` when absent or invalid.
+    fn field<T>(
+        &mut self,
+        table: &mut Table<'_>,
+        key: &'static str,
+        read: impl FnOnce(&Node) -> Result<T, String>,
+    ) -> Option<T> {
+        let node = table.get(key)?;
+        let field = FieldRef {
+            section: table.section,
+            field: key,
+        };
+        if let Some(span) = &node.span {
+            self.spans.insert(field, span.clone());
+        }
+        match read(node) {
+            Ok(value) => Some(value),
+            Err(reason) => {
+                let message = format!("{}: {key} {reason}", table.label);
+                self.problem(node.span.clone(), Some(field), message);
+                None
+            }
+        }
+    }
+
+    fn required<T>(
+        &mut self,
+        table: &mut Table<'_>,
+        key: &'static str,
+        read: impl FnOnce(&Node) -> Result<T, String>,
+        placeholder: T,
+    ) -> T {
+        if table.entries.iter().any(|e| e.key == key) {
+            return self.field(table, key, read).unwrap_or(placeholder);
+        }
+        let field = FieldRef {
+            section: table.section,
+            field: key,
+        };
+        let message = format!("{}: {key} is required", table.label);
+        self.problem(table.span.clone(), Some(field), message);
+        placeholder
+    }
+
+    fn scene(&mut self, root: &Node) -> Scene {
+        let mut scene = Scene::default();
+        let Some(mut top) = self.table(root, Section::Root, "the scene".to_owned()) else {
+            return scene;
+        };
+        "scene".clone_into(&mut top.label);
+        if top.entries.iter().any(|e| e.key == "version") {
+            let version = self.field(&mut top, "version", read_number);
+            #[expect(
+                clippy::float_cmp,
+                reason = "version numbers are small integers, exact in f64"
+            )]
+            let supported = version.is_none_or(|v| v == VERSION as f64);
+            if let Some(version) = version.filter(|_| !supported) {
+                let field = FieldRef {
+                    section: Section::Root,
+                    field: "version",
+                };
+                let span = self.spans.get(&field).cloned();
+                self.problem(
+                    span,
+                    None,
+                    format!("scene: version {version} is not supported; this NewtonLab reads version {VERSION}"),
+                );
+            }
+        } else {
+            self.problem(
+                None,
+                None,
+                "scene: version is required; write `version = 1` at the top of the file".to_owned(),
+            );
+        }
+        scene.name = self.field(&mut top, "name", read_text);
+        scene.description = self.field(&mut top, "description", read_text);
+        if let Some(node) = top.get("world") {
+            scene.world = self.world(node);
+        }
+        if let Some(node) = top.get("simulation") {
+            scene.simulation = self.settings(node);
+        }
+        for (i, node) in self.items(&mut top, "particle").iter().enumerate() {
+            let particle = self.particle(node, i);
+            scene.particles.push(particle);
+        }
+        for (i, node) in self.items(&mut top, "spring").iter().enumerate() {
+            let spring = self.spring(node, i);
+            scene.springs.push(spring);
+        }
+        for (i, node) in self.items(&mut top, "ramp").iter().enumerate() {
+            let ramp = self.ramp(node, i);
+            scene.ramps.push(ramp);
+        }
+        self.close(&top, ROOT_KEYS);
+        scene
+    }
+
+    /// The entries of an array of tables such as `[[particle]]`.
+    fn items<'n>(&mut self, top: &mut Table<'n>, key: &str) -> &'n [Node] {
+        match top.get(key) {
+            None => &[],
+            Some(Node {
+                value: Value::Array(items),
+                ..
+            }) => items,
+            Some(node) => {
+                self.problem(
+                    node.span.clone(),
+                    None,
+                    format!(
+                        "scene: '{key}' must be a list of [[{key}]] tables, got {}",
+                        node.value.kind()
+                    ),
+                );
+                &[]
+            }
+        }
+    }
+
+    fn world(&mut self, node: &Node) -> World {
+        let mut world = World::default();
+        let Some(mut t) = self.table(node, Section::World, "[world]".to_owned()) else {
+            return world;
+        };
+        if let Some(v) = self.field(&mut t, "gravity", read_vector) {
+            world.gravity = v;
+        }
+        if let Some(v) = self.field(&mut t, "gravitation", read_bool) {
+            world.gravitation = v;
+        }
+        if let Some(v) = self.field(&mut t, "gravitational_constant", read_number) {
+            world.gravitational_constant = v;
+        }
+        if let Some(v) = self.field(&mut t, "electrostatics", read_bool) {
+            world.electrostatics = v;
+        }
+        if let Some(v) = self.field(&mut t, "coulomb_constant", read_number) {
+            world.coulomb_constant = v;
+        }
+        if let Some(v) = self.field(&mut t, "restitution", read_number) {
+            world.restitution = v;
+        }
+        world.bounds = self.field(&mut t, "bounds", read_bounds);
+        self.close(&t, WORLD_KEYS);
+        world
+    }
+
+    fn settings(&mut self, node: &Node) -> Settings {
+        let mut settings = Settings::default();
+        let Some(mut t) = self.table(node, Section::Simulation, "[simulation]".to_owned()) else {
+            return settings;
+        };
+        if let Some(v) = self.field(&mut t, "integrator", read_integrator) {
+            settings.integrator = v;
+        }
+        if let Some(v) = self.field(&mut t, "time_step", read_number) {
+            settings.time_step = v;
+        }
+        if let Some(v) = self.field(&mut t, "tolerance", read_number) {
+            settings.tolerance = v;
+        }
+        if let Some(v) = self.field(&mut t, "time_scale", read_number) {
+            settings.time_scale = v;
+        }
+        self.close(&t, SIMULATION_KEYS);
+        settings
+    }
+
+    /// Opens the table of an object and reads its name, which labels its messages.
+    fn object<'n>(
+        &mut self,
+        node: &'n Node,
+        kind: &str,
+        section: Section,
+        index: usize,
+    ) -> Option<(Table<'n>, String)> {
+        let default_name = format!("{}{}", &kind[..1], index + 1);
+        let mut t = self.table(node, section, format!("{kind} #{}", index + 1))?;
+        let name = self
+            .field(&mut t, "name", read_text)
+            .unwrap_or(default_name);
+        if !name.is_empty() {
+            t.label = format!("{kind} '{name}'");
+        }
+        Some((t, name))
+    }
+
+    fn particle(&mut self, node: &Node, index: usize) -> Particle {
+        let mut particle = Particle::new(format!("p{}", index + 1), f64::NAN);
+        let Some((mut t, name)) = self.object(node, "particle", Section::Particle(index), index)
+        else {
+            return particle;
+        };
+        particle.name = name;
+        particle.mass = self.required(&mut t, "mass", read_number, 1.0);
+        if let Some(v) = self.field(&mut t, "radius", read_number) {
+            particle.radius = v;
+        }
+        if let Some(v) = self.field(&mut t, "charge", read_number) {
+            particle.charge = v;
+        }
+        particle.position = self.required(&mut t, "position", read_vector, Vector::ZERO);
+        if let Some(v) = self.field(&mut t, "velocity", read_vector) {
+            particle.velocity = v;
+        }
+        if let Some(v) = self.field(&mut t, "acceleration", read_vector) {
+            particle.acceleration = v;
+        }
+        if let Some(v) = self.field(&mut t, "fixed", read_bool) {
+            particle.fixed = v;
+        }
+        particle.color = self.field(&mut t, "color", read_color);
+        self.close(&t, PARTICLE_KEYS);
+        particle
+    }
+
+    fn spring(&mut self, node: &Node, index: usize) -> Spring {
+        let placeholder = || Endpoint::Point(Vector::ZERO);
+        let mut spring = Spring::new(
+            format!("s{}", index + 1),
+            placeholder(),
+            placeholder(),
+            0.0,
+            0.0,
+        );
+        let Some((mut t, name)) = self.object(node, "spring", Section::Spring(index), index) else {
+            return spring;
+        };
+        spring.name = name;
+        spring.from = self.required(&mut t, "from", read_endpoint, placeholder());
+        spring.to = self.required(&mut t, "to", read_endpoint, placeholder());
+        spring.stiffness = self.required(&mut t, "stiffness", read_number, 0.0);
+        spring.natural_length = self.required(&mut t, "natural_length", read_number, 0.0);
+        if let Some(v) = self.field(&mut t, "damping", read_number) {
+            spring.damping = v;
+        }
+        self.close(&t, SPRING_KEYS);
+        spring
+    }
+
+    fn ramp(&mut self, node: &Node, index: usize) -> Ramp {
+        let mut ramp = Ramp::new(format!("r{}", index + 1), Vector::ZERO, Vector::ZERO);
+        let Some((mut t, name)) = self.object(node, "ramp", Section::Ramp(index), index) else {
+            return ramp;
+        };
+        ramp.name = name;
+        ramp.from = self.required(&mut t, "from", read_vector, Vector::ZERO);
+        ramp.to = self.required(&mut t, "to", read_vector, Vector::ZERO);
+        if let Some(v) = self.field(&mut t, "thickness", read_number) {
+            ramp.thickness = v;
+        }
+        if let Some(v) = self.field(&mut t, "restitution", read_number) {
+            ramp.restitution = v;
+        }
+        if let Some(v) = self.field(&mut t, "friction", read_number) {
+            ramp.friction = v;
+        }
+        self.close(&t, RAMP_KEYS);
+        ramp
+    }
+
+    /// Adds the validation problems (with positions) to the reading problems and returns
+    /// the scene if there are none.
+    fn finish(mut self, scene: Scene) -> Result<Scene, LoadError> {
+        for mut problem in scene.validate() {
+            let Some(field) = problem.field else { continue };
+            if self.failed.contains(&field) {
+                continue;
+            }
+            let span = self.spans.get(&field).cloned();
+            if let Some(span) = &span {
+                let (line, column) = line_column(self.text, span.start);
+                problem.line = Some(line);
+                problem.column = Some(column);
+            }
+            self.problems.push((span, problem));
+        }
+        if self.problems.is_empty() {
+            return Ok(scene);
+        }
+        // File order; problems without a position (missing keys) last, in reading order.
+        self.problems
+            .sort_by_key(|(span, _)| span.as_ref().map_or(usize::MAX, |s| s.start));
+        Err(LoadError {
+            problems: self.problems.into_iter().map(|(_, p)| p).collect(),
+        })
+    }
+}
+
+fn read_number(node: &Node) -> Result<f64, String> {
+    match node.value {
+        Value::Number(x) if x.is_finite() => Ok(x),
+        Value::Number(x) => Err(format!("must be a finite number, got {x}")),
+        ref other => Err(format!("must be a number, got {}", other.kind())),
+    }
+}
+
+fn read_bool(node: &Node) -> Result<bool, String> {
+    match node.value {
+        Value::Bool(b) => Ok(b),
+        ref other => Err(format!("must be true or false, got {}", other.kind())),
+    }
+}
+
+fn read_text(node: &Node) -> Result<String, String> {
+    match &node.value {
+        Value::Text(text) => Ok(text.clone()),
+        other => Err(format!("must be text in quotes, got {}", other.kind())),
+    }
+}
+
+fn read_vector(node: &Node) -> Result<Vector, String> {
+    const FORMS: &str = "must be [x, y] or { magnitude = m, angle = degrees }";
+    match &node.value {
+        Value::Array(items) => match items.as_slice() {
+            [x, y] => Ok(Vector::cartesian(read_number(x)?, read_number(y)?)),
+            _ => Err(format!("{FORMS}, got a list of {} numbers", items.len())),
+        },
+        Value::Table(entries) => {
+            let get = |key: &str| entries.iter().find(|e| e.key == key).map(|e| &e.node);
+            if let Some(extra) = entries
+                .iter()
+                .find(|e| e.key != "magnitude" && e.key != "angle")
+            {
+                return Err(format!(
+                    "{FORMS}; '{}' is not a part of a vector",
+                    extra.key
+                ));
+            }
+            match (get("magnitude"), get("angle")) {
+                (Some(m), Some(a)) => Ok(Vector::polar(
+                    read_number(m).map_err(|e| format!("magnitude {e}"))?,
+                    read_number(a).map_err(|e| format!("angle {e}"))?,
+                )),
+                _ => Err(format!(
+                    "{FORMS}; a polar vector needs both magnitude and angle"
+                )),
+            }
+        }
+        other => Err(format!("{FORMS}, got {}", other.kind())),
+    }
+}
+
+fn read_bounds(node: &Node) -> Result<Bounds, String> {
+    const FORM: &str = "must be { min = [x, y], max = [x, y] }";
+    let Value::Table(entries) = &node.value else {
+        return Err(format!("{FORM}, got {}", node.value.kind()));
+    };
+    if let Some(extra) = entries.iter().find(|e| e.key != "min" && e.key != "max") {
+        return Err(format!("{FORM}; '{}' is not a part of bounds", extra.key));
+    }
+    let get = |key: &str| entries.iter().find(|e| e.key == key).map(|e| &e.node);
+    match (get("min"), get("max")) {
+        (Some(min), Some(max)) => Ok(Bounds {
+            min: read_vector(min).map_err(|e| format!("min {e}"))?,
+            max: read_vector(max).map_err(|e| format!("max {e}"))?,
+        }),
+        _ => Err(format!("{FORM}; both min and max are needed")),
+    }
+}
+
+fn read_endpoint(node: &Node) -> Result<Endpoint, String> {
+    match &node.value {
+        Value::Text(name) => Ok(Endpoint::Particle(name.clone())),
+        Value::Array(_) | Value::Table(_) => read_vector(node)
+            .map(Endpoint::Point)
+            .map_err(|e| e.replace("must be", "must be a particle's name or a point")),
+        other => Err(format!(
+            "must be a particle's name or a point [x, y], got {}",
+            other.kind()
+        )),
+    }
+}
+
+fn read_integrator(node: &Node) -> Result<Integrator, String> {
+    let name = read_text(node)?;
+    name.parse().map_err(|_| {
+        let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.as_str()).collect();
+        format!(
+            "'{name}' is not an integrator; choose one of {}",
+            names.join(", ")
+        )
+    })
+}
+
+fn read_color(node: &Node) -> Result<Color, String> {
+    let text = read_text(node)?;
+    Color::parse_hex(&text)
+        .ok_or_else(|| format!("must be a colour like \"#d94f4f\", got \"{text}\""))
+}
+
+/// The known key closest to a misspelt one, if it is close enough to be a typo.
+fn closest<'k>(key: &str, known: &[&'k str]) -> Option<&'k str> {
+    known
+        .iter()
+        .map(|k| (edit_distance(key, k), *k))
+        .filter(|(d, k)| *d <= 2.max(k.len() / 4))
+        .min_by_key(|(d, _)| *d)
+        .map(|(_, k)| k)
+}
+
+/// Levenshtein distance, for "did you mean" hints.
+fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut previous = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let substitution = previous + usize::from(ca != *cb);
+            previous = row[j + 1];
+            row[j + 1] = substitution.min(row[j] + 1).min(row[j + 1] + 1);
+        }
+    }
+    row[b.len()]
+}

@@ -1,0 +1,297 @@
+//! The rules every scene obeys, checked on the plain data so that a scene built in code,
+//! edited in the app or loaded from a file is judged the same way. The file loader adds
+//! the problems only a file can have (syntax, unknown keys, wrong types) and the line
+//! and column of each problem.
+
+use std::collections::HashMap;
+
+use super::format::Problem;
+use super::{Color, Endpoint, Scene, Vector};
+
+/// A part of the scene that a problem belongs to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Section {
+    /// The top level of the file (`version`, `name`, `description`).
+    Root,
+    /// `[world]`.
+    World,
+    /// `[simulation]`.
+    Simulation,
+    /// The particle at this index, in file order.
+    Particle(usize),
+    /// The spring at this index.
+    Spring(usize),
+    /// The ramp at this index.
+    Ramp(usize),
+}
+
+/// A field of a section: where a problem is, for the app's inspector and for locating
+/// the problem in a file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct FieldRef {
+    /// The section.
+    pub section: Section,
+    /// The key, as written in the scene format (`"mass"`, `"natural_length"`); empty for
+    /// the section as a whole.
+    pub field: &'static str,
+}
+
+impl Scene {
+    /// Every problem with this scene, in file order; empty when it is valid.
+    pub fn validate(&self) -> Vec<Problem> {
+        let mut check = Checker {
+            scene: self,
+            problems: Vec::new(),
+        };
+        check.world();
+        check.settings();
+        check.names();
+        check.particles();
+        check.springs();
+        check.ramps();
+        check.problems
+    }
+
+    /// How a problem in `section` is introduced in a message: `particle 'B'`.
+    pub fn describe(&self, section: Section) -> String {
+        fn named(kind: &str, name: Option<&str>, index: usize) -> String {
+            match name {
+                Some(name) if !name.is_empty() => format!("{kind} '{name}'"),
+                _ => format!("{kind} #{}", index + 1),
+            }
+        }
+        match section {
+            Section::Root => "scene".to_owned(),
+            Section::World => "[world]".to_owned(),
+            Section::Simulation => "[simulation]".to_owned(),
+            Section::Particle(i) => named(
+                "particle",
+                self.particles.get(i).map(|p| p.name.as_str()),
+                i,
+            ),
+            Section::Spring(i) => named("spring", self.springs.get(i).map(|s| s.name.as_str()), i),
+            Section::Ramp(i) => named("ramp", self.ramps.get(i).map(|r| r.name.as_str()), i),
+        }
+    }
+}
+
+/// Checks a single typed value, as the app's inspector does before applying it.
+///
+/// # Errors
+/// The reason, in the words of a full validation message without the object's name.
+pub fn check_value(rule: Rule, field: &str, value: f64) -> Result<(), String> {
+    if !value.is_finite() {
+        return Err(format!("{field} must be a finite number, got {value}"));
+    }
+    match rule {
+        Rule::Positive if value <= 0.0 => {
+            Err(format!("{field} must be greater than 0, got {value}"))
+        }
+        Rule::NonNegative if value < 0.0 => Err(format!("{field} must be 0 or more, got {value}")),
+        Rule::Fraction if !(0.0..=1.0).contains(&value) => {
+            Err(format!("{field} must be between 0 and 1, got {value}"))
+        }
+        _ => Ok(()),
+    }
+}
+
+/// What a number field must satisfy.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rule {
+    /// Any finite number.
+    Finite,
+    /// Finite and > 0.
+    Positive,
+    /// Finite and >= 0.
+    NonNegative,
+    /// Finite and in 0..=1.
+    Fraction,
+}
+
+struct Checker<'a> {
+    scene: &'a Scene,
+    problems: Vec<Problem>,
+}
+
+impl Checker<'_> {
+    fn report(&mut self, section: Section, field: &'static str, reason: &str) {
+        let message = format!("{}: {reason}", self.scene.describe(section));
+        self.problems.push(Problem {
+            message,
+            line: None,
+            column: None,
+            field: Some(FieldRef { section, field }),
+        });
+    }
+
+    fn number(&mut self, section: Section, field: &'static str, rule: Rule, value: f64) {
+        if let Err(reason) = check_value(rule, field, value) {
+            self.report(section, field, &reason);
+        }
+    }
+
+    fn vector(&mut self, section: Section, field: &'static str, value: Vector) {
+        if !value.is_finite() {
+            self.report(
+                section,
+                field,
+                &format!("{field} must have finite components"),
+            );
+        }
+    }
+
+    fn world(&mut self) {
+        let world = &self.scene.world;
+        let s = Section::World;
+        self.vector(s, "gravity", world.gravity);
+        self.number(
+            s,
+            "gravitational_constant",
+            Rule::Finite,
+            world.gravitational_constant,
+        );
+        self.number(s, "coulomb_constant", Rule::Finite, world.coulomb_constant);
+        self.number(s, "restitution", Rule::Fraction, world.restitution);
+        if let Some(bounds) = world.bounds {
+            self.vector(s, "bounds", bounds.min);
+            self.vector(s, "bounds", bounds.max);
+            let (min, max) = (bounds.min.to_dvec2(), bounds.max.to_dvec2());
+            if min.is_finite() && max.is_finite() && !(min.x < max.x && min.y < max.y) {
+                self.report(
+                    s,
+                    "bounds",
+                    &format!(
+                        "bounds: min must be below and left of max, got min [{}, {}] and max [{}, {}]",
+                        min.x, min.y, max.x, max.y
+                    ),
+                );
+            }
+        }
+    }
+
+    fn settings(&mut self) {
+        let settings = &self.scene.simulation;
+        let s = Section::Simulation;
+        self.number(s, "time_step", Rule::Positive, settings.time_step);
+        self.number(s, "tolerance", Rule::Positive, settings.tolerance);
+        self.number(s, "time_scale", Rule::Positive, settings.time_scale);
+    }
+
+    fn names(&mut self) {
+        let scene = self.scene;
+        let sections = (0..scene.particles.len())
+            .map(|i| (Section::Particle(i), scene.particles[i].name.as_str()))
+            .chain(
+                (0..scene.springs.len())
+                    .map(|i| (Section::Spring(i), scene.springs[i].name.as_str())),
+            )
+            .chain(
+                (0..scene.ramps.len()).map(|i| (Section::Ramp(i), scene.ramps[i].name.as_str())),
+            );
+        let mut first_use: HashMap<&str, Section> = HashMap::new();
+        for (section, name) in sections {
+            if name.trim().is_empty() {
+                self.report(section, "name", "name must not be empty");
+            } else if let Some(&earlier) = first_use.get(name) {
+                let earlier = match earlier {
+                    Section::Particle(i) => format!("particle #{}", i + 1),
+                    Section::Spring(i) => format!("spring #{}", i + 1),
+                    Section::Ramp(i) => format!("ramp #{}", i + 1),
+                    other => scene.describe(other),
+                };
+                self.report(
+                    section,
+                    "name",
+                    &format!(
+                        "the name '{name}' is already used by {earlier}; names must be unique"
+                    ),
+                );
+            } else {
+                first_use.insert(name, section);
+            }
+        }
+    }
+
+    fn particles(&mut self) {
+        for (i, particle) in self.scene.particles.iter().enumerate() {
+            let s = Section::Particle(i);
+            self.number(s, "mass", Rule::Positive, particle.mass);
+            self.number(s, "radius", Rule::Positive, particle.radius);
+            self.number(s, "charge", Rule::Finite, particle.charge);
+            self.vector(s, "position", particle.position);
+            self.vector(s, "velocity", particle.velocity);
+            self.vector(s, "acceleration", particle.acceleration);
+        }
+    }
+
+    fn springs(&mut self) {
+        for (i, spring) in self.scene.springs.iter().enumerate() {
+            let s = Section::Spring(i);
+            self.number(s, "stiffness", Rule::NonNegative, spring.stiffness);
+            self.number(
+                s,
+                "natural_length",
+                Rule::NonNegative,
+                spring.natural_length,
+            );
+            self.number(s, "damping", Rule::NonNegative, spring.damping);
+            for (field, end) in [("from", &spring.from), ("to", &spring.to)] {
+                match end {
+                    Endpoint::Particle(name) if self.scene.particle_index(name).is_none() => {
+                        self.report(
+                            s,
+                            field,
+                            &format!("{field}: there is no particle named '{name}'"),
+                        );
+                    }
+                    Endpoint::Point(point) => self.vector(s, field, *point),
+                    Endpoint::Particle(_) => {}
+                }
+            }
+            match (&spring.from, &spring.to) {
+                (Endpoint::Point(_), Endpoint::Point(_)) => self.report(
+                    s,
+                    "to",
+                    "a spring needs a particle at one end at least; both ends are fixed points",
+                ),
+                (Endpoint::Particle(a), Endpoint::Particle(b)) if a == b => self.report(
+                    s,
+                    "to",
+                    &format!(
+                        "both ends are the particle '{a}'; a spring joins two different things"
+                    ),
+                ),
+                _ => {}
+            }
+        }
+    }
+
+    fn ramps(&mut self) {
+        for (i, ramp) in self.scene.ramps.iter().enumerate() {
+            let s = Section::Ramp(i);
+            self.vector(s, "from", ramp.from);
+            self.vector(s, "to", ramp.to);
+            self.number(s, "thickness", Rule::NonNegative, ramp.thickness);
+            self.number(s, "restitution", Rule::Fraction, ramp.restitution);
+            self.number(s, "friction", Rule::NonNegative, ramp.friction);
+        }
+    }
+}
+
+impl Color {
+    /// A deterministic pleasant colour for the particle at `index`, for scenes that do
+    /// not choose one.
+    pub fn palette(index: usize) -> Self {
+        const PALETTE: [[u8; 3]; 8] = [
+            [0xd9, 0x4f, 0x4f],
+            [0x3b, 0x7d, 0xd8],
+            [0x4c, 0xa8, 0x5a],
+            [0xe0, 0x9f, 0x3e],
+            [0x8e, 0x5c, 0xc9],
+            [0x2f, 0xa5, 0xa5],
+            [0xc9, 0x5c, 0x9e],
+            [0x7a, 0x7a, 0x7a],
+        ];
+        Self(PALETTE[index % PALETTE.len()])
+    }
+}

@@ -1,0 +1,224 @@
+//! A running scene: built from a [`Scene`], advanced in time, read at any instant.
+//!
+//! One step, in order (the whole pipeline is [`Simulation::advance`]):
+//! 1. smooth forces (fields, pairs, springs) are integrated by the scene's method over
+//!    one step of at most the time step;
+//! 2. the new state is checked for non-finite values, which stop the run with the
+//!    particle's name and the time.
+//!
+//! `step_to(t)` shortens the last step so that it lands exactly on `t`: a sample at
+//! `t` is the state at `t`, not at the nearest step.
+
+use glam::DVec2;
+
+use crate::diagnostics::{self, Diagnostics, ParticleReadout};
+use crate::forces::ForceModel;
+use crate::integrators::{self, Integrator, Workspace};
+use crate::scene::Scene;
+use crate::scene::format::LoadError;
+use crate::state::State;
+
+/// Why a simulation stopped.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum SimulationError {
+    /// A position or velocity became infinite or NaN.
+    #[error(
+        "at t = {time} s particle '{particle}' reached a non-finite position or velocity \
+         (two bodies came too close, or the time step is too large for the forces)"
+    )]
+    NonFinite {
+        /// The first particle, in scene order, with a non-finite value.
+        particle: String,
+        /// Seconds.
+        time: f64,
+    },
+    /// The adaptive integrator could not meet its tolerance with any step f64 can take.
+    #[error(
+        "at t = {time} s the adaptive integrator needed a step too small to make progress \
+         with tolerance {tolerance}; loosen the tolerance or check for bodies passing through each other"
+    )]
+    StepTooSmall {
+        /// Seconds.
+        time: f64,
+        /// The scene's tolerance.
+        tolerance: f64,
+    },
+}
+
+/// A scene in motion.
+#[derive(Clone, Debug)]
+pub struct Simulation {
+    names: Vec<String>,
+    radius: Vec<f64>,
+    forces: ForceModel,
+    state: State,
+    integrator: Integrator,
+    time_step: f64,
+    tolerance: f64,
+    work: Workspace,
+    steps: u64,
+}
+
+impl Simulation {
+    /// Builds the runtime state of a scene, at t = 0.
+    ///
+    /// # Errors
+    /// The scene's problems, as [`Scene::validate`] lists them.
+    pub fn new(scene: &Scene) -> Result<Self, LoadError> {
+        let problems = scene.validate();
+        if !problems.is_empty() {
+            return Err(LoadError { problems });
+        }
+        let particles = &scene.particles;
+        Ok(Self {
+            names: particles.iter().map(|p| p.name.clone()).collect(),
+            radius: particles.iter().map(|p| p.radius).collect(),
+            forces: ForceModel::new(scene),
+            state: State {
+                time: 0.0,
+                position: particles.iter().map(|p| p.position.to_dvec2()).collect(),
+                // A fixed particle never moves, whatever velocity it was given.
+                velocity: particles
+                    .iter()
+                    .map(|p| {
+                        if p.fixed {
+                            DVec2::ZERO
+                        } else {
+                            p.velocity.to_dvec2()
+                        }
+                    })
+                    .collect(),
+            },
+            integrator: scene.simulation.integrator,
+            time_step: scene.simulation.time_step,
+            tolerance: scene.simulation.tolerance,
+            work: Workspace::default(),
+            steps: 0,
+        })
+    }
+
+    /// Simulated time, seconds.
+    pub fn time(&self) -> f64 {
+        self.state.time
+    }
+
+    /// The number of particles.
+    pub fn len(&self) -> usize {
+        self.state.len()
+    }
+
+    /// Whether the scene has no particles.
+    pub fn is_empty(&self) -> bool {
+        self.state.len() == 0
+    }
+
+    /// Particle names, in scene order.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
+    /// Positions, metres.
+    pub fn positions(&self) -> &[DVec2] {
+        &self.state.position
+    }
+
+    /// Velocities, metres per second.
+    pub fn velocities(&self) -> &[DVec2] {
+        &self.state.velocity
+    }
+
+    /// Radii, metres.
+    pub fn radii(&self) -> &[f64] {
+        &self.radius
+    }
+
+    /// Whether particle `i` is fixed.
+    pub fn is_fixed(&self, i: usize) -> bool {
+        self.forces.is_fixed(i)
+    }
+
+    /// The integration method.
+    pub fn integrator(&self) -> Integrator {
+        self.integrator
+    }
+
+    /// The time step (for `dopri5` the largest step), seconds.
+    pub fn time_step(&self) -> f64 {
+        self.time_step
+    }
+
+    /// Integration steps taken so far (accepted steps for `dopri5`).
+    pub fn steps_taken(&self) -> u64 {
+        self.steps
+    }
+
+    /// Advances by one time step.
+    ///
+    /// # Errors
+    /// When the state becomes non-finite or the adaptive integrator fails.
+    pub fn step(&mut self) -> Result<(), SimulationError> {
+        self.step_to(self.state.time + self.time_step)
+    }
+
+    /// Advances to exactly `time` seconds (nothing happens if that is not in the future).
+    ///
+    /// # Errors
+    /// When the state becomes non-finite or the adaptive integrator fails; the state is
+    /// then the one at which the failure was found.
+    pub fn step_to(&mut self, time: f64) -> Result<(), SimulationError> {
+        while self.state.time < time {
+            let remaining = time - self.state.time;
+            // Within a hair of the target, one step lands on it: no sliver steps.
+            let last = remaining <= self.time_step * (1.0 + 1e-9);
+            let taken = self.advance(if last { remaining } else { self.time_step })?;
+            if last && taken >= remaining {
+                self.state.time = time;
+            }
+        }
+        Ok(())
+    }
+
+    /// One step of at most `max_step` seconds: the whole pipeline. Returns the step
+    /// taken.
+    fn advance(&mut self, max_step: f64) -> Result<f64, SimulationError> {
+        let taken = integrators::advance(
+            self.integrator,
+            &self.forces,
+            &mut self.state,
+            max_step,
+            self.tolerance,
+            &mut self.work,
+        )
+        .map_err(|_| SimulationError::StepTooSmall {
+            time: self.state.time,
+            tolerance: self.tolerance,
+        })?;
+        self.steps += 1;
+        if let Some(i) = self.state.first_non_finite() {
+            return Err(SimulationError::NonFinite {
+                particle: self.names[i].clone(),
+                time: self.state.time,
+            });
+        }
+        Ok(taken)
+    }
+
+    /// The acceleration of every particle from the smooth forces at this instant, m/s².
+    pub fn accelerations(&self) -> Vec<DVec2> {
+        let mut a = vec![DVec2::ZERO; self.len()];
+        self.forces
+            .accelerations(&self.state.position, &self.state.velocity, &mut a);
+        a
+    }
+
+    /// Energies by kind and total momentum at this instant.
+    pub fn diagnostics(&self) -> Diagnostics {
+        diagnostics::measure(&self.forces, &self.state)
+    }
+
+    /// Everything about particle `i` at this instant; `accelerations` from
+    /// [`Self::accelerations`].
+    pub fn particle(&self, i: usize, accelerations: &[DVec2]) -> ParticleReadout {
+        diagnostics::particle(&self.forces, &self.state, accelerations, i)
+    }
+}

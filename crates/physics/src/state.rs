@@ -1,0 +1,33 @@
+//! The runtime state the integrators touch: positions and velocities as
+//! structure-of-arrays, indexed by particle in scene order.
+//!
+//! Names, colours and radii live elsewhere ([`crate::Simulation`] keeps them): the hot
+//! loops read only these arrays and the force model's per-particle constants, so they
+//! stream through memory without loading bookkeeping they never use.
+
+use glam::DVec2;
+
+/// Positions and velocities at one instant.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub(crate) struct State {
+    /// Seconds since the start.
+    pub time: f64,
+    /// Metres, one per particle.
+    pub position: Vec<DVec2>,
+    /// Metres per second, one per particle.
+    pub velocity: Vec<DVec2>,
+}
+
+impl State {
+    pub fn len(&self) -> usize {
+        self.position.len()
+    }
+
+    /// The first particle whose position or velocity is not finite.
+    pub fn first_non_finite(&self) -> Option<usize> {
+        self.position
+            .iter()
+            .zip(&self.velocity)
+            .position(|(x, v)| !x.is_finite() || !v.is_finite())
+    }
+}

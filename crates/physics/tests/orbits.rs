@@ -1,0 +1,95 @@
+//! Kepler orbits around a fixed sun with G·M = 1 (G set to 1, M = 1 kg): the closed-form
+//! circular orbit has radius 1, speed 1 and period 2π; an ellipse conserves the energy
+//! v²/2 − 1/r exactly.
+
+use std::f64::consts::PI;
+
+use physics::{DVec2, Integrator, Particle, Scene, Simulation, World};
+
+fn kepler(integrator: Integrator, time_step: f64, speed: f64) -> Scene {
+    let mut world = World::weightless();
+    world.gravitational_constant = 1.0;
+    let mut scene = Scene::new()
+        .with_world(world)
+        .with_integrator(integrator, time_step)
+        .with_particle(Particle::new("Sun", 1.0).fixed())
+        .with_particle(
+            Particle::new("Planet", 1e-9)
+                .radius(0.01)
+                .position([1.0, 0.0])
+                .velocity([0.0, speed]),
+        );
+    scene.simulation.tolerance = 1e-12;
+    scene
+}
+
+/// After exactly one period the planet is back at its start: dopri5 at tolerance 1e-12
+/// keeps the accumulated error of ~10³ steps near 1e-10, well within 1e-8 of the radius.
+#[test]
+fn circular_orbit_returns_to_its_start_after_one_period_with_dopri5() {
+    let mut simulation = Simulation::new(&kepler(Integrator::Dopri5, 0.05, 1.0)).unwrap();
+    simulation.step_to(2.0 * PI).unwrap();
+    let miss = simulation.positions()[1].distance(DVec2::new(1.0, 0.0));
+    assert!(miss < 1e-8, "missed the start by {miss} m on a 1 m orbit");
+    // Half way round it is at the opposite point, at the same radius.
+    let mut simulation = Simulation::new(&kepler(Integrator::Dopri5, 0.05, 1.0)).unwrap();
+    simulation.step_to(PI).unwrap();
+    let miss = simulation.positions()[1].distance(DVec2::new(-1.0, 0.0));
+    assert!(miss < 1e-8, "half-period position off by {miss} m");
+}
+
+/// Energy per unit mass of the planet, v²/2 − GM/r.
+fn specific_energy(simulation: &Simulation) -> f64 {
+    let (x, v) = (simulation.positions()[1], simulation.velocities()[1]);
+    0.5 * v.length_squared() - 1.0 / x.length()
+}
+
+/// The largest |ΔE| and the mean ΔE over orbits `first..last` (period `period`).
+fn energy_error(
+    simulation: &mut Simulation,
+    start: f64,
+    period: f64,
+    orbits: std::ops::Range<u32>,
+) -> (f64, f64) {
+    let samples_per_orbit = 200;
+    let (mut worst, mut sum, mut count) = (0.0_f64, 0.0, 0.0);
+    for k in orbits.start * samples_per_orbit..orbits.end * samples_per_orbit {
+        simulation
+            .step_to(f64::from(k) * period / f64::from(samples_per_orbit))
+            .expect("the orbit integrates");
+        let error = specific_energy(simulation) - start;
+        worst = worst.max(error.abs());
+        sum += error;
+        count += 1.0;
+    }
+    (worst, sum / count)
+}
+
+/// Velocity Verlet is symplectic: on an eccentric orbit (e ≈ 0.44) its energy error
+/// oscillates within each orbit but does not grow. Over orbits 90–100 it must be no larger
+/// than over orbits 0–10 (20 % allowance for sampling different phases), and its mean
+/// must not have moved by more than a tenth of that amplitude — a secular drift of
+/// even 1 % of the amplitude per orbit would break both.
+#[test]
+fn verlet_energy_error_on_an_eccentric_orbit_stays_bounded_over_100_orbits() {
+    let speed: f64 = 1.2;
+    let semi_major_axis = 1.0 / (2.0 - speed * speed);
+    let period = 2.0 * PI * semi_major_axis.powf(1.5);
+    let mut simulation = Simulation::new(&kepler(Integrator::Verlet, 2e-3, speed)).unwrap();
+    let start = specific_energy(&simulation);
+    let (early_worst, early_mean) = energy_error(&mut simulation, start, period, 0..10);
+    simulation.step_to(90.0 * period).unwrap();
+    let (late_worst, late_mean) = energy_error(&mut simulation, start, period, 90..100);
+    assert!(
+        early_worst > 0.0 && early_worst < 1e-4,
+        "early amplitude {early_worst}"
+    );
+    assert!(
+        late_worst <= 1.2 * early_worst,
+        "grew from {early_worst} to {late_worst}"
+    );
+    assert!(
+        (late_mean - early_mean).abs() < 0.1 * early_worst,
+        "mean drifted from {early_mean} to {late_mean} (amplitude {early_worst})"
+    );
+}

@@ -43,6 +43,14 @@ examples!(
     "spring-damped-heavy",
     "orbit",
     "charged-pair",
+    "collision",
+    "ramp-slides",
+    "ramp-bounces",
+    "paper-gravitation",
+    "paper-coulomb",
+    "newtons-cradle",
+    "marble-run",
+    "ball-pit",
 );
 
 /// The built-in scene with this name.

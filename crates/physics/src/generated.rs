@@ -2,7 +2,7 @@
 //! processing-time table, where listing a thousand particles in a file would help nobody.
 //! Layouts are deterministic (no random numbers), so every run measures the same scene.
 
-use crate::scene::{Particle, Scene, World};
+use crate::scene::{Particle, Scene, Vector, World};
 
 /// The golden angle, radians: successive points of a sunflower spiral never line up.
 const GOLDEN_ANGLE: f64 = 2.399_963_229_728_653;
@@ -24,6 +24,49 @@ pub fn charged_cloud(n: usize) -> Scene {
                 .charge(charge)
                 .position([radius * angle.cos(), radius * angle.sin()]),
         );
+    }
+    scene
+}
+
+/// `n` balls of radius 0.1 m and 1 kg dropped into a box with restitution 0.5 under
+/// gravity: a grid 0.3 m apart, each with a small sideways velocity that differs ball to
+/// ball so the pile does not stack in columns. The box is as wide as a square of the
+/// balls would be tall, and tall enough for the grid.
+#[must_use]
+pub fn ball_pit(n: usize) -> Scene {
+    const SPACING: f64 = 0.3;
+    const RADIUS: f64 = 0.1;
+    let per_row = n.isqrt() + usize::from(n.isqrt() * n.isqrt() < n);
+    let per_row = per_row.max(1);
+    let width = per_row as f64 * SPACING;
+    let rows = n.div_ceil(per_row);
+    let height = rows as f64 * SPACING + 2.0;
+    let mut world = World {
+        gravitation: false,
+        electrostatics: false,
+        restitution: 0.5,
+        ..World::default()
+    };
+    world.bounds = Some(crate::scene::Bounds {
+        min: Vector::cartesian(-width / 2.0, 0.0),
+        max: Vector::cartesian(width / 2.0, height),
+    });
+    let mut scene = Scene::new().with_world(world);
+    scene.name = Some(format!("Ball pit of {n}"));
+    scene.description = Some(format!(
+        "{n} balls of 0.1 m dropped into a box; impacts lose energy (restitution 0.5) until the pile rests."
+    ));
+    for i in 0..n {
+        let (row, column) = (i / per_row, i % per_row);
+        let x = -width / 2.0 + SPACING * (column as f64 + 0.5);
+        let y = 1.0 + SPACING * row as f64;
+        let sideways = (i as f64 * GOLDEN_ANGLE).sin() * 0.5;
+        let mut ball = Particle::new(format!("b{}", i + 1), 1.0)
+            .radius(RADIUS)
+            .position([x, y])
+            .velocity([sideways, 0.0]);
+        ball.color = Some(crate::scene::Color::palette(i));
+        scene.particles.push(ball);
     }
     scene
 }

@@ -9,6 +9,7 @@
 //! The library knows nothing about screens, files, threads or clocks: time is passed in,
 //! text is passed in and out as strings. It builds for `wasm32-unknown-unknown`.
 
+mod contacts;
 mod diagnostics;
 mod examples;
 mod forces;

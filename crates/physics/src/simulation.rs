@@ -1,9 +1,15 @@
 //! A running scene: built from a [`Scene`], advanced in time, read at any instant.
 //!
 //! One step, in order (the whole pipeline is [`Simulation::advance`]):
-//! 1. smooth forces (fields, pairs, springs) are integrated by the scene's method over
-//!    one step of at most the time step;
-//! 2. the new state is checked for non-finite values, which stop the run with the
+//! 1. contacts at the start: impacts happening now are applied, and particles resting on
+//!    ramps and walls are put under their normal force and friction;
+//! 2. the smooth forces (fields, pairs, springs, surfaces) are integrated over a trial
+//!    step of at most the time step;
+//! 3. impacts inside the trial step are located and applied in time order: within the
+//!    step for particles moved only by the field, or, for particles feeling pairwise
+//!    forces or springs, by integrating the system again to exactly that instant;
+//! 4. resting contacts between particles are resolved (no approach, no growing overlap);
+//! 5. the new state is checked for non-finite values, which stop the run with the
 //!    particle's name and the time.
 //!
 //! `step_to(t)` shortens the last step so that it lands exactly on `t`: a sample at
@@ -11,6 +17,7 @@
 
 use glam::DVec2;
 
+use crate::contacts::{Contacts, Impact};
 use crate::diagnostics::{self, Diagnostics, ParticleReadout};
 use crate::forces::ForceModel;
 use crate::integrators::{self, Integrator, Workspace};
@@ -51,7 +58,11 @@ pub struct Simulation {
     names: Vec<String>,
     radius: Vec<f64>,
     forces: ForceModel,
+    contacts: Contacts,
     state: State,
+    /// The state at the start of the step being taken, to integrate again from it when
+    /// an impact interrupts the step.
+    start: State,
     integrator: Integrator,
     time_step: f64,
     tolerance: f64,
@@ -70,10 +81,13 @@ impl Simulation {
             return Err(LoadError { problems });
         }
         let particles = &scene.particles;
-        Ok(Self {
+        let forces = ForceModel::new(scene);
+        let mut simulation = Self {
             names: particles.iter().map(|p| p.name.clone()).collect(),
             radius: particles.iter().map(|p| p.radius).collect(),
-            forces: ForceModel::new(scene),
+            contacts: Contacts::new(scene, &forces),
+            forces,
+            start: State::default(),
             state: State {
                 time: 0.0,
                 position: particles.iter().map(|p| p.position.to_dvec2()).collect(),
@@ -94,7 +108,14 @@ impl Simulation {
             tolerance: scene.simulation.tolerance,
             work: Workspace::default(),
             steps: 0,
-        })
+        };
+        // Contacts from the start: a particle placed on a ramp is held by it at t = 0.
+        simulation.contacts.begin_step(
+            &mut simulation.state,
+            &mut simulation.forces,
+            simulation.time_step,
+        );
+        Ok(simulation)
     }
 
     /// Simulated time, seconds.
@@ -181,7 +202,14 @@ impl Simulation {
     /// One step of at most `max_step` seconds: the whole pipeline. Returns the step
     /// taken.
     fn advance(&mut self, max_step: f64) -> Result<f64, SimulationError> {
-        let taken = integrators::advance(
+        if self
+            .contacts
+            .begin_step(&mut self.state, &mut self.forces, max_step)
+        {
+            self.work.start_acceleration = None;
+        }
+        self.start.clone_from(&self.state);
+        let mut taken = integrators::advance(
             self.integrator,
             &self.forces,
             &mut self.state,
@@ -193,6 +221,28 @@ impl Simulation {
             time: self.state.time,
             tolerance: self.tolerance,
         })?;
+        let interruption =
+            self.contacts
+                .resolve_impacts(&self.start, &mut self.state, taken, &self.forces);
+        if self.contacts.changed_paths() {
+            self.work.start_acceleration = None;
+        }
+        let mut struck = [usize::MAX; 2];
+        if let Some((time, impact)) = interruption {
+            let step = taken;
+            taken = self.integrate_to_impact(time, step, impact);
+            self.contacts.patch(&mut self.state, taken, step);
+            self.contacts
+                .apply(impact, &mut self.state, &self.forces, taken);
+            self.work.start_acceleration = None;
+            struck = impact.particles();
+        }
+        if self
+            .contacts
+            .settle(&mut self.state, &self.forces, taken, &struck)
+        {
+            self.work.start_acceleration = None;
+        }
         self.steps += 1;
         if let Some(i) = self.state.first_non_finite() {
             return Err(SimulationError::NonFinite {
@@ -201,6 +251,36 @@ impl Simulation {
             });
         }
         Ok(taken)
+    }
+
+    /// Integrates from the step's start to the instant of `impact`, first estimated at
+    /// `estimate` seconds into a step of `limit`, refined by Newton's method on the gap of
+    /// the integrated state (the path used to find it is only an interpolation). Returns
+    /// the time integrated.
+    fn integrate_to_impact(&mut self, estimate: f64, limit: f64, impact: Impact) -> f64 {
+        let tolerance = 1e-12 * self.contacts.reach(impact);
+        let mut time = estimate;
+        for attempt in 0..4 {
+            self.state.clone_from(&self.start);
+            integrators::advance_exactly(
+                self.integrator,
+                &self.forces,
+                &mut self.state,
+                time,
+                &mut self.work,
+            );
+            let (gap, _, approach) = self.contacts.measure(impact, &self.state);
+            if gap.abs() <= tolerance || approach <= 0.0 || attempt == 3 {
+                break;
+            }
+            let refined = time + gap / approach;
+            if !(refined > 0.0 && refined <= limit) || (refined - time).abs() <= f64::EPSILON * time
+            {
+                break;
+            }
+            time = refined;
+        }
+        time
     }
 
     /// The acceleration of every particle from the smooth forces at this instant, m/s².

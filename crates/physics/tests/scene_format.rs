@@ -182,7 +182,7 @@ gravitational_constant = 1e-3
 electrostatics = true
 coulomb_constant = 0.1
 restitution = 0.25
-bounds = { min = [-5.5, -1e3], max = [5.5, 0.1] }
+bounds = { min = [-5.5, -1e3], max = [55.5, 100.1] }
 [simulation]
 integrator = "dopri5"
 time_step = 0.1

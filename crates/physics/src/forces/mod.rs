@@ -4,12 +4,14 @@
 
 pub(crate) mod coulomb;
 pub(crate) mod gravitation;
+pub(crate) mod normal;
 pub(crate) mod spring;
 pub(crate) mod uniform;
 
 use glam::DVec2;
 
 use crate::scene::{Endpoint, Scene};
+pub(crate) use normal::SurfaceContact;
 pub(crate) use spring::SpringLink;
 
 /// The constants of every force law, in runtime form (SI, indexed by particle).
@@ -31,6 +33,8 @@ pub(crate) struct ForceModel {
     /// The particles that take part in pairwise forces, ascending.
     pub interacting: Vec<usize>,
     pub springs: Vec<SpringLink>,
+    /// Particles resting on or sliding along a ramp or wall during the current step.
+    pub surface_contacts: Vec<SurfaceContact>,
 }
 
 impl ForceModel {
@@ -84,6 +88,7 @@ impl ForceModel {
                     damping: s.damping,
                 })
                 .collect(),
+            surface_contacts: Vec::new(),
         }
     }
 
@@ -104,6 +109,10 @@ impl ForceModel {
         }
         for (i, a) in out.iter_mut().enumerate() {
             *a = uniform::acceleration(self.uniform[i]) + *a * self.inverse_mass[i];
+        }
+        // Last: a surface answers the sum of all the other forces.
+        for contact in &self.surface_contacts {
+            contact.apply(&mut out[contact.particle]);
         }
     }
 

@@ -64,6 +64,12 @@ impl SpringLink {
         self.to.add_force(force, -f);
     }
 
+    /// Whether particle `i` is at one of the ends.
+    pub fn touches(&self, i: usize) -> bool {
+        matches!(self.from, End::Particle(p) if p == i)
+            || matches!(self.to, End::Particle(p) if p == i)
+    }
+
     /// Current length, metres.
     pub fn length(&self, x: &[DVec2]) -> f64 {
         (self.to.position(x) - self.from.position(x)).length()

@@ -122,6 +122,17 @@ pub(crate) fn step(
     }
 }
 
+/// One step of exactly `h`, accepted whatever its error estimate.
+pub(crate) fn step_exactly(forces: &ForceModel, state: &mut State, h: f64, work: &mut Workspace) {
+    let n = state.len();
+    work.prepare(7, n);
+    forces.accelerations(&state.position, &state.velocity, &mut work.accelerations[0]);
+    work.velocities[0].copy_from_slice(&state.velocity);
+    attempt(forces, state, h, 1.0, work);
+    std::mem::swap(&mut state.position, &mut work.stage.position);
+    std::mem::swap(&mut state.velocity, &mut work.stage.velocity);
+}
+
 /// Computes the seven stages for a step of `h`, leaves the fifth-order solution in
 /// `work.stage` and returns the scaled error norm (≤ 1 to accept).
 fn attempt(

@@ -139,6 +139,28 @@ impl Workspace {
     }
 }
 
+/// Advances `state` by exactly `h` seconds, whatever the method: the adaptive one takes a
+/// single step of `h` without error control (used to integrate to an impact found inside
+/// a step the controller already accepted, so it is no larger than an accepted step).
+pub(crate) fn advance_exactly(
+    method: Integrator,
+    forces: &ForceModel,
+    state: &mut State,
+    h: f64,
+    work: &mut Workspace,
+) {
+    work.start_acceleration = None;
+    match method {
+        Integrator::Euler => euler::step(forces, state, h, work),
+        Integrator::SemiImplicitEuler => semi_implicit_euler::step(forces, state, h, work),
+        Integrator::Verlet => verlet::step(forces, state, h, work),
+        Integrator::Rk4 => rk4::step(forces, state, h, work),
+        Integrator::Dopri5 => dopri5::step_exactly(forces, state, h, work),
+    }
+    state.time += h;
+    work.start_acceleration = None;
+}
+
 /// Advances `state` by one step of at most `max_step` seconds (exactly `max_step` for
 /// the fixed-step methods) and returns the step taken, seconds.
 pub(crate) fn advance(

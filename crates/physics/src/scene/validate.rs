@@ -213,8 +213,31 @@ impl Checker<'_> {
     }
 
     fn particles(&mut self) {
+        let bounds = self
+            .scene
+            .world
+            .bounds
+            .map(|b| (b.min.to_dvec2(), b.max.to_dvec2()));
         for (i, particle) in self.scene.particles.iter().enumerate() {
             let s = Section::Particle(i);
+            let position = particle.position.to_dvec2();
+            if let Some((min, max)) = bounds
+                && position.is_finite()
+                && particle.radius > 0.0
+                && !(position.x - particle.radius >= min.x
+                    && position.x + particle.radius <= max.x
+                    && position.y - particle.radius >= min.y
+                    && position.y + particle.radius <= max.y)
+            {
+                self.report(
+                    s,
+                    "position",
+                    &format!(
+                        "position [{}, {}] puts the particle (radius {}) outside the world bounds",
+                        position.x, position.y, particle.radius
+                    ),
+                );
+            }
             self.number(s, "mass", Rule::Positive, particle.mass);
             self.number(s, "radius", Rule::Positive, particle.radius);
             self.number(s, "charge", Rule::Finite, particle.charge);

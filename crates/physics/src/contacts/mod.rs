@@ -1,0 +1,929 @@
+//! Contact physics: impacts between particles and with ramps and walls, and resting or
+//! sliding contact.
+//!
+//! Two regimes, told apart by the approach speed at contact:
+//! - **Impacts** (approach faster than `resting_speed`): the instant of contact is found
+//!   within the step ([`time_of_impact`]) and an impulse is applied there: the paper's
+//!   8–10 between particles (with the world's restitution; fixed particles have infinite
+//!   mass) and 17–22 on a ramp or wall (v∥ kept, v⊥ reversed and scaled by the surface's
+//!   restitution). How the rest of the step follows depends on the particles:
+//!   - an *uncoupled* particle (no pairwise force, no spring) has an acceleration that
+//!     does not depend on the state within the step, so an impulse Δv at τ changes its
+//!     path exactly by Δv (t − τ). Impacts among uncoupled particles are therefore
+//!     processed in time order inside the step, each patching the two paths and
+//!     searching them again against their neighbours: a thousand balls crashing into a
+//!     pile cost one step, not one step per impact;
+//!   - an impact involving a *coupled* particle ends the step there: the whole system is
+//!     integrated again from the start of the step to exactly that instant (the forces
+//!     after the impact differ from the trial's), and the impulse applied.
+//! - **Resting contact** (slower approach, or touching at the start of a step): a particle
+//!   on a ramp or wall is held there for the step by a normal force with friction, part
+//!   of the smooth forces ([`crate::forces::normal`]); touching particles are kept apart by
+//!   inelastic impulses after the step and a small position correction. Without this
+//!   regime a ball settling on a floor would bounce ever lower with infinitely many
+//!   impacts in finite time ("inelastic collapse").
+//!
+//! `resting_speed` is twice what the forces can change an approach speed by in one step
+//! (2·a·h, with a the largest acceleration seen in the last step): an approach slower than
+//! that is indistinguishable, at this step, from a particle pressed onto a surface.
+
+// Particle indices are stored as u32 in contact lists, halving their memory; a scene has
+// far fewer than 2³² particles.
+#![expect(
+    clippy::cast_possible_truncation,
+    reason = "u32 particle indices, see above"
+)]
+
+pub(crate) mod broad_phase;
+pub(crate) mod obstacles;
+pub(crate) mod time_of_impact;
+
+use std::cmp::{Ordering, Reverse};
+use std::collections::{BinaryHeap, HashSet};
+
+use glam::DVec2;
+
+use self::broad_phase::{Aabb, BroadPhase};
+use self::obstacles::{Obstacle, Shape};
+use self::time_of_impact::{Region, control_points, earliest_entry};
+use crate::forces::{ForceModel, SurfaceContact};
+use crate::scene::Scene;
+use crate::state::State;
+
+/// Contact closer than this fraction of the reach (sum of radii, or radius plus half a
+/// ramp's thickness) counts as touching.
+const TOUCHING: f64 = 1e-6;
+/// Overlap tolerated between resting particles before positions are corrected, as a
+/// fraction of the smaller radius; well under the 1 % a user could notice.
+const ALLOWED_OVERLAP: f64 = 1e-3;
+/// Fraction of the excess overlap corrected per position sweep: gentle enough not to pop
+/// a pile.
+const CORRECTION: f64 = 0.5;
+/// Position sweeps per step.
+const POSITION_SWEEPS: usize = 4;
+/// Most velocity sweeps of the resting-contact solver (it stops earlier when no contact
+/// approaches): enough for a pile a few dozen balls deep to pass its weight down.
+const ITERATIONS: usize = 24;
+
+/// What hits what.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+pub(crate) enum Impact {
+    /// Particles `i < j`.
+    Pair(usize, usize),
+    /// A particle and an obstacle.
+    Obstacle(usize, usize),
+}
+
+impl Impact {
+    /// The particles involved (`usize::MAX` for an obstacle's place).
+    pub fn particles(self) -> [usize; 2] {
+        match self {
+            Self::Pair(i, j) => [i, j],
+            Self::Obstacle(p, _) => [p, usize::MAX],
+        }
+    }
+}
+
+/// The contact state of a simulation.
+#[derive(Clone, Debug)]
+pub(crate) struct Contacts {
+    obstacles: Vec<Obstacle>,
+    obstacle_boxes: Vec<Option<Aabb>>,
+    radius: Vec<f64>,
+    /// Particle–particle restitution.
+    restitution: f64,
+    /// The largest acceleration seen in the last step, m/s².
+    acceleration_scale: f64,
+    broad: BroadPhase,
+    boxes: Vec<Aabb>,
+    /// Pairs (i < j) touching at the start of the step, ascending.
+    touching_pairs: Vec<(u32, u32)>,
+    /// (particle, obstacle) touching at the start of the step, ascending.
+    touching_obstacles: Vec<(u32, u32)>,
+    /// The resting solver's accumulated impulse of each touching pair and obstacle
+    /// contact (N·s, in the order of the lists above), started from the last step's.
+    pair_impulses: Vec<f64>,
+    obstacle_impulses: Vec<f64>,
+    /// The last step's contacts and impulses, for warm starting, and its length.
+    last_pairs: Vec<((u32, u32), f64)>,
+    last_obstacles: Vec<((u32, u32), f64)>,
+    last_step: f64,
+    /// Whether each particle feels a pairwise force or a spring (see the module doc).
+    coupled: Vec<bool>,
+    /// Each particle's path through the step.
+    paths: Vec<Path>,
+    /// Bumped when a particle's path changes, to recognise stale queued impacts.
+    versions: Vec<u32>,
+    /// Particles whose paths impacts changed during this step.
+    changed: Vec<u32>,
+    /// Impacts already applied in this step: not searched again until the next.
+    impacted: HashSet<Impact>,
+    queue: BinaryHeap<Reverse<Event>>,
+    neighbours: Vec<u32>,
+}
+
+/// A particle's path through the step: the cubic Hermite curve through the integrator's
+/// state at both ends, plus the kicks of the impacts applied inside the step. Kicks only
+/// ever come in time order and the path is only read after the latest, so their running
+/// sums suffice: a kick Δv at τ adds Δv (t − τ) to every later position.
+#[derive(Clone, Copy, Debug)]
+struct Path {
+    start: (DVec2, DVec2),
+    end: (DVec2, DVec2),
+    /// Σ Δv of the kicks so far, m/s.
+    kick: DVec2,
+    /// Σ Δv τ of the kicks so far, m.
+    kick_moment: DVec2,
+}
+
+impl Path {
+    /// Position and velocity at `t` seconds into a step of `h`. At the ends the
+    /// integrator's values are returned exactly.
+    fn at(&self, t: f64, h: f64) -> (DVec2, DVec2) {
+        let ((x0, v0), (x1, v1)) = (self.start, self.end);
+        let s = (t / h).clamp(0.0, 1.0);
+        let (s2, s3) = (s * s, s * s * s);
+        let position = x0 * (2.0 * s3 - 3.0 * s2 + 1.0)
+            + v0 * (h * (s3 - 2.0 * s2 + s))
+            + x1 * (3.0 * s2 - 2.0 * s3)
+            + v1 * (h * (s3 - s2));
+        let velocity = (x1 - x0) * ((6.0 * s - 6.0 * s2) / h)
+            + v0 * (3.0 * s2 - 4.0 * s + 1.0)
+            + v1 * (3.0 * s2 - 2.0 * s);
+        (
+            position + self.kick * t - self.kick_moment,
+            velocity + self.kick,
+        )
+    }
+
+    /// Bézier control points of the path from `from` to the end of a step of `h`.
+    fn after(&self, from: f64, h: f64) -> [DVec2; 4] {
+        let ((x0, v0), (x1, v1)) = (self.start, self.end);
+        let p = control_points(x0, v0, x1, v1, h);
+        let u = (from / h).clamp(0.0, 1.0);
+        let q1 = p[1].lerp(p[2], u);
+        let q2 = p[2].lerp(p[3], u);
+        let r1 = q1.lerp(q2, u);
+        let r0 = p[0].lerp(p[1], u).lerp(q1, u);
+        let mut points = [r0.lerp(r1, u), r1, q2, p[3]];
+        let offset = self.kick * from - self.kick_moment;
+        for (m, point) in points.iter_mut().enumerate() {
+            *point += offset + self.kick * ((h - from) * m as f64 / 3.0);
+        }
+        points
+    }
+}
+
+/// An impact found inside the step, valid while both paths are those it was found on.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Event {
+    /// Seconds into the step.
+    time: f64,
+    impact: Impact,
+    versions: (u32, u32),
+}
+
+impl Eq for Event {}
+
+impl PartialOrd for Event {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Event {
+    fn cmp(&self, other: &Self) -> Ordering {
+        self.time
+            .total_cmp(&other.time)
+            .then(self.impact.cmp(&other.impact))
+            .then(self.versions.cmp(&other.versions))
+    }
+}
+
+impl Contacts {
+    pub fn new(scene: &Scene, forces: &ForceModel) -> Self {
+        let obstacles = obstacles::obstacles(scene);
+        Self {
+            obstacle_boxes: obstacles
+                .iter()
+                .map(|o| o.shape.bounding_box().map(|(min, max)| Aabb { min, max }))
+                .collect(),
+            obstacles,
+            radius: scene.particles.iter().map(|p| p.radius).collect(),
+            restitution: scene.world.restitution,
+            acceleration_scale: forces
+                .uniform
+                .iter()
+                .map(|a| a.length())
+                .fold(0.0, f64::max),
+            broad: BroadPhase::default(),
+            boxes: Vec::new(),
+            touching_pairs: Vec::new(),
+            touching_obstacles: Vec::new(),
+            pair_impulses: Vec::new(),
+            obstacle_impulses: Vec::new(),
+            last_pairs: Vec::new(),
+            last_obstacles: Vec::new(),
+            last_step: 0.0,
+            coupled: (0..scene.particles.len())
+                .map(|i| {
+                    !forces.is_fixed(i)
+                        && (forces.interacting.contains(&i)
+                            || forces.springs.iter().any(|s| s.touches(i)))
+                })
+                .collect(),
+            paths: Vec::new(),
+            versions: Vec::new(),
+            changed: Vec::new(),
+            impacted: HashSet::new(),
+            queue: BinaryHeap::new(),
+            neighbours: Vec::new(),
+        }
+    }
+
+    fn resting_speed(&self, h: f64) -> f64 {
+        2.0 * self.acceleration_scale * h + 1e-12
+    }
+
+    /// Finds what touches at the start of a step of `h`, applies the impacts happening now
+    /// (a struck row of balls passes the blow along here), and puts particles resting on
+    /// surfaces under their normal force. Returns whether velocities or the forces
+    /// changed.
+    pub fn begin_step(&mut self, state: &mut State, forces: &mut ForceModel, h: f64) -> bool {
+        let had_surface_contacts = !forces.surface_contacts.is_empty();
+        forces.surface_contacts.clear();
+        self.find_touching(state, forces);
+        let resting_speed = self.resting_speed(h);
+        let mut changed = self.impacts_now(state, forces, resting_speed);
+        // Friction needs to know how hard the other forces press and pull.
+        let frictional = self
+            .touching_obstacles
+            .iter()
+            .any(|&(_, k)| self.obstacles[k as usize].friction > 0.0);
+        let mut free = Vec::new();
+        if frictional {
+            free.resize(state.len(), DVec2::ZERO);
+            forces.accelerations(&state.position, &state.velocity, &mut free);
+        }
+        for &(p, k) in &self.touching_obstacles {
+            let (p, obstacle) = (p as usize, &self.obstacles[k as usize]);
+            let (distance, normal) = obstacle.shape.distance(state.position[p]);
+            let approach = -state.velocity[p].dot(normal);
+            if approach < -resting_speed {
+                continue; // leaving the surface
+            }
+            if approach > 0.0 {
+                state.velocity[p] += normal * approach;
+                changed = true;
+            }
+            if distance < self.radius[p] {
+                // Sit exactly on the surface.
+                state.position[p] += normal * (self.radius[p] - distance);
+            }
+            let tangential = state.velocity[p] - normal * state.velocity[p].dot(normal);
+            let sliding = if obstacle.friction > 0.0 {
+                let (pressing, pull) =
+                    (-free[p].dot(normal), free[p] - normal * free[p].dot(normal));
+                let limit = obstacle.friction * pressing.max(0.0);
+                if tangential.length() <= limit * h && pull.length() <= limit {
+                    // Friction stops it within this step and can hold it: static.
+                    state.velocity[p] -= tangential;
+                    changed |= tangential != DVec2::ZERO;
+                    None
+                } else {
+                    // Sliding, or about to start sliding the way it is pulled.
+                    tangential.try_normalize().or_else(|| pull.try_normalize())
+                }
+            } else {
+                None
+            };
+            forces.surface_contacts.push(SurfaceContact {
+                particle: p,
+                normal,
+                friction: obstacle.friction,
+                sliding,
+            });
+        }
+        changed || had_surface_contacts || !forces.surface_contacts.is_empty()
+    }
+
+    /// Fills the touching lists from the current positions.
+    fn find_touching(&mut self, state: &State, forces: &ForceModel) {
+        let n = state.len();
+        self.boxes.clear();
+        self.boxes.extend(
+            (0..n).map(|i| Aabb::around(&[state.position[i]], self.radius[i] * (1.0 + TOUCHING))),
+        );
+        let radius = &self.radius;
+        let position = &state.position;
+        self.touching_pairs.clear();
+        let candidates = self
+            .broad
+            .pairs(&self.boxes, |i, j| forces.is_fixed(i) && forces.is_fixed(j));
+        self.touching_pairs
+            .extend(candidates.iter().copied().filter(|&(i, j)| {
+                let (i, j) = (i as usize, j as usize);
+                let reach = radius[i] + radius[j];
+                position[i].distance(position[j]) - reach <= TOUCHING * reach
+            }));
+        self.touching_obstacles.clear();
+        for p in (0..n).filter(|&p| !forces.is_fixed(p)) {
+            for (k, obstacle) in self.obstacles.iter().enumerate() {
+                if self.obstacle_boxes[k].is_some_and(|b| !b.overlaps(&self.boxes[p])) {
+                    continue;
+                }
+                let reach = self.radius[p] + half_thickness(&obstacle.shape);
+                if obstacle.shape.distance(position[p]).0 - self.radius[p] <= TOUCHING * reach {
+                    self.touching_obstacles.push((p as u32, k as u32));
+                }
+            }
+        }
+        let remembered = |last: &[((u32, u32), f64)], key: (u32, u32)| {
+            last.binary_search_by(|(k, _)| k.cmp(&key))
+                .map_or(0.0, |at| last[at].1)
+        };
+        self.pair_impulses.clear();
+        self.pair_impulses.extend(
+            self.touching_pairs
+                .iter()
+                .map(|&key| remembered(&self.last_pairs, key)),
+        );
+        self.obstacle_impulses.clear();
+        self.obstacle_impulses.extend(
+            self.touching_obstacles
+                .iter()
+                .map(|&key| remembered(&self.last_obstacles, key)),
+        );
+    }
+
+    /// Applies every impact between touching things that approach faster than
+    /// `resting_speed`, pass after pass until none does. A contact still approaching after
+    /// many passes (a ball squeezed between two others) is made inelastic, which ends it.
+    fn impacts_now(&self, state: &mut State, forces: &ForceModel, resting_speed: f64) -> bool {
+        let max_passes = 2 * state.len() + 8;
+        let mut changed = false;
+        for pass in 0..=max_passes {
+            let last = pass == max_passes;
+            let mut any = false;
+            for &(i, j) in &self.touching_pairs {
+                let impact = Impact::Pair(i as usize, j as usize);
+                any |= self.collide(impact, state, forces, resting_speed, last);
+            }
+            for &(p, k) in &self.touching_obstacles {
+                let impact = Impact::Obstacle(p as usize, k as usize);
+                any |= self.collide(impact, state, forces, resting_speed, last);
+            }
+            changed |= any;
+            if !any {
+                break;
+            }
+        }
+        changed
+    }
+
+    /// Applies the impulse of `impact` if its approach is faster than `resting_speed`
+    /// (inelastic when `inelastic`). Returns whether it did.
+    fn collide(
+        &self,
+        impact: Impact,
+        state: &mut State,
+        forces: &ForceModel,
+        resting_speed: f64,
+        inelastic: bool,
+    ) -> bool {
+        let (_, normal, approach) = self.measure(impact, state);
+        if approach <= resting_speed {
+            return false;
+        }
+        let restitution = if inelastic {
+            0.0
+        } else {
+            self.restitution_of(impact)
+        };
+        apply_impulse(
+            impact,
+            normal,
+            approach * (1.0 + restitution),
+            state,
+            forces,
+        );
+        true
+    }
+
+    fn restitution_of(&self, impact: Impact) -> f64 {
+        match impact {
+            Impact::Pair(..) => self.restitution,
+            Impact::Obstacle(_, k) => self.obstacles[k].restitution,
+        }
+    }
+
+    /// Gap (metres, negative when overlapping), unit normal (from the first body, or the
+    /// surface, towards the particle) and approach speed (m/s, positive when closing).
+    pub fn measure(&self, impact: Impact, state: &State) -> (f64, DVec2, f64) {
+        let (first, second) = particles_of(impact);
+        let at = |i: usize| (state.position[i], state.velocity[i]);
+        self.geometry(impact, at(first), second.map(at))
+    }
+
+    /// [`Self::measure`] from the (position, velocity) of the first particle and, for a
+    /// pair, the second.
+    fn geometry(
+        &self,
+        impact: Impact,
+        (xi, vi): (DVec2, DVec2),
+        second: Option<(DVec2, DVec2)>,
+    ) -> (f64, DVec2, f64) {
+        match (impact, second) {
+            (Impact::Pair(i, j), Some((xj, vj))) => {
+                let offset = xj - xi;
+                let normal = offset.try_normalize().unwrap_or(DVec2::X);
+                (
+                    offset.length() - self.radius[i] - self.radius[j],
+                    normal,
+                    (vi - vj).dot(normal),
+                )
+            }
+            (Impact::Obstacle(p, k), _) | (Impact::Pair(p, k), None) => {
+                let (distance, normal) = self.obstacles[k].shape.distance(xi);
+                (distance - self.radius[p], normal, -vi.dot(normal))
+            }
+        }
+    }
+
+    /// The reach of an impact: the distance scale its gap is judged against.
+    pub fn reach(&self, impact: Impact) -> f64 {
+        match impact {
+            Impact::Pair(i, j) => self.radius[i] + self.radius[j],
+            Impact::Obstacle(p, k) => self.radius[p] + half_thickness(&self.obstacles[k].shape),
+        }
+    }
+
+    /// Processes the impacts within the step from `start` to `end` (`h` seconds) in time
+    /// order. Impacts among uncoupled particles are applied inside the step and `end` is
+    /// patched with their effect. The first impact involving a coupled particle stops the
+    /// processing: it is returned (seconds into the step), and the caller integrates the
+    /// system to that instant, lays [`Self::patch`] over it and applies [`Self::apply`].
+    /// Touching contacts are the resting solver's and are not searched.
+    pub fn resolve_impacts(
+        &mut self,
+        start: &State,
+        end: &mut State,
+        h: f64,
+        forces: &ForceModel,
+    ) -> Option<(f64, Impact)> {
+        let n = start.len();
+        self.acceleration_scale = (0..n)
+            .map(|i| end.velocity[i].distance(start.velocity[i]) / h)
+            .fold(
+                forces
+                    .uniform
+                    .iter()
+                    .map(|a| a.length())
+                    .fold(0.0, f64::max),
+                f64::max,
+            );
+        let resting_speed = self.resting_speed(h);
+        self.paths.clear();
+        self.paths.extend((0..n).map(|i| Path {
+            start: (start.position[i], start.velocity[i]),
+            end: (end.position[i], end.velocity[i]),
+            kick: DVec2::ZERO,
+            kick_moment: DVec2::ZERO,
+        }));
+        self.versions.clear();
+        self.versions.resize(n, 0);
+        self.changed.clear();
+        self.impacted.clear();
+        self.queue.clear();
+        self.boxes.clear();
+        self.boxes.extend(
+            self.paths
+                .iter()
+                .zip(&self.radius)
+                .map(|(path, r)| Aabb::around(&path.after(0.0, h), *r)),
+        );
+        let touching_pairs = &self.touching_pairs;
+        let candidates = self
+            .broad
+            .pairs(&self.boxes, |i, j| {
+                (forces.is_fixed(i) && forces.is_fixed(j))
+                    || touching_pairs.binary_search(&(i as u32, j as u32)).is_ok()
+            })
+            .to_vec();
+        let mut found = Vec::new();
+        for (i, j) in candidates {
+            if let Some(event) = self.search_pair(i as usize, j as usize, 0.0, h) {
+                found.push(event);
+            }
+        }
+        for p in (0..n).filter(|&p| !forces.is_fixed(p)) {
+            self.search_obstacles(p, 0.0, h, &mut found);
+        }
+        self.queue.extend(found.drain(..).map(Reverse));
+
+        let mut interruption = None;
+        let mut budget = 20 * n + 100;
+        while let Some(Reverse(event)) = self.queue.pop() {
+            let (first, second) = particles_of(event.impact);
+            if (self.versions[first], second.map_or(0, |j| self.versions[j])) != event.versions {
+                continue; // found on a path an earlier impact has since changed
+            }
+            if self.coupled[first] || second.is_some_and(|j| self.coupled[j]) {
+                interruption = Some((event.time, event.impact));
+                break;
+            }
+            if budget == 0 {
+                break; // pathological: leave the rest to the resting solver
+            }
+            budget -= 1;
+            self.apply_local(event, h, resting_speed, forces, &mut found);
+            self.queue.extend(found.drain(..).map(Reverse));
+        }
+        for &p in &self.changed {
+            let (x, v) = self.paths[p as usize].at(h, h);
+            end.position[p as usize] = x;
+            end.velocity[p as usize] = v;
+        }
+        interruption
+    }
+
+    /// Whether impacts inside the last step changed any path.
+    pub fn changed_paths(&self) -> bool {
+        !self.changed.is_empty()
+    }
+
+    /// Overwrites the particles whose paths impacts changed with their state `time`
+    /// seconds into the step (`h`), after the system was integrated to `time`.
+    pub fn patch(&self, state: &mut State, time: f64, h: f64) {
+        for &p in &self.changed {
+            let (x, v) = self.paths[p as usize].at(time, h);
+            state.position[p as usize] = x;
+            state.velocity[p as usize] = v;
+        }
+    }
+
+    /// Applies an impact between uncoupled particles at its instant inside the step and
+    /// searches the changed paths again.
+    fn apply_local(
+        &mut self,
+        event: Event,
+        h: f64,
+        resting_speed: f64,
+        forces: &ForceModel,
+        found: &mut Vec<Event>,
+    ) {
+        let (first, second) = particles_of(event.impact);
+        let (xi, vi) = self.paths[first].at(event.time, h);
+        let other = second.map(|j| self.paths[j].at(event.time, h));
+        let (_, normal, approach) = self.geometry(event.impact, (xi, vi), other);
+        self.impacted.insert(event.impact);
+        if approach <= 0.0 {
+            return;
+        }
+        let restitution = if approach > resting_speed {
+            self.restitution_of(event.impact)
+        } else {
+            0.0
+        };
+        let (dv_first, dv_second) =
+            velocity_changes(event.impact, normal, approach * (1.0 + restitution), forces);
+        let mut moved = vec![(first, dv_first)];
+        if let Some(j) = second {
+            moved.push((j, dv_second));
+        }
+        for &(p, dv) in &moved {
+            if dv == DVec2::ZERO {
+                continue;
+            }
+            let path = &mut self.paths[p];
+            path.kick += dv;
+            path.kick_moment += dv * event.time;
+            self.versions[p] += 1;
+            if !self.changed.contains(&(p as u32)) {
+                self.changed.push(p as u32);
+            }
+        }
+        for &(p, dv) in &moved {
+            if dv == DVec2::ZERO || forces.is_fixed(p) {
+                continue;
+            }
+            let bounds = Aabb::around(&self.paths[p].after(event.time, h), self.radius[p]);
+            self.neighbours.clear();
+            self.broad.query(&bounds, &mut self.neighbours);
+            self.neighbours.extend_from_slice(&self.changed);
+            self.neighbours.sort_unstable();
+            self.neighbours.dedup();
+            let neighbours = std::mem::take(&mut self.neighbours);
+            for &q in &neighbours {
+                let q = q as usize;
+                if q == p || (forces.is_fixed(p) && forces.is_fixed(q)) {
+                    continue;
+                }
+                let pair = (p.min(q), p.max(q));
+                if self
+                    .touching_pairs
+                    .binary_search(&(pair.0 as u32, pair.1 as u32))
+                    .is_ok()
+                    || self.impacted.contains(&Impact::Pair(pair.0, pair.1))
+                {
+                    continue;
+                }
+                if let Some(event) = self.search_pair(pair.0, pair.1, event.time, h) {
+                    found.push(event);
+                }
+            }
+            self.neighbours = neighbours;
+            self.search_obstacles(p, event.time, h, found);
+        }
+    }
+
+    /// The first impact of particles `i < j` after `after` seconds into the step.
+    fn search_pair(&self, i: usize, j: usize, after: f64, h: f64) -> Option<Event> {
+        let from = after;
+        let (a, b) = (self.paths[i].after(from, h), self.paths[j].after(from, h));
+        let relative: [DVec2; 4] = std::array::from_fn(|k| b[k] - a[k]);
+        let reach = self.radius[i] + self.radius[j];
+        if relative[0].length() - reach <= TOUCHING * reach {
+            return None; // touching already: the resting solver's
+        }
+        let region = Region::Disc {
+            centre: DVec2::ZERO,
+            reach,
+        };
+        let s = earliest_entry(&region, &relative)?;
+        Some(Event {
+            time: from + s * (h - from),
+            impact: Impact::Pair(i, j),
+            versions: (self.versions[i], self.versions[j]),
+        })
+    }
+
+    /// The first impact of particle `p` with each obstacle after `after` seconds.
+    fn search_obstacles(&self, p: usize, after: f64, h: f64, found: &mut Vec<Event>) {
+        let from = after;
+        let path = self.paths[p].after(from, h);
+        let bounds = Aabb::around(&path, self.radius[p]);
+        for (k, obstacle) in self.obstacles.iter().enumerate() {
+            if self.obstacle_boxes[k].is_some_and(|b| !b.overlaps(&bounds))
+                || self
+                    .touching_obstacles
+                    .binary_search(&(p as u32, k as u32))
+                    .is_ok()
+                || self.impacted.contains(&Impact::Obstacle(p, k))
+            {
+                continue;
+            }
+            let reach = self.radius[p] + half_thickness(&obstacle.shape);
+            if obstacle.shape.distance(path[0]).0 - self.radius[p] <= TOUCHING * reach {
+                continue;
+            }
+            let (regions, count) = Region::around(&obstacle.shape, self.radius[p]);
+            let first = regions[..count]
+                .iter()
+                .flatten()
+                .filter_map(|region| earliest_entry(region, &path))
+                .fold(f64::INFINITY, f64::min);
+            if first.is_finite() {
+                found.push(Event {
+                    time: from + first * (h - from),
+                    impact: Impact::Obstacle(p, k),
+                    versions: (self.versions[p], 0),
+                });
+            }
+        }
+    }
+
+    /// Applies the impulse of an impact returned by [`Self::resolve_impacts`], now that the
+    /// state is at its instant. A slow one is inelastic: the bodies come to rest in contact.
+    pub fn apply(&self, impact: Impact, state: &mut State, forces: &ForceModel, h: f64) {
+        let (_, normal, approach) = self.measure(impact, state);
+        if approach <= 0.0 {
+            return;
+        }
+        let restitution = if approach > self.resting_speed(h) {
+            self.restitution_of(impact)
+        } else {
+            0.0
+        };
+        apply_impulse(
+            impact,
+            normal,
+            approach * (1.0 + restitution),
+            state,
+            forces,
+        );
+    }
+
+    /// Resting contact after a step of `h`: removes every approach between touching
+    /// bodies with inelastic impulses, then corrects overlaps beyond the tolerance.
+    ///
+    /// Sequential impulses with warm starting (as in Box2D): each contact starts from the
+    /// impulse it needed in the last step, which already carries the weight of whatever
+    /// rests on it, and sweeps adjust the accumulated impulse, never below zero (a contact
+    /// can push, not pull). Without warm starting a pile n balls deep needs some n² sweeps
+    /// to pass its weight down and sinks in the meantime.
+    ///
+    /// One exception: a fast approach of a particle an impact struck in this step is a
+    /// blow being passed on (a row of touching balls), left to the impacts at the start of
+    /// the next step, which give it its restitution. `struck` lists the particles of an
+    /// impact applied outside [`Self::resolve_impacts`]. Returns whether anything changed.
+    pub fn settle(
+        &mut self,
+        state: &mut State,
+        forces: &ForceModel,
+        h: f64,
+        struck: &[usize],
+    ) -> bool {
+        let resting_speed = self.resting_speed(h);
+        let is_struck = |i: usize| struck.contains(&i) || self.changed.contains(&(i as u32));
+        let warm = if self.last_step > 0.0 {
+            h / self.last_step
+        } else {
+            0.0
+        };
+        let mut contacts: Vec<(Impact, bool)> =
+            Vec::with_capacity(self.touching_pairs.len() + self.touching_obstacles.len());
+        contacts.extend(
+            self.touching_pairs
+                .iter()
+                .map(|&(i, j)| (Impact::Pair(i as usize, j as usize), true)),
+        );
+        contacts.extend(
+            self.touching_obstacles
+                .iter()
+                .map(|&(p, k)| (Impact::Obstacle(p as usize, k as usize), false)),
+        );
+        let mut impulses: Vec<f64> = self
+            .pair_impulses
+            .iter()
+            .chain(&self.obstacle_impulses)
+            .map(|&j| j * warm)
+            .collect();
+        let mut changed = false;
+        // Warm start, leaving out blows being passed on.
+        for (c, &(impact, _)) in contacts.iter().enumerate() {
+            let (_, normal, approach) = self.measure(impact, state);
+            let [i, j] = impact.particles();
+            let blow =
+                approach > resting_speed && (is_struck(i) || (j != usize::MAX && is_struck(j)));
+            if blow {
+                impulses[c] = f64::NAN; // marks the contact as out of this solve
+            } else if impulses[c] > 0.0 {
+                apply_impulse(
+                    impact,
+                    normal,
+                    impulses[c] * effective_inverse_mass(impact, forces),
+                    state,
+                    forces,
+                );
+                changed = true;
+            }
+        }
+        for _ in 0..ITERATIONS {
+            let mut largest: f64 = 0.0;
+            for (c, &(impact, _)) in contacts.iter().enumerate() {
+                if impulses[c].is_nan() {
+                    continue;
+                }
+                let (_, normal, approach) = self.measure(impact, state);
+                let inverse_mass = effective_inverse_mass(impact, forces);
+                if inverse_mass == 0.0 {
+                    continue;
+                }
+                // The impulse that stops the approach, kept from pulling in total.
+                let accumulated = (impulses[c] + approach / inverse_mass).max(0.0);
+                let change = accumulated - impulses[c];
+                if change != 0.0 {
+                    apply_impulse(impact, normal, change * inverse_mass, state, forces);
+                    impulses[c] = accumulated;
+                    largest = largest.max((change * inverse_mass).abs());
+                    changed = true;
+                }
+            }
+            if largest <= 1e-9 * resting_speed.max(1e-9) {
+                break;
+            }
+        }
+        changed |= self.correct_overlaps(&contacts, state, forces);
+        let pairs = self.touching_pairs.len();
+        let keep = |j: f64| if j.is_nan() { 0.0 } else { j };
+        self.last_pairs.clear();
+        self.last_pairs.extend(
+            self.touching_pairs
+                .iter()
+                .zip(&impulses[..pairs])
+                .map(|(&k, &j)| (k, keep(j))),
+        );
+        self.last_obstacles.clear();
+        self.last_obstacles.extend(
+            self.touching_obstacles
+                .iter()
+                .zip(&impulses[pairs..])
+                .map(|(&k, &j)| (k, keep(j))),
+        );
+        self.last_step = h;
+        changed
+    }
+
+    /// Pushes apart overlaps beyond the tolerance, a share at a time over a few sweeps
+    /// (non-linear Gauss–Seidel on positions). Returns whether anything moved.
+    fn correct_overlaps(
+        &self,
+        contacts: &[(Impact, bool)],
+        state: &mut State,
+        forces: &ForceModel,
+    ) -> bool {
+        let mut changed = false;
+        for _ in 0..POSITION_SWEEPS {
+            for &(impact, _) in contacts {
+                let (gap, normal, _) = self.measure(impact, state);
+                let [i, j] = impact.particles();
+                let smaller = if j == usize::MAX {
+                    self.radius[i]
+                } else {
+                    self.radius[i].min(self.radius[j])
+                };
+                let excess = -gap - ALLOWED_OVERLAP * smaller;
+                if excess <= 0.0 {
+                    continue;
+                }
+                match impact {
+                    Impact::Pair(i, j) => {
+                        let total = forces.inverse_mass[i] + forces.inverse_mass[j];
+                        if total > 0.0 {
+                            let shift = normal * (CORRECTION * excess / total);
+                            state.position[i] -= shift * forces.inverse_mass[i];
+                            state.position[j] += shift * forces.inverse_mass[j];
+                            changed = true;
+                        }
+                    }
+                    Impact::Obstacle(p, _) => {
+                        state.position[p] += normal * excess;
+                        changed = true;
+                    }
+                }
+            }
+        }
+        changed
+    }
+}
+
+/// `1/m_A + 1/m_B` for a pair, 1/m for a particle on an obstacle: the impulse per unit of
+/// approach speed removed is its inverse.
+fn effective_inverse_mass(impact: Impact, forces: &ForceModel) -> f64 {
+    match impact {
+        Impact::Pair(i, j) => forces.inverse_mass[i] + forces.inverse_mass[j],
+        Impact::Obstacle(p, _) => forces.inverse_mass[p],
+    }
+}
+
+fn half_thickness(shape: &Shape) -> f64 {
+    match *shape {
+        Shape::Capsule { radius, .. } => radius,
+        Shape::HalfPlane { .. } => 0.0,
+    }
+}
+
+/// The particles of an impact: the first, and the second of a pair.
+fn particles_of(impact: Impact) -> (usize, Option<usize>) {
+    match impact {
+        Impact::Pair(i, j) => (i, Some(j)),
+        Impact::Obstacle(p, _) => (p, None),
+    }
+}
+
+/// The velocity changes that make the approach speed along `normal` drop by `change`:
+/// the paper's 8–10 with `j = change / (1/m_A + 1/m_B)` for a pair, 17–22 for a surface.
+fn velocity_changes(
+    impact: Impact,
+    normal: DVec2,
+    change: f64,
+    forces: &ForceModel,
+) -> (DVec2, DVec2) {
+    match impact {
+        Impact::Pair(i, j) => {
+            let (wi, wj) = (forces.inverse_mass[i], forces.inverse_mass[j]);
+            if wi + wj == 0.0 {
+                return (DVec2::ZERO, DVec2::ZERO);
+            }
+            let impulse = normal * (change / (wi + wj));
+            (-impulse * wi, impulse * wj)
+        }
+        Impact::Obstacle(..) => (normal * change, DVec2::ZERO),
+    }
+}
+
+fn apply_impulse(
+    impact: Impact,
+    normal: DVec2,
+    change: f64,
+    state: &mut State,
+    forces: &ForceModel,
+) {
+    let (first, second) = particles_of(impact);
+    let (dv_first, dv_second) = velocity_changes(impact, normal, change, forces);
+    state.velocity[first] += dv_first;
+    if let Some(j) = second {
+        state.velocity[j] += dv_second;
+    }
+}

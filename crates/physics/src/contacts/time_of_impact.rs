@@ -1,0 +1,300 @@
+//! When, within a step, a moving particle first enters a region: another particle's reach,
+//! a ramp, a wall.
+//!
+//! Within a step of length h the integrator gives each particle's position and velocity
+//! at both ends; the cubic Hermite curve through them is the path (exact for constant
+//! acceleration, error O(h⁴) otherwise). As a Bézier curve its control points are
+//! x0, x0 + v0 h/3, x1 − v1 h/3, x1. Each region is described by gap functions that are
+//! polynomials along the path (|x − c|² − R² for a disc, of degree 6; signed distances to
+//! a line, of degree 3), written in the Bernstein basis, where a polynomial never drops
+//! below its smallest coefficient. The search halves the path recursively, earliest half
+//! first, and discards every piece in which some gap provably stays positive. The
+//! coefficients converge to the polynomial quadratically as pieces shrink, so a path
+//! grazing a surface is discarded after a level or two, and nothing is sampled: no speed
+//! skips over a thin ramp.
+//!
+//! Alternatives weighed: sampling the gap at sub-steps misses thin ramps at high speed; a
+//! straight-line swept test ignores acceleration within the step; bounding the distance by
+//! the control points' spread converges only linearly and explodes for grazing paths.
+
+use glam::DVec2;
+
+use super::obstacles::Shape;
+
+/// Depth of subdivision: the contact instant is found to 2⁻⁴⁴ ≈ 6e-14 of the step.
+const MAX_DEPTH: u32 = 44;
+
+/// A region a particle's centre may enter, given as gap functions: the centre is inside
+/// when every gap is ≤ 0.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Region {
+    /// Within `reach` of `centre`.
+    Disc { centre: DVec2, reach: f64 },
+    /// Within `reach` of the line through `origin` along unit `direction`, and between
+    /// `origin` and `origin + length · direction` along it.
+    Slab {
+        origin: DVec2,
+        direction: DVec2,
+        length: f64,
+        reach: f64,
+    },
+    /// Within `reach` of the half-plane behind `point` with outward unit `normal`.
+    HalfPlane {
+        point: DVec2,
+        normal: DVec2,
+        reach: f64,
+    },
+}
+
+impl Region {
+    /// The regions a particle of radius `radius` enters when it touches `shape`.
+    pub fn around(shape: &Shape, radius: f64) -> ([Option<Self>; 3], usize) {
+        match *shape {
+            Shape::HalfPlane { point, normal } => (
+                [
+                    Some(Self::HalfPlane {
+                        point,
+                        normal,
+                        reach: radius,
+                    }),
+                    None,
+                    None,
+                ],
+                1,
+            ),
+            Shape::Capsule {
+                a,
+                b,
+                radius: half_thickness,
+            } => {
+                let reach = radius + half_thickness;
+                let length = a.distance(b);
+                let slab = (length > 0.0).then(|| Self::Slab {
+                    origin: a,
+                    direction: (b - a) / length,
+                    length,
+                    reach,
+                });
+                (
+                    [
+                        Some(Self::Disc { centre: a, reach }),
+                        Some(Self::Disc { centre: b, reach }),
+                        slab,
+                    ],
+                    3,
+                )
+            }
+        }
+    }
+
+    /// The largest of the gaps at `p`: ≤ 0 exactly when `p` is inside.
+    fn gap(&self, p: DVec2) -> f64 {
+        match *self {
+            Self::Disc { centre, reach } => (p - centre).length_squared() - reach * reach,
+            Self::Slab {
+                origin,
+                direction,
+                length,
+                reach,
+            } => {
+                let offset = p - origin;
+                let along = offset.dot(direction);
+                let across = offset.perp_dot(direction).abs();
+                (across - reach).max(-along).max(along - length)
+            }
+            Self::HalfPlane {
+                point,
+                normal,
+                reach,
+            } => (p - point).dot(normal) - reach,
+        }
+    }
+
+    /// Whether the piece of path with control points `p` certainly stays outside.
+    fn clear_of(&self, p: &[DVec2; 4]) -> bool {
+        match *self {
+            Self::Disc { centre, reach } => {
+                let d = p.map(|q| q - centre);
+                disc_coefficients(&d, reach).into_iter().all(|c| c > 0.0)
+            }
+            Self::Slab {
+                origin,
+                direction,
+                length,
+                reach,
+            } => {
+                let along = p.map(|q| (q - origin).dot(direction));
+                let across = p.map(|q| (q - origin).perp_dot(direction));
+                along.iter().all(|&u| u > length)
+                    || along.iter().all(|&u| u < 0.0)
+                    || across.iter().all(|&w| w > reach)
+                    || across.iter().all(|&w| w < -reach)
+            }
+            Self::HalfPlane {
+                point,
+                normal,
+                reach,
+            } => p.iter().all(|q| (*q - point).dot(normal) > reach),
+        }
+    }
+}
+
+/// Bernstein coefficients of |D(s)|² − reach² for the cubic D with control points `d`:
+/// the product of two cubics is a sextic with `c[m] = Σ_{i+j=m} C(3,i) C(3,j) / C(6,m) D[i]·D[j]`.
+fn disc_coefficients(d: &[DVec2; 4], reach: f64) -> [f64; 7] {
+    const BINOMIAL_3: [f64; 4] = [1.0, 3.0, 3.0, 1.0];
+    const BINOMIAL_6: [f64; 7] = [1.0, 6.0, 15.0, 20.0, 15.0, 6.0, 1.0];
+    let mut c = [0.0; 7];
+    for i in 0..4 {
+        for j in 0..4 {
+            c[i + j] += BINOMIAL_3[i] * BINOMIAL_3[j] * d[i].dot(d[j]);
+        }
+    }
+    let reach_squared = reach * reach;
+    for (m, c) in c.iter_mut().enumerate() {
+        *c = *c / BINOMIAL_6[m] - reach_squared;
+    }
+    c
+}
+
+/// The Bézier control points of the Hermite path from (x0, v0) to (x1, v1) over `h`.
+pub(crate) fn control_points(x0: DVec2, v0: DVec2, x1: DVec2, v1: DVec2, h: f64) -> [DVec2; 4] {
+    [x0, x0 + v0 * (h / 3.0), x1 - v1 * (h / 3.0), x1]
+}
+
+/// The two halves of a path.
+fn split(p: &[DVec2; 4]) -> ([DVec2; 4], [DVec2; 4]) {
+    let q0 = p[0].midpoint(p[1]);
+    let q1 = p[1].midpoint(p[2]);
+    let q2 = p[2].midpoint(p[3]);
+    let r0 = q0.midpoint(q1);
+    let r1 = q1.midpoint(q2);
+    let m = r0.midpoint(r1);
+    ([p[0], q0, r0, m], [m, r1, q2, p[3]])
+}
+
+/// The earliest parameter s in (0, 1] at which the path, which starts outside, is inside
+/// `region`; `None` if it stays outside.
+pub(crate) fn earliest_entry(region: &Region, path: &[DVec2; 4]) -> Option<f64> {
+    search(region, path, 0.0, 1.0, 0)
+}
+
+fn search(region: &Region, path: &[DVec2; 4], s0: f64, s1: f64, depth: u32) -> Option<f64> {
+    if region.clear_of(path) {
+        return None;
+    }
+    if depth == MAX_DEPTH {
+        return (region.gap(path[3]) <= 0.0).then_some(s1);
+    }
+    let (left, right) = split(path);
+    let mid = 0.5 * (s0 + s1);
+    search(region, &left, s0, mid, depth + 1).or_else(|| search(region, &right, mid, s1, depth + 1))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn disc(reach: f64) -> Region {
+        Region::Disc {
+            centre: DVec2::ZERO,
+            reach,
+        }
+    }
+
+    /// Head-on at 2 m/s from 10 m apart, contact at 1 m apart after (10 − 1)/2 = 4.5 s,
+    /// s = 0.45 of a 10 s step.
+    #[test]
+    fn straight_approach_is_found_exactly() {
+        let path = control_points(
+            DVec2::new(10.0, 0.0),
+            DVec2::new(-2.0, 0.0),
+            DVec2::new(-10.0, 0.0),
+            DVec2::new(-2.0, 0.0),
+            10.0,
+        );
+        let s = earliest_entry(&disc(1.0), &path).unwrap();
+        assert!((s - 0.45).abs() < 1e-13, "s = {s}");
+    }
+
+    /// Passing 0.5 m beside the origin: never within 0.4 m; within 0.6 m first at
+    /// x = −√(0.6² − 0.5²).
+    #[test]
+    fn a_near_miss_is_no_contact() {
+        let path = control_points(
+            DVec2::new(-50.0, 0.5),
+            DVec2::new(10.0, 0.0),
+            DVec2::new(50.0, 0.5),
+            DVec2::new(10.0, 0.0),
+            10.0,
+        );
+        assert_eq!(earliest_entry(&disc(0.4), &path), None, "misses by 0.1 m");
+        let s = earliest_entry(&disc(0.6), &path).unwrap();
+        let x = -50.0 + 100.0 * s;
+        assert!(
+            (x + (0.6_f64 * 0.6 - 0.25).sqrt()).abs() < 1e-11,
+            "first contact at x = {x}"
+        );
+    }
+
+    /// Constant acceleration is exact: y = 10 − 5t² reaches y = 1 at t = √1.8.
+    #[test]
+    fn a_parabola_is_exact() {
+        let wall = Region::HalfPlane {
+            point: DVec2::ZERO,
+            normal: DVec2::Y,
+            reach: 1.0,
+        };
+        let h = 2.0;
+        let path = control_points(
+            DVec2::new(0.0, 10.0),
+            DVec2::ZERO,
+            DVec2::new(0.0, 10.0 - 5.0 * h * h),
+            DVec2::new(0.0, -10.0 * h),
+            h,
+        );
+        let s = earliest_entry(&wall, &path).unwrap();
+        assert!((s * h - 1.8_f64.sqrt()).abs() < 1e-12, "t = {}", s * h);
+    }
+
+    /// A path parallel to a surface 1e-9 m outside reach is cleared quickly, and a ball
+    /// crossing a 0.01 m ramp at 1,000 m/s in one 1 s step is caught.
+    #[test]
+    fn grazing_and_tunnelling() {
+        let path = control_points(
+            DVec2::new(-1.0, 1.0 + 1e-9),
+            DVec2::new(1.0, 0.0),
+            DVec2::new(1.0, 1.0 + 1e-9),
+            DVec2::new(1.0, 0.0),
+            2.0,
+        );
+        assert_eq!(
+            earliest_entry(&disc(1.0), &path),
+            None,
+            "a graze 1e-9 outside"
+        );
+        let ramp = Shape::Capsule {
+            a: DVec2::new(-1.0, 0.0),
+            b: DVec2::new(1.0, 0.0),
+            radius: 0.005,
+        };
+        let path = control_points(
+            DVec2::new(0.3, 500.0),
+            DVec2::new(0.0, -1000.0),
+            DVec2::new(0.3, -500.0),
+            DVec2::new(0.0, -1000.0),
+            1.0,
+        );
+        let (regions, count) = Region::around(&ramp, 0.05);
+        let first = regions[..count]
+            .iter()
+            .flatten()
+            .filter_map(|r| earliest_entry(r, &path))
+            .fold(f64::INFINITY, f64::min);
+        // Contact when y = 0.05 + 0.005: t = (500 − 0.055) / 1000.
+        assert!(
+            (first - (500.0 - 0.055) / 1000.0).abs() < 1e-12,
+            "s = {first}"
+        );
+    }
+}

@@ -1,0 +1,46 @@
+//! The normal force and friction of a surface a particle rests on or slides along (the
+//! paper's 13–16, generalised to any direction of the other forces).
+//!
+//! The surface pushes back exactly as hard as the other forces press the particle into
+//! it, N = max(0, −m a·n), so the particle neither sinks nor jumps. Friction of
+//! coefficient μ then opposes the sliding with μN (kinetic), or, for a particle at rest,
+//! cancels the pull along the surface while it is within μN (static) — the particle stays
+//! put while |tan θ| ≤ μ on a ramp at θ. Which of the two applies, and the direction of
+//! sliding, are decided at the start of each step, so the force is smooth within it.
+
+use glam::DVec2;
+
+/// A particle held on a surface for the current step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct SurfaceContact {
+    pub particle: usize,
+    /// Unit normal of the surface, pointing towards the particle.
+    pub normal: DVec2,
+    /// Coefficient of friction, static and kinetic.
+    pub friction: f64,
+    /// Unit direction of sliding, or `None` when at rest (static friction).
+    pub sliding: Option<DVec2>,
+}
+
+impl SurfaceContact {
+    /// Adds the surface's normal and friction accelerations to `a`, the particle's
+    /// acceleration from every other force.
+    pub fn apply(&self, a: &mut DVec2) {
+        let pressing = -a.dot(self.normal);
+        if pressing <= 0.0 {
+            return; // pulled away from the surface: it exerts nothing
+        }
+        *a += self.normal * pressing;
+        if self.friction == 0.0 {
+            return;
+        }
+        let limit = self.friction * pressing;
+        if let Some(direction) = self.sliding {
+            *a -= direction * limit;
+        } else {
+            let tangent = self.normal.perp();
+            let pull = a.dot(tangent);
+            *a -= tangent * pull.clamp(-limit, limit);
+        }
+    }
+}

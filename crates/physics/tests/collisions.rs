@@ -1,0 +1,248 @@
+//! Impacts against the impulse formulas and the paper's tables 4.3 and 4.5, Newton's
+//! cradle, the 4.7 bounces, and tunnelling.
+
+use physics::{DVec2, Integrator, Particle, Ramp, Scene, Simulation, World, example};
+
+fn load(name: &str) -> Scene {
+    example(name)
+        .expect("the example exists")
+        .scene()
+        .expect("the example loads")
+}
+
+fn no_forces() -> World {
+    World {
+        gravitation: false,
+        electrostatics: false,
+        ..World::weightless()
+    }
+}
+
+/// Table 4.3: equal masses, A at 20 m/s, impact parameter b = 0.53 (rA + rB). With the
+/// contact normal n = (√(1 − 0.53²), 0.53), A' = v − (v·n) n = (5.618, −8.989) and
+/// B' = (v·n) n = (14.382, 8.989), the paper's values to its 3 decimals; momentum and
+/// kinetic energy conserved to 1e-12.
+#[test]
+fn paper_table_4_3() {
+    let mut simulation = Simulation::new(&load("collision")).unwrap();
+    let before = simulation.diagnostics();
+    simulation.step_to(1.0).unwrap();
+    let (a, b) = (simulation.velocities()[0], simulation.velocities()[1]);
+    let n = DVec2::new((1.0 - 0.53_f64 * 0.53).sqrt(), 0.53);
+    let v = DVec2::new(20.0, 0.0);
+    let theory_a = v - v.dot(n) * n;
+    let theory_b = v.dot(n) * n;
+    // 1e-12 relative to the 20 m/s involved.
+    assert!(
+        a.distance(theory_a) < 1e-12 * 20.0,
+        "A' = {a}, theory {theory_a}"
+    );
+    assert!(
+        b.distance(theory_b) < 1e-12 * 20.0,
+        "B' = {b}, theory {theory_b}"
+    );
+    assert!(
+        a.distance(DVec2::new(5.618, -8.989)) < 1e-3,
+        "the paper's A' = {a}"
+    );
+    assert!(
+        b.distance(DVec2::new(14.382, 8.989)) < 1e-3,
+        "the paper's B' = {b}"
+    );
+    let after = simulation.diagnostics();
+    assert!(
+        (after.momentum - before.momentum).length() < 1e-12 * 20.0,
+        "momentum {}",
+        after.momentum
+    );
+    let energy_error = (after.energy.kinetic - before.energy.kinetic).abs() / before.energy.kinetic;
+    assert!(
+        energy_error < 1e-12,
+        "kinetic energy changed by {energy_error}"
+    );
+    // The impact happened at the instant of contact: A travelled 5 − √(1 − 0.53²) metres.
+    let contact_time = (5.0 - n.x) / 20.0;
+    let a_position = simulation.positions()[0];
+    let expected = v * contact_time + theory_a * (1.0 - contact_time);
+    assert!(
+        a_position.distance(expected) < 1e-9,
+        "A at {a_position}, expected {expected}"
+    );
+}
+
+/// For e < 1 the kinetic energy lost is (1 − e²) × ½ μ vₙ², with μ the reduced mass and
+/// vₙ the approach speed along the contact normal. Unequal masses, oblique impact, no
+/// forces: the contact instant solves |Δx + Δv t| = rA + rB, a quadratic.
+#[test]
+fn inelastic_energy_loss_matches_theory() {
+    let (m1, m2, r1, r2) = (2.0, 5.0, 0.4, 0.6);
+    let (x1, v1, x2, v2) = (
+        DVec2::ZERO,
+        DVec2::new(7.0, 1.0),
+        DVec2::new(4.0, 0.7),
+        DVec2::new(-1.0, 0.5),
+    );
+    let (dx, dv) = (x2 - x1, v2 - v1);
+    let reach: f64 = r1 + r2;
+    let (a, b, c) = (dv.dot(dv), 2.0 * dx.dot(dv), dx.dot(dx) - reach * reach);
+    let contact_time = (-b - (b * b - 4.0 * a * c).sqrt()) / (2.0 * a);
+    let normal = (dx + dv * contact_time) / reach;
+    let approach = -dv.dot(normal);
+    assert!(contact_time > 0.0 && approach > 0.0, "the set-up collides");
+    let reduced_mass = m1 * m2 / (m1 + m2);
+    for restitution in [0.0, 0.3, 0.8, 1.0] {
+        let mut world = no_forces();
+        world.restitution = restitution;
+        let scene = Scene::new()
+            .with_world(world)
+            .with_particle(Particle::new("A", m1).radius(r1).position(x1).velocity(v1))
+            .with_particle(Particle::new("B", m2).radius(r2).position(x2).velocity(v2));
+        let mut simulation = Simulation::new(&scene).unwrap();
+        let before = simulation.diagnostics();
+        simulation.step_to(2.0).unwrap();
+        let after = simulation.diagnostics();
+        let loss = before.energy.kinetic - after.energy.kinetic;
+        let theory = (1.0 - restitution * restitution) * 0.5 * reduced_mass * approach * approach;
+        assert!(
+            (loss - theory).abs() < 1e-12 * before.energy.kinetic,
+            "e = {restitution}: lost {loss} J, theory {theory} J"
+        );
+        assert!(
+            (after.momentum - before.momentum).length() < 1e-12 * 40.0,
+            "e = {restitution}: momentum"
+        );
+        // The separation speed along the normal is e times the approach speed.
+        let separation = (simulation.velocities()[1] - simulation.velocities()[0]).dot(normal);
+        assert!(
+            (separation - restitution * approach).abs() < 1e-12 * approach,
+            "e = {restitution}: separating at {separation}"
+        );
+    }
+}
+
+/// Table 4.5: 10 m/s straight down onto ramps at −60…60° leaves at 2θ + 90° with speed
+/// 10: the angle of incidence equals the angle of reflection.
+#[test]
+fn paper_table_4_5_reflections() {
+    let mut simulation = Simulation::new(&load("ramp-bounces")).unwrap();
+    // Each ball starts 3 m above its ramp's centre and touches after (3 − 0.3) / 10 s.
+    simulation.step_to(0.3).unwrap();
+    for (k, angle) in [-60.0_f64, -45.0, -30.0, 0.0, 30.0, 45.0, 60.0]
+        .into_iter()
+        .enumerate()
+    {
+        let v = simulation.velocities()[k];
+        let expected = DVec2::from_angle((2.0 * angle + 90.0).to_radians()) * 10.0;
+        assert!(
+            v.distance(expected) < 1e-9,
+            "ramp {angle}°: left with {v}, theory {expected}"
+        );
+    }
+}
+
+/// The paper's 4.7 with restitution 1: the bodies bounce back to their starting positions,
+/// bounce after bounce. Energy conservation puts the turning point exactly at the start;
+/// dopri5 at 1e-12 holds it within 1e-6 m over several bounces.
+#[test]
+fn paper_4_7_bounces_return_to_the_start() {
+    for (name, moving) in [("paper-gravitation", 0), ("paper-coulomb", 0)] {
+        let mut simulation = Simulation::new(&load(name)).unwrap();
+        let start = simulation.positions()[moving].x;
+        let (mut turning_points, mut previous_vx, mut t) = (Vec::new(), 0.0, 0.0);
+        while turning_points.len() < 4 && t < 60.0 {
+            t += 0.001;
+            simulation.step_to(t).unwrap();
+            let vx = simulation.velocities()[moving].x;
+            // A turning point: moving back (away from the other body) then stopping. It lies
+            // between samples; x − v²/2a is the vertex of the local parabola.
+            if previous_vx < 0.0 && vx >= 0.0 {
+                let ax = simulation.accelerations()[moving].x;
+                turning_points.push(simulation.positions()[moving].x - vx * vx / (2.0 * ax));
+            }
+            previous_vx = vx;
+        }
+        assert_eq!(turning_points.len(), 4, "{name}: four bounces within 60 s");
+        for x in turning_points {
+            assert!(
+                (x - start).abs() < 1e-6,
+                "{name}: turned at {x}, started at {start}"
+            );
+        }
+    }
+}
+
+/// Newton's cradle: five touching equal balls, the first struck at 2 m/s: the last leaves
+/// at 2 m/s and the rest stay still (momentum and energy allow nothing else).
+#[test]
+fn newtons_cradle_passes_the_blow_to_the_last_ball() {
+    let mut scene = Scene::new().with_world(no_forces());
+    for i in 0..5 {
+        let velocity = if i == 0 { [2.0, 0.0] } else { [0.0, 0.0] };
+        scene = scene.with_particle(
+            Particle::new(format!("ball {i}"), 1.0)
+                .position([f64::from(i), 0.0])
+                .velocity(velocity),
+        );
+    }
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.step_to(1.0).unwrap();
+    for (i, v) in simulation.velocities().iter().enumerate() {
+        let expected = if i == 4 {
+            DVec2::new(2.0, 0.0)
+        } else {
+            DVec2::ZERO
+        };
+        assert!(v.distance(expected) < 1e-12, "ball {i}: {v}");
+    }
+    // The same with a gap: the first ball travels 0.5 m before it strikes.
+    scene.particles[0].position = [-0.5, 0.0].into();
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.step_to(1.0).unwrap();
+    assert!(
+        simulation.velocities()[4].distance(DVec2::new(2.0, 0.0)) < 1e-12,
+        "last ball leaves"
+    );
+    assert!(
+        (simulation.positions()[4].x - (4.0 + 2.0 * 0.75)).abs() < 1e-9,
+        "struck at t = 0.25 s"
+    );
+}
+
+/// A 0.1 m ball at 1,000 m/s against a 0.01 m-thick ramp never passes through, at any time
+/// step: from above, from below and onto an end. An elastic bounce returns it along its
+/// path: it touches at 0.05 + 0.005 m from the surface line (or the end point) and is
+/// 1000 × 0.2 − (50 − 0.055) m back out at t = 0.2 s.
+#[test]
+fn no_tunnelling_at_any_time_step() {
+    let back = 0.055 + (1000.0 * 0.2 - (50.0 - 0.055));
+    let cases = [
+        ([0.2, 50.0], [0.0, -1000.0], DVec2::new(0.2, back)),
+        ([0.3, -50.0], [0.0, 1000.0], DVec2::new(0.3, -back)),
+        ([-51.0, 0.0], [1000.0, 0.0], DVec2::new(-1.0 - back, 0.0)),
+    ];
+    for time_step in [1e-4, 1e-3, 0.01, 0.1, 1.0] {
+        for (start, velocity, expected) in cases {
+            let scene = Scene::new()
+                .with_world(no_forces())
+                .with_integrator(Integrator::Rk4, time_step)
+                .with_ramp(Ramp::new("thin", [-1.0, 0.0], [1.0, 0.0]).thickness(0.01))
+                .with_particle(
+                    Particle::new("bullet", 1.0)
+                        .radius(0.05)
+                        .position(start)
+                        .velocity(velocity),
+                );
+            let mut simulation = Simulation::new(&scene).unwrap();
+            simulation.step_to(0.2).unwrap();
+            let (x, v) = (simulation.positions()[0], simulation.velocities()[0]);
+            assert!(
+                v.distance(-DVec2::from(velocity)) < 1e-9,
+                "dt = {time_step}, from {start:?}: going {v} at {x}"
+            );
+            assert!(
+                x.distance(expected) < 1e-9,
+                "dt = {time_step}, from {start:?}: at {x}, expected {expected}"
+            );
+        }
+    }
+}

@@ -1,0 +1,142 @@
+//! Resting and sliding contact on ramps (the paper's 4.4) against the inclined plane:
+//! along a frictionless ramp at θ a particle accelerates at g sin θ; with friction μ at
+//! g (sin θ − μ cos θ) while sliding, and not at all while |tan θ| ≤ μ.
+
+use physics::{DVec2, Particle, Ramp, Scene, Simulation, World, example};
+
+const G: f64 = 9.81;
+
+/// A 6 m ramp at `angle` degrees centred on the origin, 0.1 m thick, and a 0.25 m ball at
+/// rest touching its top face at the middle.
+fn ball_on_ramp(angle: f64, friction: f64) -> Scene {
+    let direction = DVec2::from_angle(angle.to_radians());
+    let world = World {
+        gravitation: false,
+        electrostatics: false,
+        ..World::default()
+    };
+    Scene::new()
+        .with_world(world)
+        .with_ramp(
+            Ramp::new("ramp", direction * -3.0, direction * 3.0)
+                .thickness(0.1)
+                .friction(friction),
+        )
+        .with_particle(
+            Particle::new("ball", 1.0)
+                .radius(0.25)
+                .position(direction.perp() * 0.3),
+        )
+}
+
+/// Table 4.4: the ramps at −60…60° of the example. After 0.5 s each ball has moved
+/// ½ (g·u) u t² along its ramp (u its direction): |a| = g |sin θ|, directed along the
+/// ramp, to 1e-9.
+#[test]
+fn paper_table_4_4_accelerations() {
+    let scene = example("ramp-slides").unwrap().scene().unwrap();
+    let mut simulation = Simulation::new(&scene).unwrap();
+    let start: Vec<DVec2> = simulation.positions().to_vec();
+    let t = 0.5;
+    simulation.step_to(t).unwrap();
+    let accelerations = simulation.accelerations();
+    for (k, angle) in [-60.0_f64, -45.0, -30.0, 0.0, 30.0, 45.0, 60.0]
+        .into_iter()
+        .enumerate()
+    {
+        let along = DVec2::from_angle(angle.to_radians());
+        let theory = along * DVec2::new(0.0, -G).dot(along);
+        let a = accelerations[k];
+        assert!(
+            a.distance(theory) < 1e-9,
+            "{angle}°: a = {a}, theory {theory}"
+        );
+        assert!(
+            (a.length() - G * angle.to_radians().sin().abs()).abs() < 1e-9,
+            "{angle}°: |a|"
+        );
+        let moved = simulation.positions()[k] - start[k];
+        assert!(
+            moved.distance(theory * (0.5 * t * t)) < 1e-9,
+            "{angle}°: moved {moved}"
+        );
+    }
+}
+
+/// Sliding neither sinks into the ramp nor leaves it, and the normal force does no work.
+#[test]
+fn a_sliding_ball_stays_on_the_surface_and_conserves_energy() {
+    let mut simulation = Simulation::new(&ball_on_ramp(-35.0, 0.0)).unwrap();
+    let energy = simulation.diagnostics().energy.total();
+    let normal = DVec2::from_angle((-35.0_f64).to_radians()).perp();
+    for k in 1..=50 {
+        simulation.step_to(f64::from(k) * 0.01).unwrap();
+        let height = simulation.positions()[0].dot(normal);
+        assert!(
+            (height - 0.3).abs() < 1e-12,
+            "t = {}: {height} m from the ramp's line",
+            simulation.time()
+        );
+        assert!(
+            simulation.velocities()[0].dot(normal).abs() < 1e-12,
+            "no normal velocity"
+        );
+    }
+    let drift = (simulation.diagnostics().energy.total() - energy).abs();
+    assert!(drift < 1e-9 * energy.abs(), "energy changed by {drift}");
+}
+
+/// Friction: sliding at g (sin θ − μ cos θ) when tan θ > μ, held still when tan θ ≤ μ.
+#[test]
+fn friction_slows_or_holds() {
+    for (angle, friction) in [
+        (30.0_f64, 0.5),
+        (30.0, 0.6),
+        (-45.0, 1.01),
+        (-45.0, 0.2),
+        (60.0, 1.5),
+        (10.0, 0.0),
+    ] {
+        let mut simulation = Simulation::new(&ball_on_ramp(angle, friction)).unwrap();
+        let start = simulation.positions()[0];
+        let t = 0.4;
+        simulation.step_to(t).unwrap();
+        let theta = angle.to_radians();
+        let slope = theta.tan().abs();
+        let moved = simulation.positions()[0] - start;
+        if slope <= friction {
+            assert!(
+                moved.length() < 1e-12,
+                "{angle}° μ = {friction}: held, but moved {moved}"
+            );
+            assert!(
+                simulation.accelerations()[0].length() < 1e-12,
+                "{angle}° μ = {friction}: no acceleration"
+            );
+        } else {
+            let magnitude = G * (theta.sin().abs() - friction * theta.cos());
+            let downhill = DVec2::from_angle(theta) * -theta.sin().signum();
+            let theory = downhill * (0.5 * magnitude * t * t);
+            assert!(
+                moved.distance(theory) < 1e-9,
+                "{angle}° μ = {friction}: moved {moved}, theory {theory}"
+            );
+        }
+    }
+}
+
+/// A ball dropped onto a level ramp with restitution 0 comes to rest on it and stays.
+#[test]
+fn a_dropped_ball_comes_to_rest_without_jitter() {
+    let mut scene = ball_on_ramp(0.0, 0.3);
+    scene.ramps[0].restitution = 0.0;
+    scene.particles[0].position = [0.5, 2.0].into();
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.step_to(2.0).unwrap();
+    for k in 0..100 {
+        simulation.step_to(2.0 + f64::from(k) * 0.01).unwrap();
+        let (x, v) = (simulation.positions()[0], simulation.velocities()[0]);
+        assert!((x.y - 0.3).abs() < 1e-12, "resting on top: y = {}", x.y);
+        assert!(v.length() < 1e-12, "still: v = {v}");
+    }
+}

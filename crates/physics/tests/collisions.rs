@@ -246,3 +246,26 @@ fn no_tunnelling_at_any_time_step() {
         }
     }
 }
+
+/// The world's bounds reflect with the world's restitution: a ball at (2.5, 3) moving at
+/// (7, 3) in a 10 m box meets the right wall (x = 9.5 for its 0.5 m radius) at t = 1 s and
+/// leaves at (−0.8 × 7, 3); half a second later it is at (9.5 − 5.6 × 0.5, 3 + 3 × 1.5).
+#[test]
+fn bounds_reflect_with_the_world_restitution() {
+    let mut world = no_forces();
+    world.restitution = 0.8;
+    world.bounds = Some(physics::Bounds {
+        min: [0.0, 0.0].into(),
+        max: [10.0, 10.0].into(),
+    });
+    let scene = Scene::new().with_world(world).with_particle(
+        Particle::new("ball", 1.0)
+            .position([2.5, 3.0])
+            .velocity([7.0, 3.0]),
+    );
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.step_to(1.5).unwrap();
+    let (x, v) = (simulation.positions()[0], simulation.velocities()[0]);
+    assert!(v.distance(DVec2::new(-5.6, 3.0)) < 1e-12, "v = {v}");
+    assert!(x.distance(DVec2::new(9.5 - 2.8, 7.5)) < 1e-9, "x = {x}");
+}

@@ -51,7 +51,8 @@ impl Aabb {
 /// Reusable buffers.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct BroadPhase {
-    entries: Vec<(i64, i64, u32)>,
+    /// (cell key, particle), sorted.
+    entries: Vec<(u64, u32)>,
     oversized: Vec<u32>,
     pairs: Vec<(u32, u32)>,
     extents: Vec<f64>,
@@ -90,25 +91,25 @@ impl BroadPhase {
             }
             for x in lo.0..=hi.0 {
                 for y in lo.1..=hi.1 {
-                    self.entries.push((x, y, i as u32));
+                    self.entries.push((key(x, y), i as u32));
                 }
             }
         }
         self.entries.sort_unstable();
         let mut start = 0;
         while start < self.entries.len() {
-            let (x, y, _) = self.entries[start];
+            let (cell_key, _) = self.entries[start];
             let mut end = start + 1;
-            while end < self.entries.len() && self.entries[end].0 == x && self.entries[end].1 == y {
+            while end < self.entries.len() && self.entries[end].0 == cell_key {
                 end += 1;
             }
             for a in start..end {
                 for b in a + 1..end {
-                    let (i, j) = (self.entries[a].2 as usize, self.entries[b].2 as usize);
+                    let (i, j) = (self.entries[a].1 as usize, self.entries[b].1 as usize);
                     let (bi, bj) = (&boxes[i], &boxes[j]);
                     // Report from the first cell of the overlap only.
                     let first = cell_of(bi.min.max(bj.min));
-                    if first == (x, y) && bi.overlaps(bj) && !skip(i, j) {
+                    if key(first.0, first.1) == cell_key && bi.overlaps(bj) && !skip(i, j) {
                         self.pairs.push((i as u32, j as u32));
                     }
                 }
@@ -145,19 +146,29 @@ impl BroadPhase {
             || !query.min.is_finite()
             || !query.max.is_finite()
         {
-            out.extend(self.entries.iter().map(|e| e.2));
+            out.extend(self.entries.iter().map(|e| e.1));
             return;
         }
         for x in lo.0..=hi.0 {
-            let start = self.entries.partition_point(|e| (e.0, e.1) < (x, lo.1));
+            let (first, last) = (key(x, lo.1), key(x, hi.1));
+            let start = self.entries.partition_point(|e| e.0 < first);
             for entry in &self.entries[start..] {
-                if entry.0 != x || entry.1 > hi.1 {
+                if entry.0 > last {
                     break;
                 }
-                out.push(entry.2);
+                out.push(entry.1);
             }
         }
     }
+}
+
+/// One sortable number per cell, ordered as (x, y): coordinates clamped to i32 (cells that
+/// far out only merge, which costs tests, never misses a pair) and offset to unsigned.
+fn key(x: i64, y: i64) -> u64 {
+    let clamp = |c: i64| {
+        (c.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) - i64::from(i32::MIN)).cast_unsigned()
+    };
+    (clamp(x) << 32) | clamp(y)
 }
 
 #[expect(

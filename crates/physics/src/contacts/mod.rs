@@ -63,7 +63,7 @@ const CORRECTION: f64 = 0.5;
 const POSITION_SWEEPS: usize = 4;
 /// Most velocity sweeps of the resting-contact solver (it stops earlier when no contact
 /// approaches): enough for a pile a few dozen balls deep to pass its weight down.
-const ITERATIONS: usize = 24;
+const ITERATIONS: usize = 10;
 
 /// What hits what.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -114,8 +114,9 @@ pub(crate) struct Contacts {
     paths: Vec<Path>,
     /// Bumped when a particle's path changes, to recognise stale queued impacts.
     versions: Vec<u32>,
-    /// Particles whose paths impacts changed during this step.
+    /// Particles whose paths impacts changed during this step, and the same as flags.
     changed: Vec<u32>,
+    is_changed: Vec<bool>,
     /// Impacts already applied in this step: not searched again until the next.
     impacted: HashSet<Impact>,
     queue: BinaryHeap<Reverse<Event>>,
@@ -235,6 +236,7 @@ impl Contacts {
             paths: Vec::new(),
             versions: Vec::new(),
             changed: Vec::new(),
+            is_changed: Vec::new(),
             impacted: HashSet::new(),
             queue: BinaryHeap::new(),
             neighbours: Vec::new(),
@@ -492,6 +494,10 @@ impl Contacts {
         }));
         self.versions.clear();
         self.versions.resize(n, 0);
+        for &p in &self.changed {
+            self.is_changed[p as usize] = false;
+        }
+        self.is_changed.resize(n, false);
         self.changed.clear();
         self.impacted.clear();
         self.queue.clear();
@@ -599,7 +605,8 @@ impl Contacts {
             path.kick += dv;
             path.kick_moment += dv * event.time;
             self.versions[p] += 1;
-            if !self.changed.contains(&(p as u32)) {
+            if !self.is_changed[p] {
+                self.is_changed[p] = true;
                 self.changed.push(p as u32);
             }
         }
@@ -735,75 +742,76 @@ impl Contacts {
         struck: &[usize],
     ) -> bool {
         let resting_speed = self.resting_speed(h);
-        let is_struck = |i: usize| struck.contains(&i) || self.changed.contains(&(i as u32));
+        let is_struck =
+            |i: usize| struck.contains(&i) || self.is_changed.get(i).copied().unwrap_or(false);
         let warm = if self.last_step > 0.0 {
             h / self.last_step
         } else {
             0.0
         };
-        let mut contacts: Vec<(Impact, bool)> =
-            Vec::with_capacity(self.touching_pairs.len() + self.touching_obstacles.len());
-        contacts.extend(
-            self.touching_pairs
-                .iter()
-                .map(|&(i, j)| (Impact::Pair(i as usize, j as usize), true)),
-        );
-        contacts.extend(
-            self.touching_obstacles
-                .iter()
-                .map(|&(p, k)| (Impact::Obstacle(p as usize, k as usize), false)),
-        );
-        let mut impulses: Vec<f64> = self
-            .pair_impulses
+        // Each contact's normal and effective mass are fixed for the solve (they change
+        // negligibly within it), so a sweep costs a dot product per contact.
+        let impacts = self
+            .touching_pairs
             .iter()
-            .chain(&self.obstacle_impulses)
-            .map(|&j| j * warm)
-            .collect();
+            .map(|&(i, j)| Impact::Pair(i as usize, j as usize))
+            .chain(
+                self.touching_obstacles
+                    .iter()
+                    .map(|&(p, k)| Impact::Obstacle(p as usize, k as usize)),
+            );
+        let remembered = self.pair_impulses.iter().chain(&self.obstacle_impulses);
+        let mut contacts: Vec<SolverContact> =
+            Vec::with_capacity(self.pair_impulses.len() + self.obstacle_impulses.len());
         let mut changed = false;
-        // Warm start, leaving out blows being passed on.
-        for (c, &(impact, _)) in contacts.iter().enumerate() {
+        for (impact, &last) in impacts.zip(remembered) {
             let (_, normal, approach) = self.measure(impact, state);
             let [i, j] = impact.particles();
+            let inverse_mass = effective_inverse_mass(impact, forces);
             let blow =
                 approach > resting_speed && (is_struck(i) || (j != usize::MAX && is_struck(j)));
-            if blow {
-                impulses[c] = f64::NAN; // marks the contact as out of this solve
-            } else if impulses[c] > 0.0 {
-                apply_impulse(
-                    impact,
-                    normal,
-                    impulses[c] * effective_inverse_mass(impact, forces),
-                    state,
-                    forces,
-                );
+            let contact = SolverContact {
+                impact,
+                normal,
+                inverse_mass,
+                // NaN leaves the contact out of this solve.
+                impulse: if blow || inverse_mass == 0.0 {
+                    f64::NAN
+                } else {
+                    last * warm
+                },
+            };
+            // Warm start: last step's impulse, scaled to this step.
+            if contact.impulse > 0.0 {
+                contact.push(contact.impulse, state, forces);
                 changed = true;
             }
+            contacts.push(contact);
         }
+        let tolerance = 1e-4 * resting_speed.max(1e-9);
         for _ in 0..ITERATIONS {
             let mut largest: f64 = 0.0;
-            for (c, &(impact, _)) in contacts.iter().enumerate() {
-                if impulses[c].is_nan() {
-                    continue;
-                }
-                let (_, normal, approach) = self.measure(impact, state);
-                let inverse_mass = effective_inverse_mass(impact, forces);
-                if inverse_mass == 0.0 {
+            for contact in &mut contacts {
+                if contact.impulse.is_nan() {
                     continue;
                 }
                 // The impulse that stops the approach, kept from pulling in total.
-                let accumulated = (impulses[c] + approach / inverse_mass).max(0.0);
-                let change = accumulated - impulses[c];
+                let accumulated =
+                    (contact.impulse + contact.approach(state) / contact.inverse_mass).max(0.0);
+                let change = accumulated - contact.impulse;
                 if change != 0.0 {
-                    apply_impulse(impact, normal, change * inverse_mass, state, forces);
-                    impulses[c] = accumulated;
-                    largest = largest.max((change * inverse_mass).abs());
+                    contact.push(change, state, forces);
+                    contact.impulse = accumulated;
+                    largest = largest.max((change * contact.inverse_mass).abs());
                     changed = true;
                 }
             }
-            if largest <= 1e-9 * resting_speed.max(1e-9) {
+            if largest <= tolerance {
                 break;
             }
         }
+        let impulses: Vec<f64> = contacts.iter().map(|c| c.impulse).collect();
+        let contacts: Vec<Impact> = contacts.iter().map(|c| c.impact).collect();
         changed |= self.correct_overlaps(&contacts, state, forces);
         let pairs = self.touching_pairs.len();
         let keep = |j: f64| if j.is_nan() { 0.0 } else { j };
@@ -829,13 +837,13 @@ impl Contacts {
     /// (non-linear Gauss–Seidel on positions). Returns whether anything moved.
     fn correct_overlaps(
         &self,
-        contacts: &[(Impact, bool)],
+        contacts: &[Impact],
         state: &mut State,
         forces: &ForceModel,
     ) -> bool {
         let mut changed = false;
         for _ in 0..POSITION_SWEEPS {
-            for &(impact, _) in contacts {
+            for &impact in contacts {
                 let (gap, normal, _) = self.measure(impact, state);
                 let [i, j] = impact.particles();
                 let smaller = if j == usize::MAX {
@@ -865,6 +873,36 @@ impl Contacts {
             }
         }
         changed
+    }
+}
+
+/// A contact in the resting solver.
+struct SolverContact {
+    impact: Impact,
+    /// From the first particle (or the surface) towards the second (or the particle).
+    normal: DVec2,
+    inverse_mass: f64,
+    /// Accumulated impulse, N·s; NaN when the contact is left out of the solve.
+    impulse: f64,
+}
+
+impl SolverContact {
+    fn approach(&self, state: &State) -> f64 {
+        match self.impact {
+            Impact::Pair(i, j) => (state.velocity[i] - state.velocity[j]).dot(self.normal),
+            Impact::Obstacle(p, _) => -state.velocity[p].dot(self.normal),
+        }
+    }
+
+    /// Applies an impulse of `amount` N·s along the normal.
+    fn push(&self, amount: f64, state: &mut State, forces: &ForceModel) {
+        apply_impulse(
+            self.impact,
+            self.normal,
+            amount * self.inverse_mass,
+            state,
+            forces,
+        );
     }
 }
 

@@ -8,6 +8,7 @@
 mod bench;
 mod run;
 mod scene_source;
+mod validate;
 
 use std::process::ExitCode;
 
@@ -34,12 +35,14 @@ enum Command {
     Examples,
     /// Measure simulation speed (steps per second, pair interactions per second).
     Bench(bench::BenchArgs),
+    /// Reproduce the paper's experiments (section 4) against theory.
+    Validate(validate::ValidateArgs),
 }
 
 /// Why a command failed, and the exit code that says so.
 #[derive(Debug)]
 pub(crate) enum Failure {
-    /// Exit 1: the simulation failed.
+    /// Exit 1: the simulation failed, or did not match theory.
     Simulation(String),
     /// Exit 2: bad arguments or a bad scene.
     Input(String),
@@ -67,6 +70,7 @@ fn main() -> ExitCode {
             Ok(())
         }
         Some(Command::Bench(args)) => bench::bench(&args),
+        Some(Command::Validate(args)) => validate::validate(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -277,3 +277,54 @@ fn json_scenes_run_too() {
         last[2]
     );
 }
+
+/// `validate` reproduces the paper's section 4 within the default 1e-6, writes the report
+/// and the five figures, and fails (exit 1, naming what failed) when the tolerance is
+/// tighter than rounding allows.
+#[test]
+fn validate_passes_writes_a_report_and_fails_an_impossible_tolerance() {
+    let dir = tempdir::Dir::new();
+    let out = dir.path.to_string_lossy().into_owned();
+    let output = newtonlab(&["validate", "--out", &out]);
+    assert!(
+        output.status.success(),
+        "{}\n{}",
+        stdout(&output),
+        stderr(&output)
+    );
+    let text = stdout(&output);
+    for section in ["4.1", "4.2", "4.3", "4.4", "4.5", "4.6", "4.7"] {
+        assert!(
+            text.contains(&format!("\n{section} ")),
+            "section {section} printed"
+        );
+    }
+    assert!(text.contains("checks within the tolerance"), "{text}");
+    let report = std::fs::read_to_string(dir.path.join("report.md")).expect("report.md written");
+    assert!(report.contains("## 4.7"), "the report has every table");
+    for figure in [
+        "spring-b0.png",
+        "spring-b0.25.png",
+        "spring-b0.5.png",
+        "gravitation.png",
+        "coulomb.png",
+    ] {
+        let bytes = std::fs::read(dir.path.join(figure)).expect("figure written");
+        assert!(
+            bytes.starts_with(b"\x89PNG") && bytes.len() > 10_000,
+            "{figure} is a drawn PNG"
+        );
+        assert!(report.contains(figure), "{figure} linked from the report");
+    }
+    let output = newtonlab(&["validate", "--tolerance", "1e-18"]);
+    assert_eq!(
+        output.status.code(),
+        Some(1),
+        "an impossible tolerance fails"
+    );
+    assert!(
+        stderr(&output).contains("exceed the tolerance"),
+        "{}",
+        stderr(&output)
+    );
+}

@@ -70,3 +70,38 @@ pub fn ball_pit(n: usize) -> Scene {
     }
     scene
 }
+
+/// The ball pit of `n` with more going on, for the processing-time table: every tenth
+/// ball carries ±1 µC (Coulomb on, gravitation off), and every fifth pair of neighbours
+/// is joined by a spring of 50 N/m.
+#[must_use]
+pub fn mixed(n: usize) -> Scene {
+    let mut scene = ball_pit(n);
+    scene.name = Some(format!("Mixed scene of {n}"));
+    scene.description = Some(format!(
+        "{n} balls in a box with charges, springs and collisions."
+    ));
+    scene.world.electrostatics = true;
+    for (i, ball) in scene
+        .particles
+        .iter_mut()
+        .enumerate()
+        .filter(|(i, _)| i % 10 == 0)
+    {
+        ball.charge = if i % 20 == 0 { 1e-6 } else { -1e-6 };
+    }
+    for i in (0..n.saturating_sub(1)).step_by(10) {
+        let (a, b) = (
+            scene.particles[i].name.clone(),
+            scene.particles[i + 1].name.clone(),
+        );
+        scene.springs.push(crate::scene::Spring::new(
+            format!("s{}", i / 10 + 1),
+            a.as_str(),
+            b.as_str(),
+            50.0,
+            0.3,
+        ));
+    }
+    scene
+}

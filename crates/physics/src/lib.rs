@@ -28,4 +28,4 @@ pub use scene::{
     Bounds, Color, Endpoint, FieldRef, Particle, Ramp, Rule, Scene, Section, Settings, Spring,
     Vector, World, check_value,
 };
-pub use simulation::{Simulation, SimulationError};
+pub use simulation::{ImpactRecord, ImpactTarget, Simulation, SimulationError};

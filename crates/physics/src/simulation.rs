@@ -68,6 +68,30 @@ pub struct Simulation {
     tolerance: f64,
     work: Workspace,
     steps: u64,
+    /// Impacts so far, when asked for with [`Simulation::record_impacts`].
+    impact_log: Option<Vec<ImpactRecord>>,
+}
+
+/// An impact that happened: when, and between what.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ImpactRecord {
+    /// Seconds, located to the instant of contact.
+    pub time: f64,
+    /// The particle (the first of a pair, in scene order).
+    pub particle: usize,
+    /// What it hit.
+    pub other: ImpactTarget,
+}
+
+/// What a particle hit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ImpactTarget {
+    /// Another particle, by index.
+    Particle(usize),
+    /// A ramp, by index in the scene's ramps.
+    Ramp(usize),
+    /// A wall of the world's bounds.
+    Wall,
 }
 
 impl Simulation {
@@ -108,6 +132,7 @@ impl Simulation {
             tolerance: scene.simulation.tolerance,
             work: Workspace::default(),
             steps: 0,
+            impact_log: None,
         };
         // Contacts from the start: a particle placed on a ramp is held by it at t = 0.
         simulation.contacts.begin_step(
@@ -116,6 +141,19 @@ impl Simulation {
             simulation.time_step,
         );
         Ok(simulation)
+    }
+
+    /// Starts keeping a log of impacts, read with [`Self::take_impacts`].
+    pub fn record_impacts(&mut self) {
+        self.impact_log.get_or_insert_with(Vec::new);
+    }
+
+    /// The impacts since the last call (empty unless [`Self::record_impacts`] was called).
+    pub fn take_impacts(&mut self) -> Vec<ImpactRecord> {
+        self.impact_log
+            .as_mut()
+            .map(std::mem::take)
+            .unwrap_or_default()
     }
 
     /// Simulated time, seconds.
@@ -236,6 +274,21 @@ impl Simulation {
                 .apply(impact, &mut self.state, &self.forces, taken);
             self.work.start_acceleration = None;
             struck = impact.particles();
+        }
+        if let Some(log) = &mut self.impact_log {
+            let ramps = self.contacts.ramp_count();
+            for &(time, impact) in &self.contacts.applied {
+                let (particle, other) = match impact {
+                    Impact::Pair(i, j) => (i, ImpactTarget::Particle(j)),
+                    Impact::Obstacle(p, k) if k < ramps => (p, ImpactTarget::Ramp(k)),
+                    Impact::Obstacle(p, _) => (p, ImpactTarget::Wall),
+                };
+                log.push(ImpactRecord {
+                    time: self.start.time + time,
+                    particle,
+                    other,
+                });
+            }
         }
         if self
             .contacts

@@ -121,6 +121,8 @@ pub(crate) struct Contacts {
     impacted: HashSet<Impact>,
     queue: BinaryHeap<Reverse<Event>>,
     neighbours: Vec<u32>,
+    /// The impacts applied in this step, with their time in seconds into it.
+    pub applied: Vec<(f64, Impact)>,
 }
 
 /// A particle's path through the step: the cubic Hermite curve through the integrator's
@@ -240,7 +242,16 @@ impl Contacts {
             impacted: HashSet::new(),
             queue: BinaryHeap::new(),
             neighbours: Vec::new(),
+            applied: Vec::new(),
         }
+    }
+
+    /// How many of the obstacles are ramps (the walls come after them).
+    pub fn ramp_count(&self) -> usize {
+        self.obstacles
+            .iter()
+            .take_while(|o| matches!(o.shape, Shape::Capsule { .. }))
+            .count()
     }
 
     fn resting_speed(&self, h: f64) -> f64 {
@@ -253,6 +264,7 @@ impl Contacts {
     /// changed.
     pub fn begin_step(&mut self, state: &mut State, forces: &mut ForceModel, h: f64) -> bool {
         let had_surface_contacts = !forces.surface_contacts.is_empty();
+        self.applied.clear();
         forces.surface_contacts.clear();
         self.find_touching(state, forces);
         let resting_speed = self.resting_speed(h);
@@ -361,19 +373,25 @@ impl Contacts {
     /// Applies every impact between touching things that approach faster than
     /// `resting_speed`, pass after pass until none does. A contact still approaching after
     /// many passes (a ball squeezed between two others) is made inelastic, which ends it.
-    fn impacts_now(&self, state: &mut State, forces: &ForceModel, resting_speed: f64) -> bool {
+    fn impacts_now(&mut self, state: &mut State, forces: &ForceModel, resting_speed: f64) -> bool {
         let max_passes = 2 * state.len() + 8;
         let mut changed = false;
         for pass in 0..=max_passes {
             let last = pass == max_passes;
             let mut any = false;
-            for &(i, j) in &self.touching_pairs {
-                let impact = Impact::Pair(i as usize, j as usize);
-                any |= self.collide(impact, state, forces, resting_speed, last);
-            }
-            for &(p, k) in &self.touching_obstacles {
-                let impact = Impact::Obstacle(p as usize, k as usize);
-                any |= self.collide(impact, state, forces, resting_speed, last);
+            let pairs = self
+                .touching_pairs
+                .iter()
+                .map(|&(i, j)| Impact::Pair(i as usize, j as usize));
+            let obstacles = self
+                .touching_obstacles
+                .iter()
+                .map(|&(p, k)| Impact::Obstacle(p as usize, k as usize));
+            for impact in pairs.chain(obstacles) {
+                if self.collide(impact, state, forces, resting_speed, last) {
+                    self.applied.push((0.0, impact));
+                    any = true;
+                }
             }
             changed |= any;
             if !any {
@@ -591,6 +609,7 @@ impl Contacts {
         } else {
             0.0
         };
+        self.applied.push((event.time, event.impact));
         let (dv_first, dv_second) =
             velocity_changes(event.impact, normal, approach * (1.0 + restitution), forces);
         let mut moved = vec![(first, dv_first)];
@@ -702,7 +721,7 @@ impl Contacts {
 
     /// Applies the impulse of an impact returned by [`Self::resolve_impacts`], now that the
     /// state is at its instant. A slow one is inelastic: the bodies come to rest in contact.
-    pub fn apply(&self, impact: Impact, state: &mut State, forces: &ForceModel, h: f64) {
+    pub fn apply(&mut self, impact: Impact, state: &mut State, forces: &ForceModel, h: f64) {
         let (_, normal, approach) = self.measure(impact, state);
         if approach <= 0.0 {
             return;
@@ -719,6 +738,7 @@ impl Contacts {
             state,
             forces,
         );
+        self.applied.push((h, impact));
     }
 
     /// Resting contact after a step of `h`: removes every approach between touching

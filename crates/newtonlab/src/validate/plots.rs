@@ -1,0 +1,131 @@
+//! The paper's figures: position and acceleration against time, simulation and theory
+//! overlaid, drawn with plotters into PNG files. Text is rendered with the Ubuntu Light
+//! font that egui ships (`epaint_default_fonts`), so no system font is needed.
+
+use std::path::Path;
+
+use plotters::prelude::*;
+use plotters::style::FontStyle;
+
+/// One quantity against time, simulated and theoretical.
+pub(crate) struct Panel {
+    pub label: &'static str,
+    pub simulated: Vec<(f64, f64)>,
+    pub theory: Vec<(f64, f64)>,
+}
+
+impl Panel {
+    pub fn new(label: &'static str) -> Self {
+        Self {
+            label,
+            simulated: Vec::new(),
+            theory: Vec::new(),
+        }
+    }
+
+    pub fn add(&mut self, t: f64, simulated: f64, theory: f64) {
+        self.simulated.push((t, simulated));
+        self.theory.push((t, theory));
+    }
+}
+
+/// A figure of two panels, stacked.
+pub(crate) struct Figure {
+    pub file: String,
+    pub title: String,
+    pub panels: [Panel; 2],
+}
+
+/// Makes the bundled font available to plotters as "sans-serif" (once per process).
+fn register_font() -> Result<(), String> {
+    static REGISTERED: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    let ok = *REGISTERED.get_or_init(|| {
+        plotters::style::register_font(
+            "sans-serif",
+            FontStyle::Normal,
+            epaint_default_fonts::UBUNTU_LIGHT,
+        )
+        .is_ok()
+    });
+    if ok {
+        Ok(())
+    } else {
+        Err("the bundled font could not be loaded".to_owned())
+    }
+}
+
+/// Draws `figure` into `directory/figure.file`.
+pub(crate) fn draw(figure: &Figure, directory: &Path) -> Result<(), String> {
+    register_font()?;
+    let path = directory.join(&figure.file);
+    let root = BitMapBackend::new(&path, (1000, 760)).into_drawing_area();
+    let problem = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());
+    root.fill(&WHITE).map_err(|e| problem(&e))?;
+    let root = root
+        .titled(&figure.title, ("sans-serif", 24))
+        .map_err(|e| problem(&e))?;
+    let areas = root.split_evenly((2, 1));
+    for (area, panel) in areas.iter().zip(&figure.panels) {
+        let (t_max, (low, high)) = extent(panel);
+        let mut chart = ChartBuilder::on(area)
+            .margin(12)
+            .x_label_area_size(40)
+            .y_label_area_size(70)
+            .build_cartesian_2d(0.0..t_max, low..high)
+            .map_err(|e| problem(&e))?;
+        chart
+            .configure_mesh()
+            .x_desc("time t (s)")
+            .y_desc(panel.label)
+            .label_style(("sans-serif", 15))
+            .draw()
+            .map_err(|e| problem(&e))?;
+        let theory_colour = RGBColor(240, 160, 60);
+        chart
+            .draw_series(LineSeries::new(
+                panel.theory.iter().copied(),
+                theory_colour.stroke_width(5),
+            ))
+            .map_err(|e| problem(&e))?
+            .label("theory")
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], theory_colour.stroke_width(5))
+            });
+        let simulated_colour = RGBColor(40, 90, 200);
+        chart
+            .draw_series(LineSeries::new(
+                panel.simulated.iter().copied(),
+                simulated_colour.stroke_width(1),
+            ))
+            .map_err(|e| problem(&e))?
+            .label("simulation")
+            .legend(move |(x, y)| {
+                PathElement::new(vec![(x, y), (x + 20, y)], simulated_colour.stroke_width(2))
+            });
+        chart
+            .configure_series_labels()
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK)
+            .label_font(("sans-serif", 15))
+            .draw()
+            .map_err(|e| problem(&e))?;
+    }
+    root.present().map_err(|e| problem(&e))
+}
+
+/// The time range and a padded value range of a panel.
+fn extent(panel: &Panel) -> (f64, (f64, f64)) {
+    let all = panel.simulated.iter().chain(&panel.theory);
+    let t_max = all.clone().map(|p| p.0).fold(0.0, f64::max).max(1e-9);
+    let (low, high) = all
+        .map(|p| p.1)
+        .filter(|y| y.is_finite())
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), y| {
+            (lo.min(y), hi.max(y))
+        });
+    if !(low.is_finite() && high.is_finite()) {
+        return (t_max, (-1.0, 1.0));
+    }
+    let pad = ((high - low) * 0.08).max(1e-9);
+    (t_max, (low - pad, high + pad))
+}

@@ -1,0 +1,149 @@
+//! The validation report: tables in the paper's layout, the checks behind them, rendered
+//! as aligned text for the terminal and as Markdown for `report.md`.
+
+use std::fmt::Write as _;
+
+/// One of the paper's tables, reproduced.
+pub(crate) struct Table {
+    /// The paper's section, "4.2".
+    pub section: &'static str,
+    pub title: String,
+    /// The closed-form result the theory column comes from.
+    pub theory: &'static str,
+    pub header: Vec<&'static str>,
+    pub rows: Vec<Vec<String>>,
+}
+
+/// A simulated value held against theory.
+pub(crate) struct Check {
+    pub what: String,
+    /// |simulated − theory| / scale.
+    pub error: f64,
+}
+
+pub(crate) struct Report {
+    pub tolerance: f64,
+    pub tables: Vec<Table>,
+    pub checks: Vec<Check>,
+}
+
+impl Report {
+    pub fn new(tolerance: f64) -> Self {
+        Self {
+            tolerance,
+            tables: Vec::new(),
+            checks: Vec::new(),
+        }
+    }
+
+    /// Records a check and returns its error, |simulated − theory| / scale.
+    pub fn check(
+        &mut self,
+        what: impl Into<String>,
+        simulated: f64,
+        theory: f64,
+        scale: f64,
+    ) -> f64 {
+        let error = (simulated - theory).abs() / scale;
+        // NaN fails: `error <= tolerance` is false for it.
+        self.checks.push(Check {
+            what: what.into(),
+            error,
+        });
+        error
+    }
+
+    pub fn failures(&self) -> impl Iterator<Item = &Check> {
+        // A NaN error (a quantity that could not be measured) fails too.
+        self.checks
+            .iter()
+            .filter(|c| c.error.is_nan() || c.error > self.tolerance)
+    }
+
+    /// Every table as aligned plain text.
+    pub fn to_text(&self) -> String {
+        let mut out = String::new();
+        for table in &self.tables {
+            let _ = writeln!(out, "\n{} {}", table.section, table.title);
+            let _ = writeln!(out, "theory: {}", table.theory);
+            let widths: Vec<usize> = (0..table.header.len())
+                .map(|c| {
+                    table
+                        .rows
+                        .iter()
+                        .map(|r| r.get(c).map_or(0, |s| s.chars().count()))
+                        .chain([table.header[c].chars().count()])
+                        .max()
+                        .unwrap_or(0)
+                })
+                .collect();
+            let line = |cells: &[String]| {
+                cells
+                    .iter()
+                    .zip(&widths)
+                    .map(|(cell, width)| format!("{cell:>width$}"))
+                    .collect::<Vec<_>>()
+                    .join("  ")
+            };
+            let header: Vec<String> = table.header.iter().map(|h| (*h).to_owned()).collect();
+            let _ = writeln!(out, "{}", line(&header));
+            for row in &table.rows {
+                let _ = writeln!(out, "{}", line(row));
+            }
+        }
+        out
+    }
+
+    /// Every table as Markdown.
+    pub fn to_markdown(&self) -> String {
+        let mut out = String::new();
+        for table in &self.tables {
+            let _ = writeln!(out, "\n## {} {}\n", table.section, table.title);
+            let _ = writeln!(out, "Theory: {}\n", table.theory);
+            let _ = writeln!(out, "| {} |", table.header.join(" | "));
+            let _ = writeln!(out, "|{}|", vec!["---:"; table.header.len()].join("|"));
+            for row in &table.rows {
+                let _ = writeln!(out, "| {} |", row.join(" | "));
+            }
+        }
+        out
+    }
+
+    /// The closing lines: how many checks, and which failed.
+    pub fn summary(&self) -> String {
+        let failed: Vec<&Check> = self.failures().collect();
+        if failed.is_empty() {
+            return format!(
+                "all {} checks within the tolerance {:e} (largest error {:.2e})",
+                self.checks.len(),
+                self.tolerance,
+                self.checks.iter().map(|c| c.error).fold(0.0, f64::max)
+            );
+        }
+        let mut out = format!(
+            "{} of {} checks exceed the tolerance {:e}:",
+            failed.len(),
+            self.checks.len(),
+            self.tolerance
+        );
+        for check in failed {
+            let _ = write!(out, "\n  {}: error {:.3e}", check.what, check.error);
+        }
+        out
+    }
+}
+
+/// A value with enough digits to show a 1e-9 difference.
+pub(crate) fn value(x: f64) -> String {
+    format!("{x:.10}")
+}
+
+/// An error, relative unless stated.
+pub(crate) fn error(x: f64) -> String {
+    format!("{x:.2e}")
+}
+
+/// An angle in degrees.
+pub(crate) fn degrees(x: f64) -> String {
+    format!("{x:.6}")
+}

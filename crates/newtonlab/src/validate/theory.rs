@@ -1,0 +1,181 @@
+//! The closed-form results the simulation is judged against. Every theory value in the
+//! validation report comes from one of these functions, never from a simulation run.
+
+use std::f64::consts::PI;
+
+use physics::DVec2;
+
+/// Constant acceleration: x(t) = x0 + v0 t + a t²/2.
+pub(crate) fn constant_acceleration(x0: DVec2, v0: DVec2, a: DVec2, t: f64) -> DVec2 {
+    x0 + v0 * t + a * (0.5 * t * t)
+}
+
+/// Velocities after an impact (the paper's 8–10) with normal `n` from A to B at contact,
+/// restitution `e`: `j = −(1 + e) (v_A − v_B)·n / (1/m_A + 1/m_B)`.
+pub(crate) fn impact(
+    masses: (f64, f64),
+    velocities: (DVec2, DVec2),
+    n: DVec2,
+    e: f64,
+) -> (DVec2, DVec2) {
+    let ((ma, mb), (va, vb)) = (masses, velocities);
+    let j = -(1.0 + e) * (va - vb).dot(n) / (1.0 / ma + 1.0 / mb);
+    (va + n * (j / ma), vb - n * (j / mb))
+}
+
+/// Acceleration on a frictionless inclined plane at `angle_degrees`: the component of
+/// the field along the plane, (g·u) u, magnitude g |sin θ|.
+pub(crate) fn inclined_plane(gravity: DVec2, angle_degrees: f64) -> DVec2 {
+    let along = DVec2::from_angle(angle_degrees.to_radians());
+    along * gravity.dot(along)
+}
+
+/// Reflection off a surface with unit normal `n` (the paper's 17–22 with restitution
+/// `e`): v∥ kept, v⊥ reversed and scaled by e.
+pub(crate) fn reflection(v: DVec2, n: DVec2, e: f64) -> DVec2 {
+    v - n * ((1.0 + e) * v.dot(n))
+}
+
+/// The damped harmonic oscillator m ü = −k u − b u̇ released at rest from u0:
+/// u(t) = u0 e^(−γt) (cos ωt + (γ/ω) sin ωt), γ = b/2m, ω = √(k/m − γ²) (underdamped).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct DampedOscillator {
+    pub mass: f64,
+    pub stiffness: f64,
+    pub damping: f64,
+    pub start: f64,
+}
+
+impl DampedOscillator {
+    fn gamma(&self) -> f64 {
+        self.damping / (2.0 * self.mass)
+    }
+
+    /// Angular frequency of the damped oscillation, rad/s.
+    pub fn omega(&self) -> f64 {
+        (self.stiffness / self.mass - self.gamma().powi(2)).sqrt()
+    }
+
+    /// Displacement from equilibrium at `t`, metres.
+    pub fn displacement(&self, t: f64) -> f64 {
+        let (gamma, omega) = (self.gamma(), self.omega());
+        self.start * (-gamma * t).exp() * ((omega * t).cos() + gamma / omega * (omega * t).sin())
+    }
+
+    /// Acceleration at `t`: −(k u + b u̇)/m, with u̇ = −u0 e^(−γt) (ω + γ²/ω) sin ωt.
+    pub fn acceleration(&self, t: f64) -> f64 {
+        let (gamma, omega) = (self.gamma(), self.omega());
+        let velocity =
+            -self.start * (-gamma * t).exp() * (omega + gamma * gamma / omega) * (omega * t).sin();
+        -(self.stiffness * self.displacement(t) + self.damping * velocity) / self.mass
+    }
+
+    /// The k-th maximum of the displacement: at t = 2πk/ω, u0 e^(−γt).
+    pub fn peak(&self, k: u32) -> (f64, f64) {
+        let t = 2.0 * PI * f64::from(k) / self.omega();
+        (t, self.start * (-self.gamma() * t).exp())
+    }
+}
+
+/// Radial free fall from rest under an inverse-square attraction μ/r² (μ = G(m1 + m2) for
+/// gravity, k|q1 q2|(1/m1 + 1/m2) for opposite charges, the relative coordinate):
+/// t(r) = √(r0³ / 2μ) (√(u(1 − u)) + arccos √u), u = r/r0.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RadialFall {
+    /// Strength of the attraction of the relative coordinate, m³/s².
+    pub strength: f64,
+    /// Starting separation, metres.
+    pub start: f64,
+}
+
+impl RadialFall {
+    /// Time to fall from the start to separation `r`, seconds.
+    pub fn time_to(&self, r: f64) -> f64 {
+        let u = (r / self.start).clamp(0.0, 1.0);
+        (self.start.powi(3) / (2.0 * self.strength)).sqrt()
+            * ((u * (1.0 - u)).sqrt() + u.sqrt().acos())
+    }
+
+    /// Separation at time `t` into the fall (the inverse of [`Self::time_to`], which is
+    /// monotonic, found by bisection to rounding).
+    pub fn separation_at(&self, t: f64) -> f64 {
+        let (mut near, mut far) = (0.0, self.start);
+        for _ in 0..200 {
+            let middle = 0.5 * (near + far);
+            if self.time_to(middle) > t {
+                near = middle;
+            } else {
+                far = middle;
+            }
+            if far - near <= f64::EPSILON * self.start {
+                break;
+            }
+        }
+        0.5 * (near + far)
+    }
+
+    /// Separation at time `t` for bodies that bounce elastically at separation `contact`:
+    /// fall, rise back to the start, fall again, with period 2 t(contact).
+    pub fn bouncing_separation(&self, contact: f64, t: f64) -> f64 {
+        let fall = self.time_to(contact);
+        let phase = t.rem_euclid(2.0 * fall);
+        self.separation_at(if phase <= fall {
+            phase
+        } else {
+            2.0 * fall - phase
+        })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Free fall from r0 = 1 to 0 with μ = 2 takes π/2 √(r0³/2μ) = π/4 (arccos 0 = π/2).
+    #[test]
+    fn radial_fall_to_the_centre() {
+        let fall = RadialFall {
+            strength: 2.0,
+            start: 1.0,
+        };
+        assert!((fall.time_to(0.0) - PI / 2.0 * 0.5).abs() < 1e-15, "t(0)");
+        assert!(
+            (fall.separation_at(fall.time_to(0.4)) - 0.4).abs() < 1e-14,
+            "inverse"
+        );
+    }
+
+    /// Near the start the fall is uniform acceleration: r ≈ r0 − μ t² / 2r0².
+    #[test]
+    fn radial_fall_starts_like_constant_acceleration() {
+        let fall = RadialFall {
+            strength: 3.0,
+            start: 10.0,
+        };
+        let t = 1e-3;
+        let expected = 10.0 - 3.0 / 100.0 * t * t / 2.0;
+        assert!(
+            (fall.separation_at(t) - expected).abs() < 1e-12,
+            "{}",
+            fall.separation_at(t)
+        );
+    }
+
+    #[test]
+    fn undamped_oscillator_is_a_cosine() {
+        let spring = DampedOscillator {
+            mass: 1.0,
+            stiffness: 4.0,
+            damping: 0.0,
+            start: 5.0,
+        };
+        assert!(
+            (spring.displacement(0.3) - 5.0 * 0.6_f64.cos()).abs() < 1e-15,
+            "cos 2t"
+        );
+        assert!(
+            (spring.acceleration(0.3) + 20.0 * 0.6_f64.cos()).abs() < 1e-14,
+            "−4 u"
+        );
+    }
+}

@@ -37,6 +37,20 @@ enum Command {
     Bench(bench::BenchArgs),
     /// Reproduce the paper's experiments (section 4) against theory.
     Validate(validate::ValidateArgs),
+    /// Open the app on a given scene (what `newtonlab` alone does on the welcome scene).
+    App(AppArgs),
+}
+
+#[derive(Debug, clap::Args)]
+struct AppArgs {
+    /// A scene file, or example:NAME; the welcome scene when absent.
+    scene: Option<String>,
+    /// Start playing at once.
+    #[arg(long)]
+    play: bool,
+    /// Play, measure this many frames, print the frame times and close.
+    #[arg(long, value_name = "N")]
+    measure_frames: Option<usize>,
 }
 
 /// Why a command failed, and the exit code that says so.
@@ -62,7 +76,12 @@ impl Failure {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        None => open_app(),
+        None => open_app(&AppArgs {
+            scene: None,
+            play: false,
+            measure_frames: None,
+        }),
+        Some(Command::App(args)) => open_app(&args),
         Some(Command::Run(args)) => run::run(&args),
         Some(Command::Check { scene }) => check(&scene),
         Some(Command::Examples) => {
@@ -78,11 +97,26 @@ fn main() -> ExitCode {
     }
 }
 
-fn open_app() -> Result<(), Failure> {
-    Err(Failure::Input(
-        "this build of newtonlab has no app yet; see `newtonlab --help` for the headless commands"
-            .to_owned(),
-    ))
+fn open_app(args: &AppArgs) -> Result<(), Failure> {
+    let mut app = match &args.scene {
+        None => newtonlab_app::App::default(),
+        Some(source) => {
+            let mut app = newtonlab_app::App::new(scene_source::load(source)?);
+            if !source.starts_with("example:") {
+                app.document.mark_saved(source.clone());
+            }
+            app
+        }
+    };
+    app = app.with_launch(newtonlab_app::Launch {
+        play: args.play || args.measure_frames.is_some(),
+        measure_frames: args.measure_frames,
+    });
+    newtonlab_app::run_native(app).map_err(|e| {
+        Failure::Simulation(format!(
+            "the app could not open a window: {e}\n(the headless commands work without one: see `newtonlab --help`)"
+        ))
+    })
 }
 
 fn check(source: &str) -> Result<(), Failure> {

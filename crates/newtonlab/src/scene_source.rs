@@ -1,7 +1,5 @@
 //! Where a scene comes from: a file path, or `example:NAME` for a built-in scene.
 
-use std::fmt::Write as _;
-
 use physics::{LoadError, Scene, SceneFormat};
 
 use crate::Failure;
@@ -26,18 +24,5 @@ pub(crate) fn load(source: &str) -> Result<Scene, Failure> {
 }
 
 fn describe(source: &str, error: &LoadError) -> Failure {
-    let count = error.problems.len();
-    let mut message = format!(
-        "{source}: {count} problem{} found:",
-        if count == 1 { "" } else { "s" }
-    );
-    for problem in &error.problems {
-        let place = match (problem.line, problem.column) {
-            (Some(line), Some(column)) => format!("{source}:{line}:{column}"),
-            (Some(line), None) => format!("{source}:{line}"),
-            _ => source.to_owned(),
-        };
-        let _ = write!(message, "\n  {place}: {}", problem.message);
-    }
-    Failure::Input(message)
+    Failure::Input(error.report(source))
 }

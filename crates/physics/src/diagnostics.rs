@@ -78,11 +78,12 @@ pub(crate) fn measure(forces: &ForceModel, state: &State) -> Diagnostics {
         energy.uniform += uniform::potential(m, forces.uniform[i], state.position[i]);
         momentum += m * v;
     }
+    // A fold from +0: `sum` of no springs is −0, which shows as "-0".
     energy.spring = forces
         .springs
         .iter()
         .map(|s| s.potential(&state.position))
-        .sum();
+        .fold(0.0, |sum, e| sum + e);
     let g = forces.gravitational_constant.unwrap_or(0.0);
     let k = forces.coulomb_constant.unwrap_or(0.0);
     let ids = &forces.interacting;

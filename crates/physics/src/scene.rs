@@ -155,6 +155,15 @@ impl Particle {
         }
     }
 
+    /// The velocity it starts with, m/s: zero for a fixed particle, whatever was typed.
+    pub fn initial_velocity(&self) -> DVec2 {
+        if self.fixed {
+            DVec2::ZERO
+        } else {
+            self.velocity.to_dvec2()
+        }
+    }
+
     /// Sets the position, metres.
     #[must_use]
     pub fn position(mut self, position: impl Into<Vector>) -> Self {

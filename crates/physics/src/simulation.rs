@@ -21,8 +21,8 @@ use crate::contacts::{Contacts, Impact};
 use crate::diagnostics::{self, Diagnostics, ParticleReadout};
 use crate::forces::ForceModel;
 use crate::integrators::{self, Integrator, Workspace};
-use crate::scene::Scene;
 use crate::scene::format::LoadError;
+use crate::scene::{Particle, Scene};
 use crate::state::State;
 
 /// Why a simulation stopped.
@@ -115,17 +115,7 @@ impl Simulation {
             state: State {
                 time: 0.0,
                 position: particles.iter().map(|p| p.position.to_dvec2()).collect(),
-                // A fixed particle never moves, whatever velocity it was given.
-                velocity: particles
-                    .iter()
-                    .map(|p| {
-                        if p.fixed {
-                            DVec2::ZERO
-                        } else {
-                            p.velocity.to_dvec2()
-                        }
-                    })
-                    .collect(),
+                velocity: particles.iter().map(Particle::initial_velocity).collect(),
             },
             integrator: scene.simulation.integrator,
             time_step: scene.simulation.time_step,

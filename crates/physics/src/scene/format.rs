@@ -72,6 +72,27 @@ pub struct LoadError {
     pub problems: Vec<Problem>,
 }
 
+impl LoadError {
+    /// The problems as `newtonlab check` prints them for the file `source`: a count, then
+    /// one line per problem, `source:line:column: message`.
+    pub fn report(&self, source: &str) -> String {
+        let count = self.problems.len();
+        let mut out = format!(
+            "{source}: {count} problem{} found:",
+            if count == 1 { "" } else { "s" }
+        );
+        for problem in &self.problems {
+            let place = match (problem.line, problem.column) {
+                (Some(line), Some(column)) => format!("{source}:{line}:{column}"),
+                (Some(line), None) => format!("{source}:{line}"),
+                _ => source.to_owned(),
+            };
+            let _ = write!(out, "\n  {place}: {}", problem.message);
+        }
+        out
+    }
+}
+
 impl fmt::Display for LoadError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         for (i, problem) in self.problems.iter().enumerate() {

@@ -1,0 +1,191 @@
+//! The scene being edited, with unlimited undo and redo, the file it belongs to, and
+//! whether it has changed since it was saved.
+//!
+//! Every change goes through [`Document::apply`], which keeps the scene as it was before:
+//! undo is a stack of whole scenes. A scene is small (a thousand particles are ~100 kB),
+//! so snapshots cost little and can never get out of step with the change they undo,
+//! as inverse commands can. A drag is one gesture: one undo step however many frames
+//! it moves things.
+
+use physics::Scene;
+
+#[derive(Clone, Debug)]
+pub struct Document {
+    scene: Scene,
+    /// (what the change was, the scene before it)
+    undo: Vec<(String, Scene)>,
+    redo: Vec<(String, Scene)>,
+    /// The file name (a path on the desktop, a name on the web), if saved or opened.
+    pub path: Option<String>,
+    /// The scene as last saved or opened, to tell whether there are unsaved changes.
+    saved: Scene,
+    /// A gesture (a drag) in progress: its first change made the undo step.
+    gesture: bool,
+}
+
+impl Document {
+    /// A document for `scene`, unchanged and without a file.
+    pub fn new(scene: Scene) -> Self {
+        Self {
+            saved: scene.clone(),
+            scene,
+            undo: Vec::new(),
+            redo: Vec::new(),
+            path: None,
+            gesture: false,
+        }
+    }
+
+    pub fn scene(&self) -> &Scene {
+        &self.scene
+    }
+
+    /// Changes the scene as one undoable step named `label`.
+    pub fn apply(&mut self, label: &str, change: impl FnOnce(&mut Scene)) {
+        if !self.gesture {
+            self.undo.push((label.to_owned(), self.scene.clone()));
+        }
+        change(&mut self.scene);
+        self.redo.clear();
+    }
+
+    /// Starts a gesture: the changes until [`Self::end_gesture`] undo as one step.
+    pub fn begin_gesture(&mut self, label: &str) {
+        if !self.gesture {
+            self.undo.push((label.to_owned(), self.scene.clone()));
+            self.redo.clear();
+            self.gesture = true;
+        }
+    }
+
+    /// Ends a gesture; one that changed nothing leaves no undo step.
+    pub fn end_gesture(&mut self) {
+        if self.gesture {
+            self.gesture = false;
+            if self
+                .undo
+                .last()
+                .is_some_and(|(_, before)| *before == self.scene)
+            {
+                self.undo.pop();
+            }
+        }
+    }
+
+    pub fn in_gesture(&self) -> bool {
+        self.gesture
+    }
+
+    /// What Undo would undo.
+    pub fn undo_label(&self) -> Option<&str> {
+        self.undo.last().map(|(label, _)| label.as_str())
+    }
+
+    /// What Redo would redo.
+    pub fn redo_label(&self) -> Option<&str> {
+        self.redo.last().map(|(label, _)| label.as_str())
+    }
+
+    pub fn undo(&mut self) -> bool {
+        self.end_gesture();
+        let Some((label, before)) = self.undo.pop() else {
+            return false;
+        };
+        let now = std::mem::replace(&mut self.scene, before);
+        self.redo.push((label, now));
+        true
+    }
+
+    pub fn redo(&mut self) -> bool {
+        let Some((label, after)) = self.redo.pop() else {
+            return false;
+        };
+        let now = std::mem::replace(&mut self.scene, after);
+        self.undo.push((label, now));
+        true
+    }
+
+    /// Whether the scene differs from the one last saved or opened.
+    pub fn is_dirty(&self) -> bool {
+        self.scene != self.saved
+    }
+
+    /// Records that the scene was saved to `path`.
+    pub fn mark_saved(&mut self, path: String) {
+        self.saved = self.scene.clone();
+        self.path = Some(path);
+    }
+
+    /// The file's name without its folders, or "untitled".
+    pub fn title(&self) -> String {
+        self.path.as_deref().map_or_else(
+            || "untitled".to_owned(),
+            |p| p.rsplit(['/', '\\']).next().unwrap_or(p).to_owned(),
+        )
+    }
+
+    /// A name not used by any object, `prefix` followed by the smallest free number.
+    pub fn unused_name(&self, prefix: &str) -> String {
+        let scene = &self.scene;
+        let taken = |name: &str| {
+            scene.particles.iter().any(|p| p.name == name)
+                || scene.springs.iter().any(|s| s.name == name)
+                || scene.ramps.iter().any(|r| r.name == name)
+        };
+        // Some number up to one past the count of objects is always free.
+        let count = scene.particles.len() + scene.springs.len() + scene.ramps.len();
+        (1..=count + 1)
+            .map(|n| format!("{prefix}{n}"))
+            .find(|name| !taken(name))
+            .unwrap_or_default()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use physics::Particle;
+
+    #[test]
+    fn undo_and_redo_without_limit() {
+        let mut document = Document::new(Scene::new());
+        for i in 0..500 {
+            document.apply("add", |scene| {
+                scene.particles.push(Particle::new(format!("p{i}"), 1.0));
+            });
+        }
+        assert!(document.is_dirty(), "changed");
+        while document.undo() {}
+        assert_eq!(document.scene().particles.len(), 0, "all undone");
+        assert!(!document.is_dirty(), "back to the saved scene");
+        while document.redo() {}
+        assert_eq!(document.scene().particles.len(), 500, "all redone");
+    }
+
+    #[test]
+    fn a_gesture_is_one_step_and_a_new_change_clears_redo() {
+        let mut document = Document::new(Scene::new().with_particle(Particle::new("a", 1.0)));
+        document.begin_gesture("move");
+        for x in 0..10 {
+            document.apply("move", |scene| {
+                scene.particles[0].position = [f64::from(x), 0.0].into();
+            });
+        }
+        document.end_gesture();
+        document.undo();
+        assert_eq!(
+            document.scene().particles[0].position,
+            [0.0, 0.0].into(),
+            "one step"
+        );
+        document.apply("rename", |scene| scene.particles[0].name = "b".into());
+        assert!(!document.redo(), "redo cleared by a new change");
+        document.begin_gesture("nothing");
+        document.end_gesture();
+        assert_eq!(
+            document.undo_label(),
+            Some("rename"),
+            "an empty gesture leaves no step"
+        );
+    }
+}

@@ -1,0 +1,215 @@
+//! Scene files in the app: New, Open, Save, Save As, the Examples menu, CSV export, and
+//! the prompt before unsaved changes are lost. On the desktop the dialog is drawn by the
+//! app itself (a folder, its files, a name), which works the same on every system,
+//! including a headless one, and needs no desktop portal.
+
+use egui::{Id, Modal, RichText, Ui};
+
+/// What the file dialog is for.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Purpose {
+    Open,
+    Save,
+    ExportCsv,
+}
+
+/// The file dialog's state.
+#[derive(Clone, Debug)]
+pub struct Dialog {
+    pub purpose: Purpose,
+    pub folder: String,
+    pub name: String,
+}
+
+/// Something that would discard unsaved changes, waiting for the user's word.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Pending {
+    New,
+    Open,
+    Example(&'static str),
+    Quit,
+}
+
+/// What the user chose in a dialog this frame.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Choice {
+    /// Read or write this path for the dialog's purpose.
+    Path(Purpose, String),
+    /// Go ahead and discard the unsaved changes.
+    Discard(Pending),
+}
+
+#[derive(Default)]
+pub struct Files {
+    pub dialog: Option<Dialog>,
+    pub confirm: Option<Pending>,
+    /// A message to show (a file that failed to load, a save that failed).
+    pub message: Option<String>,
+}
+
+impl Files {
+    /// Opens the dialog for `purpose`, starting in the folder of `current`.
+    pub fn ask(&mut self, purpose: Purpose, current: Option<&str>, suggested: &str) {
+        #[cfg(not(target_arch = "wasm32"))]
+        let folder = current
+            .and_then(|p| {
+                std::path::Path::new(p)
+                    .parent()
+                    .map(|f| f.to_string_lossy().into_owned())
+            })
+            .filter(|f| !f.is_empty())
+            .unwrap_or_else(crate::platform::current_folder);
+        #[cfg(target_arch = "wasm32")]
+        let folder = String::new();
+        let name = current.map_or_else(
+            || suggested.to_owned(),
+            |p| p.rsplit(['/', '\\']).next().unwrap_or(p).to_owned(),
+        );
+        self.dialog = Some(Dialog {
+            purpose,
+            folder,
+            name,
+        });
+    }
+
+    /// Shows whatever dialog is open; returns what the user chose.
+    #[expect(
+        clippy::too_many_lines,
+        reason = "three dialogs, each laid out in order"
+    )]
+    pub fn ui(&mut self, ui: &mut Ui, title: &str) -> Option<Choice> {
+        let mut choice = None;
+        if let Some(message) = self.message.clone() {
+            let modal = Modal::new(Id::unique("file-message")).show(ui.ctx(), |ui| {
+                ui.set_max_width(640.0);
+                ui.heading("NewtonLab");
+                ui.label(RichText::new(message).monospace());
+                ui.button("OK")
+                    .on_hover_text("Close this message")
+                    .clicked()
+            });
+            if modal.inner || modal.should_close() {
+                self.message = None;
+            }
+        }
+        if let Some(pending) = self.confirm.clone() {
+            let modal = Modal::new(Id::unique("confirm-discard")).show(ui.ctx(), |ui| {
+                ui.heading("Unsaved changes");
+                ui.label(format!(
+                    "“{title}” has changes that are not saved. Discard them?"
+                ));
+                ui.horizontal(|ui| {
+                    if ui
+                        .button("Discard changes")
+                        .on_hover_text("Lose the unsaved changes")
+                        .clicked()
+                    {
+                        return Some(true);
+                    }
+                    if ui.button("Cancel").on_hover_text("Keep editing").clicked() {
+                        return Some(false);
+                    }
+                    None
+                })
+                .inner
+            });
+            match modal.inner {
+                Some(true) => {
+                    self.confirm = None;
+                    choice = Some(Choice::Discard(pending));
+                }
+                Some(false) => self.confirm = None,
+                None if modal.should_close() => self.confirm = None,
+                None => {}
+            }
+        }
+        if let Some(dialog) = &mut self.dialog {
+            let mut close = false;
+            let verb = match dialog.purpose {
+                Purpose::Open => "Open",
+                Purpose::Save => "Save",
+                Purpose::ExportCsv => "Export",
+            };
+            Modal::new(Id::unique("file-dialog")).show(ui.ctx(), |ui| {
+                ui.set_min_width(460.0);
+                ui.heading(match dialog.purpose {
+                    Purpose::Open => "Open a scene",
+                    Purpose::Save => "Save the scene",
+                    Purpose::ExportCsv => "Export the graph as CSV",
+                });
+                ui.horizontal(|ui| {
+                    let label = ui.label("folder");
+                    ui.add(egui::TextEdit::singleline(&mut dialog.folder).desired_width(360.0))
+                        .labelled_by(label.id)
+                        .on_hover_text("The folder");
+                });
+                #[cfg(not(target_arch = "wasm32"))]
+                egui::ScrollArea::vertical()
+                    .max_height(220.0)
+                    .show(ui, |ui| {
+                        if ui
+                            .small_button(".. (parent folder)")
+                            .on_hover_text("The parent folder")
+                            .clicked()
+                            && let Some(parent) = std::path::Path::new(&dialog.folder).parent()
+                        {
+                            dialog.folder = parent.to_string_lossy().into_owned();
+                        }
+                        for (name, is_folder) in crate::platform::list_folder(&dialog.folder) {
+                            let shown = if is_folder {
+                                format!("{name}/")
+                            } else {
+                                name.clone()
+                            };
+                            if ui.selectable_label(dialog.name == name, shown).clicked() {
+                                if is_folder {
+                                    dialog.folder = std::path::Path::new(&dialog.folder)
+                                        .join(&name)
+                                        .to_string_lossy()
+                                        .into_owned();
+                                } else {
+                                    dialog.name = name;
+                                }
+                            }
+                        }
+                    });
+                ui.horizontal(|ui| {
+                    let label = ui.label("file name");
+                    ui.add(egui::TextEdit::singleline(&mut dialog.name).desired_width(300.0))
+                        .labelled_by(label.id)
+                        .on_hover_text("The file's name");
+                });
+                ui.horizontal(|ui| {
+                    if ui
+                        .button(verb)
+                        .on_hover_text(format!("{verb} this file"))
+                        .clicked()
+                        && !dialog.name.trim().is_empty()
+                    {
+                        let path = if dialog.folder.is_empty() {
+                            dialog.name.trim().to_owned()
+                        } else {
+                            std::path::Path::new(&dialog.folder)
+                                .join(dialog.name.trim())
+                                .to_string_lossy()
+                                .into_owned()
+                        };
+                        choice = Some(Choice::Path(dialog.purpose, path));
+                        close = true;
+                    }
+                    if ui
+                        .button("Cancel")
+                        .on_hover_text("Close without doing anything")
+                        .clicked()
+                    {
+                        close = true;
+                    }
+                });
+            });
+            if close {
+                self.dialog = None;
+            }
+        }
+        choice
+    }
+}

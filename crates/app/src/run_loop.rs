@@ -1,0 +1,231 @@
+//! Playing a scene in real time: the simulation advances in fixed steps of its own time
+//! step, as many per frame as the frame's wall time × time scale calls for, decoupled
+//! from the frame rate. Stepping stops when a frame's budget of computing time is spent;
+//! the debt is then dropped rather than carried (carrying it would freeze the app), and
+//! the speed actually achieved is measured and shown, so a slow computer says "running at
+//! 0.6× of the requested speed" instead of silently slowing down.
+
+use std::collections::VecDeque;
+
+use physics::{DVec2, LoadError, Scene, Simulation};
+use web_time::Instant;
+
+/// Computing time per frame spent on physics at most, seconds. Drawing a thousand balls
+/// with software rendering takes some 20 ms on two cores, so 8 ms of physics keeps the
+/// app above 30 frames per second; a scene that needs more runs slower than real time and
+/// says so, rather than making the app sluggish.
+const FRAME_BUDGET: f64 = 0.008;
+/// A frame longer than this (a stall, a breakpoint) does not ask for more physics.
+const LONGEST_FRAME: f64 = 0.1;
+/// Points kept per trail.
+pub const TRAIL_LENGTH: usize = 400;
+
+pub struct Runner {
+    /// The simulation since Play, until Reset.
+    pub simulation: Option<Simulation>,
+    pub playing: bool,
+    /// Simulated seconds per real second requested.
+    pub time_scale: f64,
+    /// Simulated seconds owed to real time.
+    debt: f64,
+    /// Simulated seconds per real second achieved, smoothed.
+    pub achieved: f64,
+    /// Physics steps per second of computing time, smoothed.
+    pub steps_per_second: f64,
+    /// Why the simulation stopped, if it failed.
+    pub failure: Option<String>,
+    /// Total energy when Play built the simulation, joules.
+    pub start_energy: f64,
+    /// Recent positions of each particle, when trails are shown.
+    pub trails: Vec<VecDeque<DVec2>>,
+}
+
+impl Default for Runner {
+    fn default() -> Self {
+        Self {
+            simulation: None,
+            playing: false,
+            time_scale: 1.0,
+            debt: 0.0,
+            achieved: 0.0,
+            steps_per_second: 0.0,
+            failure: None,
+            start_energy: 0.0,
+            trails: Vec::new(),
+        }
+    }
+}
+
+impl Runner {
+    /// A runner at `time_scale`, with nothing running.
+    pub fn at_scale(time_scale: f64) -> Self {
+        Self {
+            time_scale,
+            ..Self::default()
+        }
+    }
+
+    /// Builds the simulation if there is none.
+    ///
+    /// # Errors
+    /// The scene's problems, if it is invalid.
+    pub fn ensure_simulation(&mut self, scene: &Scene) -> Result<&mut Simulation, LoadError> {
+        if let Some(simulation) = self.simulation.take() {
+            return Ok(self.simulation.insert(simulation));
+        }
+        let simulation = Simulation::new(scene)?;
+        self.start_energy = simulation.diagnostics().energy.total();
+        self.trails = vec![VecDeque::new(); simulation.len()];
+        self.failure = None;
+        self.debt = 0.0;
+        Ok(self.simulation.insert(simulation))
+    }
+
+    /// Starts playing (building the simulation first if needed).
+    ///
+    /// # Errors
+    /// The scene's problems, if it is invalid.
+    pub fn play(&mut self, scene: &Scene) -> Result<(), LoadError> {
+        self.ensure_simulation(scene)?;
+        if self.failure.is_none() {
+            self.playing = true;
+        }
+        Ok(())
+    }
+
+    pub fn pause(&mut self) {
+        self.playing = false;
+        self.debt = 0.0;
+    }
+
+    /// Back to the scene as last edited.
+    pub fn reset(&mut self) {
+        *self = Self {
+            time_scale: self.time_scale,
+            ..Self::default()
+        };
+    }
+
+    /// One time step, paused.
+    ///
+    /// # Errors
+    /// The scene's problems, if it is invalid.
+    pub fn step_once(&mut self, scene: &Scene, trails: bool) -> Result<(), LoadError> {
+        self.pause();
+        let simulation = self.ensure_simulation(scene)?;
+        let result = simulation.step();
+        if let Err(error) = result {
+            self.failure = Some(error.to_string());
+        }
+        if trails {
+            self.record_trails();
+        }
+        Ok(())
+    }
+
+    /// Advances by one frame that took `real_dt` seconds of wall time. Returns whether
+    /// the simulation moved.
+    pub fn advance(&mut self, real_dt: f64, trails: bool) -> bool {
+        if !self.playing {
+            return false;
+        }
+        let Some(simulation) = self.simulation.as_mut() else {
+            return false;
+        };
+        let real_dt = real_dt.clamp(0.0, LONGEST_FRAME);
+        let step = simulation.time_step();
+        self.debt += real_dt * self.time_scale;
+        let (clock, start_time) = (Instant::now(), simulation.time());
+        let mut steps = 0_u32;
+        while self.debt >= step * (1.0 - 1e-9) {
+            if let Err(error) = simulation.step() {
+                self.failure = Some(error.to_string());
+                self.playing = false;
+                break;
+            }
+            self.debt -= step;
+            steps += 1;
+            if clock.elapsed().as_secs_f64() > FRAME_BUDGET {
+                // Behind: drop what is owed instead of carrying it into the next frame.
+                self.debt = self.debt.min(step);
+                break;
+            }
+        }
+        let computing = clock.elapsed().as_secs_f64();
+        if steps > 0 && computing > 0.0 {
+            self.steps_per_second = smooth(self.steps_per_second, f64::from(steps) / computing);
+        }
+        if real_dt > 0.0 {
+            self.achieved = smooth(self.achieved, (simulation.time() - start_time) / real_dt);
+        }
+        if trails {
+            self.record_trails();
+        }
+        steps > 0
+    }
+
+    /// The speed achieved as a fraction of the speed requested, when it falls short.
+    pub fn shortfall(&self) -> Option<f64> {
+        (self.playing && self.achieved < 0.95 * self.time_scale)
+            .then_some(self.achieved / self.time_scale)
+    }
+
+    fn record_trails(&mut self) {
+        let Some(simulation) = &self.simulation else {
+            return;
+        };
+        self.trails.resize(simulation.len(), VecDeque::new());
+        for (trail, &position) in self.trails.iter_mut().zip(simulation.positions()) {
+            if trail
+                .back()
+                .is_none_or(|last| last.distance(position) > 1e-9)
+            {
+                trail.push_back(position);
+                if trail.len() > TRAIL_LENGTH {
+                    trail.pop_front();
+                }
+            }
+        }
+    }
+}
+
+/// An exponential moving average that starts at the first sample.
+fn smooth(average: f64, sample: f64) -> f64 {
+    if average == 0.0 {
+        sample
+    } else {
+        0.9 * average + 0.1 * sample
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use physics::Particle;
+
+    /// At time scale 2, ten frames of 1/60 s advance the simulation by 1/3 s (to a step).
+    #[test]
+    fn real_time_at_the_requested_scale() {
+        let scene = Scene::new().with_particle(Particle::new("p", 1.0));
+        let mut runner = Runner {
+            time_scale: 2.0,
+            ..Runner::default()
+        };
+        runner.play(&scene).unwrap();
+        for _ in 0..10 {
+            runner.advance(1.0 / 60.0, false);
+        }
+        let time = runner.simulation.as_ref().unwrap().time();
+        assert!(
+            (time - 1.0 / 3.0).abs() <= 0.001 + 1e-9,
+            "simulated {time} s"
+        );
+        runner.pause();
+        runner.advance(1.0, false);
+        assert_eq!(
+            runner.simulation.as_ref().unwrap().time().to_bits(),
+            time.to_bits(),
+            "paused"
+        );
+    }
+}

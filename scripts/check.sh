@@ -11,6 +11,10 @@ cargo fmt --all -- --check
 echo "== cargo clippy (warnings are errors)"
 cargo clippy --workspace --all-targets --release -- -D warnings
 
+echo "== cargo clippy for the web (wasm32: the browser-only code)"
+rustup target add wasm32-unknown-unknown >/dev/null 2>&1 || true
+cargo clippy --release -p newtonlab_app --lib --target wasm32-unknown-unknown -- -D warnings
+
 echo "== cargo doc (warnings are errors)"
 RUSTDOCFLAGS="-D warnings" cargo doc --workspace --no-deps --release --quiet
 

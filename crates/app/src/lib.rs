@@ -22,7 +22,10 @@ pub mod inspector;
 pub mod platform;
 pub mod plots;
 pub mod run_loop;
+pub mod share;
 pub mod toolbar;
+#[cfg(target_arch = "wasm32")]
+pub mod web;
 
 use egui::{Key, KeyboardShortcut, Modifiers, Ui};
 use physics::{Scene, SceneFormat};
@@ -207,10 +210,7 @@ impl App {
         #[cfg(not(target_arch = "wasm32"))]
         let written = platform::write_text(path, &text);
         #[cfg(target_arch = "wasm32")]
-        let written: Result<(), String> = {
-            let _ = text;
-            Err("saving needs the desktop app".to_owned())
-        };
+        let written = platform::web::download(path, &text, "text/plain");
         match written {
             Ok(()) => self.document.mark_saved(path.to_owned()),
             Err(message) => self.files.message = Some(message),
@@ -241,9 +241,12 @@ impl App {
     fn proceed(&mut self, pending: Pending) {
         match pending {
             Pending::New => self.replace(Scene::new(), None),
+            #[cfg(not(target_arch = "wasm32"))]
             Pending::Open => self
                 .files
                 .ask(Purpose::Open, self.document.path.as_deref(), ""),
+            #[cfg(target_arch = "wasm32")]
+            Pending::Open => platform::web::pick_scene_file(),
             Pending::Example(name) => self.load_example(name),
             Pending::Quit => self.quitting = true,
         }
@@ -252,8 +255,32 @@ impl App {
     fn save(&mut self) {
         match self.document.path.clone() {
             Some(path) => self.save_path(&path),
-            None => self.files.ask(Purpose::Save, None, "scene.toml"),
+            None => self.save_as(),
         }
+    }
+
+    /// Asks where to save (on the web: downloads the file).
+    fn save_as(&mut self) {
+        #[cfg(not(target_arch = "wasm32"))]
+        self.files
+            .ask(Purpose::Save, self.document.path.as_deref(), "scene.toml");
+        #[cfg(target_arch = "wasm32")]
+        {
+            let name = self
+                .document
+                .path
+                .clone()
+                .unwrap_or_else(|| "scene.toml".to_owned());
+            self.save_path(&name);
+        }
+    }
+
+    /// Asks where to export the graph (on the web: downloads it).
+    fn ask_export(&mut self) {
+        #[cfg(not(target_arch = "wasm32"))]
+        self.files.ask(Purpose::ExportCsv, None, "graph.csv");
+        #[cfg(target_arch = "wasm32")]
+        self.export_csv("graph.csv");
     }
 
     fn menu(&mut self, ui: &mut Ui) {
@@ -285,15 +312,28 @@ impl App {
                     .on_hover_text("Save the scene under another name (Ctrl+Shift+S)")
                     .clicked()
                 {
-                    self.files
-                        .ask(Purpose::Save, self.document.path.as_deref(), "scene.toml");
+                    self.save_as();
                 }
                 if ui
                     .button("Export graph as CSV…")
                     .on_hover_text("Save the recorded graph series")
                     .clicked()
                 {
-                    self.files.ask(Purpose::ExportCsv, None, "graph.csv");
+                    self.ask_export();
+                }
+                #[cfg(target_arch = "wasm32")]
+                if ui
+                    .button("Copy link to this scene")
+                    .on_hover_text(
+                        "A link that opens this scene: in the address bar and the clipboard",
+                    )
+                    .clicked()
+                {
+                    web::copy_link(self.document.scene());
+                    self.files.message = Some(
+                        "A link to this scene is in the address bar and on the clipboard."
+                            .to_owned(),
+                    );
                 }
             });
             ui.menu_button("Edit", |ui| {
@@ -365,8 +405,7 @@ impl App {
             self.undo();
         }
         if save_as {
-            self.files
-                .ask(Purpose::Save, self.document.path.as_deref(), "scene.toml");
+            self.save_as();
         }
         if save {
             self.save();
@@ -534,7 +573,7 @@ impl App {
                     self.runner.start_energy,
                 );
                 if export {
-                    self.files.ask(Purpose::ExportCsv, None, "graph.csv");
+                    self.ask_export();
                 }
             });
         egui::CentralPanel::default().show(ui, |ui| {
@@ -560,7 +599,9 @@ impl App {
             self.files.message = Some(message);
         }
         #[cfg(target_arch = "wasm32")]
-        let _ = (path, csv);
+        if let Err(message) = platform::web::download(path, &csv, "text/csv") {
+            self.files.message = Some(message);
+        }
     }
 
     /// The window's title, and closing it: never with unsaved changes unconfirmed.

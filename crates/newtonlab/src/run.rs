@@ -97,77 +97,18 @@ fn write_csv(
     times: &[f64],
     out: &mut impl Write,
 ) -> io::Result<Result<(), Failure>> {
-    let mut header = vec!["t".to_owned()];
-    for name in simulation.names() {
-        for quantity in ["x", "y", "vx", "vy", "ax", "ay"] {
-            header.push(csv_field(&format!("{name}.{quantity}")));
-        }
-    }
-    header.extend(
-        [
-            "kinetic_energy",
-            "potential_energy",
-            "total_energy",
-            "momentum_x",
-            "momentum_y",
-        ]
-        .map(str::to_owned),
-    );
-    writeln!(out, "{}", header.join(","))?;
-
+    writeln!(out, "{}", simulation.csv_header())?;
     let progress = progress_bar(times.len() as u64);
-    let mut row = String::new();
     for &t in times {
         if let Err(error) = simulation.step_to(t) {
             progress.finish_and_clear();
             return Ok(Err(Failure::Simulation(error.to_string())));
         }
-        let accelerations = simulation.accelerations();
-        let diagnostics = simulation.diagnostics();
-        row.clear();
-        push_number(&mut row, t);
-        for i in 0..simulation.len() {
-            let p = simulation.particle(i, &accelerations);
-            for value in [p.position, p.velocity, p.acceleration]
-                .iter()
-                .flat_map(|v| [v.x, v.y])
-            {
-                row.push(',');
-                push_number(&mut row, value);
-            }
-        }
-        let energy = diagnostics.energy;
-        for value in [
-            energy.kinetic,
-            energy.potential(),
-            energy.total(),
-            diagnostics.momentum.x,
-            diagnostics.momentum.y,
-        ] {
-            row.push(',');
-            push_number(&mut row, value);
-        }
-        writeln!(out, "{row}")?;
+        writeln!(out, "{}", simulation.csv_row())?;
         progress.inc(1);
     }
     progress.finish_and_clear();
     Ok(Ok(()))
-}
-
-/// The shortest text that parses back to the same f64 (Rust's `Debug` form: `0.1`,
-/// `1e-7`, `-2.5e20`).
-fn push_number(row: &mut String, value: f64) {
-    use std::fmt::Write as _;
-    let _ = write!(row, "{value:?}");
-}
-
-/// A CSV field, quoted when a particle's name holds a comma, quote or line break.
-fn csv_field(text: &str) -> String {
-    if text.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
-    } else {
-        text.to_owned()
-    }
 }
 
 /// A progress bar on stderr when it is a terminal; hidden otherwise.

@@ -10,6 +10,7 @@
 //! text is passed in and out as strings. It builds for `wasm32-unknown-unknown`.
 
 mod contacts;
+mod csv;
 mod diagnostics;
 mod examples;
 mod forces;

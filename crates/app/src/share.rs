@@ -1,0 +1,144 @@
+//! Scenes in links: the scene file, deflated and base64url-encoded, in the page URL's
+//! fragment (`#scene=…`), which never reaches a server. `#example=NAME` opens a built-in
+//! scene. A link is untrusted input: its length is capped, inflating stops at a size
+//! limit (a few kilobytes can inflate to gigabytes), and the text is parsed and validated
+//! like any scene file, every problem reported.
+
+use base64::Engine as _;
+use base64::engine::general_purpose::URL_SAFE_NO_PAD;
+use physics::{Scene, SceneFormat};
+
+/// The longest fragment accepted, characters.
+pub const MAX_LINK: usize = 512 * 1024;
+/// The largest scene file a link may inflate to, bytes.
+pub const MAX_SCENE: usize = 8 * 1024 * 1024;
+
+/// The fragment (without `#`) that carries `scene`.
+pub fn encode(scene: &Scene) -> String {
+    let compressed = miniz_oxide::deflate::compress_to_vec(scene.to_toml().as_bytes(), 9);
+    format!("scene={}", URL_SAFE_NO_PAD.encode(compressed))
+}
+
+/// The scene a fragment carries; `Ok(None)` for a fragment that is not a `NewtonLab`
+/// link at all.
+///
+/// # Errors
+/// Why the link cannot be opened, in words for the user.
+pub fn decode(fragment: &str) -> Result<Option<Scene>, String> {
+    let fragment = fragment.trim_start_matches('#');
+    if fragment.len() > MAX_LINK {
+        return Err(format!(
+            "This link is too long to be a NewtonLab scene ({} characters; the limit is {MAX_LINK}).",
+            fragment.len()
+        ));
+    }
+    if let Some(name) = fragment.strip_prefix("example=") {
+        let example = physics::example(name).ok_or_else(|| {
+            format!("This link names a built-in scene that does not exist: '{name}'.")
+        })?;
+        return example
+            .scene()
+            .map(Some)
+            .map_err(|e| e.report(&format!("example:{name}")));
+    }
+    let Some(data) = fragment.strip_prefix("scene=") else {
+        return Ok(None);
+    };
+    let compressed = URL_SAFE_NO_PAD.decode(data).map_err(|_| {
+        "This link is damaged: its scene is not valid base64 (was it cut short or edited?)."
+            .to_owned()
+    })?;
+    let bytes = miniz_oxide::inflate::decompress_to_vec_with_limit(&compressed, MAX_SCENE).map_err(|e| {
+        if matches!(e.status, miniz_oxide::inflate::TINFLStatus::HasMoreOutput) {
+            format!("This link's scene is larger than {} MB once unpacked; it was not opened.", MAX_SCENE / (1024 * 1024))
+        } else {
+            "This link is damaged: its scene could not be unpacked (was it cut short or edited?).".to_owned()
+        }
+    })?;
+    let text = String::from_utf8(bytes)
+        .map_err(|_| "This link is damaged: its scene is not text.".to_owned())?;
+    Scene::parse(&text, SceneFormat::Toml)
+        .map(Some)
+        .map_err(|e| e.report("the linked scene"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_link_carries_a_scene_exactly() {
+        for example in physics::EXAMPLES {
+            let scene = example.scene().unwrap();
+            let link = encode(&scene);
+            assert_eq!(decode(&link).unwrap(), Some(scene), "{}", example.name);
+        }
+        let link = encode(&physics::example("ball-pit").unwrap().scene().unwrap());
+        assert!(
+            link.len() < 40_000,
+            "a 1,000-ball scene fits in a link: {} characters",
+            link.len()
+        );
+    }
+
+    #[test]
+    fn damaged_links_are_refused_with_a_reason() {
+        let link = encode(&physics::example("collision").unwrap().scene().unwrap());
+        let cut = &link[..link.len() / 2];
+        assert!(decode(cut).unwrap_err().contains("damaged"), "cut short");
+        assert!(
+            decode("scene=!!!not-base64!!!")
+                .unwrap_err()
+                .contains("not valid base64"),
+            "garbage"
+        );
+        let not_deflate = format!("scene={}", URL_SAFE_NO_PAD.encode(b"plain text"));
+        assert!(
+            decode(&not_deflate).unwrap_err().contains("damaged"),
+            "not compressed"
+        );
+        let invalid = Scene::from_toml("version = 1").unwrap();
+        let mut text = invalid.to_toml();
+        text.push_str("[[particle]]\nmass = -1\nposition = [0, 0]\n");
+        let link = format!(
+            "scene={}",
+            URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(text.as_bytes(), 9))
+        );
+        let message = decode(&link).unwrap_err();
+        assert!(
+            message.contains("mass must be greater than 0, got -1"),
+            "validated like a file: {message}"
+        );
+        assert!(
+            decode(&"a".repeat(MAX_LINK + 1))
+                .unwrap_err()
+                .contains("too long"),
+            "length cap"
+        );
+        assert_eq!(decode("").unwrap(), None, "no link");
+        assert!(
+            decode("example=nope")
+                .unwrap_err()
+                .contains("does not exist"),
+            "unknown example"
+        );
+    }
+
+    /// A kilobyte-sized link that would inflate to gigabytes stops at the limit.
+    #[test]
+    fn a_compression_bomb_is_refused() {
+        let zeros = vec![b' '; MAX_SCENE + 1];
+        let bomb = format!(
+            "scene={}",
+            URL_SAFE_NO_PAD.encode(miniz_oxide::deflate::compress_to_vec(&zeros, 9))
+        );
+        assert!(
+            bomb.len() < MAX_LINK,
+            "small enough to pass the length check"
+        );
+        assert!(
+            decode(&bomb).unwrap_err().contains("larger than"),
+            "inflation capped"
+        );
+    }
+}

@@ -81,10 +81,14 @@ test("the app draws its first frame within 3 s, with no console errors", async (
   await context.close();
 });
 
-test("an example opened by link runs when Play is clicked", async () => {
-  const { page, context, errors } = await open("#example=collision");
+test("an example opened from the Examples menu runs when Play is clicked", async () => {
+  const { page, context, errors } = await open();
+  await page.mouse.click(104, 12); // the Examples menu
+  await page.waitForTimeout(300);
+  await page.mouse.click(165, 200); // "Two-ball collision (paper 4.3)"
+  await page.waitForFunction(() => window.newtonlab_status().name === "Two-ball collision (paper 4.3)", null, { timeout: 5000 });
   let s = await status(page);
-  assert.equal(s.name, "Two-ball collision (paper 4.3)");
+  assert.equal(s.particles, 2);
   assert.equal(s.time, 0);
   await page.mouse.click(292, 37); // the Play button
   await page.waitForFunction(() => window.newtonlab_status().time > 0.2, null, { timeout: 10000 });
@@ -100,6 +104,11 @@ test("an example opened by link runs when Play is clicked", async () => {
 });
 
 test("a shared link opens its scene; a corrupted one shows the error", async () => {
+  // A link to a built-in scene.
+  let opened = await open("#example=newtons-cradle");
+  assert.equal((await status(opened.page)).name, "Newton's cradle");
+  await opened.context.close();
+
   const scene = 'version = 1\nname = "Shared scene"\n[[particle]]\nname = "Z"\nmass = 2\nposition = [1, 2]\n[[particle]]\nname = "Y"\nmass = 1\nposition = [4, 2]\n';
   let { page, context } = await open(link(scene));
   let s = await status(page);

@@ -587,6 +587,22 @@ impl Canvas {
         selection: &mut Option<Selection>,
     ) {
         let scene = document.scene().clone();
+        // A drag whose object is gone (undone mid-drag, say) ends quietly.
+        let gone = match self.drag {
+            Some(
+                Drag::Particle { index, .. }
+                | Drag::Velocity { index }
+                | Drag::NewSpring { from: index, .. },
+            ) => index >= scene.particles.len(),
+            Some(Drag::Ramp { index, .. } | Drag::RampEnd { index, .. }) => {
+                index >= scene.ramps.len()
+            }
+            _ => false,
+        };
+        if gone {
+            self.drag = None;
+            document.end_gesture();
+        }
         let pointer = ui
             .input(|i| i.pointer.interact_pos())
             .unwrap_or(rect.center());

@@ -367,18 +367,13 @@ impl App {
                 }
             });
             ui.menu_button("Examples", |ui| {
-                for example in physics::EXAMPLES {
-                    let title = example
-                        .scene()
-                        .ok()
-                        .and_then(|s| s.name)
-                        .unwrap_or_else(|| example.name.to_owned());
+                for (name, title) in example_titles() {
                     if ui
                         .button(title)
-                        .on_hover_text(format!("example:{}", example.name))
+                        .on_hover_text(format!("example:{name}"))
                         .clicked()
                     {
-                        self.guard(Pending::Example(example.name));
+                        self.guard(Pending::Example(name));
                     }
                 }
             });
@@ -673,6 +668,26 @@ impl eframe::App for App {
     fn ui(&mut self, ui: &mut Ui, _frame: &mut eframe::Frame) {
         App::ui(self, ui);
     }
+}
+
+/// Every built-in scene's name and title, read once: the menu is drawn every frame it is
+/// open, and parsing a thousand-ball scene each time would make it stutter.
+fn example_titles() -> &'static [(&'static str, String)] {
+    static TITLES: std::sync::OnceLock<Vec<(&'static str, String)>> = std::sync::OnceLock::new();
+    TITLES.get_or_init(|| {
+        physics::EXAMPLES
+            .iter()
+            .map(|e| {
+                (
+                    e.name,
+                    e.scene()
+                        .ok()
+                        .and_then(|s| s.name)
+                        .unwrap_or_else(|| e.name.to_owned()),
+                )
+            })
+            .collect()
+    })
 }
 
 /// Opens the desktop app on `app`.

@@ -294,3 +294,45 @@ fn choosing_a_graph_quantity_shows_its_series() {
         .to_csv(harness.state().document.scene());
     assert!(csv.starts_with("t (s),ball.y (m)\n"), "{csv}");
 }
+
+#[test]
+fn the_examples_menu_opens_a_built_in_scene_after_asking_about_unsaved_changes() {
+    let mut harness = harness(App::new(one_ball()));
+    harness
+        .state_mut()
+        .document
+        .apply("change", |s| s.particles[0].mass = 3.0);
+    harness.get_by_label("Examples").click();
+    harness.run();
+    harness
+        .get_by_label("Two-ball collision (paper 4.3)")
+        .click();
+    harness.run();
+    assert_eq!(
+        harness.state().document.scene().particles.len(),
+        1,
+        "not yet: it asks first"
+    );
+    harness.get_by_label("Cancel").click();
+    harness.run();
+    assert_eq!(
+        harness.state().document.scene().particles[0].mass,
+        3.0,
+        "cancelled: the change is kept"
+    );
+    harness.get_by_label("Examples").click();
+    harness.run();
+    harness
+        .get_by_label("Two-ball collision (paper 4.3)")
+        .click();
+    harness.run();
+    harness.get_by_label("Discard changes").click();
+    harness.run();
+    let scene = harness.state().document.scene();
+    assert_eq!(
+        scene.name.as_deref(),
+        Some("Two-ball collision (paper 4.3)"),
+        "the example is open"
+    );
+    assert_eq!(scene.particles.len(), 2, "its two balls");
+}

@@ -192,29 +192,22 @@ pub(crate) fn collision(report: &mut Report) -> Outcome {
     report.check("4.3 Σp y", p_after.y, p_before.y, momentum_scale);
     let energy_error = report.check("4.3 ΣKE", ke_after, ke_before, ke_before);
     let pair = |v: DVec2| format!("({:.6}, {:.6})", v.x, v.y);
+    let object = |name: &str, m: f64, before: DVec2, after: DVec2, theory: DVec2, paper: &str| {
+        vec![
+            name.to_owned(),
+            pair(before),
+            pair(before * m),
+            format!("{:.6}", kinetic(m, before)),
+            pair(after),
+            pair(theory),
+            pair(after * m),
+            format!("{:.6}", kinetic(m, after)),
+            paper.to_owned(),
+        ]
+    };
     let rows = vec![
-        vec![
-            "A".into(),
-            pair(va),
-            pair(va * a.mass),
-            format!("{:.6}", kinetic(a.mass, va)),
-            pair(sa),
-            pair(va_after),
-            pair(sa * a.mass),
-            format!("{:.6}", kinetic(a.mass, sa)),
-            "(5.618, -8.989)".into(),
-        ],
-        vec![
-            "B".into(),
-            pair(vb),
-            pair(vb * b.mass),
-            format!("{:.6}", kinetic(b.mass, vb)),
-            pair(sb),
-            pair(vb_after),
-            pair(sb * b.mass),
-            format!("{:.6}", kinetic(b.mass, sb)),
-            "(14.382, 8.989)".into(),
-        ],
+        object("A", a.mass, va, sa, va_after, "(5.618, -8.989)"),
+        object("B", b.mass, vb, sb, vb_after, "(14.382, 8.989)"),
         vec![
             "Σ".into(),
             String::new(),

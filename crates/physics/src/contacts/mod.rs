@@ -418,7 +418,7 @@ impl Contacts {
         let restitution = if inelastic {
             0.0
         } else {
-            self.restitution_of(impact)
+            self.restitution_at(impact, approach, resting_speed)
         };
         apply_impulse(
             impact,
@@ -428,6 +428,16 @@ impl Contacts {
             forces,
         );
         true
+    }
+
+    /// The restitution an impact approaching at `approach` gets: its surface's (or the
+    /// world's), or 0 when the approach is no faster than a resting contact's.
+    fn restitution_at(&self, impact: Impact, approach: f64, resting_speed: f64) -> f64 {
+        if approach > resting_speed {
+            self.restitution_of(impact)
+        } else {
+            0.0
+        }
     }
 
     fn restitution_of(&self, impact: Impact) -> f64 {
@@ -604,11 +614,7 @@ impl Contacts {
         if approach <= 0.0 {
             return;
         }
-        let restitution = if approach > resting_speed {
-            self.restitution_of(event.impact)
-        } else {
-            0.0
-        };
+        let restitution = self.restitution_at(event.impact, approach, resting_speed);
         self.applied.push((event.time, event.impact));
         let (dv_first, dv_second) =
             velocity_changes(event.impact, normal, approach * (1.0 + restitution), forces);
@@ -726,11 +732,7 @@ impl Contacts {
         if approach <= 0.0 {
             return;
         }
-        let restitution = if approach > self.resting_speed(h) {
-            self.restitution_of(impact)
-        } else {
-            0.0
-        };
+        let restitution = self.restitution_at(impact, approach, self.resting_speed(h));
         apply_impulse(
             impact,
             normal,
@@ -863,6 +865,7 @@ impl Contacts {
     ) -> bool {
         let mut changed = false;
         for _ in 0..POSITION_SWEEPS {
+            let mut moved = false;
             for &impact in contacts {
                 let (gap, normal, _) = self.measure(impact, state);
                 let [i, j] = impact.particles();
@@ -882,14 +885,18 @@ impl Contacts {
                             let shift = normal * (CORRECTION * excess / total);
                             state.position[i] -= shift * forces.inverse_mass[i];
                             state.position[j] += shift * forces.inverse_mass[j];
-                            changed = true;
+                            moved = true;
                         }
                     }
                     Impact::Obstacle(p, _) => {
                         state.position[p] += normal * excess;
-                        changed = true;
+                        moved = true;
                     }
                 }
+            }
+            changed |= moved;
+            if !moved {
+                break; // nothing left to correct
             }
         }
         changed

@@ -62,8 +62,11 @@ const CORRECTION: f64 = 0.5;
 /// Position sweeps per step.
 const POSITION_SWEEPS: usize = 4;
 /// Most velocity sweeps of the resting-contact solver (it stops earlier when no contact
-/// approaches): enough for a pile a few dozen balls deep to pass its weight down.
-const ITERATIONS: usize = 10;
+/// approaches): enough for a pile a few dozen balls deep to pass its weight down, and the
+/// sideways pressure of a pile to reach the walls. With 10, a ball wedged against a wall
+/// kept 1.5 % of its radius overlapped; with 16 the 1,000-ball pit rests under 0.5 %, and
+/// costs no more, since a converged pile stops sweeping early.
+const ITERATIONS: usize = 16;
 
 /// What hits what.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -466,9 +469,15 @@ impl Contacts {
         match (impact, second) {
             (Impact::Pair(i, j), Some((xj, vj))) => {
                 let offset = xj - xi;
-                let normal = offset.try_normalize().unwrap_or(DVec2::X);
+                let distance = offset.length();
+                // Coincident centres have no direction between them; any will do.
+                let normal = if distance > 0.0 {
+                    offset / distance
+                } else {
+                    DVec2::X
+                };
                 (
-                    offset.length() - self.radius[i] - self.radius[j],
+                    distance - self.radius[i] - self.radius[j],
                     normal,
                     (vi - vj).dot(normal),
                 )

@@ -328,3 +328,20 @@ fn validate_passes_writes_a_report_and_fails_an_impossible_tolerance() {
         stderr(&output)
     );
 }
+
+/// With no display the app cannot open: a clear message and exit 1, not a panic, and a
+/// pointer to the commands that need none.
+#[test]
+fn the_app_without_a_display_explains_itself() {
+    let output = Command::new(env!("CARGO_BIN_EXE_newtonlab"))
+        .env_remove("DISPLAY")
+        .env_remove("WAYLAND_DISPLAY")
+        .env_remove("WAYLAND_SOCKET")
+        .output()
+        .expect("the binary runs");
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    let message = stderr(&output);
+    assert!(message.contains("could not open a window"), "{message}");
+    assert!(message.contains("newtonlab --help"), "{message}");
+    assert!(!message.contains("panicked"), "{message}");
+}

@@ -335,7 +335,9 @@ impl App {
                             .to_owned(),
                     );
                 }
-            });
+            })
+            .response
+            .on_hover_text("New, open, save, export, share");
             ui.menu_button("Edit", |ui| {
                 let undo = self
                     .document
@@ -365,7 +367,9 @@ impl App {
                 {
                     self.redo();
                 }
-            });
+            })
+            .response
+            .on_hover_text("Undo and redo");
             ui.menu_button("Examples", |ui| {
                 for (name, title) in example_titles() {
                     if ui
@@ -376,7 +380,9 @@ impl App {
                         self.guard(Pending::Example(name));
                     }
                 }
-            });
+            })
+            .response
+            .on_hover_text("Open a built-in scene (the paper's experiments and more)");
         });
     }
 

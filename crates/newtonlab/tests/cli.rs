@@ -243,14 +243,18 @@ fn examples_lists_every_built_in_scene() {
     let output = newtonlab(&["examples"]);
     assert!(output.status.success(), "{}", stderr(&output));
     let text = stdout(&output);
-    for example in [
-        "spring-undamped",
-        "kinematics-polar",
-        "orbit",
-        "charged-pair",
-    ] {
-        assert!(text.contains(&format!("example:{example}")), "{text}");
+    for example in physics::EXAMPLES {
+        assert!(
+            text.contains(&format!("example:{}", example.name)),
+            "{text}"
+        );
     }
+    let listed = text.lines().filter(|l| l.contains("example:")).count();
+    assert_eq!(
+        listed,
+        physics::EXAMPLES.len(),
+        "one line per example:\n{text}"
+    );
     let check = newtonlab(&["check", "example:spring-undamped"]);
     assert!(check.status.success(), "{}", stderr(&check));
 }

@@ -93,3 +93,74 @@ fn verlet_energy_error_on_an_eccentric_orbit_stays_bounded_over_100_orbits() {
         "mean drifted from {early_mean} to {late_mean} (amplitude {early_worst})"
     );
 }
+
+/// An eccentric orbit of eccentricity 0.5 about a fixed centre of attraction strength
+/// `mu` (m³/s² per unit of the planet's mass), starting at periapsis rₚ = 1 m on +x:
+/// vₚ = √(μ (1 + e)/rₚ), semi-major axis a = rₚ/(1 − e) = 2 m, apoapsis 3 m, period
+/// T = 2π √(a³/μ). Only an inverse-square law closes the orbit at T with the apoapsis at
+/// 3 m; only the right constant gives that T.
+fn assert_kepler_ellipse(scene: &Scene, mu: f64, what: &str) {
+    let period = 2.0 * PI * (8.0 / mu).sqrt();
+    let mut simulation = Simulation::new(scene).expect("a valid scene");
+    simulation.step_to(period / 2.0).expect("the orbit integrates");
+    let apoapsis = simulation.positions()[1];
+    assert!(
+        apoapsis.distance(DVec2::new(-3.0, 0.0)) < 1e-8,
+        "{what}: at T/2 at {apoapsis}, theory (−3, 0)"
+    );
+    simulation.step_to(period).expect("the orbit integrates");
+    let back = simulation.positions()[1];
+    assert!(
+        back.distance(DVec2::new(1.0, 0.0)) < 1e-8,
+        "{what}: after one period at {back}, theory (1, 0)"
+    );
+}
+
+fn periapsis_speed(mu: f64) -> f64 {
+    (mu * 1.5).sqrt()
+}
+
+/// Gravitation with a non-default G: G = 0.5, M = 3 kg, so μ = G M = 1.5 m³/s². dopri5
+/// at 1e-12 keeps the apsides within 1e-8 m over the orbit.
+#[test]
+fn an_eccentric_gravitational_orbit_has_keplers_period_and_apsides_for_any_g() {
+    let mu = 1.5;
+    let mut world = World::weightless();
+    world.gravitational_constant = 0.5;
+    world.electrostatics = false;
+    let mut scene = Scene::new()
+        .with_world(world)
+        .with_integrator(Integrator::Dopri5, 0.05)
+        .with_particle(Particle::new("Sun", 3.0).fixed())
+        .with_particle(
+            Particle::new("Planet", 1e-9)
+                .radius(0.01)
+                .position([1.0, 0.0])
+                .velocity([0.0, periapsis_speed(mu)]),
+        );
+    scene.simulation.tolerance = 1e-12;
+    assert_kepler_ellipse(&scene, mu, "gravitation, G = 0.5");
+}
+
+/// Coulomb attraction with a non-default k: k = 2, q = +1.5 C fixed and −0.25 C on a
+/// 0.5 kg body, so μ = k |q₁ q₂| / m = 1.5 m³/s². Gravitation off.
+#[test]
+fn an_eccentric_coulomb_orbit_has_keplers_period_and_apsides_for_any_k() {
+    let mu = 1.5;
+    let mut world = World::weightless();
+    world.gravitation = false;
+    world.coulomb_constant = 2.0;
+    let mut scene = Scene::new()
+        .with_world(world)
+        .with_integrator(Integrator::Dopri5, 0.05)
+        .with_particle(Particle::new("Nucleus", 1.0).charge(1.5).fixed())
+        .with_particle(
+            Particle::new("Electron", 0.5)
+                .radius(0.01)
+                .charge(-0.25)
+                .position([1.0, 0.0])
+                .velocity([0.0, periapsis_speed(mu)]),
+        );
+    scene.simulation.tolerance = 1e-12;
+    assert_kepler_ellipse(&scene, mu, "Coulomb, k = 2");
+}

@@ -264,7 +264,22 @@ fn forms_are_kept_as_typed() {
 
 #[test]
 fn every_example_is_valid() {
-    assert!(EXAMPLES.len() >= 7, "the registry holds the paper's scenes");
+    // The registry is exactly the scene files shipped in `examples/scenes`: a file
+    // added without registering it (or a name registered twice) fails here.
+    let directory = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/scenes");
+    let mut on_disk: Vec<String> = std::fs::read_dir(&directory)
+        .unwrap()
+        .map(|entry| entry.unwrap().path())
+        .filter(|path| path.extension().is_some_and(|e| e == "toml"))
+        .map(|path| path.file_stem().unwrap().to_string_lossy().into_owned())
+        .collect();
+    on_disk.sort();
+    let mut registered: Vec<String> = EXAMPLES.iter().map(|e| e.name.to_owned()).collect();
+    registered.sort();
+    assert_eq!(
+        registered, on_disk,
+        "the registry lists every example file once"
+    );
     for example in EXAMPLES {
         let scene = example
             .scene()

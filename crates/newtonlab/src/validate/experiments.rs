@@ -440,6 +440,50 @@ pub(crate) fn springs(report: &mut Report, figures: &mut Vec<Figure>) -> Outcome
     Ok(())
 }
 
+/// The 4.7 rows for the turning points of body 1 (released at rest at `start`, `distance`
+/// from body 2): how many were found against how many the period 2 × `fall_time` puts in
+/// 20 s, and where each is. Counting them makes a run that finds none, or misses a
+/// bounce, fail instead of passing with fewer rows.
+fn turning_point_rows(
+    report: &mut Report,
+    rows: &mut Vec<Vec<String>>,
+    label: &str,
+    turning_points: &[(f64, f64)],
+    (start, distance): (f64, f64),
+    fall_time: f64,
+) {
+    let expected = (20.0 / (2.0 * fall_time)).floor();
+    let found = turning_points.len() as f64;
+    let e = report.check(
+        format!("4.7 {label}: number of turning points in 20 s"),
+        found,
+        expected,
+        1.0,
+    );
+    rows.push(vec![
+        label.to_owned(),
+        "turning points in 20 s".into(),
+        format!("{found}"),
+        format!("{expected} (every {:.4} s)", 2.0 * fall_time),
+        error(e),
+    ]);
+    for (n, (t, x)) in turning_points.iter().enumerate() {
+        let e = report.check(
+            format!("4.7 {label}: turning point {}", n + 1),
+            *x,
+            start,
+            distance,
+        );
+        rows.push(vec![
+            label.to_owned(),
+            format!("turning point {} at t ≈ {t:.2} s, x (m)", n + 1),
+            value(*x),
+            value(start),
+            error(e),
+        ]);
+    }
+}
+
 /// 4.7: bodies falling together under gravitation or Coulomb attraction, bouncing
 /// elastically and rising back to where they started.
 pub(crate) fn inverse_square(report: &mut Report, figures: &mut Vec<Figure>) -> Outcome {
@@ -513,21 +557,14 @@ pub(crate) fn inverse_square(report: &mut Report, figures: &mut Vec<Figure>) -> 
             value(fall_time),
             error(e),
         ]);
-        for (n, (t, x)) in turning_points.iter().enumerate() {
-            let e = report.check(
-                format!("4.7 {label}: turning point {}", n + 1),
-                *x,
-                x1,
-                fall.start,
-            );
-            rows.push(vec![
-                label.to_owned(),
-                format!("turning point {} at t ≈ {t:.2} s, x (m)", n + 1),
-                value(*x),
-                value(x1),
-                error(e),
-            ]);
-        }
+        turning_point_rows(
+            report,
+            &mut rows,
+            label,
+            &turning_points,
+            (x1, fall.start),
+            fall_time,
+        );
         figures.push(Figure {
             file: format!("{file}.png"),
             title: format!("{label}: body 1 falling, bouncing and rising back (paper 4.7)"),

@@ -1,0 +1,211 @@
+//! Every road an impact or a frictional contact can take through the contact code, each
+//! against the impulse formulas, on *free* particles and on *coupled* ones.
+//!
+//! The contact code treats the two differently (see `contacts/mod.rs`): an impact of a
+//! free particle is applied inside the step on its exact path, an impact of a coupled one
+//! (a particle that feels a pairwise force or a spring) ends the step and the whole
+//! system is integrated again to that instant. Pairwise gravitation is on by default, so
+//! most scenes a user builds take the coupled road — and once, a wrong restitution there
+//! passed every test, because every test with e < 1 used free particles.
+//!
+//! How a particle is made coupled without spoiling the closed form: with gravitation on,
+//! a *single* particle is coupled (it takes part in pairwise forces) but has no partner,
+//! so its motion is exactly the uniform field's. For a pair, the mutual attraction of two
+//! 1 kg balls a metre apart is G·m/r² ≈ 7e-11 m/s², which over the second these tests
+//! run changes velocities by < 1e-10 m/s: the tolerances (1e-8 of the speeds involved)
+//! leave room for that and fail any wrong factor in an impulse.
+
+use physics::{Bounds, DVec2, Particle, Ramp, Scene, Simulation, World};
+
+const G: f64 = 9.81;
+
+/// No uniform field; pairwise gravitation on (coupled) or off (free); no electrostatics.
+fn world(coupled: bool, restitution: f64) -> World {
+    World {
+        gravitation: coupled,
+        electrostatics: false,
+        restitution,
+        ..World::weightless()
+    }
+}
+
+fn label(coupled: bool) -> &'static str {
+    if coupled { "coupled" } else { "free" }
+}
+
+/// An oblique impact of unequal masses in flight: the separation speed along the contact
+/// normal is e times the approach speed, momentum is conserved, and the kinetic energy
+/// lost is (1 − e²) × ½ μ vₙ² (μ the reduced mass). The contact instant solves
+/// |Δx + Δv t| = rA + rB, a quadratic.
+#[test]
+fn an_impact_in_flight_has_the_worlds_restitution_free_or_coupled() {
+    let (m1, m2, r1, r2) = (2.0, 5.0, 0.4, 0.6);
+    let (x1, v1, x2, v2) = (
+        DVec2::ZERO,
+        DVec2::new(7.0, 1.0),
+        DVec2::new(4.0, 0.7),
+        DVec2::new(-1.0, 0.5),
+    );
+    let (dx, dv) = (x2 - x1, v2 - v1);
+    let reach: f64 = r1 + r2;
+    let (a, b, c) = (dv.dot(dv), 2.0 * dx.dot(dv), dx.dot(dx) - reach * reach);
+    let contact_time = (-b - (b * b - 4.0 * a * c).sqrt()) / (2.0 * a);
+    let normal = (dx + dv * contact_time) / reach;
+    let approach = -dv.dot(normal);
+    let reduced_mass = m1 * m2 / (m1 + m2);
+    for coupled in [false, true] {
+        for restitution in [0.0, 0.3, 0.8, 1.0] {
+            let scene = Scene::new()
+                .with_world(world(coupled, restitution))
+                .with_particle(Particle::new("A", m1).radius(r1).position(x1).velocity(v1))
+                .with_particle(Particle::new("B", m2).radius(r2).position(x2).velocity(v2));
+            let mut simulation = Simulation::new(&scene).unwrap();
+            let before = simulation.diagnostics();
+            simulation.step_to(1.0).unwrap();
+            let after = simulation.diagnostics();
+            let case = format!("{} e = {restitution}", label(coupled));
+            let separation = (simulation.velocities()[1] - simulation.velocities()[0]).dot(normal);
+            assert!(
+                (separation - restitution * approach).abs() < 1e-8 * approach,
+                "{case}: separating at {separation}, theory {}",
+                restitution * approach
+            );
+            let loss = before.energy.kinetic - after.energy.kinetic;
+            let theory = (1.0 - restitution * restitution) * 0.5 * reduced_mass * approach.powi(2);
+            assert!(
+                (loss - theory).abs() < 1e-8 * before.energy.kinetic,
+                "{case}: lost {loss} J, theory {theory} J"
+            );
+            assert!(
+                (after.momentum - before.momentum).length() < 1e-8,
+                "{case}: momentum moved by {}",
+                after.momentum - before.momentum
+            );
+        }
+    }
+}
+
+/// Two equal touching balls, the first moving into the second at v: the impact happens at
+/// the start of the first step (the touching road, not the search inside a step). Momentum
+/// and the restitution law give v₁' = (1 − e)/2 · v and v₂' = (1 + e)/2 · v.
+#[test]
+fn an_impact_between_touching_balls_has_the_worlds_restitution_free_or_coupled() {
+    let v = 3.0;
+    for coupled in [false, true] {
+        for restitution in [0.0, 0.5, 1.0] {
+            let scene = Scene::new()
+                .with_world(world(coupled, restitution))
+                .with_particle(Particle::new("A", 1.0).radius(0.5).velocity([v, 0.0]))
+                .with_particle(Particle::new("B", 1.0).radius(0.5).position([1.0, 0.0]));
+            let mut simulation = Simulation::new(&scene).unwrap();
+            simulation.step_to(0.1).unwrap();
+            let (a, b) = (simulation.velocities()[0], simulation.velocities()[1]);
+            let case = format!("{} e = {restitution}", label(coupled));
+            let (theory_a, theory_b) =
+                (0.5 * (1.0 - restitution) * v, 0.5 * (1.0 + restitution) * v);
+            assert!(
+                a.distance(DVec2::new(theory_a, 0.0)) < 1e-8 * v,
+                "{case}: A leaves at {a}, theory {theory_a}"
+            );
+            assert!(
+                b.distance(DVec2::new(theory_b, 0.0)) < 1e-8 * v,
+                "{case}: B leaves at {b}, theory {theory_b}"
+            );
+        }
+    }
+}
+
+/// A ball dropped from h = 2 m onto a level ramp of restitution e meets it at
+/// t₁ = √(2h/g) at speed v = √(2gh), leaves at e·v and tops out e²·h above the contact
+/// height at t₁ + e·v/g (with e = 0 it stays at rest on the surface). Free and coupled;
+/// ramps and the world's walls.
+#[test]
+fn a_bounce_off_a_surface_has_its_restitution_free_or_coupled() {
+    let (h, radius) = (2.0, 0.25);
+    let impact_speed = (2.0 * G * h).sqrt();
+    for coupled in [false, true] {
+        for restitution in [0.0, 0.4, 0.9] {
+            for on_wall in [false, true] {
+                let mut world = World {
+                    gravity: physics::Vector::cartesian(0.0, -G),
+                    ..world(coupled, restitution)
+                };
+                let mut scene = Scene::new();
+                if on_wall {
+                    world.bounds = Some(Bounds {
+                        min: [-5.0, 0.0].into(),
+                        max: [5.0, 10.0].into(),
+                    });
+                } else {
+                    scene = scene.with_ramp(
+                        Ramp::new("floor", [-5.0, -0.05], [5.0, -0.05])
+                            .thickness(0.1)
+                            .restitution(restitution),
+                    );
+                }
+                let scene = scene.with_world(world).with_particle(
+                    Particle::new("ball", 1.0)
+                        .radius(radius)
+                        .position([0.0, radius + h]),
+                );
+                let mut simulation = Simulation::new(&scene).unwrap();
+                let t1 = (2.0 * h / G).sqrt();
+                // With e = 0 there is no apex: look a little later, at the ball at rest.
+                let apex = t1 + (restitution * impact_speed / G).max(0.1);
+                simulation.step_to(apex).unwrap();
+                let height = simulation.positions()[0].y - radius;
+                let theory = restitution * restitution * h;
+                let case = format!(
+                    "{} {} e = {restitution}",
+                    label(coupled),
+                    if on_wall { "wall" } else { "ramp" }
+                );
+                assert!(
+                    (height - theory).abs() < 1e-8,
+                    "{case}: at the apex {height} m up, theory {theory} m"
+                );
+                assert!(
+                    simulation.velocities()[0].length() < 1e-8 * impact_speed,
+                    "{case}: at the apex moving at {}",
+                    simulation.velocities()[0]
+                );
+            }
+        }
+    }
+}
+
+/// Kinetic friction on a free and on a coupled particle: on a 30° ramp with μ = 0.3 a
+/// ball slides at g (sin θ − μ cos θ) and travels ½ a t² along the ramp.
+#[test]
+fn sliding_friction_is_the_same_free_or_coupled() {
+    let (angle, friction, t) = (30.0_f64.to_radians(), 0.3, 0.5);
+    let direction = DVec2::from_angle(-angle);
+    for coupled in [false, true] {
+        let scene = Scene::new()
+            .with_world(World {
+                gravity: physics::Vector::cartesian(0.0, -G),
+                ..world(coupled, 1.0)
+            })
+            .with_ramp(
+                Ramp::new("ramp", direction * -3.0, direction * 3.0)
+                    .thickness(0.1)
+                    .friction(friction),
+            )
+            .with_particle(
+                Particle::new("ball", 1.0)
+                    .radius(0.25)
+                    .position(direction.perp() * 0.3),
+            );
+        let mut simulation = Simulation::new(&scene).unwrap();
+        let start = simulation.positions()[0];
+        simulation.step_to(t).unwrap();
+        let moved = simulation.positions()[0] - start;
+        let magnitude = G * (angle.sin() - friction * angle.cos());
+        let theory = direction * (0.5 * magnitude * t * t);
+        assert!(
+            moved.distance(theory) < 1e-9,
+            "{}: moved {moved}, theory {theory}",
+            label(coupled)
+        );
+    }
+}

@@ -16,6 +16,7 @@ mod examples;
 mod forces;
 pub mod generated;
 mod integrators;
+mod profile;
 mod scene;
 mod simulation;
 mod state;
@@ -24,6 +25,7 @@ pub use diagnostics::{Diagnostics, Energy, ParticleReadout};
 pub use examples::{EXAMPLES, Example, example};
 pub use glam::DVec2;
 pub use integrators::{Integrator, UnknownIntegrator};
+pub use profile::{Clock, Profile, Stage};
 pub use scene::format::{LoadError, Problem, SceneFormat};
 pub use scene::{
     Bounds, Color, Endpoint, FieldRef, Particle, Ramp, Rule, Scene, Section, Settings, Spring,

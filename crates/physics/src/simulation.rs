@@ -21,6 +21,7 @@ use crate::contacts::{Contacts, Impact};
 use crate::diagnostics::{self, Diagnostics, ParticleReadout};
 use crate::forces::ForceModel;
 use crate::integrators::{self, Integrator, Workspace};
+use crate::profile::{Clock, Profile, Profiler, Stage};
 use crate::scene::format::LoadError;
 use crate::scene::{Particle, Scene};
 use crate::state::State;
@@ -70,6 +71,8 @@ pub struct Simulation {
     steps: u64,
     /// Impacts so far, when asked for with [`Simulation::record_impacts`].
     impact_log: Option<Vec<ImpactRecord>>,
+    /// Time per stage, when a clock is lent with [`Simulation::set_clock`].
+    profiler: Profiler,
 }
 
 /// An impact that happened: when, and between what.
@@ -123,12 +126,14 @@ impl Simulation {
             work: Workspace::default(),
             steps: 0,
             impact_log: None,
+            profiler: Profiler::default(),
         };
         // Contacts from the start: a particle placed on a ramp is held by it at t = 0.
         simulation.contacts.begin_step(
             &mut simulation.state,
             &mut simulation.forces,
             simulation.time_step,
+            &mut simulation.profiler,
         );
         Ok(simulation)
     }
@@ -144,6 +149,17 @@ impl Simulation {
             .as_mut()
             .map(std::mem::take)
             .unwrap_or_default()
+    }
+
+    /// Starts measuring the time each stage of the step takes, read with
+    /// [`Self::profile`], with `clock` (seconds since any fixed instant); `None` stops.
+    pub fn set_clock(&mut self, clock: Option<Clock>) {
+        self.profiler = Profiler::new(clock);
+    }
+
+    /// Seconds spent in each stage since [`Self::set_clock`].
+    pub fn profile(&self) -> Profile {
+        self.profiler.profile
     }
 
     /// Simulated time, seconds.
@@ -230,10 +246,13 @@ impl Simulation {
     /// One step of at most `max_step` seconds: the whole pipeline. Returns the step
     /// taken.
     fn advance(&mut self, max_step: f64) -> Result<f64, SimulationError> {
-        if self
-            .contacts
-            .begin_step(&mut self.state, &mut self.forces, max_step)
-        {
+        self.profiler.start();
+        if self.contacts.begin_step(
+            &mut self.state,
+            &mut self.forces,
+            max_step,
+            &mut self.profiler,
+        ) {
             self.work.start_acceleration = None;
         }
         self.start.clone_from(&self.state);
@@ -249,9 +268,14 @@ impl Simulation {
             time: self.state.time,
             tolerance: self.tolerance,
         })?;
-        let interruption =
-            self.contacts
-                .resolve_impacts(&self.start, &mut self.state, taken, &self.forces);
+        self.profiler.lap(Stage::Integration);
+        let interruption = self.contacts.resolve_impacts(
+            &self.start,
+            &mut self.state,
+            taken,
+            &self.forces,
+            &mut self.profiler,
+        );
         if self.contacts.changed_paths() {
             self.work.start_acceleration = None;
         }
@@ -264,6 +288,7 @@ impl Simulation {
                 .apply(impact, &mut self.state, &self.forces, taken);
             self.work.start_acceleration = None;
             struck = impact.particles();
+            self.profiler.lap(Stage::Reintegration);
         }
         if let Some(log) = &mut self.impact_log {
             let ramps = self.contacts.ramp_count();
@@ -286,6 +311,7 @@ impl Simulation {
         {
             self.work.start_acceleration = None;
         }
+        self.profiler.lap(Stage::RestingSolver);
         self.steps += 1;
         if let Some(i) = self.state.first_non_finite() {
             return Err(SimulationError::NonFinite {

@@ -102,7 +102,9 @@ fn verlet_energy_error_on_an_eccentric_orbit_stays_bounded_over_100_orbits() {
 fn assert_kepler_ellipse(scene: &Scene, mu: f64, what: &str) {
     let period = 2.0 * PI * (8.0 / mu).sqrt();
     let mut simulation = Simulation::new(scene).expect("a valid scene");
-    simulation.step_to(period / 2.0).expect("the orbit integrates");
+    simulation
+        .step_to(period / 2.0)
+        .expect("the orbit integrates");
     let apoapsis = simulation.positions()[1];
     assert!(
         apoapsis.distance(DVec2::new(-3.0, 0.0)) < 1e-8,

@@ -1,23 +1,29 @@
 //! Which particles could touch: a uniform grid rebuilt every step, so finding candidate
-//! pairs costs O(n log n) instead of O(n²).
+//! pairs costs O(n) instead of O(n²).
 //!
-//! Every particle's box (its swept path, grown by its radius) is entered in each grid cell
-//! it overlaps; the entries are sorted by cell, and the particles sharing a cell are
-//! candidates. A pair sharing several cells is reported once, from the first cell of the
-//! overlap of their boxes. Sorting rather than hashing keeps the output order, and so
-//! the whole simulation, deterministic. The cell size follows the typical box, so one
-//! huge or fast particle does not make every cell huge: a box covering more than
-//! `MAX_CELLS` cells is instead tested against every other box.
+//! Each particle's box (its swept path, grown by its radius) is entered once, in the cell
+//! of its lower-left corner; the cell is at least as large as the box, so a box can only
+//! overlap boxes entered in its own cell or the eight around it. The grid is dense over
+//! the boxes' extent and filled by a counting sort (two passes, no comparison sort), and
+//! each particle's partners are collected from its 3 × 3 cells, so the pairs come out in
+//! ascending order with no sort of the whole list: the output, and so the whole
+//! simulation, is deterministic. The cell size follows the typical box (the largest box
+//! up to twice the median), so one huge or fast particle does not make every cell huge:
+//! a box larger than a cell is instead tested against every other box. The grid holds at most about
+//! four cells per particle; a sparse scene gets larger cells, which costs tests, never
+//! misses a pair.
+//!
+//! Box2D and Rapier keep a dynamic tree (or sweep-and-prune lists) from step to step
+//! instead; for balls of similar size the grid is simpler and as fast, and it needs no
+//! state carried between steps.
 
 #![expect(
     clippy::cast_possible_truncation,
-    reason = "u32 particle indices, as in the contacts module"
+    clippy::cast_sign_loss,
+    reason = "u32 particle indices, as in the contacts module; cell indices of finite boxes, clamped to the grid"
 )]
 
 use glam::DVec2;
-
-/// Boxes covering more cells than this are tested against everything.
-const MAX_CELLS: i64 = 64;
 
 /// An axis-aligned box.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -51,139 +57,217 @@ impl Aabb {
 /// Reusable buffers.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct BroadPhase {
-    /// (cell key, particle), sorted.
-    entries: Vec<(u64, u32)>,
+    grid: Grid,
+    /// Particles whose box is larger than a cell (or not finite), ascending.
     oversized: Vec<u32>,
     pairs: Vec<(u32, u32)>,
     extents: Vec<f64>,
+    partners: Vec<u32>,
+}
+
+/// The dense grid of the last [`BroadPhase::pairs`]: cell `c` holds the particles
+/// `members[first[c]..first[c + 1]]`, ascending.
+#[derive(Clone, Debug, Default)]
+struct Grid {
+    origin: DVec2,
     cell: f64,
+    columns: usize,
+    rows: usize,
+    first: Vec<u32>,
+    members: Vec<u32>,
+    /// Each particle's cell, or `None` for an oversized one.
+    cell_of: Vec<Option<u32>>,
+}
+
+impl Grid {
+    /// The cell's column and row of a point, clamped to the grid.
+    fn locate(&self, p: DVec2) -> (usize, usize) {
+        let c = ((p - self.origin) / self.cell).floor();
+        (
+            (c.x.max(0.0) as usize).min(self.columns - 1),
+            (c.y.max(0.0) as usize).min(self.rows - 1),
+        )
+    }
+
+    fn members(&self, column: usize, row: usize) -> &[u32] {
+        let c = row * self.columns + column;
+        &self.members[self.first[c] as usize..self.first[c + 1] as usize]
+    }
+
+    /// Fills the grid with the boxes that fit a cell, by a counting sort on their cells.
+    fn fill(&mut self, boxes: &[Aabb], oversized: &mut Vec<u32>) {
+        self.cell_of.clear();
+        oversized.clear();
+        let (mut lo, mut hi) = (DVec2::splat(f64::INFINITY), DVec2::splat(f64::NEG_INFINITY));
+        for (i, b) in boxes.iter().enumerate() {
+            let size = b.max - b.min;
+            if b.min.is_finite() && b.max.is_finite() && size.max_element() <= self.cell {
+                lo = lo.min(b.min);
+                hi = hi.max(b.min);
+                self.cell_of.push(Some(0));
+            } else {
+                oversized.push(i as u32);
+                self.cell_of.push(None);
+            }
+        }
+        let fitting = boxes.len() - oversized.len();
+        if fitting == 0 {
+            (self.columns, self.rows) = (1, 1);
+            self.first.clear();
+            self.first.extend([0, 0]);
+            self.members.clear();
+            return;
+        }
+        // At most about four cells per particle: a sparse scene gets larger cells.
+        let span = hi - lo;
+        let limit = (4 * fitting + 64) as f64;
+        self.cell = self.cell.max((span.x * span.y / limit).sqrt());
+        self.origin = lo;
+        self.columns = (span.x / self.cell) as usize + 1;
+        self.rows = (span.y / self.cell) as usize + 1;
+        while (self.columns * self.rows) as f64 > 2.0 * limit {
+            self.cell *= 2.0;
+            self.columns = (span.x / self.cell) as usize + 1;
+            self.rows = (span.y / self.cell) as usize + 1;
+        }
+        let cells = self.columns * self.rows;
+        self.first.clear();
+        self.first.resize(cells + 1, 0);
+        for (i, b) in boxes.iter().enumerate() {
+            if self.cell_of[i].is_some() {
+                let (column, row) = self.locate(b.min);
+                let c = row * self.columns + column;
+                self.cell_of[i] = Some(c as u32);
+                self.first[c + 1] += 1;
+            }
+        }
+        for c in 0..cells {
+            self.first[c + 1] += self.first[c];
+        }
+        self.members.clear();
+        self.members.resize(fitting, 0);
+        // Entered in particle order, so each cell's members are ascending.
+        let mut next = self.first.clone();
+        for (i, c) in self.cell_of.iter().enumerate() {
+            if let Some(c) = *c {
+                let slot = &mut next[c as usize];
+                self.members[*slot as usize] = i as u32;
+                *slot += 1;
+            }
+        }
+    }
 }
 
 impl BroadPhase {
     /// Candidate pairs (i < j) whose boxes overlap, in ascending order; `skip(i, j)`
     /// excludes pairs that need no test (two fixed particles).
     pub fn pairs(&mut self, boxes: &[Aabb], skip: impl Fn(usize, usize) -> bool) -> &[(u32, u32)] {
-        self.entries.clear();
-        self.oversized.clear();
         self.pairs.clear();
         if boxes.len() < 2 {
+            self.grid.cell_of.clear();
+            self.oversized.clear();
             return &self.pairs;
         }
         self.extents.clear();
-        self.extents
-            .extend(boxes.iter().map(|b| (b.max - b.min).max_element()));
-        let middle = self.extents.len() / 2;
+        self.extents.extend(
+            boxes
+                .iter()
+                .map(|b| (b.max - b.min).max_element())
+                .filter(|e| e.is_finite()),
+        );
+        let typical = if self.extents.is_empty() {
+            1.0
+        } else {
+            let middle = self.extents.len() / 2;
+            *self
+                .extents
+                .select_nth_unstable_by(middle, f64::total_cmp)
+                .1
+        };
+        // The smallest cell that holds every box up to twice the typical size: as
+        // small as possible, since a particle is tested against all of its 3 × 3 cells.
         let cell = self
             .extents
-            .select_nth_unstable_by(middle, f64::total_cmp)
-            .1
-            .max(1e-9);
-        self.cell = cell;
-        let cell_of = |p: DVec2| cell_of(p, cell);
-        for (i, b) in boxes.iter().enumerate() {
-            let (lo, hi) = (cell_of(b.min), cell_of(b.max));
-            if (hi.0 - lo.0 + 1).saturating_mul(hi.1 - lo.1 + 1) > MAX_CELLS
-                || !b.min.is_finite()
-                || !b.max.is_finite()
-            {
-                self.oversized.push(i as u32);
-                continue;
-            }
-            for x in lo.0..=hi.0 {
-                for y in lo.1..=hi.1 {
-                    self.entries.push((key(x, y), i as u32));
-                }
-            }
-        }
-        self.entries.sort_unstable();
-        let mut start = 0;
-        while start < self.entries.len() {
-            let (cell_key, _) = self.entries[start];
-            let mut end = start + 1;
-            while end < self.entries.len() && self.entries[end].0 == cell_key {
-                end += 1;
-            }
-            for a in start..end {
-                for b in a + 1..end {
-                    let (i, j) = (self.entries[a].1 as usize, self.entries[b].1 as usize);
-                    let (bi, bj) = (&boxes[i], &boxes[j]);
-                    // Report from the first cell of the overlap only.
-                    let first = cell_of(bi.min.max(bj.min));
-                    if key(first.0, first.1) == cell_key && bi.overlaps(bj) && !skip(i, j) {
-                        self.pairs.push((i as u32, j as u32));
+            .iter()
+            .copied()
+            .filter(|&e| e <= 2.0 * typical)
+            .fold(typical, f64::max);
+        self.grid.cell = cell.max(1e-9);
+        self.grid.fill(boxes, &mut self.oversized);
+        let grid = &self.grid;
+        for i in 0..boxes.len() {
+            self.partners.clear();
+            match grid.cell_of[i] {
+                Some(c) => {
+                    let (column, row) = (c as usize % grid.columns, c as usize / grid.columns);
+                    for y in row.saturating_sub(1)..=(row + 1).min(grid.rows - 1) {
+                        for x in column.saturating_sub(1)..=(column + 1).min(grid.columns - 1) {
+                            self.partners
+                                .extend(grid.members(x, y).iter().filter(|&&j| j as usize > i));
+                        }
                     }
+                    self.partners
+                        .extend(self.oversized.iter().filter(|&&j| j as usize > i));
                 }
+                // An oversized box against every other box.
+                None => self.partners.extend(i as u32 + 1..boxes.len() as u32),
             }
-            start = end;
-        }
-        for &big in &self.oversized {
-            for (other, b) in boxes.iter().enumerate() {
-                let big = big as usize;
-                let already = self.oversized.contains(&(other as u32)) && other < big;
-                if other != big
-                    && !already
-                    && b.overlaps(&boxes[big])
-                    && !skip(big.min(other), big.max(other))
-                {
-                    self.pairs
-                        .push((big.min(other) as u32, big.max(other) as u32));
+            self.partners.sort_unstable();
+            let bi = &boxes[i];
+            for &j in &self.partners {
+                if bi.overlaps(&boxes[j as usize]) && !skip(i, j as usize) {
+                    self.pairs.push((i as u32, j));
                 }
             }
         }
-        self.pairs.sort_unstable();
         &self.pairs
     }
 
-    /// Every particle entered by the last [`Self::pairs`] whose cells `query` touches,
-    /// appended to `out` (possibly more than once); a superset of those whose boxes overlap.
+    /// Every particle entered by the last [`Self::pairs`] whose box could overlap
+    /// `query`, appended to `out` (possibly more than once); a superset of those whose
+    /// boxes overlap.
     pub fn query(&self, query: &Aabb, out: &mut Vec<u32>) {
         out.extend_from_slice(&self.oversized);
-        if self.entries.is_empty() {
+        let grid = &self.grid;
+        if grid.members.is_empty() {
             return;
         }
-        let (lo, hi) = (cell_of(query.min, self.cell), cell_of(query.max, self.cell));
-        if (hi.0 - lo.0 + 1).saturating_mul(hi.1 - lo.1 + 1) > MAX_CELLS * MAX_CELLS
-            || !query.min.is_finite()
-            || !query.max.is_finite()
-        {
-            out.extend(self.entries.iter().map(|e| e.1));
+        if !query.min.is_finite() || !query.max.is_finite() {
+            out.extend_from_slice(&grid.members);
             return;
         }
-        for x in lo.0..=hi.0 {
-            let (first, last) = (key(x, lo.1), key(x, hi.1));
-            let start = self.entries.partition_point(|e| e.0 < first);
-            for entry in &self.entries[start..] {
-                if entry.0 > last {
-                    break;
-                }
-                out.push(entry.1);
+        // A member's box starts in its cell and is at most a cell wide: those starting
+        // up to a cell below and left of the query can reach into it.
+        let (lo, hi) = (
+            grid.locate(query.min - DVec2::splat(grid.cell)),
+            grid.locate(query.max),
+        );
+        for y in lo.1..=hi.1 {
+            for x in lo.0..=hi.0 {
+                out.extend_from_slice(grid.members(x, y));
             }
         }
     }
-}
-
-/// One sortable number per cell, ordered as (x, y): coordinates clamped to i32 (cells that
-/// far out only merge, which costs tests, never misses a pair) and offset to unsigned.
-fn key(x: i64, y: i64) -> u64 {
-    let clamp = |c: i64| {
-        (c.clamp(i64::from(i32::MIN), i64::from(i32::MAX)) - i64::from(i32::MIN)).cast_unsigned()
-    };
-    (clamp(x) << 32) | clamp(y)
-}
-
-#[expect(
-    clippy::cast_possible_truncation,
-    reason = "cell indices of finite boxes; saturating casts are harmless"
-)]
-fn cell_of(p: DVec2, cell: f64) -> (i64, i64) {
-    ((p.x / cell).floor() as i64, (p.y / cell).floor() as i64)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// Against the O(n²) answer on a cloud of boxes of mixed sizes.
+    fn brute_force(boxes: &[Aabb]) -> Vec<(u32, u32)> {
+        let mut expected = Vec::new();
+        for i in 0..boxes.len() {
+            for j in i + 1..boxes.len() {
+                if boxes[i].overlaps(&boxes[j]) {
+                    expected.push((i as u32, j as u32));
+                }
+            }
+        }
+        expected
+    }
+
+    /// Against the O(n²) answer on a cloud of boxes of mixed sizes; and every box that
+    /// overlaps a query is among those the query returns.
     #[test]
     fn finds_exactly_the_overlapping_pairs() {
         let mut boxes = Vec::new();
@@ -201,14 +285,7 @@ mod tests {
                 max: c + DVec2::splat(size),
             });
         }
-        let mut expected = Vec::new();
-        for i in 0..boxes.len() {
-            for j in i + 1..boxes.len() {
-                if boxes[i].overlaps(&boxes[j]) {
-                    expected.push((i as u32, j as u32));
-                }
-            }
-        }
+        let expected = brute_force(&boxes);
         let mut broad = BroadPhase::default();
         assert_eq!(
             broad.pairs(&boxes, |_, _| false),
@@ -219,6 +296,49 @@ mod tests {
             expected.len() > 100,
             "the test has overlaps to find: {}",
             expected.len()
+        );
+        let mut found = Vec::new();
+        for (k, query) in boxes.iter().enumerate() {
+            found.clear();
+            broad.query(query, &mut found);
+            for (j, other) in boxes.iter().enumerate() {
+                if query.overlaps(other) {
+                    assert!(found.contains(&(j as u32)), "query {k} misses box {j}");
+                }
+            }
+        }
+    }
+
+    /// A sparse scene (clusters a million metres apart) gets larger cells, not a huge
+    /// grid; a non-finite box is tested against everything; the answer stays exact.
+    #[test]
+    fn sparse_and_non_finite_boxes_are_exact_too() {
+        let mut boxes = Vec::new();
+        for cluster in 0..4_u32 {
+            let centre = DVec2::new(f64::from(cluster) * 1e6, -f64::from(cluster) * 3e5);
+            for i in 0..50_u32 {
+                let c = centre + DVec2::new(f64::from(i % 7) * 0.15, f64::from(i / 7) * 0.15);
+                boxes.push(Aabb {
+                    min: c,
+                    max: c + DVec2::splat(0.2),
+                });
+            }
+        }
+        boxes.push(Aabb {
+            min: DVec2::splat(f64::NEG_INFINITY),
+            max: DVec2::splat(f64::INFINITY),
+        });
+        let expected = brute_force(&boxes);
+        let mut broad = BroadPhase::default();
+        assert_eq!(
+            broad.pairs(&boxes, |_, _| false),
+            expected.as_slice(),
+            "grid = brute force"
+        );
+        assert!(
+            broad.grid.first.len() < 4 * boxes.len() + 200,
+            "the grid stays small: {} cells",
+            broad.grid.first.len()
         );
     }
 }

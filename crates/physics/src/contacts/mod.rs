@@ -47,6 +47,7 @@ use self::broad_phase::{Aabb, BroadPhase};
 use self::obstacles::{Obstacle, Shape};
 use self::time_of_impact::{Region, control_points, earliest_entry};
 use crate::forces::{ForceModel, SurfaceContact};
+use crate::profile::{Profiler, Stage};
 use crate::scene::Scene;
 use crate::state::State;
 
@@ -265,11 +266,17 @@ impl Contacts {
     /// (a struck row of balls passes the blow along here), and puts particles resting on
     /// surfaces under their normal force. Returns whether velocities or the forces
     /// changed.
-    pub fn begin_step(&mut self, state: &mut State, forces: &mut ForceModel, h: f64) -> bool {
+    pub fn begin_step(
+        &mut self,
+        state: &mut State,
+        forces: &mut ForceModel,
+        h: f64,
+        profiler: &mut Profiler,
+    ) -> bool {
         let had_surface_contacts = !forces.surface_contacts.is_empty();
         self.applied.clear();
         forces.surface_contacts.clear();
-        self.find_touching(state, forces);
+        self.find_touching(state, forces, profiler);
         let resting_speed = self.resting_speed(h);
         let mut changed = self.impacts_now(state, forces, resting_speed);
         // Friction needs to know how hard the other forces press and pull.
@@ -321,12 +328,14 @@ impl Contacts {
                 sliding,
             });
         }
+        profiler.lap(Stage::StartContacts);
         changed || had_surface_contacts || !forces.surface_contacts.is_empty()
     }
 
     /// Fills the touching lists from the current positions.
-    fn find_touching(&mut self, state: &State, forces: &ForceModel) {
+    fn find_touching(&mut self, state: &State, forces: &ForceModel, profiler: &mut Profiler) {
         let n = state.len();
+        profiler.lap(Stage::StartContacts);
         self.boxes.clear();
         self.boxes.extend(
             (0..n).map(|i| Aabb::around(&[state.position[i]], self.radius[i] * (1.0 + TOUCHING))),
@@ -337,6 +346,7 @@ impl Contacts {
         let candidates = self
             .broad
             .pairs(&self.boxes, |i, j| forces.is_fixed(i) && forces.is_fixed(j));
+        profiler.lap(Stage::BroadPhase);
         self.touching_pairs
             .extend(candidates.iter().copied().filter(|&(i, j)| {
                 let (i, j) = (i as usize, j as usize);
@@ -509,6 +519,7 @@ impl Contacts {
         end: &mut State,
         h: f64,
         forces: &ForceModel,
+        profiler: &mut Profiler,
     ) -> Option<(f64, Impact)> {
         let n = start.len();
         self.acceleration_scale = (0..n)
@@ -538,6 +549,7 @@ impl Contacts {
         self.changed.clear();
         self.impacted.clear();
         self.queue.clear();
+        profiler.lap(Stage::TimeOfImpact);
         self.boxes.clear();
         self.boxes.extend(
             self.paths
@@ -553,6 +565,7 @@ impl Contacts {
                     || touching_pairs.binary_search(&(i as u32, j as u32)).is_ok()
             })
             .to_vec();
+        profiler.lap(Stage::BroadPhase);
         let mut found = Vec::new();
         for (i, j) in candidates {
             if let Some(event) = self.search_pair(i as usize, j as usize, 0.0, h) {
@@ -587,6 +600,7 @@ impl Contacts {
             end.position[p as usize] = x;
             end.velocity[p as usize] = v;
         }
+        profiler.lap(Stage::TimeOfImpact);
         interruption
     }
 

@@ -1,0 +1,104 @@
+//! Where a step's time goes, stage by stage (Box2D's `b2Profile`).
+//!
+//! The library reads no clock: the caller lends one with [`crate::Simulation::set_clock`]
+//! (`std::time::Instant` natively, `performance.now()` in a browser). Without a clock
+//! nothing is measured and a stage boundary costs one branch.
+
+/// A clock: seconds since any fixed instant.
+pub type Clock = fn() -> f64;
+
+/// The stages of [`crate::Simulation::advance`], in the order they run.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Stage {
+    /// Candidate pairs from the uniform grid (at the start of the step, and of the swept
+    /// paths after integration).
+    BroadPhase,
+    /// Touching contacts at the start of the step: impacts happening now, particles put
+    /// under their surfaces' normal force and friction.
+    StartContacts,
+    /// The smooth forces integrated over the step.
+    Integration,
+    /// Impacts searched on the paths through the step, and applied in time order.
+    TimeOfImpact,
+    /// The system integrated again to the instant of an impact of a coupled particle.
+    Reintegration,
+    /// The resting-contact solver and the overlap correction.
+    RestingSolver,
+}
+
+impl Stage {
+    /// Every stage, in order.
+    pub const ALL: [Self; 6] = [
+        Self::BroadPhase,
+        Self::StartContacts,
+        Self::Integration,
+        Self::TimeOfImpact,
+        Self::Reintegration,
+        Self::RestingSolver,
+    ];
+
+    /// A short name for reports.
+    pub const fn name(self) -> &'static str {
+        match self {
+            Self::BroadPhase => "broad phase",
+            Self::StartContacts => "contacts at start",
+            Self::Integration => "integration",
+            Self::TimeOfImpact => "time of impact",
+            Self::Reintegration => "re-integration",
+            Self::RestingSolver => "resting solver",
+        }
+    }
+}
+
+/// Seconds spent in each stage since the clock was set, summed over steps.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Profile {
+    seconds: [f64; Stage::ALL.len()],
+}
+
+impl Profile {
+    /// Seconds spent in `stage`.
+    pub fn seconds(&self, stage: Stage) -> f64 {
+        self.seconds[stage as usize]
+    }
+
+    /// Seconds in all stages together.
+    pub fn total(&self) -> f64 {
+        self.seconds.iter().sum()
+    }
+}
+
+/// A running stopwatch over the stages: [`Self::lap`] books the time since the last lap
+/// to a stage.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Profiler {
+    clock: Option<Clock>,
+    last: f64,
+    pub profile: Profile,
+}
+
+impl Profiler {
+    pub fn new(clock: Option<Clock>) -> Self {
+        Self {
+            clock,
+            last: clock.map_or(0.0, |now| now()),
+            profile: Profile::default(),
+        }
+    }
+
+    /// Starts timing from now (at the start of a step).
+    pub fn start(&mut self) {
+        if let Some(now) = self.clock {
+            self.last = now();
+        }
+    }
+
+    /// Books the time since the last lap (or start) to `stage`.
+    pub fn lap(&mut self, stage: Stage) {
+        if let Some(now) = self.clock {
+            let now = now();
+            self.profile.seconds[stage as usize] += now - self.last;
+            self.last = now;
+        }
+    }
+}

@@ -298,3 +298,54 @@ fn bounds_reflect_with_the_world_restitution() {
     assert!(v.distance(DVec2::new(-5.6, 3.0)) < 1e-12, "v = {v}");
     assert!(x.distance(DVec2::new(9.5 - 2.8, 7.5)) < 1e-9, "x = {x}");
 }
+
+/// Three impacts inside one step of 2 s, each found on the paths the earlier ones
+/// changed: A (5 m/s) strikes B at rest at t = 0.4 s, B rebounds from the wall at x = 6
+/// (its centre at 5.5) at 0.9 s and strikes A, now at rest at x = 2, at 1.4 s. Equal
+/// masses, e = 1, no forces: at t = 2 s, A is at 2 − 5 × 0.6 = −1 m moving at −5 m/s
+/// and B is at rest at 3 m, to rounding (1e-11 of the 10 m travelled).
+///
+/// Until this test, a pair that had collided once was not searched again in the same
+/// step, and B passed through A.
+#[test]
+fn impacts_chained_inside_one_step_are_each_at_their_instant() {
+    let mut world = no_forces();
+    world.bounds = Some(physics::Bounds {
+        min: [-10.0, -5.0].into(),
+        max: [6.0, 5.0].into(),
+    });
+    let scene = Scene::new()
+        .with_world(world)
+        .with_integrator(Integrator::Rk4, 2.0)
+        .with_particle(Particle::new("A", 1.0).velocity([5.0, 0.0]))
+        .with_particle(Particle::new("B", 1.0).position([3.0, 0.0]));
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.record_impacts();
+    simulation.step_to(2.0).unwrap();
+    assert_eq!(simulation.steps_taken(), 1, "one step");
+    let times: Vec<f64> = simulation.take_impacts().iter().map(|i| i.time).collect();
+    assert_eq!(times.len(), 3, "three impacts: {times:?}");
+    for (time, theory) in times.iter().zip([0.4, 0.9, 1.4]) {
+        assert!(
+            (time - theory).abs() < 1e-12,
+            "impact at {time} s, theory {theory} s"
+        );
+    }
+    let (x, v) = (simulation.positions(), simulation.velocities());
+    let expected = [
+        (DVec2::new(-1.0, 0.0), DVec2::new(-5.0, 0.0)),
+        (DVec2::new(3.0, 0.0), DVec2::ZERO),
+    ];
+    for (k, (position, velocity)) in expected.into_iter().enumerate() {
+        assert!(
+            x[k].distance(position) < 1e-11,
+            "ball {k} at {}, theory {position}",
+            x[k]
+        );
+        assert!(
+            v[k].distance(velocity) < 1e-11,
+            "ball {k} moving {}, theory {velocity}",
+            v[k]
+        );
+    }
+}

@@ -39,7 +39,7 @@ pub(crate) mod obstacles;
 pub(crate) mod time_of_impact;
 
 use std::cmp::{Ordering, Reverse};
-use std::collections::{BinaryHeap, HashSet};
+use std::collections::BinaryHeap;
 
 use glam::DVec2;
 
@@ -121,8 +121,6 @@ pub(crate) struct Contacts {
     /// Particles whose paths impacts changed during this step, and the same as flags.
     changed: Vec<u32>,
     is_changed: Vec<bool>,
-    /// Impacts already applied in this step: not searched again until the next.
-    impacted: HashSet<Impact>,
     queue: BinaryHeap<Reverse<Event>>,
     neighbours: Vec<u32>,
     /// The impacts applied in this step, with their time in seconds into it.
@@ -243,7 +241,6 @@ impl Contacts {
             versions: Vec::new(),
             changed: Vec::new(),
             is_changed: Vec::new(),
-            impacted: HashSet::new(),
             queue: BinaryHeap::new(),
             neighbours: Vec::new(),
             applied: Vec::new(),
@@ -547,7 +544,6 @@ impl Contacts {
         }
         self.is_changed.resize(n, false);
         self.changed.clear();
-        self.impacted.clear();
         self.queue.clear();
         profiler.lap(Stage::TimeOfImpact);
         self.boxes.clear();
@@ -633,7 +629,6 @@ impl Contacts {
         let (xi, vi) = self.paths[first].at(event.time, h);
         let other = second.map(|j| self.paths[j].at(event.time, h));
         let (_, normal, approach) = self.geometry(event.impact, (xi, vi), other);
-        self.impacted.insert(event.impact);
         if approach <= 0.0 {
             return;
         }
@@ -679,7 +674,6 @@ impl Contacts {
                     .touching_pairs
                     .binary_search(&(pair.0 as u32, pair.1 as u32))
                     .is_ok()
-                    || self.impacted.contains(&Impact::Pair(pair.0, pair.1))
                 {
                     continue;
                 }
@@ -724,7 +718,6 @@ impl Contacts {
                     .touching_obstacles
                     .binary_search(&(p as u32, k as u32))
                     .is_ok()
-                || self.impacted.contains(&Impact::Obstacle(p, k))
             {
                 continue;
             }

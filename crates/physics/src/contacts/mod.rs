@@ -36,6 +36,7 @@
 
 pub(crate) mod broad_phase;
 pub(crate) mod obstacles;
+pub(crate) mod resting;
 pub(crate) mod time_of_impact;
 
 use std::cmp::{Ordering, Reverse};
@@ -45,6 +46,7 @@ use glam::DVec2;
 
 use self::broad_phase::{Aabb, BroadPhase};
 use self::obstacles::{Obstacle, Shape};
+use self::resting::{RestingSolver, Touching};
 use self::time_of_impact::{Region, control_points, earliest_entry};
 use crate::forces::{ForceModel, SurfaceContact};
 use crate::profile::{Profiler, Stage};
@@ -54,21 +56,6 @@ use crate::state::State;
 /// Contact closer than this fraction of the reach (sum of radii, or radius plus half a
 /// ramp's thickness) counts as touching.
 const TOUCHING: f64 = 1e-6;
-/// Overlap tolerated between resting particles before positions are corrected, as a
-/// fraction of the smaller radius; well under the 1 % a user could notice.
-const ALLOWED_OVERLAP: f64 = 1e-3;
-/// Fraction of the excess overlap corrected per position sweep: gentle enough not to pop
-/// a pile.
-const CORRECTION: f64 = 0.5;
-/// Position sweeps per step.
-const POSITION_SWEEPS: usize = 4;
-/// Most velocity sweeps of the resting-contact solver (it stops earlier when no contact
-/// approaches): enough for a pile a few dozen balls deep to pass its weight down, and the
-/// sideways pressure of a pile to reach the walls. With 10, a ball wedged against a wall
-/// kept 1.5 % of its radius overlapped; with 16 the 1,000-ball pit rests under 0.5 %, and
-/// costs no more, since a converged pile stops sweeping early.
-const ITERATIONS: usize = 16;
-
 /// What hits what.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub(crate) enum Impact {
@@ -104,14 +91,7 @@ pub(crate) struct Contacts {
     touching_pairs: Vec<(u32, u32)>,
     /// (particle, obstacle) touching at the start of the step, ascending.
     touching_obstacles: Vec<(u32, u32)>,
-    /// The resting solver's accumulated impulse of each touching pair and obstacle
-    /// contact (N·s, in the order of the lists above), started from the last step's.
-    pair_impulses: Vec<f64>,
-    obstacle_impulses: Vec<f64>,
-    /// The last step's contacts and impulses, for warm starting, and its length.
-    last_pairs: Vec<((u32, u32), f64)>,
-    last_obstacles: Vec<((u32, u32), f64)>,
-    last_step: f64,
+    resting: RestingSolver,
     /// Whether each particle feels a pairwise force or a spring (see the module doc).
     coupled: Vec<bool>,
     /// Each particle's path through the step.
@@ -225,11 +205,7 @@ impl Contacts {
             boxes: Vec::new(),
             touching_pairs: Vec::new(),
             touching_obstacles: Vec::new(),
-            pair_impulses: Vec::new(),
-            obstacle_impulses: Vec::new(),
-            last_pairs: Vec::new(),
-            last_obstacles: Vec::new(),
-            last_step: 0.0,
+            resting: RestingSolver::default(),
             coupled: (0..scene.particles.len())
                 .map(|i| {
                     !forces.is_fixed(i)
@@ -362,22 +338,6 @@ impl Contacts {
                 }
             }
         }
-        let remembered = |last: &[((u32, u32), f64)], key: (u32, u32)| {
-            last.binary_search_by(|(k, _)| k.cmp(&key))
-                .map_or(0.0, |at| last[at].1)
-        };
-        self.pair_impulses.clear();
-        self.pair_impulses.extend(
-            self.touching_pairs
-                .iter()
-                .map(|&key| remembered(&self.last_pairs, key)),
-        );
-        self.obstacle_impulses.clear();
-        self.obstacle_impulses.extend(
-            self.touching_obstacles
-                .iter()
-                .map(|&key| remembered(&self.last_obstacles, key)),
-        );
     }
 
     /// Applies every impact between touching things that approach faster than
@@ -759,19 +719,10 @@ impl Contacts {
         self.applied.push((h, impact));
     }
 
-    /// Resting contact after a step of `h`: removes every approach between touching
-    /// bodies with inelastic impulses, then corrects overlaps beyond the tolerance.
-    ///
-    /// Sequential impulses with warm starting (as in Box2D): each contact starts from the
-    /// impulse it needed in the last step, which already carries the weight of whatever
-    /// rests on it, and sweeps adjust the accumulated impulse, never below zero (a contact
-    /// can push, not pull). Without warm starting a pile n balls deep needs some n² sweeps
-    /// to pass its weight down and sinks in the meantime.
-    ///
-    /// One exception: a fast approach of a particle an impact struck in this step is a
-    /// blow being passed on (a row of touching balls), left to the impacts at the start of
-    /// the next step, which give it its restitution. `struck` lists the particles of an
-    /// impact applied outside [`Self::resolve_impacts`]. Returns whether anything changed.
+    /// Resting contact after a step of `h` ([`resting`]). `struck` lists the particles of
+    /// an impact applied outside [`Self::resolve_impacts`]; they and those impacts inside
+    /// the step changed keep a fast approach for the next step's impacts. Returns whether
+    /// anything changed.
     pub fn settle(
         &mut self,
         state: &mut State,
@@ -780,181 +731,18 @@ impl Contacts {
         struck: &[usize],
     ) -> bool {
         let resting_speed = self.resting_speed(h);
-        let is_struck =
-            |i: usize| struck.contains(&i) || self.is_changed.get(i).copied().unwrap_or(false);
-        let warm = if self.last_step > 0.0 {
-            h / self.last_step
-        } else {
-            0.0
+        let touching = Touching {
+            pairs: &self.touching_pairs,
+            surfaces: &self.touching_obstacles,
+            obstacles: &self.obstacles,
+            radius: &self.radius,
+            inverse_mass: &forces.inverse_mass,
         };
-        // Each contact's normal and effective mass are fixed for the solve (they change
-        // negligibly within it), so a sweep costs a dot product per contact.
-        let impacts = self
-            .touching_pairs
-            .iter()
-            .map(|&(i, j)| Impact::Pair(i as usize, j as usize))
-            .chain(
-                self.touching_obstacles
-                    .iter()
-                    .map(|&(p, k)| Impact::Obstacle(p as usize, k as usize)),
-            );
-        let remembered = self.pair_impulses.iter().chain(&self.obstacle_impulses);
-        let mut contacts: Vec<SolverContact> =
-            Vec::with_capacity(self.pair_impulses.len() + self.obstacle_impulses.len());
-        let mut changed = false;
-        for (impact, &last) in impacts.zip(remembered) {
-            let (_, normal, approach) = self.measure(impact, state);
-            let [i, j] = impact.particles();
-            let inverse_mass = effective_inverse_mass(impact, forces);
-            let blow =
-                approach > resting_speed && (is_struck(i) || (j != usize::MAX && is_struck(j)));
-            let contact = SolverContact {
-                impact,
-                normal,
-                inverse_mass,
-                // NaN leaves the contact out of this solve.
-                impulse: if blow || inverse_mass == 0.0 {
-                    f64::NAN
-                } else {
-                    last * warm
-                },
-            };
-            // Warm start: last step's impulse, scaled to this step.
-            if contact.impulse > 0.0 {
-                contact.push(contact.impulse, state, forces);
-                changed = true;
-            }
-            contacts.push(contact);
-        }
-        let tolerance = 1e-4 * resting_speed.max(1e-9);
-        for _ in 0..ITERATIONS {
-            let mut largest: f64 = 0.0;
-            for contact in &mut contacts {
-                if contact.impulse.is_nan() {
-                    continue;
-                }
-                // The impulse that stops the approach, kept from pulling in total.
-                let accumulated =
-                    (contact.impulse + contact.approach(state) / contact.inverse_mass).max(0.0);
-                let change = accumulated - contact.impulse;
-                if change != 0.0 {
-                    contact.push(change, state, forces);
-                    contact.impulse = accumulated;
-                    largest = largest.max((change * contact.inverse_mass).abs());
-                    changed = true;
-                }
-            }
-            if largest <= tolerance {
-                break;
-            }
-        }
-        let impulses: Vec<f64> = contacts.iter().map(|c| c.impulse).collect();
-        let contacts: Vec<Impact> = contacts.iter().map(|c| c.impact).collect();
-        changed |= self.correct_overlaps(&contacts, state, forces);
-        let pairs = self.touching_pairs.len();
-        let keep = |j: f64| if j.is_nan() { 0.0 } else { j };
-        self.last_pairs.clear();
-        self.last_pairs.extend(
-            self.touching_pairs
-                .iter()
-                .zip(&impulses[..pairs])
-                .map(|(&k, &j)| (k, keep(j))),
-        );
-        self.last_obstacles.clear();
-        self.last_obstacles.extend(
-            self.touching_obstacles
-                .iter()
-                .zip(&impulses[pairs..])
-                .map(|(&k, &j)| (k, keep(j))),
-        );
-        self.last_step = h;
-        changed
-    }
-
-    /// Pushes apart overlaps beyond the tolerance, a share at a time over a few sweeps
-    /// (non-linear Gauss–Seidel on positions). Returns whether anything moved.
-    fn correct_overlaps(
-        &self,
-        contacts: &[Impact],
-        state: &mut State,
-        forces: &ForceModel,
-    ) -> bool {
-        let mut changed = false;
-        for _ in 0..POSITION_SWEEPS {
-            let mut moved = false;
-            for &impact in contacts {
-                let (gap, normal, _) = self.measure(impact, state);
-                let [i, j] = impact.particles();
-                let smaller = if j == usize::MAX {
-                    self.radius[i]
-                } else {
-                    self.radius[i].min(self.radius[j])
-                };
-                let excess = -gap - ALLOWED_OVERLAP * smaller;
-                if excess <= 0.0 {
-                    continue;
-                }
-                match impact {
-                    Impact::Pair(i, j) => {
-                        let total = forces.inverse_mass[i] + forces.inverse_mass[j];
-                        if total > 0.0 {
-                            let shift = normal * (CORRECTION * excess / total);
-                            state.position[i] -= shift * forces.inverse_mass[i];
-                            state.position[j] += shift * forces.inverse_mass[j];
-                            moved = true;
-                        }
-                    }
-                    Impact::Obstacle(p, _) => {
-                        state.position[p] += normal * excess;
-                        moved = true;
-                    }
-                }
-            }
-            changed |= moved;
-            if !moved {
-                break; // nothing left to correct
-            }
-        }
-        changed
-    }
-}
-
-/// A contact in the resting solver.
-struct SolverContact {
-    impact: Impact,
-    /// From the first particle (or the surface) towards the second (or the particle).
-    normal: DVec2,
-    inverse_mass: f64,
-    /// Accumulated impulse, N·s; NaN when the contact is left out of the solve.
-    impulse: f64,
-}
-
-impl SolverContact {
-    fn approach(&self, state: &State) -> f64 {
-        match self.impact {
-            Impact::Pair(i, j) => (state.velocity[i] - state.velocity[j]).dot(self.normal),
-            Impact::Obstacle(p, _) => -state.velocity[p].dot(self.normal),
-        }
-    }
-
-    /// Applies an impulse of `amount` N·s along the normal.
-    fn push(&self, amount: f64, state: &mut State, forces: &ForceModel) {
-        apply_impulse(
-            self.impact,
-            self.normal,
-            amount * self.inverse_mass,
-            state,
-            forces,
-        );
-    }
-}
-
-/// `1/m_A + 1/m_B` for a pair, 1/m for a particle on an obstacle: the impulse per unit of
-/// approach speed removed is its inverse.
-fn effective_inverse_mass(impact: Impact, forces: &ForceModel) -> f64 {
-    match impact {
-        Impact::Pair(i, j) => forces.inverse_mass[i] + forces.inverse_mass[j],
-        Impact::Obstacle(p, _) => forces.inverse_mass[p],
+        let is_changed = &self.is_changed;
+        let is_struck =
+            |i: usize| struck.contains(&i) || is_changed.get(i).copied().unwrap_or(false);
+        self.resting
+            .solve(&touching, state, h, resting_speed, is_struck)
     }
 }
 

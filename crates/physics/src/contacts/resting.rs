@@ -1,0 +1,325 @@
+//! Resting contact after a step: removes every approach between touching bodies with
+//! inelastic impulses, then corrects overlaps beyond the tolerance.
+//!
+//! Sequential impulses with warm starting (as in Box2D): each contact starts from the
+//! impulse it needed in the last step, which already carries the weight of whatever rests
+//! on it, and sweeps adjust the accumulated impulse, never below zero (a contact can
+//! push, not pull). Without warm starting a pile n balls deep needs some n² sweeps to
+//! pass its weight down and sinks in the meantime.
+//!
+//! Each contact's normal and effective mass are fixed for the solve (they change
+//! negligibly within it), so a sweep costs a dot product per contact. The rows are laid
+//! out for the sweep: particle indices, normal, inverse masses and accumulated impulse
+//! side by side, pairs and surface contacts in two arrays, so the inner loop touches
+//! nothing else. Pairs are swept before surfaces, each in ascending order, as the
+//! touching lists are: the result does not depend on anything but the scene.
+
+use glam::DVec2;
+
+use super::obstacles::Obstacle;
+use crate::state::State;
+
+/// Overlap tolerated between resting particles before positions are corrected, as a
+/// fraction of the smaller radius; well under the 1 % a user could notice.
+const ALLOWED_OVERLAP: f64 = 1e-3;
+/// Fraction of the excess overlap corrected per position sweep: gentle enough not to pop
+/// a pile.
+const CORRECTION: f64 = 0.5;
+/// Position sweeps per step.
+const POSITION_SWEEPS: usize = 4;
+/// Most velocity sweeps (the solver stops earlier when no contact approaches): enough for
+/// a pile a few dozen balls deep to pass its weight down, and the sideways pressure of a
+/// pile to reach the walls. With 10, a ball wedged against a wall kept 1.5 % of its
+/// radius overlapped; with 16 the 1,000-ball pit rests under 0.5 %, and costs no more,
+/// since a converged pile stops sweeping early.
+const ITERATIONS: usize = 16;
+
+/// What every row of the solver accumulates.
+#[derive(Clone, Copy, Debug)]
+struct Accumulator {
+    /// The approach speed removed per unit of impulse: 1/mᵢ + 1/mⱼ for a pair, 1/m for
+    /// a particle on a surface, 1/kg.
+    inverse_mass: f64,
+    /// Accumulated impulse, N·s.
+    impulse: f64,
+    /// Left out of this solve: a blow being passed on, or immovable bodies.
+    skipped: bool,
+}
+
+/// A touching pair in the solver: particles `i < j`, the normal from `i` towards `j`.
+#[derive(Clone, Copy, Debug)]
+struct PairRow {
+    i: usize,
+    j: usize,
+    normal: DVec2,
+    /// 1/m of each particle, 1/kg.
+    inverse_mass_i: f64,
+    inverse_mass_j: f64,
+    solved: Accumulator,
+}
+
+/// A particle touching a surface, the normal from the surface towards the particle.
+#[derive(Clone, Copy, Debug)]
+struct SurfaceRow {
+    particle: usize,
+    obstacle: usize,
+    normal: DVec2,
+    solved: Accumulator,
+}
+
+/// A contact as the sweeps see it.
+trait Row {
+    /// Approach speed along the normal, m/s, positive when closing.
+    fn approach(&self, velocity: &[DVec2]) -> f64;
+    /// Applies an impulse of `amount` N·s along the normal.
+    fn push(&self, amount: f64, velocity: &mut [DVec2]);
+    fn solved(&mut self) -> &mut Accumulator;
+}
+
+impl Row for PairRow {
+    fn approach(&self, velocity: &[DVec2]) -> f64 {
+        (velocity[self.i] - velocity[self.j]).dot(self.normal)
+    }
+
+    /// The paper's 8–10.
+    fn push(&self, amount: f64, velocity: &mut [DVec2]) {
+        let inverse_mass = self.solved.inverse_mass;
+        let impulse = self.normal * ((amount * inverse_mass) / inverse_mass);
+        velocity[self.i] += -impulse * self.inverse_mass_i;
+        velocity[self.j] += impulse * self.inverse_mass_j;
+    }
+
+    fn solved(&mut self) -> &mut Accumulator {
+        &mut self.solved
+    }
+}
+
+impl Row for SurfaceRow {
+    fn approach(&self, velocity: &[DVec2]) -> f64 {
+        -velocity[self.particle].dot(self.normal)
+    }
+
+    /// The paper's 17–22.
+    fn push(&self, amount: f64, velocity: &mut [DVec2]) {
+        velocity[self.particle] += self.normal * (amount * self.solved.inverse_mass);
+    }
+
+    fn solved(&mut self) -> &mut Accumulator {
+        &mut self.solved
+    }
+}
+
+/// A new row's accumulator: skipped when it cannot move or is a blow being passed on;
+/// otherwise warm-started with `last` N·s, which is applied. Returns whether it was.
+fn warm_start<R: Row>(row: &mut R, last: f64, blow: bool, velocity: &mut [DVec2]) -> bool {
+    let solved = row.solved();
+    solved.skipped = solved.inverse_mass == 0.0 || blow;
+    if solved.skipped || last <= 0.0 {
+        return false;
+    }
+    solved.impulse = last;
+    row.push(last, velocity);
+    true
+}
+
+/// One Gauss–Seidel sweep: each row's accumulated impulse becomes the one that stops its
+/// approach, kept from pulling in total. Returns the largest change of an approach speed
+/// it made (m/s), or `None` when no row changed.
+fn sweep<R: Row>(rows: &mut [R], velocity: &mut [DVec2]) -> Option<f64> {
+    let mut largest: Option<f64> = None;
+    for row in rows {
+        let solved = *row.solved();
+        if solved.skipped {
+            continue;
+        }
+        let approach = row.approach(velocity);
+        let accumulated = (solved.impulse + approach / solved.inverse_mass).max(0.0);
+        let change = accumulated - solved.impulse;
+        if change != 0.0 {
+            row.push(change, velocity);
+            row.solved().impulse = accumulated;
+            let speed = (change * solved.inverse_mass).abs();
+            largest = Some(largest.map_or(speed, |l| l.max(speed)));
+        }
+    }
+    largest
+}
+
+/// The accumulated impulse to remember for warm starting, N·s.
+fn kept(solved: &Accumulator) -> f64 {
+    if solved.skipped { 0.0 } else { solved.impulse }
+}
+
+/// What the resting solver needs of the contacts around it.
+pub(crate) struct Touching<'a> {
+    /// Pairs (i < j) touching at the start of the step, ascending.
+    pub pairs: &'a [(u32, u32)],
+    /// (particle, obstacle) touching at the start of the step, ascending.
+    pub surfaces: &'a [(u32, u32)],
+    pub obstacles: &'a [Obstacle],
+    /// Metres, per particle.
+    pub radius: &'a [f64],
+    /// 1/kg, per particle; zero for fixed particles.
+    pub inverse_mass: &'a [f64],
+}
+
+/// The resting solver's memory from step to step, and its scratch rows.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct RestingSolver {
+    /// Each touching pair's and surface contact's impulse in the last step, by key, for
+    /// warm starting; and that step's length, seconds.
+    last_pairs: Vec<((u32, u32), f64)>,
+    last_surfaces: Vec<((u32, u32), f64)>,
+    last_step: f64,
+    pairs: Vec<PairRow>,
+    surfaces: Vec<SurfaceRow>,
+}
+
+impl RestingSolver {
+    /// The last step's impulse of a contact, N·s, or 0 for a new one.
+    fn remembered(last: &[((u32, u32), f64)], key: (u32, u32)) -> f64 {
+        last.binary_search_by(|(k, _)| k.cmp(&key))
+            .map_or(0.0, |at| last[at].1)
+    }
+
+    /// Solves the resting contacts after a step of `h`. A fast approach of a particle for
+    /// which `is_struck` holds (an impact struck it in this step) is a blow being passed
+    /// on (a row of touching balls), left to the impacts at the start of the next step,
+    /// which give it its restitution. Returns whether anything changed.
+    pub fn solve(
+        &mut self,
+        touching: &Touching<'_>,
+        state: &mut State,
+        h: f64,
+        resting_speed: f64,
+        is_struck: impl Fn(usize) -> bool,
+    ) -> bool {
+        let warm = if self.last_step > 0.0 {
+            h / self.last_step
+        } else {
+            0.0
+        };
+        let (position, velocity) = (&state.position, &mut state.velocity);
+        let w = touching.inverse_mass;
+        let mut changed = false;
+        self.pairs.clear();
+        for &(i, j) in touching.pairs {
+            let (i, j) = (i as usize, j as usize);
+            let (_, normal) = pair_gap(position, touching.radius, i, j);
+            let mut row = PairRow {
+                i,
+                j,
+                normal,
+                inverse_mass_i: w[i],
+                inverse_mass_j: w[j],
+                solved: Accumulator {
+                    inverse_mass: w[i] + w[j],
+                    impulse: 0.0,
+                    skipped: false,
+                },
+            };
+            let blow = row.approach(velocity) > resting_speed && (is_struck(i) || is_struck(j));
+            // Warm start: last step's impulse, scaled to this step.
+            let last = Self::remembered(&self.last_pairs, (i as u32, j as u32)) * warm;
+            changed |= warm_start(&mut row, last, blow, velocity);
+            self.pairs.push(row);
+        }
+        self.surfaces.clear();
+        for &(p, k) in touching.surfaces {
+            let (p, k) = (p as usize, k as usize);
+            let (_, normal) = touching.obstacles[k].shape.distance(position[p]);
+            let mut row = SurfaceRow {
+                particle: p,
+                obstacle: k,
+                normal,
+                solved: Accumulator {
+                    inverse_mass: w[p],
+                    impulse: 0.0,
+                    skipped: false,
+                },
+            };
+            let blow = row.approach(velocity) > resting_speed && is_struck(p);
+            let last = Self::remembered(&self.last_surfaces, (p as u32, k as u32)) * warm;
+            changed |= warm_start(&mut row, last, blow, velocity);
+            self.surfaces.push(row);
+        }
+        let tolerance = 1e-4 * resting_speed.max(1e-9);
+        for _ in 0..ITERATIONS {
+            let pairs = sweep(&mut self.pairs, velocity);
+            let surfaces = sweep(&mut self.surfaces, velocity);
+            let largest = match (pairs, surfaces) {
+                (None, None) => break,
+                (a, b) => a.unwrap_or(0.0).max(b.unwrap_or(0.0)),
+            };
+            changed = true;
+            if largest <= tolerance {
+                break;
+            }
+        }
+        changed |= self.correct_overlaps(touching, &mut state.position);
+        self.last_pairs.clear();
+        self.last_pairs.extend(
+            self.pairs
+                .iter()
+                .map(|r| ((r.i as u32, r.j as u32), kept(&r.solved))),
+        );
+        self.last_surfaces.clear();
+        self.last_surfaces.extend(
+            self.surfaces
+                .iter()
+                .map(|r| ((r.particle as u32, r.obstacle as u32), kept(&r.solved))),
+        );
+        self.last_step = h;
+        changed
+    }
+
+    /// Pushes apart overlaps beyond the tolerance, a share at a time over a few sweeps
+    /// (non-linear Gauss–Seidel on positions). Returns whether anything moved.
+    fn correct_overlaps(&self, touching: &Touching<'_>, position: &mut [DVec2]) -> bool {
+        let radius = touching.radius;
+        let mut changed = false;
+        for _ in 0..POSITION_SWEEPS {
+            let mut moved = false;
+            for row in &self.pairs {
+                let (i, j) = (row.i, row.j);
+                let (gap, normal) = pair_gap(position, radius, i, j);
+                let excess = -gap - ALLOWED_OVERLAP * radius[i].min(radius[j]);
+                let total = row.inverse_mass_i + row.inverse_mass_j;
+                if excess > 0.0 && total > 0.0 {
+                    let shift = normal * (CORRECTION * excess / total);
+                    position[i] -= shift * row.inverse_mass_i;
+                    position[j] += shift * row.inverse_mass_j;
+                    moved = true;
+                }
+            }
+            for row in &self.surfaces {
+                let p = row.particle;
+                let (distance, normal) =
+                    touching.obstacles[row.obstacle].shape.distance(position[p]);
+                let excess = -(distance - radius[p]) - ALLOWED_OVERLAP * radius[p];
+                if excess > 0.0 {
+                    position[p] += normal * excess;
+                    moved = true;
+                }
+            }
+            changed |= moved;
+            if !moved {
+                break; // nothing left to correct
+            }
+        }
+        changed
+    }
+}
+
+/// Gap (metres, negative when overlapping) and unit normal from `i` towards `j`.
+fn pair_gap(position: &[DVec2], radius: &[f64], i: usize, j: usize) -> (f64, DVec2) {
+    let offset = position[j] - position[i];
+    let distance = offset.length();
+    // Coincident centres have no direction between them; any will do.
+    let normal = if distance > 0.0 {
+        offset / distance
+    } else {
+        DVec2::X
+    };
+    (distance - radius[i] - radius[j], normal)
+}

@@ -279,7 +279,7 @@ impl Simulation {
         if self.contacts.changed_paths() {
             self.work.start_acceleration = None;
         }
-        let mut struck = [usize::MAX; 2];
+        let mut struck = None;
         if let Some((time, impact)) = interruption {
             let step = taken;
             taken = self.integrate_to_impact(time, step, impact);
@@ -287,7 +287,7 @@ impl Simulation {
             self.contacts
                 .apply(impact, &mut self.state, &self.forces, taken);
             self.work.start_acceleration = None;
-            struck = impact.particles();
+            struck = Some(impact);
             self.profiler.lap(Stage::Reintegration);
         }
         if let Some(log) = &mut self.impact_log {
@@ -307,7 +307,7 @@ impl Simulation {
         }
         if self
             .contacts
-            .settle(&mut self.state, &self.forces, taken, &struck)
+            .settle(&mut self.state, &self.forces, taken, struck)
         {
             self.work.start_acceleration = None;
         }

@@ -66,11 +66,11 @@ pub(crate) enum Impact {
 }
 
 impl Impact {
-    /// The particles involved (`usize::MAX` for an obstacle's place).
-    pub fn particles(self) -> [usize; 2] {
+    /// Whether particle `i` takes part.
+    pub fn involves(self, i: usize) -> bool {
         match self {
-            Self::Pair(i, j) => [i, j],
-            Self::Obstacle(p, _) => [p, usize::MAX],
+            Self::Pair(p, q) => p == i || q == i,
+            Self::Obstacle(p, _) => p == i,
         }
     }
 }
@@ -719,16 +719,16 @@ impl Contacts {
         self.applied.push((h, impact));
     }
 
-    /// Resting contact after a step of `h` ([`resting`]). `struck` lists the particles of
-    /// an impact applied outside [`Self::resolve_impacts`]; they and those impacts inside
-    /// the step changed keep a fast approach for the next step's impacts. Returns whether
+    /// Resting contact after a step of `h` ([`resting`]). `struck` is an impact applied
+    /// outside [`Self::resolve_impacts`]; its particles, and those impacts inside the
+    /// step changed, keep a fast approach for the next step's impacts. Returns whether
     /// anything changed.
     pub fn settle(
         &mut self,
         state: &mut State,
         forces: &ForceModel,
         h: f64,
-        struck: &[usize],
+        struck: Option<Impact>,
     ) -> bool {
         let resting_speed = self.resting_speed(h);
         let touching = Touching {
@@ -739,8 +739,10 @@ impl Contacts {
             inverse_mass: &forces.inverse_mass,
         };
         let is_changed = &self.is_changed;
-        let is_struck =
-            |i: usize| struck.contains(&i) || is_changed.get(i).copied().unwrap_or(false);
+        let is_struck = |i: usize| {
+            struck.is_some_and(|impact| impact.involves(i))
+                || is_changed.get(i).copied().unwrap_or(false)
+        };
         self.resting
             .solve(&touching, state, h, resting_speed, is_struck)
     }

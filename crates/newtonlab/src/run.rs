@@ -50,6 +50,9 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
     }
     let scene = scene_source::load(&args.scene)?;
     let simulation = Simulation::new(&scene).map_err(|e| Failure::Input(e.to_string()))?;
+    if let Some(note) = sampling_note(&scene.simulation, args.every) {
+        eprintln!("note: {note}");
+    }
     let times = sample_times(args.until, args.every);
     let sink: Box<dyn Write> = match args.out.as_deref() {
         None | Some("-") => Box::new(io::stdout().lock()),
@@ -66,6 +69,26 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         Err(error) if error.kind() == io::ErrorKind::BrokenPipe => Ok(()),
         Err(error) => Err(Failure::Input(format!("cannot write the CSV: {error}"))),
     }
+}
+
+/// A fixed-step method lands exactly on every sample, so when --every is not a whole
+/// number of time steps some steps are shortened and the run integrates with a smaller
+/// effective step than the scene says (more accurately, and differently from a run
+/// sampled at a multiple). Says so, with the step and the interval.
+fn sampling_note(settings: &physics::Settings, every: f64) -> Option<String> {
+    if settings.integrator == physics::Integrator::Dopri5 {
+        return None; // adaptive: its steps follow the error, not the time step
+    }
+    let steps = every / settings.time_step;
+    if (steps - steps.round()).abs() <= 1e-9 * steps.max(1.0) {
+        return None;
+    }
+    Some(format!(
+        "--every {every} s is not a whole number of time steps ({} s): each sample shortens a \
+         step to land on it, so this run integrates with a smaller effective step than the scene's \
+         and its numbers differ slightly from a run sampled at a multiple of {} s",
+        settings.time_step, settings.time_step
+    ))
 }
 
 /// t = k·DT for every k with k·DT ≤ T (each computed as k × DT, never accumulated), and T

@@ -349,3 +349,33 @@ fn the_app_without_a_display_explains_itself() {
     assert!(message.contains("newtonlab --help"), "{message}");
     assert!(!message.contains("panicked"), "{message}");
 }
+
+/// A fixed-step run sampled at an interval that is not a whole number of steps says so on
+/// stderr (its samples shorten steps); a multiple says nothing.
+#[test]
+fn sampling_off_the_step_grid_gives_a_note() {
+    let off = newtonlab(&[
+        "run",
+        "example:spring-undamped",
+        "--until",
+        "0.01",
+        "--every",
+        "0.0015",
+    ]);
+    assert!(off.status.success(), "{}", stderr(&off));
+    assert!(
+        stderr(&off).contains("not a whole number of time steps"),
+        "{}",
+        stderr(&off)
+    );
+    let on = newtonlab(&[
+        "run",
+        "example:spring-undamped",
+        "--until",
+        "0.01",
+        "--every",
+        "0.002",
+    ]);
+    assert!(on.status.success(), "{}", stderr(&on));
+    assert!(stderr(&on).is_empty(), "no note: {}", stderr(&on));
+}

@@ -10,20 +10,20 @@ use super::report::{Report, Table, degrees, error, value};
 use super::theory::{self, DampedOscillator, RadialFall};
 use crate::Failure;
 
-type Outcome = Result<(), Failure>;
+pub(super) type Outcome = Result<(), Failure>;
 
-fn load(name: &str) -> Result<Scene, Failure> {
+pub(super) fn load(name: &str) -> Result<Scene, Failure> {
     physics::example(name)
         .ok_or_else(|| Failure::Input(format!("the built-in scene '{name}' is missing")))?
         .scene()
         .map_err(|e| Failure::Input(format!("example:{name}: {e}")))
 }
 
-fn start(scene: &Scene) -> Result<Simulation, Failure> {
+pub(super) fn start(scene: &Scene) -> Result<Simulation, Failure> {
     Simulation::new(scene).map_err(|e| Failure::Input(e.to_string()))
 }
 
-fn step_to(simulation: &mut Simulation, t: f64) -> Outcome {
+pub(super) fn step_to(simulation: &mut Simulation, t: f64) -> Outcome {
     simulation
         .step_to(t)
         .map_err(|e| Failure::Simulation(e.to_string()))

@@ -4,6 +4,7 @@
 //! PNG. Exit 0 when every error is within the tolerance, 1 otherwise, listing the misses.
 
 mod experiments;
+mod paper_method;
 mod plots;
 mod report;
 mod theory;
@@ -46,6 +47,7 @@ pub(crate) fn validate(args: &ValidateArgs) -> Result<(), Failure> {
     experiments::ramps(&mut report)?;
     experiments::springs(&mut report, &mut figures)?;
     experiments::inverse_square(&mut report, &mut figures)?;
+    paper_method::paper_method(&mut report, &mut figures)?;
 
     let summary = report.summary();
     #[expect(clippy::print_stdout, reason = "the command's report")]

@@ -17,8 +17,11 @@ pub(crate) struct Table {
 /// A simulated value held against theory.
 pub(crate) struct Check {
     pub what: String,
-    /// |simulated − theory| / scale.
+    /// |simulated − theory| / scale; for a printed value, |printed − simulated|.
     pub error: f64,
+    /// For a value the paper printed: the largest difference its rounding allows,
+    /// which the check must meet instead of the tolerance.
+    pub rounding: Option<f64>,
 }
 
 pub(crate) struct Report {
@@ -49,15 +52,34 @@ impl Report {
         self.checks.push(Check {
             what: what.into(),
             error,
+            rounding: None,
         });
         error
+    }
+
+    /// Records that a value the paper `printed` is `simulated` up to its rounding
+    /// (`rounding`, e.g. 0.002 for three decimals); returns printed − simulated.
+    pub fn check_printed(
+        &mut self,
+        what: impl Into<String>,
+        printed: f64,
+        simulated: f64,
+        rounding: f64,
+    ) -> f64 {
+        let difference = printed - simulated;
+        self.checks.push(Check {
+            what: what.into(),
+            error: difference.abs(),
+            rounding: Some(rounding),
+        });
+        difference
     }
 
     pub fn failures(&self) -> impl Iterator<Item = &Check> {
         // A NaN error (a quantity that could not be measured) fails too.
         self.checks
             .iter()
-            .filter(|c| c.error.is_nan() || c.error > self.tolerance)
+            .filter(|c| c.error.is_nan() || c.error > c.rounding.unwrap_or(self.tolerance))
     }
 
     /// Every table as aligned plain text.
@@ -113,11 +135,14 @@ impl Report {
     pub fn summary(&self) -> String {
         let failed: Vec<&Check> = self.failures().collect();
         if failed.is_empty() {
+            let (printed, computed): (Vec<&Check>, Vec<&Check>) =
+                self.checks.iter().partition(|c| c.rounding.is_some());
             return format!(
-                "all {} checks within the tolerance {:e} (largest error {:.2e})",
-                self.checks.len(),
+                "all {} checks within the tolerance {:e} (largest error {:.2e}); all {} of the paper's printed values reproduced within their rounding",
+                computed.len(),
                 self.tolerance,
-                self.checks.iter().map(|c| c.error).fold(0.0, f64::max)
+                computed.iter().map(|c| c.error).fold(0.0, f64::max),
+                printed.len()
             );
         }
         let mut out = format!(
@@ -146,4 +171,22 @@ pub(crate) fn error(x: f64) -> String {
 /// An angle in degrees.
 pub(crate) fn degrees(x: f64) -> String {
     format!("{x:.6}")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Report;
+
+    /// A value the paper printed is held to its rounding, whatever the tolerance: a
+    /// difference beyond it fails even under a tolerance of 1, and one within it passes
+    /// under 1e-12.
+    #[test]
+    fn printed_values_are_held_to_their_rounding_not_the_tolerance() {
+        let mut loose = Report::new(1.0);
+        loose.check_printed("off by 3 in the last place", 15.850, 15.853, 0.002);
+        assert_eq!(loose.failures().count(), 1, "beyond the rounding fails");
+        let mut strict = Report::new(1e-12);
+        strict.check_printed("off by half a unit", 15.850, 15.8505, 0.002);
+        assert_eq!(strict.failures().count(), 0, "within the rounding passes");
+    }
 }

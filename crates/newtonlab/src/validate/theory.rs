@@ -10,6 +10,27 @@ pub(crate) fn constant_acceleration(x0: DVec2, v0: DVec2, a: DVec2, t: f64) -> D
     x0 + v0 * t + a * (0.5 * t * t)
 }
 
+/// Explicit Euler at a fixed step `h` under constant acceleration, at a multiple t of the
+/// step: xₙ₊₁ = xₙ + h vₙ, vₙ₊₁ = vₙ + h a sum to x₀ + v₀t + a·t(t − h)/2 — the exact
+/// path less a·t·h/2.
+pub(crate) fn explicit_euler_constant_acceleration(
+    x0: DVec2,
+    v0: DVec2,
+    a: DVec2,
+    t: f64,
+    h: f64,
+) -> DVec2 {
+    x0 + v0 * t + a * (0.5 * t * (t - h))
+}
+
+/// Explicit Euler at a fixed step `h` on the undamped oscillator u'' = −ω²u released at
+/// rest from `u0`: z = u + i·u'/ω becomes (1 − iωh)·z each step, so after `n` steps
+/// u = u₀ (1 + ω²h²)^(n/2) cos(n·atan ωh). Its energy grows by 1 + (ωh)² per step.
+pub(crate) fn explicit_euler_oscillator(u0: f64, omega: f64, h: f64, n: u32) -> f64 {
+    let n = f64::from(n);
+    u0 * (1.0 + (omega * h).powi(2)).powf(n / 2.0) * (n * (omega * h).atan()).cos()
+}
+
 /// Velocities after an impact (the paper's 8–10) with normal `n` from A to B at contact,
 /// restitution `e`: `j = −(1 + e) (v_A − v_B)·n / (1/m_A + 1/m_B)`.
 pub(crate) fn impact(

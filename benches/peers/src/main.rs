@@ -8,7 +8,7 @@
 //! timed over the same simulated interval, alternating engines so the machine's noise
 //! hits both; the figure is steps per second and the ratio.
 //!
-//!     cd benches/peers && cargo run --release -- [--particles N] [--seconds S] [--runs R]
+//!     cd benches/peers && cargo run --release -- [--particles N] [--seconds S] [--runs R] [--threads T]
 //!
 //! This crate is a workspace of its own: CI and the main workspace never build rapier.
 
@@ -23,6 +23,8 @@ struct Options {
     particles: usize,
     seconds: f64,
     runs: usize,
+    /// NewtonLab's threads for the contact search (rapier's build here has none).
+    threads: usize,
 }
 
 fn options() -> Result<Options, String> {
@@ -30,6 +32,7 @@ fn options() -> Result<Options, String> {
         particles: 1000,
         seconds: 1.0,
         runs: 3,
+        threads: 1,
     };
     let mut args = std::env::args().skip(1);
     while let Some(flag) = args.next() {
@@ -39,6 +42,7 @@ fn options() -> Result<Options, String> {
             "--particles" => options.particles = value.parse().map_err(|e| bad(&e))?,
             "--seconds" => options.seconds = value.parse().map_err(|e| bad(&e))?,
             "--runs" => options.runs = value.parse().map_err(|e| bad(&e))?,
+            "--threads" => options.threads = value.parse().map_err(|e| bad(&e))?,
             _ => return Err(format!("unknown option {flag}")),
         }
     }
@@ -46,8 +50,9 @@ fn options() -> Result<Options, String> {
 }
 
 /// Steps per second of NewtonLab over `seconds` of simulated time.
-fn newtonlab(scene: &Scene, seconds: f64) -> f64 {
+fn newtonlab(scene: &Scene, seconds: f64, threads: usize) -> f64 {
     let mut simulation = Simulation::new(scene).expect("the generated pit is valid");
+    simulation.set_threads(threads);
     let steps = (seconds / TIME_STEP).round() as u64;
     let start = Instant::now();
     for _ in 0..steps {
@@ -121,14 +126,14 @@ fn main() {
     let options = match options() {
         Ok(options) => options,
         Err(message) => {
-            eprintln!("error: {message}\nusage: newtonlab_peers [--particles N] [--seconds S] [--runs R]");
+            eprintln!("error: {message}\nusage: newtonlab_peers [--particles N] [--seconds S] [--runs R] [--threads T]");
             std::process::exit(2);
         }
     };
     let scene = physics::generated::ball_pit(options.particles);
     let (mut ours, mut theirs) = (Vec::new(), Vec::new());
     for run in 1..=options.runs {
-        ours.push(newtonlab(&scene, options.seconds));
+        ours.push(newtonlab(&scene, options.seconds, options.threads));
         theirs.push(rapier(&scene, options.seconds));
         println!(
             "run {run}: NewtonLab {:.0} steps/s, rapier2d-f64 {:.0} steps/s",
@@ -138,8 +143,8 @@ fn main() {
     }
     let (ours, theirs) = (median(ours), median(theirs));
     println!(
-        "{}-ball pit, 1 ms steps, 0 to {} s, one thread, median of {} runs:",
-        options.particles, options.seconds, options.runs
+        "{}-ball pit, 1 ms steps, 0 to {} s, NewtonLab on {} thread(s), rapier on one, median of {} runs:",
+        options.particles, options.seconds, options.threads, options.runs
     );
     println!("  NewtonLab     {ours:>8.0} steps/s");
     println!("  rapier2d-f64  {theirs:>8.0} steps/s");

@@ -6,8 +6,10 @@
 //! integrator the scene chose; [`Diagnostics`] reads energies, momentum and per-particle
 //! quantities at any instant.
 //!
-//! The library knows nothing about screens, files, threads or clocks: time is passed in,
-//! text is passed in and out as strings. It builds for `wasm32-unknown-unknown`.
+//! The library knows nothing about screens, files or clocks: time is passed in, text is
+//! passed in and out as strings. It builds for `wasm32-unknown-unknown`. Natively (the
+//! default `parallel` feature) a simulation may search its contacts on several threads,
+//! with results bit-identical to one thread ([`Simulation::set_threads`]).
 
 mod contacts;
 mod csv;
@@ -16,6 +18,7 @@ mod examples;
 mod forces;
 pub mod generated;
 mod integrators;
+mod parallel;
 mod profile;
 mod scene;
 mod simulation;

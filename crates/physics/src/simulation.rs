@@ -162,6 +162,18 @@ impl Simulation {
         self.profiler.profile
     }
 
+    /// Lets the contact search use `threads` threads (0 or 1: the calling thread only;
+    /// default 1). The results are bit-identical for every thread count. Builds without
+    /// threads (wasm32, or without the `parallel` feature) always use one.
+    pub fn set_threads(&mut self, threads: usize) {
+        self.contacts.workers = crate::parallel::Workers::new(threads);
+    }
+
+    /// The threads the contact search uses.
+    pub fn threads(&self) -> usize {
+        self.contacts.workers.threads()
+    }
+
     /// Simulated time, seconds.
     pub fn time(&self) -> f64 {
         self.state.time

@@ -25,6 +25,8 @@
 
 use glam::DVec2;
 
+use crate::parallel::Workers;
+
 /// An axis-aligned box.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Aabb {
@@ -62,7 +64,6 @@ pub(crate) struct BroadPhase {
     oversized: Vec<u32>,
     pairs: Vec<(u32, u32)>,
     extents: Vec<f64>,
-    partners: Vec<u32>,
 }
 
 /// The dense grid of the last [`BroadPhase::pairs`]: cell `c` holds the particles
@@ -161,7 +162,12 @@ impl Grid {
 impl BroadPhase {
     /// Candidate pairs (i < j) whose boxes overlap, in ascending order; `skip(i, j)`
     /// excludes pairs that need no test (two fixed particles).
-    pub fn pairs(&mut self, boxes: &[Aabb], skip: impl Fn(usize, usize) -> bool) -> &[(u32, u32)] {
+    pub fn pairs(
+        &mut self,
+        boxes: &[Aabb],
+        skip: impl Fn(usize, usize) -> bool + Sync,
+        workers: &Workers,
+    ) -> &[(u32, u32)] {
         self.pairs.clear();
         if boxes.len() < 2 {
             self.grid.cell_of.clear();
@@ -194,32 +200,36 @@ impl BroadPhase {
             .fold(typical, f64::max);
         self.grid.cell = cell.max(1e-9);
         self.grid.fill(boxes, &mut self.oversized);
-        let grid = &self.grid;
-        for i in 0..boxes.len() {
-            self.partners.clear();
-            match grid.cell_of[i] {
-                Some(c) => {
-                    let (column, row) = (c as usize % grid.columns, c as usize / grid.columns);
-                    for y in row.saturating_sub(1)..=(row + 1).min(grid.rows - 1) {
-                        for x in column.saturating_sub(1)..=(column + 1).min(grid.columns - 1) {
-                            self.partners
-                                .extend(grid.members(x, y).iter().filter(|&&j| j as usize > i));
+        let (grid, oversized) = (&self.grid, &self.oversized);
+        // Each particle's partners are found on their own, so ranges of particles can be
+        // searched on different threads and joined in order.
+        workers.collect_into(boxes.len(), &mut self.pairs, |range, pairs| {
+            let mut partners = Vec::new();
+            for i in range {
+                partners.clear();
+                match grid.cell_of[i] {
+                    Some(c) => {
+                        let (column, row) = (c as usize % grid.columns, c as usize / grid.columns);
+                        for y in row.saturating_sub(1)..=(row + 1).min(grid.rows - 1) {
+                            for x in column.saturating_sub(1)..=(column + 1).min(grid.columns - 1) {
+                                partners
+                                    .extend(grid.members(x, y).iter().filter(|&&j| j as usize > i));
+                            }
                         }
+                        partners.extend(oversized.iter().filter(|&&j| j as usize > i));
                     }
-                    self.partners
-                        .extend(self.oversized.iter().filter(|&&j| j as usize > i));
+                    // An oversized box against every other box.
+                    None => partners.extend(i as u32 + 1..boxes.len() as u32),
                 }
-                // An oversized box against every other box.
-                None => self.partners.extend(i as u32 + 1..boxes.len() as u32),
-            }
-            self.partners.sort_unstable();
-            let bi = &boxes[i];
-            for &j in &self.partners {
-                if bi.overlaps(&boxes[j as usize]) && !skip(i, j as usize) {
-                    self.pairs.push((i as u32, j));
+                partners.sort_unstable();
+                let bi = &boxes[i];
+                for &j in &partners {
+                    if bi.overlaps(&boxes[j as usize]) && !skip(i, j as usize) {
+                        pairs.push((i as u32, j));
+                    }
                 }
             }
-        }
+        });
         &self.pairs
     }
 
@@ -288,7 +298,7 @@ mod tests {
         let expected = brute_force(&boxes);
         let mut broad = BroadPhase::default();
         assert_eq!(
-            broad.pairs(&boxes, |_, _| false),
+            broad.pairs(&boxes, |_, _| false, &Workers::default()),
             expected.as_slice(),
             "grid = brute force"
         );
@@ -331,7 +341,7 @@ mod tests {
         let expected = brute_force(&boxes);
         let mut broad = BroadPhase::default();
         assert_eq!(
-            broad.pairs(&boxes, |_, _| false),
+            broad.pairs(&boxes, |_, _| false, &Workers::default()),
             expected.as_slice(),
             "grid = brute force"
         );

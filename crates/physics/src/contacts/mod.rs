@@ -49,6 +49,7 @@ use self::obstacles::{Obstacle, Shape};
 use self::resting::{RestingSolver, Touching};
 use self::time_of_impact::{Region, control_points, earliest_entry};
 use crate::forces::{ForceModel, SurfaceContact};
+use crate::parallel::Workers;
 use crate::profile::{Profiler, Stage};
 use crate::scene::Scene;
 use crate::state::State;
@@ -92,6 +93,8 @@ pub(crate) struct Contacts {
     /// (particle, obstacle) touching at the start of the step, ascending.
     touching_obstacles: Vec<(u32, u32)>,
     resting: RestingSolver,
+    /// The threads the searches may use.
+    pub workers: Workers,
     /// Whether each particle feels a pairwise force or a spring (see the module doc).
     coupled: Vec<bool>,
     /// Each particle's path through the step.
@@ -206,6 +209,7 @@ impl Contacts {
             touching_pairs: Vec::new(),
             touching_obstacles: Vec::new(),
             resting: RestingSolver::default(),
+            workers: Workers::default(),
             coupled: (0..scene.particles.len())
                 .map(|i| {
                     !forces.is_fixed(i)
@@ -316,9 +320,11 @@ impl Contacts {
         let radius = &self.radius;
         let position = &state.position;
         self.touching_pairs.clear();
-        let candidates = self
-            .broad
-            .pairs(&self.boxes, |i, j| forces.is_fixed(i) && forces.is_fixed(j));
+        let candidates = self.broad.pairs(
+            &self.boxes,
+            |i, j| forces.is_fixed(i) && forces.is_fixed(j),
+            &self.workers,
+        );
         profiler.lap(Stage::BroadPhase);
         self.touching_pairs
             .extend(candidates.iter().copied().filter(|&(i, j)| {
@@ -516,21 +522,33 @@ impl Contacts {
         let touching_pairs = &self.touching_pairs;
         let candidates = self
             .broad
-            .pairs(&self.boxes, |i, j| {
-                (forces.is_fixed(i) && forces.is_fixed(j))
-                    || touching_pairs.binary_search(&(i as u32, j as u32)).is_ok()
-            })
+            .pairs(
+                &self.boxes,
+                |i, j| {
+                    (forces.is_fixed(i) && forces.is_fixed(j))
+                        || touching_pairs.binary_search(&(i as u32, j as u32)).is_ok()
+                },
+                &self.workers,
+            )
             .to_vec();
         profiler.lap(Stage::BroadPhase);
+        // Every search reads the paths only: pieces of the lists go to different threads,
+        // and the events found join in the lists' order.
         let mut found = Vec::new();
-        for (i, j) in candidates {
-            if let Some(event) = self.search_pair(i as usize, j as usize, 0.0, h) {
-                found.push(event);
+        let this = &*self;
+        this.workers
+            .collect_into(candidates.len(), &mut found, |range, found| {
+                for &(i, j) in &candidates[range] {
+                    if let Some(event) = this.search_pair(i as usize, j as usize, 0.0, h) {
+                        found.push(event);
+                    }
+                }
+            });
+        this.workers.collect_into(n, &mut found, |range, found| {
+            for p in range.filter(|&p| !forces.is_fixed(p)) {
+                this.search_obstacles(p, 0.0, h, found);
             }
-        }
-        for p in (0..n).filter(|&p| !forces.is_fixed(p)) {
-            self.search_obstacles(p, 0.0, h, &mut found);
-        }
+        });
         self.queue.extend(found.drain(..).map(Reverse));
 
         let mut interruption = None;

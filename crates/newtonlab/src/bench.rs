@@ -120,10 +120,9 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
             println!(
                 "{n}-ball pit, {integrator}, time step 1 ms, {threads} thread(s): {steps} steps in {elapsed:.2} s (simulated 0 to {simulated:.2} s)"
             );
-            println!(
-                "  {steps_per_second:.1} steps per second, {:.2}x real time",
-                simulated / elapsed
-            );
+            // One figure a line, "<number> <unit>", for scripts (docs/cli.md).
+            println!("  {steps_per_second:.1} steps per second");
+            println!("  {:.2}x real time", simulated / elapsed);
         }
     }
     print_profile(&simulation.profile(), steps);

@@ -80,7 +80,6 @@ impl Impact {
 #[derive(Clone, Debug)]
 pub(crate) struct Contacts {
     obstacles: Vec<Obstacle>,
-    obstacle_boxes: Vec<Option<Aabb>>,
     radius: Vec<f64>,
     /// Particle–particle restitution.
     restitution: f64,
@@ -192,10 +191,6 @@ impl Contacts {
     pub fn new(scene: &Scene, forces: &ForceModel) -> Self {
         let obstacles = obstacles::obstacles(scene);
         Self {
-            obstacle_boxes: obstacles
-                .iter()
-                .map(|o| o.shape.bounding_box().map(|(min, max)| Aabb { min, max }))
-                .collect(),
             obstacles,
             radius: scene.particles.iter().map(|p| p.radius).collect(),
             restitution: scene.world.restitution,
@@ -335,7 +330,10 @@ impl Contacts {
         self.touching_obstacles.clear();
         for p in (0..n).filter(|&p| !forces.is_fixed(p)) {
             for (k, obstacle) in self.obstacles.iter().enumerate() {
-                if self.obstacle_boxes[k].is_some_and(|b| !b.overlaps(&self.boxes[p])) {
+                if obstacle
+                    .shape
+                    .clear_of_box(self.boxes[p].min, self.boxes[p].max)
+                {
                     continue;
                 }
                 let reach = self.radius[p] + half_thickness(&obstacle.shape);
@@ -691,7 +689,7 @@ impl Contacts {
         let path = self.paths[p].after(from, h);
         let bounds = Aabb::around(&path, self.radius[p]);
         for (k, obstacle) in self.obstacles.iter().enumerate() {
-            if self.obstacle_boxes[k].is_some_and(|b| !b.overlaps(&bounds))
+            if obstacle.shape.clear_of_box(bounds.min, bounds.max)
                 || self
                     .touching_obstacles
                     .binary_search(&(p as u32, k as u32))

@@ -52,6 +52,25 @@ impl Shape {
         }
     }
 
+    /// Whether the box (min, max) certainly stays clear of the solid: no point of it
+    /// lies in a capsule's bounding box, or every point of it lies in front of a
+    /// half-plane. A particle whose reach over a step fits in such a box cannot touch.
+    pub fn clear_of_box(&self, min: DVec2, max: DVec2) -> bool {
+        match *self {
+            Self::Capsule { .. } => self.bounding_box().is_some_and(|(lo, hi)| {
+                lo.x > max.x || min.x > hi.x || lo.y > max.y || min.y > hi.y
+            }),
+            Self::HalfPlane { point, normal } => {
+                // The corner of the box deepest towards the solid.
+                let deepest = DVec2::new(
+                    if normal.x > 0.0 { min.x } else { max.x },
+                    if normal.y > 0.0 { min.y } else { max.y },
+                );
+                (deepest - point).dot(normal) > 0.0
+            }
+        }
+    }
+
     /// The bounding box, or `None` for an unbounded half-plane.
     pub fn bounding_box(&self) -> Option<(DVec2, DVec2)> {
         match *self {

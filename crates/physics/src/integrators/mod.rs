@@ -187,3 +187,42 @@ pub(crate) fn advance(
     state.time += max_step;
     Ok(max_step)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every method's name prints as the scene file spells it and parses back; the
+    /// descriptions the app shows are distinct and say the method's order.
+    #[test]
+    fn names_round_trip_and_descriptions_say_the_order() {
+        for integrator in Integrator::ALL {
+            let name = integrator.to_string();
+            assert_eq!(name, integrator.as_str(), "Display is the file's name");
+            assert_eq!(
+                name.parse::<Integrator>(),
+                Ok(integrator),
+                "{name} parses back"
+            );
+            let description = integrator.describe();
+            assert!(
+                ["1st", "2nd", "4th", "5(4)"]
+                    .iter()
+                    .any(|order| description.contains(order)),
+                "{name}: '{description}' says its order"
+            );
+        }
+        let mut descriptions: Vec<&str> = Integrator::ALL.iter().map(|i| i.describe()).collect();
+        descriptions.sort_unstable();
+        descriptions.dedup();
+        assert_eq!(
+            descriptions.len(),
+            Integrator::ALL.len(),
+            "one description each"
+        );
+        assert!(
+            "leapfrog".parse::<Integrator>().is_err(),
+            "an unknown name is an error"
+        );
+    }
+}

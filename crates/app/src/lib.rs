@@ -8,8 +8,8 @@
 //!
 //! Renderer: glow rather than wgpu. Both run under Xvfb and in headless Chromium with no
 //! set-up; glow builds in half the time and gives half the WebAssembly (measured, see
-//! `PLATFORM.md`), and the tests need no renderer at all (they drive the UI through its
-//! accessibility tree).
+//! `docs/platform.md`), and the tests need no renderer at all (they drive the UI through
+//! its accessibility tree).
 
 // An application crate: its public items serve its tests and the `newtonlab` binary,
 // and are documented where their use is not plain from their names.

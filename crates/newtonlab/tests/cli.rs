@@ -1,4 +1,4 @@
-//! The command-line contract (DESIGN.md), exercised on the real binary.
+//! The command-line contract (`docs/cli.md`), exercised on the real binary.
 
 use std::process::{Command, Output};
 

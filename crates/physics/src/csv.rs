@@ -1,4 +1,4 @@
-//! A simulation's state as CSV, the format of `newtonlab run` (DESIGN.md): the header
+//! A simulation's state as CSV, the format of `newtonlab run` (`docs/cli.md`): the header
 //! `t`, then `NAME.x,NAME.y,NAME.vx,NAME.vy,NAME.ax,NAME.ay` per particle in scene order,
 //! then `kinetic_energy,potential_energy,total_energy,momentum_x,momentum_y`. Every number
 //! is the shortest text that parses back to the same f64, so two rows are equal as text

@@ -1,5 +1,5 @@
 //! What can be measured at an instant: energies by kind, momentum, and per-particle
-//! readouts. Conventions (DESIGN.md): uniform field and applied acceleration
+//! readouts. Conventions (`docs/scene-format.md`): uniform field and applied acceleration
 //! −m (g + a)·r, spring k (L − L0)²/2, gravitation −G m1 m2 / r, Coulomb k q1 q2 / r.
 //!
 //! Fixed particles have no kinetic energy or momentum and no potential energy in the

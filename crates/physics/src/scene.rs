@@ -1,5 +1,5 @@
 //! The editable description of a scene: plain data, exactly the fields of the scene
-//! format (`DESIGN.md`, version 1), in the form the user typed them.
+//! format (`docs/scene-format.md`, version 1), in the form the user typed them.
 //!
 //! Nothing here is derived or cached: a vector stays polar if it was typed polar, a
 //! colour stays the colour that was chosen. [`crate::Simulation::new`] converts a scene

@@ -189,3 +189,30 @@ fn attempt(
     }
     if worst.is_nan() { f64::INFINITY } else { worst }
 }
+
+#[cfg(test)]
+mod tableau_tests {
+    use super::*;
+
+    /// The consistency conditions of a Runge–Kutta tableau: each stage's time is the sum
+    /// of its row (Σⱼ aₛⱼ = cₛ), the fifth-order weights (the last row, first same as
+    /// last) sum to 1, and the error weights, a difference of two consistent rules, to 0.
+    #[test]
+    fn the_tableau_is_consistent() {
+        for (s, row) in A.iter().enumerate() {
+            let sum: f64 = row.iter().sum();
+            assert!(
+                (sum - C[s]).abs() < 1e-15,
+                "stage {s}: row sums to {sum}, c = {}",
+                C[s]
+            );
+        }
+        let weights: f64 = A[6].iter().sum();
+        assert!(
+            (weights - 1.0).abs() < 1e-15,
+            "fifth-order weights sum to {weights}"
+        );
+        let error: f64 = E.iter().sum();
+        assert!(error.abs() < 1e-15, "error weights sum to {error}");
+    }
+}

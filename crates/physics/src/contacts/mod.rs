@@ -94,6 +94,8 @@ pub(crate) struct Contacts {
     resting: RestingSolver,
     /// The threads the searches may use.
     pub workers: Workers,
+    /// Scratch: each touching contact and its normal at the start of the step.
+    start_normals: Vec<(Impact, DVec2)>,
     /// Whether each particle feels a pairwise force or a spring (see the module doc).
     coupled: Vec<bool>,
     /// Each particle's path through the step.
@@ -205,6 +207,7 @@ impl Contacts {
             touching_obstacles: Vec::new(),
             resting: RestingSolver::default(),
             workers: Workers::default(),
+            start_normals: Vec::new(),
             coupled: (0..scene.particles.len())
                 .map(|i| {
                     !forces.is_fixed(i)
@@ -348,60 +351,54 @@ impl Contacts {
     /// `resting_speed`, pass after pass until none does. A contact still approaching after
     /// many passes (a ball squeezed between two others) is made inelastic, which ends it.
     fn impacts_now(&mut self, state: &mut State, forces: &ForceModel, resting_speed: f64) -> bool {
+        // Only velocities change here, so each contact's normal is found once.
+        let mut contacts = std::mem::take(&mut self.start_normals);
+        contacts.clear();
+        let pairs = self
+            .touching_pairs
+            .iter()
+            .map(|&(i, j)| Impact::Pair(i as usize, j as usize));
+        let obstacles = self
+            .touching_obstacles
+            .iter()
+            .map(|&(p, k)| Impact::Obstacle(p as usize, k as usize));
+        contacts.extend(
+            pairs
+                .chain(obstacles)
+                .map(|impact| (impact, self.measure(impact, state).1)),
+        );
         let max_passes = 2 * state.len() + 8;
         let mut changed = false;
         for pass in 0..=max_passes {
-            let last = pass == max_passes;
+            let inelastic = pass == max_passes;
             let mut any = false;
-            let pairs = self
-                .touching_pairs
-                .iter()
-                .map(|&(i, j)| Impact::Pair(i as usize, j as usize));
-            let obstacles = self
-                .touching_obstacles
-                .iter()
-                .map(|&(p, k)| Impact::Obstacle(p as usize, k as usize));
-            for impact in pairs.chain(obstacles) {
-                if self.collide(impact, state, forces, resting_speed, last) {
-                    self.applied.push((0.0, impact));
-                    any = true;
+            for &(impact, normal) in &contacts {
+                let approach = approach_along(impact, normal, state);
+                if approach <= resting_speed {
+                    continue;
                 }
+                let restitution = if inelastic {
+                    0.0
+                } else {
+                    self.restitution_at(impact, approach, resting_speed)
+                };
+                apply_impulse(
+                    impact,
+                    normal,
+                    approach * (1.0 + restitution),
+                    state,
+                    forces,
+                );
+                self.applied.push((0.0, impact));
+                any = true;
             }
             changed |= any;
             if !any {
                 break;
             }
         }
+        self.start_normals = contacts;
         changed
-    }
-
-    /// Applies the impulse of `impact` if its approach is faster than `resting_speed`
-    /// (inelastic when `inelastic`). Returns whether it did.
-    fn collide(
-        &self,
-        impact: Impact,
-        state: &mut State,
-        forces: &ForceModel,
-        resting_speed: f64,
-        inelastic: bool,
-    ) -> bool {
-        let (_, normal, approach) = self.measure(impact, state);
-        if approach <= resting_speed {
-            return false;
-        }
-        let restitution = if inelastic {
-            0.0
-        } else {
-            self.restitution_at(impact, approach, resting_speed)
-        };
-        apply_impulse(
-            impact,
-            normal,
-            approach * (1.0 + restitution),
-            state,
-            forces,
-        );
-        true
     }
 
     /// The restitution an impact approaching at `approach` gets: its surface's (or the
@@ -768,6 +765,15 @@ fn half_thickness(shape: &Shape) -> f64 {
     match *shape {
         Shape::Capsule { radius, .. } => radius,
         Shape::HalfPlane { .. } => 0.0,
+    }
+}
+
+/// The approach speed of an impact along `normal` (m/s, positive when closing), as
+/// [`Contacts::measure`] gives it.
+fn approach_along(impact: Impact, normal: DVec2, state: &State) -> f64 {
+    match impact {
+        Impact::Pair(i, j) => (state.velocity[i] - state.velocity[j]).dot(normal),
+        Impact::Obstacle(p, _) => -state.velocity[p].dot(normal),
     }
 }
 

@@ -150,6 +150,30 @@ fn kept(solved: &Accumulator) -> f64 {
     if solved.skipped { 0.0 } else { solved.impulse }
 }
 
+/// The last step's impulses, read for this step's contacts in ascending order: both lists
+/// are sorted by key, so one pass through the old list finds every match.
+struct Remembered<'a> {
+    last: &'a [((u32, u32), f64)],
+}
+
+impl<'a> Remembered<'a> {
+    fn new(last: &'a [((u32, u32), f64)]) -> Self {
+        Self { last }
+    }
+
+    /// The impulse of the contact `key` in the last step, N·s, or 0 for a new contact.
+    /// Keys must be asked for in ascending order.
+    fn impulse(&mut self, key: (u32, u32)) -> f64 {
+        while self.last.first().is_some_and(|&(k, _)| k < key) {
+            self.last = &self.last[1..];
+        }
+        match self.last.first() {
+            Some(&(k, impulse)) if k == key => impulse,
+            _ => 0.0,
+        }
+    }
+}
+
 /// What the resting solver needs of the contacts around it.
 pub(crate) struct Touching<'a> {
     /// Pairs (i < j) touching at the start of the step, ascending.
@@ -176,12 +200,6 @@ pub(crate) struct RestingSolver {
 }
 
 impl RestingSolver {
-    /// The last step's impulse of a contact, N·s, or 0 for a new one.
-    fn remembered(last: &[((u32, u32), f64)], key: (u32, u32)) -> f64 {
-        last.binary_search_by(|(k, _)| k.cmp(&key))
-            .map_or(0.0, |at| last[at].1)
-    }
-
     /// Solves the resting contacts after a step of `h`. A fast approach of a particle for
     /// which `is_struck` holds (an impact struck it in this step) is a blow being passed
     /// on (a row of touching balls), left to the impacts at the start of the next step,
@@ -203,6 +221,7 @@ impl RestingSolver {
         let w = touching.inverse_mass;
         let mut changed = false;
         self.pairs.clear();
+        let mut last_pairs = Remembered::new(&self.last_pairs);
         for &(i, j) in touching.pairs {
             let (i, j) = (i as usize, j as usize);
             let (_, normal) = pair_gap(position, touching.radius, i, j);
@@ -220,11 +239,12 @@ impl RestingSolver {
             };
             let blow = row.approach(velocity) > resting_speed && (is_struck(i) || is_struck(j));
             // Warm start: last step's impulse, scaled to this step.
-            let last = Self::remembered(&self.last_pairs, (i as u32, j as u32)) * warm;
+            let last = last_pairs.impulse((i as u32, j as u32)) * warm;
             changed |= warm_start(&mut row, last, blow, velocity);
             self.pairs.push(row);
         }
         self.surfaces.clear();
+        let mut last_surfaces = Remembered::new(&self.last_surfaces);
         for &(p, k) in touching.surfaces {
             let (p, k) = (p as usize, k as usize);
             let (_, normal) = touching.obstacles[k].shape.distance(position[p]);
@@ -239,7 +259,7 @@ impl RestingSolver {
                 },
             };
             let blow = row.approach(velocity) > resting_speed && is_struck(p);
-            let last = Self::remembered(&self.last_surfaces, (p as u32, k as u32)) * warm;
+            let last = last_surfaces.impulse((p as u32, k as u32)) * warm;
             changed |= warm_start(&mut row, last, blow, velocity);
             self.surfaces.push(row);
         }

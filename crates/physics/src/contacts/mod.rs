@@ -514,18 +514,25 @@ impl Contacts {
                 .zip(&self.radius)
                 .map(|(path, r)| Aabb::around(&path.after(0.0, h), *r)),
         );
-        let touching_pairs = &self.touching_pairs;
-        let candidates = self
+        // Touching pairs are the resting solver's: both lists are ascending, so one walk
+        // through the touching list takes them out.
+        let mut touching = self.touching_pairs.as_slice();
+        let candidates: Vec<(u32, u32)> = self
             .broad
             .pairs(
                 &self.boxes,
-                |i, j| {
-                    (forces.is_fixed(i) && forces.is_fixed(j))
-                        || touching_pairs.binary_search(&(i as u32, j as u32)).is_ok()
-                },
+                |i, j| forces.is_fixed(i) && forces.is_fixed(j),
                 &self.workers,
             )
-            .to_vec();
+            .iter()
+            .copied()
+            .filter(|pair| {
+                while touching.first().is_some_and(|t| t < pair) {
+                    touching = &touching[1..];
+                }
+                touching.first() != Some(pair)
+            })
+            .collect();
         profiler.lap(Stage::BroadPhase);
         // Every search reads the paths only: pieces of the lists go to different threads,
         // and the events found join in the lists' order.

@@ -40,10 +40,28 @@ struct Accumulator {
     /// The approach speed removed per unit of impulse: 1/mᵢ + 1/mⱼ for a pair, 1/m for
     /// a particle on a surface, 1/kg.
     inverse_mass: f64,
+    /// Its inverse, the effective mass, kg (0 when immovable): the impulse per unit of
+    /// approach speed removed. Kept so a sweep multiplies instead of dividing.
+    mass: f64,
     /// Accumulated impulse, N·s.
     impulse: f64,
     /// Left out of this solve: a blow being passed on, or immovable bodies.
     skipped: bool,
+}
+
+impl Accumulator {
+    fn new(inverse_mass: f64) -> Self {
+        Self {
+            inverse_mass,
+            mass: if inverse_mass > 0.0 {
+                1.0 / inverse_mass
+            } else {
+                0.0
+            },
+            impulse: 0.0,
+            skipped: false,
+        }
+    }
 }
 
 /// A touching pair in the solver: particles `i < j`, the normal from `i` towards `j`.
@@ -83,9 +101,8 @@ impl Row for PairRow {
 
     /// The paper's 8–10.
     fn push(&self, amount: f64, velocity: &mut [DVec2]) {
-        let inverse_mass = self.solved.inverse_mass;
-        let impulse = self.normal * ((amount * inverse_mass) / inverse_mass);
-        velocity[self.i] += -impulse * self.inverse_mass_i;
+        let impulse = self.normal * amount;
+        velocity[self.i] -= impulse * self.inverse_mass_i;
         velocity[self.j] += impulse * self.inverse_mass_j;
     }
 
@@ -133,7 +150,7 @@ fn sweep<R: Row>(rows: &mut [R], velocity: &mut [DVec2]) -> Option<f64> {
             continue;
         }
         let approach = row.approach(velocity);
-        let accumulated = (solved.impulse + approach / solved.inverse_mass).max(0.0);
+        let accumulated = (solved.impulse + approach * solved.mass).max(0.0);
         let change = accumulated - solved.impulse;
         if change != 0.0 {
             row.push(change, velocity);
@@ -231,11 +248,7 @@ impl RestingSolver {
                 normal,
                 inverse_mass_i: w[i],
                 inverse_mass_j: w[j],
-                solved: Accumulator {
-                    inverse_mass: w[i] + w[j],
-                    impulse: 0.0,
-                    skipped: false,
-                },
+                solved: Accumulator::new(w[i] + w[j]),
             };
             let blow = row.approach(velocity) > resting_speed && (is_struck(i) || is_struck(j));
             // Warm start: last step's impulse, scaled to this step.
@@ -252,11 +265,7 @@ impl RestingSolver {
                 particle: p,
                 obstacle: k,
                 normal,
-                solved: Accumulator {
-                    inverse_mass: w[p],
-                    impulse: 0.0,
-                    skipped: false,
-                },
+                solved: Accumulator::new(w[p]),
             };
             let blow = row.approach(velocity) > resting_speed && is_struck(p);
             let last = last_surfaces.impulse((p as u32, k as u32)) * warm;

@@ -7,7 +7,7 @@
 /// A clock: seconds since any fixed instant.
 pub type Clock = fn() -> f64;
 
-/// The stages of [`crate::Simulation::advance`], in the order they run.
+/// The stages of a step (`Simulation::advance`), in the order they run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Stage {
     /// Candidate pairs from the uniform grid (at the start of the step, and of the swept

@@ -166,3 +166,48 @@ fn an_eccentric_coulomb_orbit_has_keplers_period_and_apsides_for_any_k() {
     scene.simulation.tolerance = 1e-12;
     assert_kepler_ellipse(&scene, mu, "Coulomb, k = 2");
 }
+
+/// dopri5's step control at work: an orbit of eccentricity 0.9 (GM = 1, periapsis 0.1 m,
+/// so a = 1 m and T = 2π s) with a largest step of a whole second. A fixed step that large
+/// would fling the planet off at periapsis, where it moves at √19 m/s; the controller must
+/// shrink the step there (rejecting the first tries) and let it grow on the slow side. At
+/// tolerance 1e-10 the planet is at apoapsis (−1.9, 0) at T/2 and back at periapsis at T
+/// within 1e-6 m.
+#[test]
+fn dopri5_controls_its_step_through_a_close_periapsis() {
+    let mu: f64 = 1.0;
+    let periapsis = 0.1;
+    let speed = (mu * 1.9 / periapsis).sqrt();
+    let mut world = World::weightless();
+    world.gravitational_constant = 1.0;
+    world.electrostatics = false;
+    let mut scene = Scene::new()
+        .with_world(world)
+        .with_integrator(Integrator::Dopri5, 1.0)
+        .with_particle(Particle::new("Sun", 1.0).radius(0.01).fixed())
+        .with_particle(
+            Particle::new("Planet", 1e-9)
+                .radius(0.001)
+                .position([periapsis, 0.0])
+                .velocity([0.0, speed]),
+        );
+    scene.simulation.tolerance = 1e-10;
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.step_to(PI).unwrap();
+    let apoapsis = simulation.positions()[1];
+    assert!(
+        apoapsis.distance(DVec2::new(-1.9, 0.0)) < 1e-6,
+        "at T/2 at {apoapsis}, theory (−1.9, 0)"
+    );
+    simulation.step_to(2.0 * PI).unwrap();
+    let back = simulation.positions()[1];
+    assert!(
+        back.distance(DVec2::new(periapsis, 0.0)) < 1e-6,
+        "after one period at {back}, theory (0.1, 0)"
+    );
+    assert!(
+        simulation.steps_taken() > 20,
+        "the step shrank near periapsis: {} steps",
+        simulation.steps_taken()
+    );
+}

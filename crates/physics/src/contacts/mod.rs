@@ -436,14 +436,7 @@ impl Contacts {
     ) -> (f64, DVec2, f64) {
         match (impact, second) {
             (Impact::Pair(i, j), Some((xj, vj))) => {
-                let offset = xj - xi;
-                let distance = offset.length();
-                // Coincident centres have no direction between them; any will do.
-                let normal = if distance > 0.0 {
-                    offset / distance
-                } else {
-                    DVec2::X
-                };
+                let (distance, normal) = separation(xj - xi);
                 (
                     distance - self.radius[i] - self.radius[j],
                     normal,
@@ -773,6 +766,18 @@ fn half_thickness(shape: &Shape) -> f64 {
         Shape::Capsule { radius, .. } => radius,
         Shape::HalfPlane { .. } => 0.0,
     }
+}
+
+/// The length of the offset between two centres and its direction (the contact normal).
+pub(crate) fn separation(offset: DVec2) -> (f64, DVec2) {
+    let distance = offset.length();
+    // Coincident centres have no direction between them; any will do.
+    let normal = if distance > 0.0 {
+        offset / distance
+    } else {
+        DVec2::X
+    };
+    (distance, normal)
 }
 
 /// The approach speed of an impact along `normal` (m/s, positive when closing), as

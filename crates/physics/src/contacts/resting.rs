@@ -17,6 +17,7 @@
 use glam::DVec2;
 
 use super::obstacles::Obstacle;
+use super::separation;
 use crate::state::State;
 
 /// Overlap tolerated between resting particles before positions are corrected, as a
@@ -342,13 +343,6 @@ impl RestingSolver {
 
 /// Gap (metres, negative when overlapping) and unit normal from `i` towards `j`.
 fn pair_gap(position: &[DVec2], radius: &[f64], i: usize, j: usize) -> (f64, DVec2) {
-    let offset = position[j] - position[i];
-    let distance = offset.length();
-    // Coincident centres have no direction between them; any will do.
-    let normal = if distance > 0.0 {
-        offset / distance
-    } else {
-        DVec2::X
-    };
+    let (distance, normal) = separation(position[j] - position[i]);
     (distance - radius[i] - radius[j], normal)
 }

@@ -17,6 +17,8 @@ pub struct Document {
     redo: Vec<(String, Scene)>,
     /// The file name (a path on the desktop, a name on the web), if saved or opened.
     pub path: Option<String>,
+    /// What to call a scene that has no file (an example's title).
+    pub label: Option<String>,
     /// The scene as last saved or opened, to tell whether there are unsaved changes.
     saved: Scene,
     /// A gesture (a drag) in progress: its first change made the undo step.
@@ -32,6 +34,7 @@ impl Document {
             undo: Vec::new(),
             redo: Vec::new(),
             path: None,
+            label: None,
             gesture: false,
         }
     }
@@ -116,12 +119,19 @@ impl Document {
         self.path = Some(path);
     }
 
-    /// The file's name without its folders, or "untitled".
+    /// The file's name without its folders, or the label, or "untitled".
     pub fn title(&self) -> String {
-        self.path.as_deref().map_or_else(
-            || "untitled".to_owned(),
-            |p| p.rsplit(['/', '\\']).next().unwrap_or(p).to_owned(),
-        )
+        match (&self.path, &self.label) {
+            (Some(p), _) => p.rsplit(['/', '\\']).next().unwrap_or(p).to_owned(),
+            (None, Some(label)) => label.clone(),
+            (None, None) => "untitled".to_owned(),
+        }
+    }
+
+    /// Sets the scene's `[view]` (the camera, when saving) without an undo step: moving
+    /// the camera is not an edit.
+    pub fn set_view(&mut self, view: physics::View) {
+        self.scene.view = Some(view);
     }
 
     /// A name not used by any object, `prefix` followed by the smallest free number.

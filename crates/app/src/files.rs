@@ -10,7 +10,18 @@ use egui::{Id, Modal, RichText, Ui};
 pub enum Purpose {
     Open,
     Save,
-    ExportCsv,
+    /// Export graph number N.
+    ExportCsv(usize),
+}
+
+impl Purpose {
+    /// The file types the dialog lists for this purpose (folders are always listed).
+    fn extensions(self) -> &'static [&'static str] {
+        match self {
+            Self::Open | Self::Save => &["toml", "json"],
+            Self::ExportCsv(_) => &["csv"],
+        }
+    }
 }
 
 /// The file dialog's state.
@@ -80,13 +91,17 @@ impl Files {
     pub fn ui(&mut self, ui: &mut Ui, title: &str) -> Option<Choice> {
         let mut choice = None;
         if let Some(message) = self.message.clone() {
+            // However long the message (a CSV opened as a scene gives one line per line),
+            // the box fits the window and its OK button stays on screen.
+            let height = (ui.ctx().content_rect().height() * 0.6).max(120.0);
             let modal = Modal::new(Id::unique("file-message")).show(ui.ctx(), |ui| {
                 ui.set_max_width(640.0);
                 ui.heading("NewtonLab");
-                ui.label(RichText::new(message).monospace());
-                ui.button("OK")
-                    .on_hover_text("Close this message")
-                    .clicked()
+                egui::ScrollArea::vertical()
+                    .max_height(height)
+                    .show(ui, |ui| ui.label(RichText::new(message).monospace()));
+                let ok = ui.button("OK").on_hover_text("Close this message (Enter)");
+                ok.clicked() || ui.input(|i| i.key_pressed(egui::Key::Enter))
             });
             if modal.inner || modal.should_close() {
                 self.message = None;
@@ -128,14 +143,15 @@ impl Files {
             let verb = match dialog.purpose {
                 Purpose::Open => "Open",
                 Purpose::Save => "Save",
-                Purpose::ExportCsv => "Export",
+                Purpose::ExportCsv(_) => "Export",
             };
+            let extensions = dialog.purpose.extensions();
             Modal::new(Id::unique("file-dialog")).show(ui.ctx(), |ui| {
                 ui.set_min_width(460.0);
                 ui.heading(match dialog.purpose {
                     Purpose::Open => "Open a scene",
                     Purpose::Save => "Save the scene",
-                    Purpose::ExportCsv => "Export the graph as CSV",
+                    Purpose::ExportCsv(_) => "Export the graph as CSV",
                 });
                 ui.horizontal(|ui| {
                     let label = ui.label("folder");
@@ -155,7 +171,15 @@ impl Files {
                         {
                             dialog.folder = parent.to_string_lossy().into_owned();
                         }
-                        for (name, is_folder) in crate::platform::list_folder(&dialog.folder) {
+                        let listed = crate::platform::list_folder(&dialog.folder)
+                            .into_iter()
+                            .filter(|(name, is_folder)| {
+                                *is_folder
+                                    || std::path::Path::new(name).extension().is_some_and(|e| {
+                                        extensions.iter().any(|x| e.eq_ignore_ascii_case(x))
+                                    })
+                            });
+                        for (name, is_folder) in listed {
                             let shown = if is_folder {
                                 format!("{name}/")
                             } else {
@@ -173,19 +197,21 @@ impl Files {
                             }
                         }
                     });
+                let mut submit = false;
                 ui.horizontal(|ui| {
                     let label = ui.label("file name");
-                    ui.add(egui::TextEdit::singleline(&mut dialog.name).desired_width(300.0))
+                    let field = ui
+                        .add(egui::TextEdit::singleline(&mut dialog.name).desired_width(300.0))
                         .labelled_by(label.id)
-                        .on_hover_text("The file's name");
+                        .on_hover_text(format!("The file's name ({})", extensions.join(", ")));
+                    submit = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
                 });
                 ui.horizontal(|ui| {
-                    if ui
+                    submit |= ui
                         .button(verb)
-                        .on_hover_text(format!("{verb} this file"))
-                        .clicked()
-                        && !dialog.name.trim().is_empty()
-                    {
+                        .on_hover_text(format!("{verb} this file (Enter)"))
+                        .clicked();
+                    if submit && !dialog.name.trim().is_empty() {
                         let path = if dialog.folder.is_empty() {
                             dialog.name.trim().to_owned()
                         } else {

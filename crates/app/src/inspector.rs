@@ -5,11 +5,15 @@
 //! A valid entry is applied when the field loses focus (or on Enter), as one undoable
 //! edit, after the whole scene is checked with the same rules as a scene file.
 
+use std::collections::HashMap;
+
 use egui::{Color32, Id, RichText, Ui};
 use physics::{Endpoint, FieldRef, Rule, Scene, Section, Vector, check_value};
 
+use crate::action::Action;
 use crate::canvas::Selection;
 use crate::document::Document;
+use crate::format;
 use crate::run_loop::Runner;
 
 const ERROR: Color32 = Color32::from_rgb(200, 30, 30);
@@ -66,8 +70,43 @@ fn text_field(
     if let Some(reason) = &draft.error {
         ui.label(RichText::new(reason.clone()).color(ERROR).small());
     }
-    ui.data_mut(|d| d.insert_temp(id, draft));
+    ui.data_mut(|d| {
+        let invalid = d.get_temp_mut_or_default::<Invalid>(Id::NULL);
+        match &draft.error {
+            Some(reason) => {
+                invalid.0.insert(id, reason.clone());
+            }
+            None => {
+                invalid.0.remove(&id);
+            }
+        }
+        d.insert_temp(id, draft);
+    });
     committed
+}
+
+/// The typed entries that are invalid now, by field, wherever they are.
+#[derive(Clone, Debug, Default)]
+struct Invalid(HashMap<Id, String>);
+
+/// Why each field typed so far is invalid: Play is refused while there is any, since it
+/// would run the scene without what the user typed.
+pub fn invalid_entries(ctx: &egui::Context) -> Vec<String> {
+    let mut reasons: Vec<String> = ctx.data(|d| {
+        d.get_temp::<Invalid>(Id::NULL)
+            .map(|invalid| invalid.0.into_values().collect())
+            .unwrap_or_default()
+    });
+    reasons.sort();
+    reasons
+}
+
+/// Forgets every typed entry: the scene they were typed for is gone.
+pub fn forget_entries(ctx: &egui::Context) {
+    ctx.data_mut(|d| {
+        d.remove_by_type::<Draft>();
+        d.remove_by_type::<Invalid>();
+    });
 }
 
 /// A number field checked against `rule`.
@@ -190,23 +229,33 @@ fn try_apply(
     Ok(())
 }
 
-/// Shows the inspector for the selection and the world and simulation settings.
+/// Shows the inspector: while a run exists, the selected particle's live values first;
+/// then the selection's fields, the world and the simulation settings. Returns an action
+/// the user asked for (Delete).
 pub fn ui(
     ui: &mut Ui,
     document: &mut Document,
-    runner: &mut Runner,
+    runner: &Runner,
     selection: &mut Option<Selection>,
-) {
+) -> Option<Action> {
     let editable = runner.simulation.is_none();
     if !editable {
+        live(ui, runner, *selection);
         ui.label(RichText::new("Running: Reset (R) to edit the scene.").italics());
     }
     if let Some(message) = ui.data(|d| d.get_temp::<String>(Id::unique("inspector-problem"))) {
         ui.label(RichText::new(message).color(ERROR));
     }
     let mut problem = None;
+    let mut action = None;
     ui.add_enabled_ui(editable, |ui| {
-        egui::CollapsingHeader::new("Selected")
+        let heading = if editable {
+            "Selected"
+        } else {
+            "Selected: as the scene starts"
+        };
+        egui::CollapsingHeader::new(heading)
+            .id_salt("selected")
             .default_open(true)
             .show(ui, |ui| match *selection {
                 None => {
@@ -223,14 +272,13 @@ pub fn ui(
                 }
                 Some(_) => *selection = None,
             });
-        if let Some(selected) = *selection
+        if selection.is_some()
             && ui
                 .button("Delete")
                 .on_hover_text("Remove the selected object (Delete)")
                 .clicked()
         {
-            delete(document, selected);
-            *selection = None;
+            action = Some(Action::Delete);
         }
         egui::CollapsingHeader::new("World")
             .default_open(false)
@@ -240,7 +288,7 @@ pub fn ui(
         egui::CollapsingHeader::new("Simulation")
             .default_open(false)
             .show(ui, |ui| {
-                problem = problem.take().or_else(|| settings(ui, document, runner));
+                problem = problem.take().or_else(|| settings(ui, document));
             });
     });
     ui.data_mut(|d| {
@@ -250,50 +298,41 @@ pub fn ui(
             d.remove::<String>(Id::unique("inspector-problem"));
         }
     });
-    if let (Some(simulation), Some(Selection::Particle(i))) = (&runner.simulation, *selection)
-        && i < simulation.len()
-    {
-        egui::CollapsingHeader::new("Live")
-            .default_open(true)
-            .show(ui, |ui| {
-                let accelerations = simulation.accelerations();
-                let p = simulation.particle(i, &accelerations);
-                let vector = |v: physics::DVec2| format!("({:.6}, {:.6})", v.x, v.y);
-                egui::Grid::new("live").num_columns(2).show(ui, |ui| {
-                    for (name, value) in [
-                        ("position (m)", vector(p.position)),
-                        ("velocity (m/s)", vector(p.velocity)),
-                        ("acceleration (m/s²)", vector(p.acceleration)),
-                        ("speed (m/s)", format!("{:.6}", p.speed)),
-                        ("kinetic energy (J)", format!("{:.6}", p.kinetic_energy)),
-                        ("momentum (kg·m/s)", vector(p.momentum)),
-                    ] {
-                        ui.label(name);
-                        ui.monospace(value);
-                        ui.end_row();
-                    }
-                });
-            });
-    }
+    action
 }
 
-/// Removes an object; a particle takes its springs with it.
-pub fn delete(document: &mut Document, selected: Selection) {
-    match selected {
-        Selection::Particle(i) => document.apply("delete particle", |scene| {
-            let name = scene.particles.remove(i).name;
-            scene.springs.retain(|s| {
-                s.from != Endpoint::Particle(name.clone())
-                    && s.to != Endpoint::Particle(name.clone())
-            });
-        }),
-        Selection::Spring(i) => document.apply("delete spring", |scene| {
-            scene.springs.remove(i);
-        }),
-        Selection::Ramp(i) => document.apply("delete ramp", |scene| {
-            scene.ramps.remove(i);
-        }),
+/// The selected particle as it is now in the run.
+fn live(ui: &mut Ui, runner: &Runner, selection: Option<Selection>) {
+    let (Some(simulation), Some(Selection::Particle(i))) = (&runner.simulation, selection) else {
+        return;
+    };
+    if i >= simulation.len() {
+        return;
     }
+    egui::CollapsingHeader::new(format!("Live: {}", simulation.names()[i]))
+        .id_salt("live")
+        .default_open(true)
+        .show(ui, |ui| {
+            let accelerations = simulation.accelerations();
+            let p = simulation.particle(i, &accelerations);
+            let vector = |v: physics::DVec2, unit: &str| {
+                format!("({}, {}) {unit}", format::number(v.x), format::number(v.y))
+            };
+            egui::Grid::new("live").num_columns(2).show(ui, |ui| {
+                for (name, value) in [
+                    ("position", vector(p.position, "m")),
+                    ("velocity", vector(p.velocity, "m/s")),
+                    ("acceleration", vector(p.acceleration, "m/s²")),
+                    ("speed", format::with_unit(p.speed, "m/s")),
+                    ("kinetic energy", format::with_unit(p.kinetic_energy, "J")),
+                    ("momentum", vector(p.momentum, "kg·m/s")),
+                ] {
+                    ui.label(name);
+                    ui.monospace(value);
+                    ui.end_row();
+                }
+            });
+        });
 }
 
 fn name_field(
@@ -302,7 +341,6 @@ fn name_field(
     id: Id,
     section: Section,
     current: &str,
-    rename: impl Fn(&mut Scene, String),
 ) -> Option<String> {
     let new = text_field(
         ui,
@@ -319,7 +357,6 @@ fn name_field(
             }
         },
     )?;
-    let old = current.to_owned();
     try_apply(
         document,
         "rename",
@@ -327,39 +364,16 @@ fn name_field(
             section,
             field: "name",
         },
-        |scene| {
-            rename(scene, new.clone());
-            // Springs follow a renamed particle.
-            if matches!(section, Section::Particle(_)) {
-                for spring in &mut scene.springs {
-                    for end in [&mut spring.from, &mut spring.to] {
-                        if *end == Endpoint::Particle(old.clone()) {
-                            *end = Endpoint::Particle(new.clone());
-                        }
-                    }
-                }
-            }
-        },
+        |scene| scene.rename(section, &new),
     )
     .err()
 }
 
-#[expect(
-    clippy::too_many_lines,
-    reason = "every field of a particle, in the scene format's order"
-)]
 fn particle(ui: &mut Ui, document: &mut Document, i: usize) -> Option<String> {
     let p = document.scene().particles[i].clone();
     let id = Id::unique(("particle", i));
     let section = Section::Particle(i);
-    let mut problem = name_field(
-        ui,
-        document,
-        id.with("name"),
-        section,
-        &p.name,
-        move |scene, name| scene.particles[i].name = name,
-    );
+    let mut problem = name_field(ui, document, id.with("name"), section, &p.name);
     let mut set =
         |document: &mut Document, field: &'static str, change: &dyn Fn(&mut physics::Particle)| {
             if let Err(message) = try_apply(
@@ -516,14 +530,7 @@ fn spring(ui: &mut Ui, document: &mut Document, i: usize) -> Option<String> {
         .iter()
         .map(|p| p.name.clone())
         .collect();
-    let mut problem = name_field(
-        ui,
-        document,
-        id.with("name"),
-        section,
-        &s.name,
-        move |scene, name| scene.springs[i].name = name,
-    );
+    let mut problem = name_field(ui, document, id.with("name"), section, &s.name);
     let mut set =
         |document: &mut Document, field: &'static str, change: &dyn Fn(&mut physics::Spring)| {
             if let Err(message) = try_apply(
@@ -581,14 +588,7 @@ fn ramp(ui: &mut Ui, document: &mut Document, i: usize) -> Option<String> {
     let r = document.scene().ramps[i].clone();
     let id = Id::unique(("ramp", i));
     let section = Section::Ramp(i);
-    let mut problem = name_field(
-        ui,
-        document,
-        id.with("name"),
-        section,
-        &r.name,
-        move |scene, name| scene.ramps[i].name = name,
-    );
+    let mut problem = name_field(ui, document, id.with("name"), section, &r.name);
     let mut set =
         |document: &mut Document, field: &'static str, change: &dyn Fn(&mut physics::Ramp)| {
             if let Err(message) = try_apply(
@@ -779,7 +779,7 @@ fn world(ui: &mut Ui, document: &mut Document) -> Option<String> {
     problem
 }
 
-fn settings(ui: &mut Ui, document: &mut Document, runner: &mut Runner) -> Option<String> {
+fn settings(ui: &mut Ui, document: &mut Document) -> Option<String> {
     let s = document.scene().simulation.clone();
     let id = Id::unique("settings");
     let mut problem = None;
@@ -819,7 +819,6 @@ fn settings(ui: &mut Ui, document: &mut Document, runner: &mut Runner) -> Option
         "Simulated seconds per real second when playing",
     ) {
         set(document, "time_scale", &|s| s.time_scale = v);
-        runner.time_scale = v;
     }
     problem
 }

@@ -2,9 +2,12 @@
 //! code base for the desktop (eframe with the glow renderer) and the web.
 //!
 //! The app edits only the [`Document`]'s scene, through undoable changes; Play builds a
-//! [`physics::Simulation`] from it, which the app then only reads; Reset throws the
-//! simulation away and shows the scene again. Panels live one per file: [`canvas`],
-//! [`inspector`], [`toolbar`], [`plots`], [`files`]; [`run_loop`] paces the physics.
+//! [`physics::Simulation`] from it, which the app then only reads, and a [`Recording`]
+//! of the run for the graphs; Reset throws the simulation away and shows the scene again.
+//! Panels live one per file: [`canvas`], [`inspector`], [`toolbar`], [`plots`],
+//! [`files`]; [`run_loop`] paces the physics. Every command (a menu item, a button, a
+//! shortcut) is an [`Action`] carried out by [`App::perform`]; every message to the user
+//! goes through [`App::notify`].
 //!
 //! Renderer: glow rather than wgpu. Both run under Xvfb and in headless Chromium with no
 //! set-up; glow builds in half the time and gives half the WebAssembly (measured, see
@@ -15,26 +18,31 @@
 // and are documented where their use is not plain from their names.
 #![expect(missing_docs, reason = "an application crate; see above")]
 
+pub mod action;
 pub mod canvas;
 pub mod document;
 pub mod files;
+pub mod format;
 pub mod inspector;
 pub mod platform;
 pub mod plots;
+pub mod recording;
 pub mod run_loop;
 pub mod share;
 pub mod toolbar;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
-use egui::{Key, KeyboardShortcut, Modifiers, Ui};
+use egui::Ui;
 use physics::{Scene, SceneFormat};
 use web_time::Instant;
 
+pub use action::Action;
 pub use canvas::{Selection, Tool};
 pub use document::Document;
 use files::{Choice, Files, Pending, Purpose};
 use plots::Graphs;
+pub use recording::Recording;
 use run_loop::Runner;
 
 /// The scene the app opens on.
@@ -49,6 +57,24 @@ pub struct Launch {
     pub measure_frames: Option<usize>,
 }
 
+/// Which side panels show, and projector mode (no panels, large text).
+#[derive(Clone, Copy, Debug)]
+pub struct Panels {
+    pub inspector: bool,
+    pub graphs: bool,
+    pub projector: bool,
+}
+
+impl Default for Panels {
+    fn default() -> Self {
+        Self {
+            inspector: true,
+            graphs: true,
+            projector: false,
+        }
+    }
+}
+
 pub struct App {
     pub document: Document,
     pub runner: Runner,
@@ -56,39 +82,47 @@ pub struct App {
     pub graphs: Graphs,
     pub files: Files,
     pub selection: Option<Selection>,
+    pub panels: Panels,
+    /// Why each typed entry that is invalid is so, as of this frame.
+    invalid: Vec<String>,
     launch: Launch,
     frame_times: Vec<f64>,
     last_frame: Option<Instant>,
     shown_title: String,
     /// The user agreed to quit with unsaved changes.
     quitting: bool,
+    /// The scene was replaced: what was typed for the old one goes.
+    forget_entries: bool,
 }
 
 impl Default for App {
     fn default() -> Self {
-        let scene = physics::example(WELCOME)
-            .and_then(|e| e.scene().ok())
-            .unwrap_or_default();
-        Self::new(scene)
+        let mut app = Self::new(Scene::new());
+        app.load_example(WELCOME);
+        app
     }
 }
 
 impl App {
     /// The app on `scene`, unsaved.
     pub fn new(scene: Scene) -> Self {
-        let time_scale = scene.simulation.time_scale;
+        let mut canvas = canvas::Canvas::default();
+        canvas.open(&scene);
         Self {
             document: Document::new(scene),
-            runner: Runner::at_scale(time_scale),
-            canvas: canvas::Canvas::default(),
+            runner: Runner::default(),
+            canvas,
             graphs: Graphs::default(),
             files: Files::default(),
             selection: None,
+            panels: Panels::default(),
+            invalid: Vec::new(),
             launch: Launch::default(),
             frame_times: Vec::new(),
             last_frame: None,
             shown_title: String::new(),
             quitting: false,
+            forget_entries: false,
         }
     }
 
@@ -116,37 +150,78 @@ impl App {
             .map_or(0.0, physics::Simulation::time)
     }
 
+    /// Tells the user something: an error, or the result of a command (an export).
+    pub fn notify(&mut self, message: impl Into<String>) {
+        self.files.message = Some(message.into());
+    }
+
+    /// Does what the user asked.
+    pub fn perform(&mut self, action: Action) {
+        match action {
+            Action::New => self.guard(Pending::New),
+            Action::Open => self.guard(Pending::Open),
+            Action::Save => self.save(),
+            Action::SaveAs => self.save_as(),
+            Action::ExportGraph(graph) => self.ask_export(graph),
+            Action::Example(name) => self.guard(Pending::Example(name)),
+            Action::Quit => self.guard(Pending::Quit),
+            Action::Undo => self.undo(),
+            Action::Redo => self.redo(),
+            Action::Delete => self.delete(),
+            Action::PlayPause => self.play_pause(),
+            Action::Step => self.step(),
+            Action::Reset => self.reset(),
+            Action::Fit => self.canvas.request_fit(),
+            Action::Tool(tool) => {
+                if self.runner.simulation.is_none() {
+                    self.canvas.tool = tool;
+                }
+            }
+            Action::ToggleInspector => self.panels.inspector = !self.panels.inspector,
+            Action::ToggleGraphs => self.panels.graphs = !self.panels.graphs,
+            Action::ToggleProjector => self.panels.projector = !self.panels.projector,
+        }
+    }
+
+    /// Plays or pauses. Play is refused, with the reasons, while a typed entry is
+    /// invalid: the run would silently use the old value.
     pub fn play_pause(&mut self) {
         if self.runner.playing {
             self.runner.pause();
             return;
         }
-        let fresh = self.runner.simulation.is_none();
-        match self.runner.play(self.document.scene()) {
-            Ok(()) => {
-                if fresh {
-                    self.graphs.clear();
-                }
-            }
-            Err(error) => self.files.message = Some(error.report("the scene cannot run")),
+        if self.refuse_while_invalid() {
+            return;
         }
+        if let Err(error) = self.runner.play(self.document.scene()) {
+            self.notify(error.report("the scene cannot run"));
+        }
+    }
+
+    fn refuse_while_invalid(&mut self) -> bool {
+        if self.invalid.is_empty() || self.runner.simulation.is_some() {
+            return false;
+        }
+        let reasons = self.invalid.join("\n");
+        self.notify(format!(
+            "Not running: some typed values are invalid (shown in red in the inspector). Correct them first:\n{reasons}"
+        ));
+        true
     }
 
     pub fn step(&mut self) {
+        if self.refuse_while_invalid() {
+            return;
+        }
         let trails = self.canvas.overlays.trails;
-        match self.runner.step_once(self.document.scene(), trails) {
-            Ok(()) => {
-                if let Some(simulation) = &self.runner.simulation {
-                    self.graphs.record(simulation);
-                }
-            }
-            Err(error) => self.files.message = Some(error.report("the scene cannot run")),
+        if let Err(error) = self.runner.step_once(self.document.scene(), trails) {
+            self.notify(error.report("the scene cannot run"));
         }
     }
 
+    /// Back to the scene; the last run's graphs stay until the next Play.
     pub fn reset(&mut self) {
         self.runner.reset();
-        self.graphs.clear();
     }
 
     pub fn undo(&mut self) {
@@ -161,16 +236,35 @@ impl App {
         }
     }
 
-    /// Replaces the document with `scene` from `path` (a file, or `None` for new).
-    fn replace(&mut self, scene: Scene, path: Option<String>) {
-        self.runner = Runner::at_scale(scene.simulation.time_scale);
+    /// Removes the selected object (and, for a particle, what refers to it).
+    fn delete(&mut self) {
+        if self.runner.simulation.is_some() {
+            return;
+        }
+        if let Some(selected) = self.selection.take() {
+            let label = match selected {
+                Selection::Particle(_) => "delete particle",
+                Selection::Spring(_) => "delete spring",
+                Selection::Ramp(_) => "delete ramp",
+            };
+            self.document
+                .apply(label, |scene| scene.remove(selected.section()));
+        }
+    }
+
+    /// Replaces the document with `scene` from `path` (a file, or `None` for new), shown
+    /// as `label` when it has no file.
+    fn replace(&mut self, scene: Scene, path: Option<String>, label: Option<String>) {
+        self.runner = Runner::default();
+        self.canvas.open(&scene);
         self.document = Document::new(scene);
+        self.document.label = label;
         if let Some(path) = path {
             self.document.mark_saved(path);
         }
         self.selection = None;
         self.graphs = Graphs::default();
-        self.canvas.request_fit();
+        self.forget_entries = true;
     }
 
     /// Loads the scene file at `path`, or shows why it cannot (the messages of `newtonlab
@@ -180,10 +274,11 @@ impl App {
         let text = platform::read_text(path);
         #[cfg(target_arch = "wasm32")]
         let text: Result<String, String> = Err(format!("cannot read '{path}' in the browser"));
-        match text.map(|text| (Scene::parse(&text, SceneFormat::from_file_name(path)), text)) {
-            Ok((Ok(scene), _)) => self.replace(scene, Some(path.to_owned())),
-            Ok((Err(error), _)) => self.files.message = Some(error.report(path)),
-            Err(message) => self.files.message = Some(message),
+        match text {
+            Ok(text) => {
+                self.open_text(path, &text);
+            }
+            Err(message) => self.notify(message),
         }
     }
 
@@ -191,18 +286,20 @@ impl App {
     pub fn open_text(&mut self, name: &str, text: &str) -> bool {
         match Scene::parse(text, SceneFormat::from_file_name(name)) {
             Ok(scene) => {
-                self.replace(scene, Some(name.to_owned()));
+                self.replace(scene, Some(name.to_owned()), None);
                 true
             }
             Err(error) => {
-                self.files.message = Some(error.report(name));
+                self.notify(error.report(name));
                 false
             }
         }
     }
 
-    /// Saves the scene to `path` (TOML, or JSON for a `.json` name).
+    /// Saves the scene to `path` (TOML, or JSON for a `.json` name), with the camera as
+    /// its `[view]` so that it reopens as it was left.
     pub fn save_path(&mut self, path: &str) {
+        self.document.set_view(self.canvas.scene_view());
         let text = self
             .document
             .scene()
@@ -213,15 +310,18 @@ impl App {
         let written = platform::web::download(path, &text, "text/plain");
         match written {
             Ok(()) => self.document.mark_saved(path.to_owned()),
-            Err(message) => self.files.message = Some(message),
+            Err(message) => self.notify(message),
         }
     }
 
     pub fn load_example(&mut self, name: &str) {
         match physics::example(name).map(physics::Example::scene) {
-            Some(Ok(scene)) => self.replace(scene, None),
-            Some(Err(error)) => self.files.message = Some(error.report(&format!("example:{name}"))),
-            None => self.files.message = Some(format!("there is no example '{name}'")),
+            Some(Ok(scene)) => {
+                let title = scene.name.clone().unwrap_or_else(|| name.to_owned());
+                self.replace(scene, None, Some(title));
+            }
+            Some(Err(error)) => self.notify(error.report(&format!("example:{name}"))),
+            None => self.notify(format!("there is no example '{name}'")),
         }
     }
 
@@ -240,7 +340,13 @@ impl App {
     )]
     fn proceed(&mut self, pending: Pending) {
         match pending {
-            Pending::New => self.replace(Scene::new(), None),
+            // A new scene has no pairwise gravitation: between classroom-sized masses
+            // it is a 10⁻¹¹ J row that only confuses. Files keep the format's default.
+            Pending::New => {
+                let mut scene = Scene::new();
+                scene.world.gravitation = false;
+                self.replace(scene, None, None);
+            }
             #[cfg(not(target_arch = "wasm32"))]
             Pending::Open => self
                 .files
@@ -275,52 +381,65 @@ impl App {
         }
     }
 
-    /// Asks where to export the graph (on the web: downloads it).
-    fn ask_export(&mut self) {
+    /// Asks where to export graph `graph` (on the web: downloads it).
+    fn ask_export(&mut self, graph: usize) {
         #[cfg(not(target_arch = "wasm32"))]
-        self.files.ask(Purpose::ExportCsv, None, "graph.csv");
+        self.files.ask(Purpose::ExportCsv(graph), None, "graph.csv");
         #[cfg(target_arch = "wasm32")]
-        self.export_csv("graph.csv");
+        self.export_csv("graph.csv", graph);
     }
 
-    fn menu(&mut self, ui: &mut Ui) {
+    /// Writes graph `graph`'s recorded samples to `path` and says how many.
+    pub fn export_csv(&mut self, path: &str, graph: usize) {
+        let (Some(recording), Some(setup)) = (
+            self.runner.recording.as_ref(),
+            self.document.scene().graphs.get(graph),
+        ) else {
+            self.notify("Nothing to export yet: press Play first.");
+            return;
+        };
+        let csv = plots::to_csv(recording, setup);
+        let rows = recording.len();
+        #[cfg(not(target_arch = "wasm32"))]
+        let written = platform::write_text(path, &csv);
+        #[cfg(target_arch = "wasm32")]
+        let written = platform::web::download(path, &csv, "text/csv");
+        match written {
+            Ok(()) => self.notify(format!("Exported {rows} samples to {path}.")),
+            Err(message) => self.notify(message),
+        }
+    }
+
+    #[expect(clippy::too_many_lines, reason = "the four menus, item by item")]
+    fn menu(&mut self, ui: &mut Ui) -> Option<Action> {
+        let mut action = None;
+        let ctx = ui.ctx().clone();
+        let mut item = |ui: &mut Ui, label: &str, hint: &str, does: Action, enabled: bool| {
+            let shortcut = does.shortcut_text(&ctx);
+            let mut button = egui::Button::new(label);
+            if !shortcut.is_empty() {
+                button = button.shortcut_text(shortcut);
+            }
+            if ui
+                .add_enabled(enabled, button)
+                .on_hover_text(hint)
+                .clicked()
+            {
+                action = Some(does);
+            }
+        };
         egui::MenuBar::new().ui(ui, |ui| {
             ui.menu_button("File", |ui| {
-                if ui
-                    .button("New")
-                    .on_hover_text("An empty scene (Ctrl+N)")
-                    .clicked()
-                {
-                    self.guard(Pending::New);
-                }
-                if ui
-                    .button("Open…")
-                    .on_hover_text("Open a scene file (Ctrl+O)")
-                    .clicked()
-                {
-                    self.guard(Pending::Open);
-                }
-                if ui
-                    .button("Save")
-                    .on_hover_text("Save the scene (Ctrl+S)")
-                    .clicked()
-                {
-                    self.save();
-                }
-                if ui
-                    .button("Save As…")
-                    .on_hover_text("Save the scene under another name (Ctrl+Shift+S)")
-                    .clicked()
-                {
-                    self.save_as();
-                }
-                if ui
-                    .button("Export graph as CSV…")
-                    .on_hover_text("Save the recorded graph series")
-                    .clicked()
-                {
-                    self.ask_export();
-                }
+                item(ui, "New", "An empty scene", Action::New, true);
+                item(ui, "Open…", "Open a scene file", Action::Open, true);
+                item(ui, "Save", "Save the scene", Action::Save, true);
+                item(
+                    ui,
+                    "Save As…",
+                    "Save the scene under another name",
+                    Action::SaveAs,
+                    true,
+                );
                 #[cfg(target_arch = "wasm32")]
                 if ui
                     .button("Copy link to this scene")
@@ -337,132 +456,117 @@ impl App {
                 }
             })
             .response
-            .on_hover_text("New, open, save, export, share");
+            .on_hover_text("New, open, save, share");
             ui.menu_button("Edit", |ui| {
+                let editable = self.runner.simulation.is_none();
                 let undo = self
                     .document
                     .undo_label()
                     .map_or("Undo".to_owned(), |l| format!("Undo {l}"));
-                if ui
-                    .add_enabled(
-                        self.document.undo_label().is_some(),
-                        egui::Button::new(undo),
-                    )
-                    .on_hover_text("Ctrl+Z")
-                    .clicked()
-                {
-                    self.undo();
-                }
+                let can_undo = editable && self.document.undo_label().is_some();
+                item(ui, &undo, "Undo the last change", Action::Undo, can_undo);
                 let redo = self
                     .document
                     .redo_label()
                     .map_or("Redo".to_owned(), |l| format!("Redo {l}"));
-                if ui
-                    .add_enabled(
-                        self.document.redo_label().is_some(),
-                        egui::Button::new(redo),
-                    )
-                    .on_hover_text("Ctrl+Shift+Z or Ctrl+Y")
-                    .clicked()
-                {
-                    self.redo();
-                }
+                let can_redo = editable && self.document.redo_label().is_some();
+                item(ui, &redo, "Redo what was undone", Action::Redo, can_redo);
+                let can_delete = editable && self.selection.is_some();
+                item(
+                    ui,
+                    "Delete",
+                    "Remove the selected object",
+                    Action::Delete,
+                    can_delete,
+                );
             })
             .response
-            .on_hover_text("Undo and redo");
+            .on_hover_text("Undo, redo, delete");
             ui.menu_button("Examples", |ui| {
                 for (name, title) in example_titles() {
-                    if ui
-                        .button(title)
-                        .on_hover_text(format!("example:{name}"))
-                        .clicked()
-                    {
-                        self.guard(Pending::Example(name));
-                    }
+                    item(
+                        ui,
+                        title,
+                        &format!("example:{name}"),
+                        Action::Example(name),
+                        true,
+                    );
                 }
             })
             .response
             .on_hover_text("Open a built-in scene (the paper's experiments and more)");
+            ui.menu_button("View", |ui| {
+                item(
+                    ui,
+                    "Fit",
+                    "Fit the scene and the recent paths in view",
+                    Action::Fit,
+                    true,
+                );
+                let tick = |on: bool| if on { "✔ " } else { "" };
+                item(
+                    ui,
+                    &format!("{}Inspector", tick(self.panels.inspector)),
+                    "Show or hide the inspector",
+                    Action::ToggleInspector,
+                    true,
+                );
+                item(
+                    ui,
+                    &format!("{}Graphs", tick(self.panels.graphs)),
+                    "Show or hide the graphs and readouts",
+                    Action::ToggleGraphs,
+                    true,
+                );
+                item(
+                    ui,
+                    &format!("{}Projector mode", tick(self.panels.projector)),
+                    "The canvas alone with large text, for a class",
+                    Action::ToggleProjector,
+                    true,
+                );
+            })
+            .response
+            .on_hover_text("Framing, panels, projector mode");
         });
+        action
     }
 
-    fn shortcuts(&mut self, ui: &Ui) {
-        let shortcut = |modifiers, key| KeyboardShortcut::new(modifiers, key);
-        let (redo, undo, save_as, save, open, new) = ui.input_mut(|i| {
-            (
-                i.consume_shortcut(&shortcut(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z))
-                    || i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Y)),
-                i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::Z)),
-                i.consume_shortcut(&shortcut(Modifiers::COMMAND | Modifiers::SHIFT, Key::S)),
-                i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::S)),
-                i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::O)),
-                i.consume_shortcut(&shortcut(Modifiers::COMMAND, Key::N)),
-            )
-        });
-        if redo {
-            self.redo();
-        }
-        if undo {
-            self.undo();
-        }
-        if save_as {
-            self.save_as();
-        }
-        if save {
-            self.save();
-        }
-        if open {
-            self.guard(Pending::Open);
-        }
-        if new {
-            self.guard(Pending::New);
-        }
-        if ui.ctx().egui_wants_keyboard_input() {
-            return;
-        }
-        let pressed = |key| ui.input(|i| i.key_pressed(key) && i.modifiers.is_none());
-        if pressed(Key::Space) {
-            self.play_pause();
-        }
-        if pressed(Key::Period) {
-            self.step();
-        }
-        if pressed(Key::R) {
-            self.reset();
-        }
-        if pressed(Key::F) {
-            self.canvas.request_fit();
-        }
-        for (key, tool) in [
-            (Key::Num1, Tool::Select),
-            (Key::Num2, Tool::Particle),
-            (Key::Num3, Tool::Spring),
-            (Key::Num4, Tool::Ramp),
-        ] {
-            if pressed(key) {
-                self.canvas.tool = tool;
-            }
-        }
-        if (pressed(Key::Delete) || pressed(Key::Backspace))
-            && self.runner.simulation.is_none()
-            && let Some(selected) = self.selection.take()
-        {
-            inspector::delete(&mut self.document, selected);
-        }
+    /// The actions whose shortcuts were pressed this frame. Bare keys are left to a
+    /// text field that has the keyboard.
+    fn shortcuts(ui: &Ui) -> Vec<Action> {
+        let typing = ui.ctx().egui_wants_keyboard_input();
+        ui.input_mut(|i| {
+            action::SHORTCUTS
+                .iter()
+                .filter(|(shortcut, _)| !(typing && Action::is_plain(shortcut)))
+                .filter(|(shortcut, _)| i.consume_shortcut(shortcut))
+                .map(|(_, action)| *action)
+                .collect()
+        })
     }
 
-    fn status(&self, ui: &mut Ui) {
+    fn status(&self, ui: &mut Ui) -> Option<Action> {
+        let mut action = None;
         ui.horizontal(|ui| {
             ui.monospace(format!("t = {:.4} s", self.time()));
             ui.separator();
             if let Some(failure) = &self.runner.failure {
+                if ui
+                    .button("Reset the scene")
+                    .on_hover_text("Back to the scene as last edited (R)")
+                    .clicked()
+                {
+                    action = Some(Action::Reset);
+                }
                 ui.colored_label(
                     egui::Color32::from_rgb(200, 30, 30),
-                    format!("stopped: {failure}"),
+                    format!("stopped: {failure}; showing the last good state"),
                 );
                 return;
             }
-            match (self.runner.playing, self.runner.shortfall()) {
+            let time_scale = self.document.scene().simulation.time_scale;
+            match (self.runner.playing, self.runner.shortfall(time_scale)) {
                 (true, Some(fraction)) => {
                     ui.colored_label(
                         egui::Color32::from_rgb(190, 110, 0),
@@ -483,7 +587,11 @@ impl App {
                 }
             }
             ui.separator();
-            ui.label(format!("{:.0} steps/s", self.runner.steps_per_second));
+            ui.label(format!(
+                "physics {:.1} ms per frame",
+                self.runner.physics_per_frame * 1000.0
+            ))
+            .on_hover_text("Computing time spent on the simulation in each frame");
             ui.separator();
             let frame = ui.input(|i| i.stable_dt);
             ui.label(format!("frame {:.1} ms", frame * 1000.0));
@@ -496,87 +604,69 @@ impl App {
                 scene.ramps.len()
             ));
         });
+        action
     }
 
     /// The whole app, one frame.
     pub fn ui(&mut self, ui: &mut Ui) {
+        if std::mem::take(&mut self.forget_entries) {
+            inspector::forget_entries(ui.ctx());
+        }
+        self.invalid = inspector::invalid_entries(ui.ctx());
         let real_dt = f64::from(ui.input(|i| i.unstable_dt));
         self.measure_frame(ui);
-        if self.runner.advance(real_dt, self.canvas.overlays.trails)
-            && let Some(simulation) = &self.runner.simulation
-        {
-            self.graphs.record(simulation);
-        }
+        let time_scale = self.document.scene().simulation.time_scale;
+        self.runner
+            .advance(real_dt, time_scale, self.canvas.overlays.trails);
         if self.runner.playing {
             ui.ctx().request_repaint();
         }
-        self.shortcuts(ui);
+        let zoom = if self.panels.projector { 1.6 } else { 1.0 };
+        if (ui.ctx().zoom_factor() - zoom).abs() > 1e-3 {
+            ui.ctx().set_zoom_factor(zoom);
+        }
+        let mut actions = Self::shortcuts(ui);
 
-        egui::Panel::top("menu").show(ui, |ui| self.menu(ui));
+        egui::Panel::top("menu").show(ui, |ui| actions.extend(self.menu(ui)));
         egui::Panel::top("toolbar").show(ui, |ui| {
-            let scene = self.document.scene();
-            let requests = toolbar::ui(
+            actions.extend(toolbar::ui(
                 ui,
-                &mut toolbar::State {
-                    canvas: &mut self.canvas,
-                    playing: self.runner.playing,
-                    editable: self.runner.simulation.is_none(),
-                    time_scale: &mut self.runner.time_scale,
-                    integrator: scene.simulation.integrator,
-                    time_step: scene.simulation.time_step,
-                },
-            );
-            if requests.play_pause {
-                self.play_pause();
-            }
-            if requests.step {
-                self.step();
-            }
-            if requests.reset {
-                self.reset();
-            }
-            if requests.fit {
-                self.canvas.request_fit();
-            }
-            if let Some(method) = requests.integrator {
-                self.document.apply("set integrator", |scene| {
-                    scene.simulation.integrator = method;
-                });
-            }
-            if let Some(step) = requests.time_step {
-                self.document
-                    .apply("set time step", |scene| scene.simulation.time_step = step);
-            }
+                &mut self.canvas,
+                &mut self.document,
+                &self.runner,
+            ));
         });
-        egui::Panel::bottom("status").show(ui, |ui| self.status(ui));
-        egui::Panel::left("inspector")
-            .resizable(true)
-            .default_size(330.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    ui.heading("Inspector");
-                    inspector::ui(
-                        ui,
-                        &mut self.document,
-                        &mut self.runner,
-                        &mut self.selection,
-                    );
+        egui::Panel::bottom("status").show(ui, |ui| actions.extend(self.status(ui)));
+        let side_panels = !self.panels.projector;
+        if side_panels && self.panels.inspector {
+            // A fixed width: the canvas does not move when the selection changes.
+            egui::Panel::left("inspector")
+                .resizable(false)
+                .exact_size(310.0)
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical().show(ui, |ui| {
+                        ui.set_width(ui.available_width());
+                        ui.heading("Inspector");
+                        actions.extend(inspector::ui(
+                            ui,
+                            &mut self.document,
+                            &self.runner,
+                            &mut self.selection,
+                        ));
+                    });
                 });
-            });
-        egui::Panel::right("graphs")
-            .resizable(true)
-            .default_size(380.0)
-            .show(ui, |ui| {
-                let export = self.graphs.ui(
-                    ui,
-                    self.document.scene(),
-                    self.runner.simulation.as_ref(),
-                    self.runner.start_energy,
-                );
-                if export {
-                    self.ask_export();
-                }
-            });
+        }
+        if side_panels && self.panels.graphs {
+            egui::Panel::right("graphs")
+                .resizable(true)
+                .default_size(360.0)
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical().show(ui, |ui| {
+                        ui.set_width(ui.available_width());
+                        actions.extend(self.graphs.ui(ui, &mut self.document, &self.runner));
+                    });
+                });
+        }
         egui::CentralPanel::default().show(ui, |ui| {
             self.canvas
                 .ui(ui, &mut self.document, &self.runner, &mut self.selection);
@@ -586,23 +676,14 @@ impl App {
         match self.files.ui(ui, &title) {
             Some(Choice::Path(Purpose::Open, path)) => self.open_path(&path),
             Some(Choice::Path(Purpose::Save, path)) => self.save_path(&path),
-            Some(Choice::Path(Purpose::ExportCsv, path)) => self.export_csv(&path),
+            Some(Choice::Path(Purpose::ExportCsv(graph), path)) => self.export_csv(&path, graph),
             Some(Choice::Discard(pending)) => self.proceed(pending),
             None => {}
         }
+        for action in actions {
+            self.perform(action);
+        }
         self.window(ui);
-    }
-
-    fn export_csv(&mut self, path: &str) {
-        let csv = self.graphs.to_csv(self.document.scene());
-        #[cfg(not(target_arch = "wasm32"))]
-        if let Err(message) = platform::write_text(path, &csv) {
-            self.files.message = Some(message);
-        }
-        #[cfg(target_arch = "wasm32")]
-        if let Err(message) = platform::web::download(path, &csv, "text/csv") {
-            self.files.message = Some(message);
-        }
     }
 
     /// The window's title, and closing it: never with unsaved changes unconfirmed.

@@ -1,250 +1,155 @@
-//! Readouts and graphs. Energies by kind, the relative energy drift since Play and the
-//! total momentum; any quantities (per particle x, y, vx, vy, speed, ax, ay, kinetic
-//! energy; system energies and momentum) against time or against one another (a phase
-//! plot such as x against vx), several series with a legend, recorded once per frame
-//! into a bounded history, and exported as CSV.
-
-use std::collections::VecDeque;
+//! Readouts and graphs. Energies by kind, the energy drift since Play as a percentage and
+//! the total momentum; then the scene's graphs (`[[graph]]`): any quantities against time
+//! or against one another (a phase plot such as x against vx), several series each.
+//!
+//! A graph is only a choice of quantities: the values come from the run's
+//! [`Recording`], which holds every quantity of every particle from Play on. So switching
+//! the x axis, adding a series late or exporting never loses data, and Reset keeps the
+//! last run's graphs until the next Play. The graphs are part of the scene: editing them
+//! is an undoable change, saved with the file.
 
 use egui::Ui;
 use egui_plot::{Legend, Line, Plot, PlotPoints};
-use physics::{DVec2, Diagnostics, Scene, Simulation};
+use physics::{Graph, Of, Quantity, Total};
 
-/// Samples kept; the oldest go first.
-pub const HISTORY: usize = 20_000;
+use crate::action::Action;
+use crate::document::Document;
+use crate::format;
+use crate::recording::Recording;
+use crate::run_loop::Runner;
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Of {
-    X,
-    Y,
-    Vx,
-    Vy,
-    Speed,
-    Ax,
-    Ay,
-    KineticEnergy,
-}
+/// Points drawn per series at most; the CSV export has every sample.
+const MAX_POINTS: usize = 4_000;
 
-impl Of {
-    pub const ALL: [Self; 8] = [
-        Self::X,
-        Self::Y,
-        Self::Vx,
-        Self::Vy,
-        Self::Speed,
-        Self::Ax,
-        Self::Ay,
-        Self::KineticEnergy,
-    ];
+/// An edit of one graph: its undo label and what it does.
+type Edit = (&'static str, Box<dyn FnOnce(&mut Graph)>);
 
-    fn label(self) -> (&'static str, &'static str) {
-        match self {
-            Self::X => ("x", "m"),
-            Self::Y => ("y", "m"),
-            Self::Vx => ("vx", "m/s"),
-            Self::Vy => ("vy", "m/s"),
-            Self::Speed => ("speed", "m/s"),
-            Self::Ax => ("ax", "m/s²"),
-            Self::Ay => ("ay", "m/s²"),
-            Self::KineticEnergy => ("kinetic energy", "J"),
-        }
-    }
-}
-
-/// A quantity that can be plotted.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Quantity {
-    Time,
-    Particle(usize, Of),
-    KineticEnergy,
-    PotentialEnergy,
-    TotalEnergy,
-    MomentumX,
-    MomentumY,
-}
-
-impl Quantity {
-    pub const SYSTEM: [Self; 5] = [
-        Self::KineticEnergy,
-        Self::PotentialEnergy,
-        Self::TotalEnergy,
-        Self::MomentumX,
-        Self::MomentumY,
-    ];
-
-    /// "A.vx (m/s)", "total energy (J)".
-    pub fn label(self, scene: &Scene) -> String {
-        match self {
-            Self::Time => "t (s)".to_owned(),
-            Self::Particle(i, of) => {
-                let name = scene.particles.get(i).map_or("?", |p| p.name.as_str());
-                let (what, unit) = of.label();
-                format!("{name}.{what} ({unit})")
-            }
-            Self::KineticEnergy => "kinetic energy (J)".to_owned(),
-            Self::PotentialEnergy => "potential energy (J)".to_owned(),
-            Self::TotalEnergy => "total energy (J)".to_owned(),
-            Self::MomentumX => "momentum x (kg·m/s)".to_owned(),
-            Self::MomentumY => "momentum y (kg·m/s)".to_owned(),
-        }
-    }
-
-    fn needs_accelerations(self) -> bool {
-        matches!(self, Self::Particle(_, Of::Ax | Of::Ay))
-    }
-
-    fn needs_diagnostics(self) -> bool {
-        matches!(
-            self,
-            Self::KineticEnergy
-                | Self::PotentialEnergy
-                | Self::TotalEnergy
-                | Self::MomentumX
-                | Self::MomentumY
-        )
-    }
-
-    fn value(
-        self,
-        simulation: &Simulation,
-        accelerations: &[DVec2],
-        diagnostics: &Diagnostics,
-    ) -> f64 {
-        match self {
-            Self::Time => simulation.time(),
-            Self::Particle(i, of) => {
-                if i >= simulation.len() {
-                    return f64::NAN;
-                }
-                let p = simulation.particle(i, accelerations);
-                match of {
-                    Of::X => p.position.x,
-                    Of::Y => p.position.y,
-                    Of::Vx => p.velocity.x,
-                    Of::Vy => p.velocity.y,
-                    Of::Speed => p.speed,
-                    Of::Ax => p.acceleration.x,
-                    Of::Ay => p.acceleration.y,
-                    Of::KineticEnergy => p.kinetic_energy,
-                }
-            }
-            Self::KineticEnergy => diagnostics.energy.kinetic,
-            Self::PotentialEnergy => diagnostics.energy.potential(),
-            Self::TotalEnergy => diagnostics.energy.total(),
-            Self::MomentumX => diagnostics.momentum.x,
-            Self::MomentumY => diagnostics.momentum.y,
-        }
-    }
-}
-
+/// The graph panel's own state: the choice being made in each "add" row.
+#[derive(Default)]
 pub struct Graphs {
-    /// The quantities plotted, one series each.
-    pub series: Vec<Quantity>,
-    /// What they are plotted against: time, or another quantity for a phase plot.
-    pub x_axis: Quantity,
-    /// Rows of [x, series…], oldest first.
-    history: VecDeque<Vec<f64>>,
-    /// The choice being made in the "add" row.
-    choice: (usize, Of),
+    choice: Vec<(usize, Of)>,
 }
 
-impl Default for Graphs {
-    fn default() -> Self {
-        Self {
-            series: Vec::new(),
-            x_axis: Quantity::Time,
-            history: VecDeque::new(),
-            choice: (0, Of::Y),
-        }
+/// `A.vx (m/s)`, `total_energy (J)`, `t (s)`.
+pub fn label(quantity: &Quantity) -> String {
+    format!("{quantity} ({})", quantity.unit())
+}
+
+/// The graph's quantities, parsed; ones that do not parse are left out (validation
+/// reports them).
+fn axes(graph: &Graph) -> (Quantity, Vec<Quantity>) {
+    let x = Quantity::parse(&graph.x).unwrap_or(Quantity::Time);
+    let y = graph
+        .y
+        .iter()
+        .filter_map(|y| Quantity::parse(y).ok())
+        .collect();
+    (x, y)
+}
+
+/// The recorded samples of `graph` as CSV: t first, then the x axis if it is not t,
+/// then each series; one row per sample, at the simulation's instants.
+pub fn to_csv(recording: &Recording, graph: &Graph) -> String {
+    let (x, y) = axes(graph);
+    let mut columns = vec![Quantity::Time];
+    if x != Quantity::Time {
+        columns.push(x);
     }
+    columns.extend(y);
+    let quote = |s: String| {
+        if s.contains([',', '"']) {
+            format!("\"{}\"", s.replace('"', "\"\""))
+        } else {
+            s
+        }
+    };
+    let header: Vec<String> = columns.iter().map(|q| quote(label(q))).collect();
+    let mut out = header.join(",");
+    out.push('\n');
+    for k in 0..recording.len() {
+        let fields: Vec<String> = columns
+            .iter()
+            .map(|q| {
+                recording
+                    .value(k, q)
+                    .map_or_else(String::new, |v| format!("{v:?}"))
+            })
+            .collect();
+        out.push_str(&fields.join(","));
+        out.push('\n');
+    }
+    out
 }
 
 impl Graphs {
-    pub fn clear(&mut self) {
-        self.history.clear();
-    }
-
-    /// The number of samples recorded.
-    pub fn len(&self) -> usize {
-        self.history.len()
-    }
-
-    pub fn is_empty(&self) -> bool {
-        self.history.is_empty()
-    }
-
-    /// Records one sample of every series.
-    pub fn record(&mut self, simulation: &Simulation) {
-        if self.series.is_empty() {
-            return;
+    /// The readouts and the graphs. Returns an action the user asked for (export).
+    pub fn ui(&mut self, ui: &mut Ui, document: &mut Document, runner: &Runner) -> Option<Action> {
+        readouts(ui, runner);
+        ui.separator();
+        let mut action = None;
+        let count = document.scene().graphs.len();
+        self.choice.resize(count, (0, Of::Y));
+        for g in 0..count {
+            ui.push_id(("graph", g), |ui| {
+                if let Some(a) = self.graph(ui, document, runner.recording.as_ref(), g) {
+                    action = Some(a);
+                }
+            });
+            ui.separator();
         }
-        let all = || self.series.iter().chain([&self.x_axis]);
-        let accelerations = if all().any(|q| q.needs_accelerations()) {
-            simulation.accelerations()
-        } else {
-            Vec::new()
-        };
-        let diagnostics = if all().any(|q| q.needs_diagnostics()) {
-            simulation.diagnostics()
-        } else {
-            Diagnostics::default()
-        };
-        let mut row = vec![self.x_axis.value(simulation, &accelerations, &diagnostics)];
-        row.extend(
-            self.series
-                .iter()
-                .map(|q| q.value(simulation, &accelerations, &diagnostics)),
-        );
-        self.history.push_back(row);
-        if self.history.len() > HISTORY {
-            self.history.pop_front();
+        if ui
+            .button("Add a graph")
+            .on_hover_text("A new graph of quantities against time")
+            .clicked()
+        {
+            document.apply("add graph", |scene| {
+                scene.graphs.push(Graph::against_time(Vec::<String>::new()));
+            });
         }
+        action
     }
 
-    /// The recorded series as CSV: a header of quantity names, then a row per sample.
-    pub fn to_csv(&self, scene: &Scene) -> String {
-        let quote = |s: String| {
-            if s.contains([',', '"']) {
-                format!("\"{}\"", s.replace('"', "\"\""))
-            } else {
-                s
-            }
-        };
-        let mut header = vec![quote(self.x_axis.label(scene))];
-        header.extend(self.series.iter().map(|q| quote(q.label(scene))));
-        let mut out = header.join(",");
-        out.push('\n');
-        for row in &self.history {
-            let fields: Vec<String> = row.iter().map(|v| format!("{v:?}")).collect();
-            out.push_str(&fields.join(","));
-            out.push('\n');
-        }
-        out
-    }
-
-    /// The readouts and the graph. Returns true when the user asked to export CSV.
-    #[expect(clippy::too_many_lines, reason = "the graph panel, laid out in order")]
-    pub fn ui(
+    #[expect(
+        clippy::too_many_lines,
+        reason = "one graph's controls, laid out in order"
+    )]
+    fn graph(
         &mut self,
         ui: &mut Ui,
-        scene: &Scene,
-        simulation: Option<&Simulation>,
-        start_energy: f64,
-    ) -> bool {
-        readouts(ui, simulation, start_energy);
-        ui.separator();
-        ui.heading("Graph");
-        let mut changed = false;
+        document: &mut Document,
+        recording: Option<&Recording>,
+        g: usize,
+    ) -> Option<Action> {
+        let scene = document.scene().clone();
+        let graph = &scene.graphs[g];
+        let (x, series) = axes(graph);
+        let mut action = None;
+        let mut change: Option<Edit> = None;
+        ui.horizontal(|ui| {
+            ui.heading(
+                graph
+                    .title
+                    .clone()
+                    .unwrap_or_else(|| format!("Graph {}", g + 1)),
+            );
+            if ui
+                .small_button("Remove graph")
+                .on_hover_text("Remove this graph (its data stays recorded)")
+                .clicked()
+            {
+                change = Some(("remove graph", Box::new(|_| {})));
+            }
+        });
         ui.horizontal_wrapped(|ui| {
-            let names: Vec<String> = scene.particles.iter().map(|p| p.name.clone()).collect();
-            let (mut particle, mut of) = self.choice;
+            let names: Vec<&str> = scene.particles.iter().map(|p| p.name.as_str()).collect();
+            let (mut particle, mut of) = self.choice[g];
             particle = particle.min(names.len().saturating_sub(1));
             let label = ui.label("particle");
             egui::ComboBox::from_id_salt("graph-particle")
-                .selected_text(names.get(particle).map_or("—", String::as_str))
+                .selected_text(names.get(particle).copied().unwrap_or("—"))
                 .show_ui(ui, |ui| {
                     for (i, name) in names.iter().enumerate() {
-                        ui.selectable_value(&mut particle, i, name);
+                        ui.selectable_value(&mut particle, i, *name);
                     }
                 })
                 .response
@@ -252,138 +157,195 @@ impl Graphs {
                 .on_hover_text("The particle whose quantity to add");
             let label = ui.label("quantity");
             egui::ComboBox::from_id_salt("graph-quantity")
-                .selected_text(of.label().0)
+                .selected_text(of.key())
                 .show_ui(ui, |ui| {
                     for q in Of::ALL {
-                        ui.selectable_value(&mut of, q, q.label().0);
+                        ui.selectable_value(&mut of, q, q.key());
                     }
                 })
                 .response
                 .labelled_by(label.id)
                 .on_hover_text("The quantity to add");
-            self.choice = (particle, of);
+            self.choice[g] = (particle, of);
+            let chosen = names
+                .get(particle)
+                .map(|name| Quantity::Particle((*name).to_owned(), of).to_string());
             if ui
-                .add_enabled(!names.is_empty(), egui::Button::new("Add"))
+                .add_enabled(chosen.is_some(), egui::Button::new("Add"))
                 .on_hover_text("Plot this quantity")
                 .clicked()
+                && let Some(text) = chosen.clone()
             {
-                self.series.push(Quantity::Particle(particle, of));
-                changed = true;
+                change = Some(("add series", Box::new(move |graph| graph.y.push(text))));
             }
             if ui
-                .button("Add as x axis")
+                .add_enabled(chosen.is_some(), egui::Button::new("Use as x axis"))
                 .on_hover_text("Plot everything against this quantity (a phase plot)")
                 .clicked()
-                && !names.is_empty()
+                && let Some(text) = chosen
             {
-                self.x_axis = Quantity::Particle(particle, of);
-                changed = true;
+                change = Some(("set x axis", Box::new(move |graph| graph.x = text)));
             }
         });
         ui.horizontal_wrapped(|ui| {
-            for q in Quantity::SYSTEM {
+            for total in Total::ALL {
+                let quantity = Quantity::Total(total);
                 if ui
-                    .small_button(q.label(scene))
+                    .small_button(label(&quantity))
                     .on_hover_text("Plot this system quantity")
                     .clicked()
                 {
-                    self.series.push(q);
-                    changed = true;
+                    let text = quantity.to_string();
+                    change = Some(("add series", Box::new(move |graph| graph.y.push(text))));
                 }
             }
         });
-        let mut remove = None;
         ui.horizontal_wrapped(|ui| {
-            if self.x_axis != Quantity::Time {
-                ui.label(format!("x axis: {}", self.x_axis.label(scene)));
+            if x != Quantity::Time {
+                ui.label(format!("x axis: {}", label(&x)));
                 if ui
                     .small_button("use time")
                     .on_hover_text("Plot against time again")
                     .clicked()
                 {
-                    self.x_axis = Quantity::Time;
-                    changed = true;
+                    change = Some(("set x axis", Box::new(|graph| "t".clone_into(&mut graph.x))));
                 }
             }
-            for (k, q) in self.series.iter().enumerate() {
+            for (k, q) in series.iter().enumerate() {
                 if ui
-                    .small_button(format!("× {}", q.label(scene)))
+                    .small_button(format!("× {}", label(q)))
                     .on_hover_text("Remove this series")
                     .clicked()
                 {
-                    remove = Some(k);
+                    change = Some((
+                        "remove series",
+                        Box::new(move |graph| {
+                            graph.y.remove(k);
+                        }),
+                    ));
                 }
             }
         });
-        if let Some(k) = remove {
-            self.series.remove(k);
-            changed = true;
-        }
-        if changed {
-            self.clear();
-        }
-        let export = ui
-            .add_enabled(!self.history.is_empty(), egui::Button::new("Export CSV…"))
-            .on_hover_text("Save the recorded series as a CSV file")
-            .clicked();
-        let x_label = self.x_axis.label(scene);
-        Plot::new("graph")
-            .legend(Legend::default())
-            .x_axis_label(x_label)
-            .height(ui.available_height().max(160.0))
-            .show(ui, |plot| {
-                for (k, q) in self.series.iter().enumerate() {
-                    let points: PlotPoints = self
-                        .history
-                        .iter()
-                        .map(|row| [row[0], row[k + 1]])
-                        .collect();
-                    plot.line(Line::new(q.label(scene), points));
+        if let Some((what, edit)) = change {
+            document.apply(what, |scene| {
+                if what == "remove graph" {
+                    scene.graphs.remove(g);
+                } else {
+                    edit(&mut scene.graphs[g]);
                 }
             });
-        export
+        }
+        let samples = recording.map_or(0, Recording::len);
+        if ui
+            .add_enabled(samples > 0, egui::Button::new("Export CSV…"))
+            .on_hover_text("Save every recorded sample of this graph's quantities as a CSV file")
+            .clicked()
+        {
+            action = Some(Action::ExportGraph(g));
+        }
+        let Some(recording) = recording else {
+            ui.label("Press Play: the graph fills from the start of the run.");
+            return action;
+        };
+        let every = samples.div_ceil(MAX_POINTS).max(1);
+        Plot::new("graph")
+            .legend(Legend::default())
+            .x_axis_label(label(&x))
+            .height(220.0)
+            .show(ui, |plot| {
+                for q in &series {
+                    if !recording.has(q) || !recording.has(&x) {
+                        continue;
+                    }
+                    let points: PlotPoints = (0..samples)
+                        .step_by(every)
+                        .chain((!(samples - 1).is_multiple_of(every)).then_some(samples - 1))
+                        .filter_map(|k| Some([recording.value(k, &x)?, recording.value(k, q)?]))
+                        .collect();
+                    plot.line(Line::new(label(q), points));
+                }
+            });
+        action
     }
 }
 
-/// Energies by kind, drift since Play, momentum.
-fn readouts(ui: &mut Ui, simulation: Option<&Simulation>, start_energy: f64) {
+/// Energies by kind, drift since Play, momentum: live while running, the last recorded
+/// values after a failure.
+fn readouts(ui: &mut Ui, runner: &Runner) {
     ui.heading("Energy and momentum");
-    let Some(simulation) = simulation else {
-        ui.label("Press Play to see the energies and momentum.");
-        return;
+    let energy = match (&runner.simulation, &runner.failure, &runner.recording) {
+        (Some(_), Some(_), Some(recording)) => {
+            ui.label("The run failed: the values of its last good sample.");
+            let get = |t| recording.last_total(t).unwrap_or(f64::NAN);
+            Energies {
+                kinetic: get(Total::KineticEnergy),
+                potential: vec![("potential (J)", get(Total::PotentialEnergy))],
+                total: get(Total::TotalEnergy),
+                momentum: [get(Total::MomentumX), get(Total::MomentumY)],
+            }
+        }
+        (Some(simulation), _, _) => {
+            let d = simulation.diagnostics();
+            Energies {
+                kinetic: d.energy.kinetic,
+                potential: vec![
+                    ("potential: field (J)", d.energy.uniform),
+                    ("potential: springs (J)", d.energy.spring),
+                    ("potential: gravitation (J)", d.energy.gravitation),
+                    ("potential: electrostatic (J)", d.energy.electrostatic),
+                ],
+                total: d.energy.total(),
+                momentum: [d.momentum.x, d.momentum.y],
+            }
+        }
+        (None, _, _) => {
+            ui.label("Press Play to see the energies and momentum.");
+            return;
+        }
     };
-    let d = simulation.diagnostics();
-    let drift = if start_energy == 0.0 {
-        d.energy.total() - start_energy
+    let start = runner.start_energy;
+    let drift = energy.total - start;
+    let drift = if start == 0.0 {
+        format!("{} (started at 0 J)", format::with_unit(drift, "J"))
     } else {
-        (d.energy.total() - start_energy) / start_energy.abs()
+        format!(
+            "{} % of the starting {}",
+            format::number(100.0 * drift / start.abs()),
+            format::with_unit(start, "J")
+        )
     };
     egui::Grid::new("readouts")
         .num_columns(2)
         .striped(true)
         .show(ui, |ui| {
-            for (name, value) in [
-                ("kinetic (J)", format!("{:.9e}", d.energy.kinetic)),
-                ("potential: field (J)", format!("{:.9e}", d.energy.uniform)),
-                ("potential: springs (J)", format!("{:.9e}", d.energy.spring)),
-                (
-                    "potential: gravitation (J)",
-                    format!("{:.9e}", d.energy.gravitation),
+            let mut rows = vec![("kinetic (J)", format::number(energy.kinetic))];
+            rows.extend(
+                energy
+                    .potential
+                    .iter()
+                    .map(|(name, value)| (*name, format::number(*value))),
+            );
+            rows.push(("total (J)", format::number(energy.total)));
+            rows.push(("change since Play", drift));
+            rows.push((
+                "momentum (kg·m/s)",
+                format!(
+                    "({}, {})",
+                    format::number(energy.momentum[0]),
+                    format::number(energy.momentum[1])
                 ),
-                (
-                    "potential: electrostatic (J)",
-                    format!("{:.9e}", d.energy.electrostatic),
-                ),
-                ("total (J)", format!("{:.9e}", d.energy.total())),
-                ("drift since Play", format!("{drift:.3e}")),
-                (
-                    "momentum (kg·m/s)",
-                    format!("({:.6e}, {:.6e})", d.momentum.x, d.momentum.y),
-                ),
-            ] {
+            ));
+            for (name, value) in rows {
                 ui.label(name);
                 ui.monospace(value);
                 ui.end_row();
             }
         });
+}
+
+struct Energies {
+    kinetic: f64,
+    potential: Vec<(&'static str, f64)>,
+    total: f64,
+    momentum: [f64; 2],
 }

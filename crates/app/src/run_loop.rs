@@ -10,6 +10,8 @@ use std::collections::VecDeque;
 use physics::{DVec2, LoadError, Scene, Simulation};
 use web_time::Instant;
 
+use crate::recording::Recording;
+
 /// Computing time per frame spent on physics at most, seconds. Drawing a thousand balls
 /// with software rendering takes some 20 ms on two cores, so 8 ms of physics keeps the
 /// app above 30 frames per second; a scene that needs more runs slower than real time and
@@ -24,14 +26,16 @@ pub struct Runner {
     /// The simulation since Play, until Reset.
     pub simulation: Option<Simulation>,
     pub playing: bool,
-    /// Simulated seconds per real second requested.
-    pub time_scale: f64,
     /// Simulated seconds owed to real time.
     debt: f64,
     /// Simulated seconds per real second achieved, smoothed.
     pub achieved: f64,
     /// Physics steps per second of computing time, smoothed.
     pub steps_per_second: f64,
+    /// Computing time spent on physics per frame, seconds, smoothed.
+    pub physics_per_frame: f64,
+    /// The last run, sampled from its start: kept after Reset until the next Play.
+    pub recording: Option<Recording>,
     /// Why the simulation stopped, if it failed.
     pub failure: Option<String>,
     /// Total energy when Play built the simulation, joules.
@@ -45,10 +49,11 @@ impl Default for Runner {
         Self {
             simulation: None,
             playing: false,
-            time_scale: 1.0,
             debt: 0.0,
             achieved: 0.0,
             steps_per_second: 0.0,
+            physics_per_frame: 0.0,
+            recording: None,
             failure: None,
             start_energy: 0.0,
             trails: Vec::new(),
@@ -57,14 +62,6 @@ impl Default for Runner {
 }
 
 impl Runner {
-    /// A runner at `time_scale`, with nothing running.
-    pub fn at_scale(time_scale: f64) -> Self {
-        Self {
-            time_scale,
-            ..Self::default()
-        }
-    }
-
     /// Builds the simulation if there is none.
     ///
     /// # Errors
@@ -75,6 +72,7 @@ impl Runner {
         }
         let simulation = Simulation::new(scene)?;
         self.start_energy = simulation.diagnostics().energy.total();
+        self.recording = Some(Recording::start(&simulation));
         self.trails = vec![VecDeque::new(); simulation.len()];
         self.failure = None;
         self.debt = 0.0;
@@ -98,10 +96,10 @@ impl Runner {
         self.debt = 0.0;
     }
 
-    /// Back to the scene as last edited.
+    /// Back to the scene as last edited; the recording stays until the next Play.
     pub fn reset(&mut self) {
         *self = Self {
-            time_scale: self.time_scale,
+            recording: self.recording.take(),
             ..Self::default()
         };
     }
@@ -112,10 +110,16 @@ impl Runner {
     /// The scene's problems, if it is invalid.
     pub fn step_once(&mut self, scene: &Scene, trails: bool) -> Result<(), LoadError> {
         self.pause();
-        let simulation = self.ensure_simulation(scene)?;
-        let result = simulation.step();
-        if let Err(error) = result {
-            self.failure = Some(error.to_string());
+        self.ensure_simulation(scene)?;
+        if let Some(simulation) = self.simulation.as_mut() {
+            match simulation.step() {
+                Ok(()) => {
+                    if let Some(recording) = &mut self.recording {
+                        recording.after_step(simulation);
+                    }
+                }
+                Err(error) => self.failure = Some(error.to_string()),
+            }
         }
         if trails {
             self.record_trails();
@@ -123,9 +127,10 @@ impl Runner {
         Ok(())
     }
 
-    /// Advances by one frame that took `real_dt` seconds of wall time. Returns whether
-    /// the simulation moved.
-    pub fn advance(&mut self, real_dt: f64, trails: bool) -> bool {
+    /// Advances by one frame that took `real_dt` seconds of wall time, at `time_scale`
+    /// simulated seconds per real second (the scene's). Returns whether the simulation
+    /// moved.
+    pub fn advance(&mut self, real_dt: f64, time_scale: f64, trails: bool) -> bool {
         if !self.playing {
             return false;
         }
@@ -134,7 +139,7 @@ impl Runner {
         };
         let real_dt = real_dt.clamp(0.0, LONGEST_FRAME);
         let step = simulation.time_step();
-        self.debt += real_dt * self.time_scale;
+        self.debt += real_dt * time_scale;
         let (clock, start_time) = (Instant::now(), simulation.time());
         let mut steps = 0_u32;
         while self.debt >= step * (1.0 - 1e-9) {
@@ -142,6 +147,9 @@ impl Runner {
                 self.failure = Some(error.to_string());
                 self.playing = false;
                 break;
+            }
+            if let Some(recording) = &mut self.recording {
+                recording.after_step(simulation);
             }
             self.debt -= step;
             steps += 1;
@@ -155,6 +163,7 @@ impl Runner {
         if steps > 0 && computing > 0.0 {
             self.steps_per_second = smooth(self.steps_per_second, f64::from(steps) / computing);
         }
+        self.physics_per_frame = smooth(self.physics_per_frame, computing);
         if real_dt > 0.0 {
             self.achieved = smooth(self.achieved, (simulation.time() - start_time) / real_dt);
         }
@@ -164,10 +173,9 @@ impl Runner {
         steps > 0
     }
 
-    /// The speed achieved as a fraction of the speed requested, when it falls short.
-    pub fn shortfall(&self) -> Option<f64> {
-        (self.playing && self.achieved < 0.95 * self.time_scale)
-            .then_some(self.achieved / self.time_scale)
+    /// The speed achieved as a fraction of `time_scale`, when it falls short.
+    pub fn shortfall(&self, time_scale: f64) -> Option<f64> {
+        (self.playing && self.achieved < 0.95 * time_scale).then_some(self.achieved / time_scale)
     }
 
     fn record_trails(&mut self) {
@@ -207,13 +215,10 @@ mod tests {
     #[test]
     fn real_time_at_the_requested_scale() {
         let scene = Scene::new().with_particle(Particle::new("p", 1.0));
-        let mut runner = Runner {
-            time_scale: 2.0,
-            ..Runner::default()
-        };
+        let mut runner = Runner::default();
         runner.play(&scene).unwrap();
         for _ in 0..10 {
-            runner.advance(1.0 / 60.0, false);
+            runner.advance(1.0 / 60.0, 2.0, false);
         }
         let time = runner.simulation.as_ref().unwrap().time();
         assert!(
@@ -221,7 +226,7 @@ mod tests {
             "simulated {time} s"
         );
         runner.pause();
-        runner.advance(1.0, false);
+        runner.advance(1.0, 2.0, false);
         assert_eq!(
             runner.simulation.as_ref().unwrap().time().to_bits(),
             time.to_bits(),

@@ -2,89 +2,98 @@
 //! integrator, time step) and what the canvas shows.
 
 use egui::Ui;
-use physics::{Integrator, Rule, check_value};
+use physics::{Follow, Integrator, Rule, check_value};
 
+use crate::action::Action;
 use crate::canvas::{Canvas, Tool};
+use crate::document::Document;
+use crate::run_loop::Runner;
 
-/// What the user asked for in the tool bar this frame.
-#[derive(Clone, Copy, Debug, Default)]
-#[expect(
-    clippy::struct_excessive_bools,
-    reason = "independent buttons, each pressed or not"
-)]
-pub struct Requests {
-    pub play_pause: bool,
-    pub step: bool,
-    pub reset: bool,
-    pub fit: bool,
-    pub integrator: Option<Integrator>,
-    pub time_step: Option<f64>,
-}
-
-pub struct State<'a> {
-    pub canvas: &'a mut Canvas,
-    pub playing: bool,
-    pub editable: bool,
-    pub time_scale: &'a mut f64,
-    pub integrator: Integrator,
-    pub time_step: f64,
-}
-
+/// The tool bar, one frame. The integrator, the time step and the time scale are the
+/// scene's and change as undoable edits; everything else is an [`Action`].
 #[expect(
     clippy::too_many_lines,
     reason = "one row of controls, laid out in order"
 )]
-pub fn ui(ui: &mut Ui, state: &mut State<'_>) -> Requests {
-    let mut requests = Requests::default();
+pub fn ui(
+    ui: &mut Ui,
+    canvas: &mut Canvas,
+    document: &mut Document,
+    runner: &Runner,
+) -> Option<Action> {
+    let mut action = None;
+    let editable = runner.simulation.is_none();
+    let settings = document.scene().simulation.clone();
     ui.horizontal_wrapped(|ui| {
-        ui.add_enabled_ui(state.editable, |ui| {
+        ui.add_enabled_ui(editable, |ui| {
             for tool in Tool::ALL {
-                ui.selectable_value(&mut state.canvas.tool, tool, tool.label())
-                    .on_hover_text(tool.hint());
+                if ui
+                    .selectable_label(canvas.tool == tool, tool.label())
+                    .on_hover_text(tool.hint())
+                    .clicked()
+                {
+                    action = Some(Action::Tool(tool));
+                }
             }
         });
         ui.separator();
-        let play = if state.playing { "Pause" } else { "Play" };
-        if ui
-            .button(play)
-            .on_hover_text("Run or pause the simulation (Space)")
-            .clicked()
-        {
-            requests.play_pause = true;
+        // A fixed width: the row does not re-wrap when Play becomes Pause.
+        let play = if runner.playing { "Pause" } else { "Play" };
+        for (label, hint, pressed) in [
+            (
+                play,
+                "Run or pause the simulation (Space)",
+                Action::PlayPause,
+            ),
+            ("Step", "Advance by one time step (.)", Action::Step),
+            (
+                "Reset",
+                "Back to the scene as last edited (R)",
+                Action::Reset,
+            ),
+        ] {
+            if ui
+                .add_sized([52.0, 20.0], egui::Button::new(label))
+                .on_hover_text(hint)
+                .clicked()
+            {
+                action = Some(pressed);
+            }
         }
-        if ui
-            .button("Step")
-            .on_hover_text("Advance by one time step (.)")
-            .clicked()
-        {
-            requests.step = true;
+        let mut time_scale = settings.time_scale;
+        let slider = ui
+            .add(
+                egui::Slider::new(&mut time_scale, 0.01..=100.0)
+                    .logarithmic(true)
+                    .text("× speed"),
+            )
+            .on_hover_text("Time scale: simulated seconds per real second (0.01× to 100×)");
+        if slider.drag_started() {
+            document.begin_gesture("set time scale");
         }
-        if ui
-            .button("Reset")
-            .on_hover_text("Back to the scene as last edited (R)")
-            .clicked()
-        {
-            requests.reset = true;
+        if slider.changed() && time_scale.to_bits() != settings.time_scale.to_bits() {
+            document.apply("set time scale", |scene| {
+                scene.simulation.time_scale = time_scale;
+            });
         }
-        ui.add(
-            egui::Slider::new(state.time_scale, 0.01..=100.0)
-                .logarithmic(true)
-                .text("× speed"),
-        )
-        .on_hover_text("Time scale: simulated seconds per real second (0.01× to 100×)");
+        if slider.drag_stopped() {
+            document.end_gesture();
+        }
         ui.separator();
-        ui.add_enabled_ui(state.editable, |ui| {
+        ui.add_enabled_ui(editable, |ui| {
             let label = ui.label("integrator");
             egui::ComboBox::from_id_salt("toolbar-integrator")
-                .selected_text(state.integrator.as_str())
+                .selected_text(settings.integrator.as_str())
                 .show_ui(ui, |ui| {
                     for method in Integrator::ALL {
                         if ui
-                            .selectable_label(state.integrator == method, method.as_str())
+                            .selectable_label(settings.integrator == method, method.as_str())
                             .on_hover_text(method.describe())
                             .clicked()
                         {
-                            requests.integrator = Some(method);
+                            document.apply("set integrator", |scene| {
+                                scene.simulation.integrator = method;
+                            });
                         }
                     }
                 })
@@ -94,7 +103,7 @@ pub fn ui(ui: &mut Ui, state: &mut State<'_>) -> Requests {
             let id = egui::Id::unique("toolbar-time-step");
             let mut text: String = ui
                 .data(|d| d.get_temp(id))
-                .unwrap_or_else(|| state.time_step.to_string());
+                .unwrap_or_else(|| settings.time_step.to_string());
             let label = ui.label("dt");
             let response = ui
                 .add(egui::TextEdit::singleline(&mut text).desired_width(70.0))
@@ -112,8 +121,8 @@ pub fn ui(ui: &mut Ui, state: &mut State<'_>) -> Requests {
                 ui.data_mut(|d| d.remove::<String>(id));
             }
             match parsed {
-                Ok(v) if response.lost_focus() && v.to_bits() != state.time_step.to_bits() => {
-                    requests.time_step = Some(v);
+                Ok(v) if response.lost_focus() && v.to_bits() != settings.time_step.to_bits() => {
+                    document.apply("set time step", |scene| scene.simulation.time_step = v);
                 }
                 Err(reason) => {
                     ui.colored_label(egui::Color32::from_rgb(200, 30, 30), reason.clone());
@@ -122,7 +131,7 @@ pub fn ui(ui: &mut Ui, state: &mut State<'_>) -> Requests {
             }
         });
         ui.separator();
-        let overlays = &mut state.canvas.overlays;
+        let overlays = &mut canvas.overlays;
         ui.toggle_value(&mut overlays.velocity, "velocity")
             .on_hover_text("Velocity arrows (tip: where the particle will be in 0.5 s)");
         ui.toggle_value(&mut overlays.acceleration, "acceleration")
@@ -135,11 +144,36 @@ pub fn ui(ui: &mut Ui, state: &mut State<'_>) -> Requests {
             .on_hover_text("Object names");
         if ui
             .button("Fit")
-            .on_hover_text("Fit the whole scene in view (F)")
+            .on_hover_text("Fit the scene and the recent paths in view (F)")
             .clicked()
         {
-            requests.fit = true;
+            action = Some(Action::Fit);
         }
+        follow(ui, canvas, document);
     });
-    requests
+    action
+}
+
+/// What the camera follows: nothing, every particle, or one particle.
+fn follow(ui: &mut Ui, canvas: &mut Canvas, document: &Document) {
+    let label = ui.label("follow");
+    let shown = canvas
+        .follow
+        .as_ref()
+        .map_or("nothing", Follow::as_str)
+        .to_owned();
+    egui::ComboBox::from_id_salt("toolbar-follow")
+        .selected_text(shown)
+        .show_ui(ui, |ui| {
+            ui.selectable_value(&mut canvas.follow, None, "nothing");
+            ui.selectable_value(&mut canvas.follow, Some(Follow::All), "all")
+                .on_hover_text("Keep every particle in view");
+            for particle in &document.scene().particles {
+                let target = Some(Follow::Particle(particle.name.clone()));
+                ui.selectable_value(&mut canvas.follow, target, &particle.name);
+            }
+        })
+        .response
+        .labelled_by(label.id)
+        .on_hover_text("Keep a particle, or all of them, in view while playing");
 }

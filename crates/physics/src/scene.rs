@@ -5,11 +5,14 @@
 //! colour stays the colour that was chosen. [`crate::Simulation::new`] converts a scene
 //! into runtime state; [`Scene::validate`] lists everything wrong with one.
 
+mod edit;
 pub mod format;
+mod presentation;
 mod validate;
 
 use glam::DVec2;
 
+pub use presentation::{Follow, Graph, Of, Quantity, Total, View};
 pub use validate::{FieldRef, Rule, Section, check_value};
 
 /// A 2D vector as the user typed it: Cartesian `[x, y]` or polar
@@ -428,6 +431,10 @@ pub struct Scene {
     pub springs: Vec<Spring>,
     /// In file order.
     pub ramps: Vec<Ramp>,
+    /// The app's graphs when the scene opens (`[[graph]]`), in file order.
+    pub graphs: Vec<Graph>,
+    /// The app's framing when the scene opens (`[view]`).
+    pub view: Option<View>,
 }
 
 impl Scene {

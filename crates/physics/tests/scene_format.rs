@@ -212,6 +212,16 @@ to = { magnitude = 10, angle = 30 }
 thickness = 0
 restitution = 0
 friction = 0.5
+[[graph]]
+title = "Phase of A"
+x = "A, the first.x"
+y = ["A, the first.vx", "p2.kinetic_energy"]
+[[graph]]
+y = ["total_energy", "momentum_y"]
+[view]
+center = [0.5, -2]
+width = 30
+follow = "p2"
 "##,
     )
     .expect("the scene is valid")
@@ -287,4 +297,58 @@ fn every_example_is_valid() {
         assert!(scene.name.is_some(), "{} has a title", example.name);
         physics::Simulation::new(&scene).unwrap();
     }
+}
+
+/// `[[graph]]` and `[view]` are checked like everything else: every wrong name or form
+/// reported with its position, in the app's words.
+#[test]
+fn graphs_and_views_are_checked_with_positions() {
+    let found = problems(
+        r#"version = 1
+[[particle]]
+name = "A"
+mass = 1
+position = [0, 0]
+[[graph]]
+x = "A.vx"
+y = ["B.x", "A.z", "t", 3]
+[[graph]]
+title = "energy"
+y = ["energy", "A.speed"]
+colour = "red"
+[view]
+width = -1
+follow = "B"
+"#,
+    );
+    assert_eq!(
+        found,
+        [
+            "8:5 graph #1: y must be a list of quantities in quotes, like [\"A.x\", \"total_energy\"], got a number",
+            "11:5 graph 'energy': y: 'energy' is not a quantity: write t, NAME.x (or .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy), or one of kinetic_energy, potential_energy, total_energy, momentum_x, momentum_y",
+            "12:1 graph 'energy': unknown key 'colour'; the keys here are title, x, y",
+            "14:9 [view]: width must be greater than 0, got -1",
+            "15:10 [view]: follow: there is no particle 'B'; follow a particle's name, or \"all\"",
+        ]
+    );
+    let found = problems(
+        r#"version = 1
+[[particle]]
+name = "A"
+mass = 1
+position = [0, 0]
+[[graph]]
+x = "B.vx"
+y = ["B.x", "A.z", "t"]
+"#,
+    );
+    assert_eq!(
+        found,
+        [
+            "7:5 graph #1: x: 'B.vx' names no particle; there is no particle 'B'",
+            "8:5 graph #1: y: 'B.x' names no particle; there is no particle 'B'",
+            "8:5 graph #1: y: 'A.z': a particle's quantity is one of x, y, vx, vy, speed, ax, ay, kinetic_energy",
+            "8:5 graph #1: y: time goes on the x axis (x = \"t\")",
+        ]
+    );
 }

@@ -13,7 +13,10 @@ use std::fmt::{self, Write as _};
 use std::ops::Range;
 
 use super::validate::{FieldRef, Section};
-use super::{Bounds, Color, Endpoint, Particle, Ramp, Scene, Settings, Spring, Vector, World};
+use super::{
+    Bounds, Color, Endpoint, Follow, Graph, Particle, Ramp, Scene, Settings, Spring, Vector, View,
+    World,
+};
 use crate::Integrator;
 
 /// The scene-format version this library reads and writes.
@@ -285,6 +288,41 @@ impl Scene {
                 ],
             });
         }
+        sections.extend(self.presentation());
+        sections
+    }
+
+    /// The app's part of the scene: `[[graph]]` and `[view]`.
+    fn presentation(&self) -> Vec<OutSection> {
+        let mut sections = Vec::new();
+        for graph in &self.graphs {
+            let mut entries = Vec::new();
+            if let Some(title) = &graph.title {
+                entries.push(("title", Out::Text(title.clone())));
+            }
+            entries.push(("x", Out::Text(graph.x.clone())));
+            entries.push(("y", Out::TextList(graph.y.clone())));
+            sections.push(OutSection {
+                header: Header::ArrayItem("graph"),
+                entries,
+            });
+        }
+        if let Some(view) = &self.view {
+            let mut entries = Vec::new();
+            if let Some(center) = view.center {
+                entries.push(("center", Out::Vector(Vector::Cartesian(center))));
+            }
+            if let Some(width) = view.width {
+                entries.push(("width", Out::Number(width)));
+            }
+            if let Some(follow) = &view.follow {
+                entries.push(("follow", Out::Text(follow.as_str().to_owned())));
+            }
+            sections.push(OutSection {
+                header: Header::Table("view"),
+                entries,
+            });
+        }
         sections
     }
 }
@@ -305,6 +343,7 @@ enum Out {
     Number(f64),
     Bool(bool),
     Text(String),
+    TextList(Vec<String>),
     Vector(Vector),
     Bounds(Bounds),
 }
@@ -342,6 +381,13 @@ impl Out {
             Self::Number(x) => toml_float(*x),
             Self::Bool(b) => b.to_string(),
             Self::Text(text) => toml::Value::String(text.clone()).to_string(),
+            Self::TextList(list) => {
+                let items: Vec<String> = list
+                    .iter()
+                    .map(|t| toml::Value::String(t.clone()).to_string())
+                    .collect();
+                format!("[{}]", items.join(", "))
+            }
             Self::Vector(v) => toml_vector(*v),
             Self::Bounds(b) => format!(
                 "{{ min = {}, max = {} }}",
@@ -357,6 +403,7 @@ impl Out {
             Self::Number(x) => (*x).into(),
             Self::Bool(b) => (*b).into(),
             Self::Text(text) => text.clone().into(),
+            Self::TextList(list) => list.clone().into(),
             Self::Vector(v) => json_vector(*v),
             Self::Bounds(b) => {
                 serde_json::json!({ "min": json_vector(b.min), "max": json_vector(b.max) })
@@ -556,6 +603,8 @@ const ROOT_KEYS: &[&str] = &[
     "particle",
     "spring",
     "ramp",
+    "graph",
+    "view",
 ];
 const WORLD_KEYS: &[&str] = &[
     "gravity",
@@ -587,6 +636,8 @@ const SPRING_KEYS: &[&str] = &[
     "damping",
 ];
 const RAMP_KEYS: &[&str] = &["name", "from", "to", "thickness", "restitution", "friction"];
+const GRAPH_KEYS: &[&str] = &["title", "x", "y"];
+const VIEW_KEYS: &[&str] = &["center", "width", "follow"];
 
 impl<'t> Reader<'t> {
     fn new(text: &'t str) -> Self {
@@ -750,6 +801,13 @@ impl<'t> Reader<'t> {
         for (i, node) in self.items(&mut top, "ramp").iter().enumerate() {
             let ramp = self.ramp(node, i);
             scene.ramps.push(ramp);
+        }
+        for (i, node) in self.items(&mut top, "graph").iter().enumerate() {
+            let graph = self.graph(node, i);
+            scene.graphs.push(graph);
+        }
+        if let Some(node) = top.get("view") {
+            scene.view = Some(self.view(node));
         }
         self.close(&top, ROOT_KEYS);
         scene
@@ -919,6 +977,40 @@ impl<'t> Reader<'t> {
         ramp
     }
 
+    fn graph(&mut self, node: &Node, index: usize) -> Graph {
+        let mut graph = Graph::against_time(Vec::<String>::new());
+        let Some(mut t) = self.table(node, Section::Graph(index), format!("graph #{}", index + 1))
+        else {
+            return graph;
+        };
+        graph.title = self.field(&mut t, "title", read_text);
+        if let Some(title) = &graph.title {
+            t.label = format!("graph '{title}'");
+        }
+        if let Some(x) = self.field(&mut t, "x", read_text) {
+            graph.x = x;
+        }
+        graph.y = self.required(&mut t, "y", read_text_list, Vec::new());
+        self.close(&t, GRAPH_KEYS);
+        graph
+    }
+
+    fn view(&mut self, node: &Node) -> View {
+        let mut view = View::default();
+        let Some(mut t) = self.table(node, Section::View, "[view]".to_owned()) else {
+            return view;
+        };
+        view.center = self
+            .field(&mut t, "center", read_vector)
+            .map(Vector::to_dvec2);
+        view.width = self.field(&mut t, "width", read_number);
+        view.follow = self
+            .field(&mut t, "follow", read_text)
+            .map(|text| Follow::parse(&text));
+        self.close(&t, VIEW_KEYS);
+        view
+    }
+
     /// Adds the validation problems (with positions) to the reading problems and returns
     /// the scene if there are none.
     fn finish(mut self, scene: Scene) -> Result<Scene, LoadError> {
@@ -966,6 +1058,17 @@ fn read_text(node: &Node) -> Result<String, String> {
     match &node.value {
         Value::Text(text) => Ok(text.clone()),
         other => Err(format!("must be text in quotes, got {}", other.kind())),
+    }
+}
+
+fn read_text_list(node: &Node) -> Result<Vec<String>, String> {
+    const FORM: &str = "must be a list of quantities in quotes, like [\"A.x\", \"total_energy\"]";
+    match &node.value {
+        Value::Array(items) => items
+            .iter()
+            .map(|item| read_text(item).map_err(|_| format!("{FORM}, got {}", item.value.kind())))
+            .collect(),
+        other => Err(format!("{FORM}, got {}", other.kind())),
     }
 }
 

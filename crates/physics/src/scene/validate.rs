@@ -6,7 +6,7 @@
 use std::collections::HashMap;
 
 use super::format::Problem;
-use super::{Color, Endpoint, Scene, Vector};
+use super::{Color, Endpoint, Follow, Quantity, Scene, Vector};
 
 /// A part of the scene that a problem belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -23,6 +23,10 @@ pub enum Section {
     Spring(usize),
     /// The ramp at this index.
     Ramp(usize),
+    /// The graph at this index (`[[graph]]`).
+    Graph(usize),
+    /// `[view]`.
+    View,
 }
 
 /// A field of a section: where a problem is, for the app's inspector and for locating
@@ -49,6 +53,8 @@ impl Scene {
         check.particles();
         check.springs();
         check.ramps();
+        check.graphs();
+        check.view();
         check.problems
     }
 
@@ -71,6 +77,12 @@ impl Scene {
             ),
             Section::Spring(i) => named("spring", self.springs.get(i).map(|s| s.name.as_str()), i),
             Section::Ramp(i) => named("ramp", self.ramps.get(i).map(|r| r.name.as_str()), i),
+            Section::Graph(i) => named(
+                "graph",
+                self.graphs.get(i).and_then(|g| g.title.as_deref()),
+                i,
+            ),
+            Section::View => "[view]".to_owned(),
         }
     }
 }
@@ -297,6 +309,60 @@ impl Checker<'_> {
             self.number(s, "thickness", Rule::NonNegative, ramp.thickness);
             self.number(s, "restitution", Rule::Fraction, ramp.restitution);
             self.number(s, "friction", Rule::NonNegative, ramp.friction);
+        }
+    }
+
+    /// A graph's quantities must be quantities, of particles that exist.
+    fn graphs(&mut self) {
+        for (i, graph) in self.scene.graphs.iter().enumerate() {
+            let s = Section::Graph(i);
+            let axes = std::iter::once(("x", &graph.x)).chain(graph.y.iter().map(|y| ("y", y)));
+            for (field, text) in axes {
+                match Quantity::parse(text) {
+                    Err(reason) => self.report(s, field, &format!("{field}: {reason}")),
+                    Ok(Quantity::Particle(name, _))
+                        if self.scene.particle_index(&name).is_none() =>
+                    {
+                        self.report(
+                            s,
+                            field,
+                            &format!(
+                                "{field}: '{text}' names no particle; there is no particle '{name}'"
+                            ),
+                        );
+                    }
+                    Ok(Quantity::Time) if field == "y" => {
+                        self.report(s, field, "y: time goes on the x axis (x = \"t\")");
+                    }
+                    Ok(_) => {}
+                }
+            }
+        }
+    }
+
+    fn view(&mut self) {
+        let Some(view) = &self.scene.view else {
+            return;
+        };
+        let s = Section::View;
+        if let Some(center) = view.center
+            && !center.is_finite()
+        {
+            self.report(s, "center", "center must have finite components");
+        }
+        if let Some(width) = view.width {
+            self.number(s, "width", Rule::Positive, width);
+        }
+        if let Some(Follow::Particle(name)) = &view.follow
+            && self.scene.particle_index(name).is_none()
+        {
+            self.report(
+                s,
+                "follow",
+                &format!(
+                    "follow: there is no particle '{name}'; follow a particle's name, or \"all\""
+                ),
+            );
         }
     }
 }

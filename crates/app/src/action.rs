@@ -1,0 +1,89 @@
+//! Everything the user can ask the app to do, as one enum. The menus, the tool bar, the
+//! keyboard shortcuts and the panels all emit an [`Action`]; `App::perform` carries each
+//! out in one place. A shortcut is defined once, here, and the menus show it.
+
+use egui::{Key, KeyboardShortcut, Modifiers};
+
+use crate::canvas::Tool;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Action {
+    New,
+    Open,
+    Save,
+    SaveAs,
+    /// Export graph number N as CSV.
+    ExportGraph(usize),
+    Example(&'static str),
+    Quit,
+    Undo,
+    Redo,
+    Delete,
+    PlayPause,
+    Step,
+    Reset,
+    Fit,
+    Tool(Tool),
+    /// Show or hide the inspector panel.
+    ToggleInspector,
+    /// Show or hide the graph panel.
+    ToggleGraphs,
+    /// Full canvas with large text, for a projector.
+    ToggleProjector,
+}
+
+const fn command(key: Key) -> KeyboardShortcut {
+    KeyboardShortcut::new(Modifiers::COMMAND, key)
+}
+
+const fn command_shift(key: Key) -> KeyboardShortcut {
+    KeyboardShortcut::new(Modifiers::COMMAND.plus(Modifiers::SHIFT), key)
+}
+
+const fn plain(key: Key) -> KeyboardShortcut {
+    KeyboardShortcut::new(Modifiers::NONE, key)
+}
+
+/// Every shortcut, most specific first (Ctrl+Shift+S before Ctrl+S). The plain keys are
+/// ignored while a text field has the keyboard.
+pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
+    (command_shift(Key::Z), Action::Redo),
+    (command(Key::Y), Action::Redo),
+    (command(Key::Z), Action::Undo),
+    (command_shift(Key::S), Action::SaveAs),
+    (command(Key::S), Action::Save),
+    (command(Key::O), Action::Open),
+    (command(Key::N), Action::New),
+    (plain(Key::Space), Action::PlayPause),
+    (plain(Key::Period), Action::Step),
+    (plain(Key::R), Action::Reset),
+    (plain(Key::F), Action::Fit),
+    (plain(Key::Num1), Action::Tool(Tool::Select)),
+    (plain(Key::Num2), Action::Tool(Tool::Particle)),
+    (plain(Key::Num3), Action::Tool(Tool::Spring)),
+    (plain(Key::Num4), Action::Tool(Tool::Ramp)),
+    (plain(Key::Delete), Action::Delete),
+    (plain(Key::Backspace), Action::Delete),
+    (plain(Key::F9), Action::ToggleInspector),
+    (plain(Key::F10), Action::ToggleGraphs),
+    (plain(Key::F11), Action::ToggleProjector),
+];
+
+impl Action {
+    /// The first shortcut that does this.
+    pub fn shortcut(self) -> Option<KeyboardShortcut> {
+        SHORTCUTS.iter().find(|(_, a)| *a == self).map(|(s, _)| *s)
+    }
+
+    /// The shortcut as the menus show it ("Ctrl+S"), or "".
+    pub fn shortcut_text(self, ctx: &egui::Context) -> String {
+        self.shortcut()
+            .map(|s| ctx.format_shortcut(&s))
+            .unwrap_or_default()
+    }
+
+    /// Whether the shortcut is a bare key, which a focused text field must keep.
+    pub fn is_plain(shortcut: &KeyboardShortcut) -> bool {
+        shortcut.modifiers.is_none()
+    }
+}

@@ -1,0 +1,383 @@
+//! Drawing the canvas: the grid with its metre labels, the scale bar, every object in
+//! drawing order (bounds, ramps, trails, springs, particles with their arrows), names
+//! placed so they do not collide, and the preview of a gesture in progress.
+
+use egui::{Align2, Color32, FontId, Pos2, Rect, Shape, Stroke, Vec2, epaint::PathStroke};
+use physics::{DVec2, Endpoint, Ramp, Scene, Spring};
+
+use super::tools::Drag;
+use super::view::{format_metres, nice_length};
+use super::{Canvas, Frame, Selection, VELOCITY_ARROW_SECONDS};
+use crate::run_loop::Runner;
+
+impl Canvas {
+    pub(super) fn draw_grid(&self, painter: &egui::Painter, rect: Rect) {
+        let spacing = nice_length(80.0 / self.view.pixels_per_metre);
+        let (lo, hi) = (
+            self.view.to_world(rect, rect.left_bottom()),
+            self.view.to_world(rect, rect.right_top()),
+        );
+        let line = Stroke::new(1.0, Color32::from_gray(228));
+        let axis = Stroke::new(1.2, Color32::from_gray(170));
+        let font = FontId::proportional(11.0);
+        let text = Color32::from_gray(120);
+        let count = ((hi.x - lo.x) / spacing).ceil() + ((hi.y - lo.y) / spacing).ceil();
+        if !(count.is_finite() && count < 400.0) {
+            return;
+        }
+        let mut x = (lo.x / spacing).floor() * spacing;
+        while x <= hi.x {
+            let sx = self.view.to_screen(rect, DVec2::new(x, 0.0)).x;
+            let stroke = if x.abs() < spacing * 1e-6 { axis } else { line };
+            painter.line_segment(
+                [Pos2::new(sx, rect.top()), Pos2::new(sx, rect.bottom())],
+                stroke,
+            );
+            // Not in the corner, where the y axis's labels are.
+            if sx > rect.left() + 56.0 {
+                painter.text(
+                    Pos2::new(sx + 2.0, rect.bottom() - 2.0),
+                    Align2::LEFT_BOTTOM,
+                    format_metres(x, spacing),
+                    font.clone(),
+                    text,
+                );
+            }
+            x += spacing;
+        }
+        let mut y = (lo.y / spacing).floor() * spacing;
+        while y <= hi.y {
+            let sy = self.view.to_screen(rect, DVec2::new(0.0, y)).y;
+            let stroke = if y.abs() < spacing * 1e-6 { axis } else { line };
+            painter.line_segment(
+                [Pos2::new(rect.left(), sy), Pos2::new(rect.right(), sy)],
+                stroke,
+            );
+            if sy < rect.bottom() - 16.0 {
+                painter.text(
+                    Pos2::new(rect.left() + 2.0, sy - 2.0),
+                    Align2::LEFT_BOTTOM,
+                    format_metres(y, spacing),
+                    font.clone(),
+                    text,
+                );
+            }
+            y += spacing;
+        }
+    }
+
+    pub(super) fn draw_scale_bar(&self, painter: &egui::Painter, rect: Rect) {
+        let metres = nice_length(120.0 / self.view.pixels_per_metre);
+        let length = (metres * self.view.pixels_per_metre) as f32;
+        let start = Pos2::new(rect.right() - length - 20.0, rect.bottom() - 22.0);
+        let end = start + Vec2::new(length, 0.0);
+        let stroke = Stroke::new(2.0, Color32::from_gray(60));
+        // On a backing, so that it reads over whatever is under it.
+        painter.rect_filled(
+            Rect::from_min_max(start - Vec2::new(8.0, 24.0), end + Vec2::new(8.0, 10.0)),
+            4.0,
+            Color32::from_rgba_unmultiplied(250, 250, 247, 220),
+        );
+        painter.line_segment([start, end], stroke);
+        painter.line_segment(
+            [start - Vec2::new(0.0, 5.0), start + Vec2::new(0.0, 5.0)],
+            stroke,
+        );
+        painter.line_segment(
+            [end - Vec2::new(0.0, 5.0), end + Vec2::new(0.0, 5.0)],
+            stroke,
+        );
+        painter.text(
+            start + Vec2::new(length / 2.0, -6.0),
+            Align2::CENTER_BOTTOM,
+            format_metres(metres, metres),
+            FontId::proportional(12.0),
+            Color32::from_gray(60),
+        );
+    }
+
+    #[expect(
+        clippy::too_many_lines,
+        reason = "one pass over every kind of object, in drawing order"
+    )]
+    #[expect(
+        clippy::too_many_arguments,
+        reason = "what is drawn, where, and what the user points at"
+    )]
+    pub(super) fn draw_scene(
+        &self,
+        painter: &egui::Painter,
+        rect: Rect,
+        scene: &Scene,
+        frame: &Frame,
+        runner: &Runner,
+        selection: Option<Selection>,
+        hovered: Option<Selection>,
+    ) {
+        let view = &self.view;
+        // Names are placed after everything is drawn, the selected and hovered first,
+        // each only where it overlaps no name already placed.
+        let mut labels: Vec<(bool, Pos2, &str)> = Vec::new();
+        let screen = |p: DVec2| view.to_screen(rect, p);
+        let scale = view.pixels_per_metre as f32;
+        let highlight = Color32::from_rgb(255, 196, 0);
+        if let Some(bounds) = scene.world.bounds {
+            let box_rect =
+                Rect::from_two_pos(screen(bounds.min.to_dvec2()), screen(bounds.max.to_dvec2()));
+            painter.rect_stroke(
+                box_rect,
+                0.0,
+                Stroke::new(2.0, Color32::from_gray(90)),
+                egui::StrokeKind::Outside,
+            );
+        }
+        for (i, ramp) in scene.ramps.iter().enumerate() {
+            let (a, b) = (screen(ramp.from.to_dvec2()), screen(ramp.to.to_dvec2()));
+            let width = (ramp.thickness as f32 * scale).max(2.0);
+            let colour = Color32::from_rgb(150, 120, 90);
+            if selection == Some(Selection::Ramp(i)) {
+                painter.line_segment([a, b], Stroke::new(width + 6.0, highlight));
+            }
+            painter.line_segment([a, b], Stroke::new(width, colour));
+            painter.circle_filled(a, width / 2.0, colour);
+            painter.circle_filled(b, width / 2.0, colour);
+            let pointed = [selection, hovered].contains(&Some(Selection::Ramp(i)));
+            if self.overlays.names || pointed {
+                labels.push((
+                    pointed,
+                    a.lerp(b, 0.5) + Vec2::new(0.0, -width / 2.0 - 4.0),
+                    &ramp.name,
+                ));
+            }
+        }
+        if self.overlays.trails {
+            for (i, trail) in runner.trails.iter().enumerate() {
+                let colour = particle_colour(scene, i).gamma_multiply(0.45);
+                let points: Vec<Pos2> = trail.iter().map(|p| screen(*p)).collect();
+                if points.len() > 1 {
+                    painter.add(Shape::line(points, PathStroke::new(1.5, colour)));
+                }
+            }
+        }
+        for (i, spring) in scene.springs.iter().enumerate() {
+            let Some((a, b)) = spring_ends(scene, spring, &frame.positions) else {
+                continue;
+            };
+            let selected = selection == Some(Selection::Spring(i));
+            let stroke = Stroke::new(
+                if selected { 3.0 } else { 1.6 },
+                if selected {
+                    highlight
+                } else {
+                    Color32::from_rgb(70, 70, 90)
+                },
+            );
+            painter.add(Shape::line(coil(screen(a), screen(b)), stroke));
+            for (e, p) in [(&spring.from, a), (&spring.to, b)] {
+                if matches!(e, Endpoint::Point(_)) {
+                    anchor(painter, screen(p));
+                }
+            }
+        }
+        let many = scene.particles.len() > 150;
+        // A crowd is drawn as one mesh of plain discs: egui's anti-aliased, outlined
+        // circles cost ten times as many triangles, which software rendering feels.
+        let mut crowd = egui::Mesh::default();
+        let crowd_slot = painter.add(Shape::Noop);
+        for (i, particle) in scene.particles.iter().enumerate() {
+            let Some(&position) = frame.positions.get(i) else {
+                continue;
+            };
+            let centre = screen(position);
+            let radius = (particle.radius as f32 * scale).max(2.0);
+            if !rect.expand(radius).contains(centre) {
+                continue;
+            }
+            let colour = particle_colour(scene, i);
+            if selection == Some(Selection::Particle(i)) {
+                painter.circle_filled(centre, radius + 4.0, highlight);
+            }
+            if many {
+                disc(&mut crowd, centre, radius, colour);
+            } else {
+                painter.circle(
+                    centre,
+                    radius,
+                    colour,
+                    Stroke::new(1.0, colour.gamma_multiply(0.6)),
+                );
+            }
+            if particle.fixed {
+                anchor(painter, centre);
+            }
+            let pointed = [selection, hovered].contains(&Some(Selection::Particle(i)));
+            if (self.overlays.names && !many) || pointed {
+                labels.push((
+                    pointed,
+                    centre - Vec2::new(0.0, radius + 2.0),
+                    &particle.name,
+                ));
+            }
+            if self.overlays.velocity && (!many || selection == Some(Selection::Particle(i))) {
+                let v = frame.velocities[i];
+                if v.length() > 0.0 {
+                    arrow(
+                        painter,
+                        centre,
+                        screen(position + v * VELOCITY_ARROW_SECONDS),
+                        Color32::from_rgb(40, 150, 70),
+                    );
+                }
+            }
+            if let Some(accelerations) = &frame.accelerations {
+                let a = accelerations[i];
+                if self.overlays.acceleration && a.length() > 0.0 {
+                    let tip =
+                        position + a * (0.5 * VELOCITY_ARROW_SECONDS * VELOCITY_ARROW_SECONDS);
+                    arrow(
+                        painter,
+                        centre,
+                        screen(tip),
+                        Color32::from_rgb(230, 130, 30),
+                    );
+                }
+                if self.overlays.force && a.length() > 0.0 && !particle.fixed {
+                    let force = a * particle.mass;
+                    let pixels = (force.length().log10() + 2.0).clamp(0.5, 6.0) * 14.0;
+                    let direction = force.normalize();
+                    let tip =
+                        centre + Vec2::new(direction.x as f32, -direction.y as f32) * pixels as f32;
+                    arrow(painter, centre, tip, Color32::from_rgb(200, 40, 40));
+                }
+            }
+        }
+        painter.set(crowd_slot, Shape::mesh(crowd));
+        place_labels(painter, labels);
+    }
+
+    pub(super) fn draw_drag_preview(&self, painter: &egui::Painter, rect: Rect, frame: &Frame) {
+        let screen = |p: DVec2| self.view.to_screen(rect, p);
+        match self.drag {
+            Some(Drag::NewSpring { from, tip }) => {
+                if let Some(&a) = frame.positions.get(from) {
+                    painter.add(Shape::line(
+                        coil(screen(a), screen(tip)),
+                        Stroke::new(1.6, Color32::from_rgb(70, 70, 200)),
+                    ));
+                }
+            }
+            Some(Drag::NewRamp { from, to }) => {
+                painter.line_segment(
+                    [screen(from), screen(to)],
+                    Stroke::new(
+                        (Ramp::DEFAULT_THICKNESS * self.view.pixels_per_metre).max(2.0) as f32,
+                        Color32::from_rgba_unmultiplied(150, 120, 90, 160),
+                    ),
+                );
+            }
+            _ => {}
+        }
+    }
+}
+
+/// Draws each name centred above its point, the pointed-at ones first, skipping any
+/// that would overlap a name already drawn: a crowded scene shows some names, never a
+/// smear of them (the rest appear on hover).
+fn place_labels(painter: &egui::Painter, mut labels: Vec<(bool, Pos2, &str)>) {
+    labels.sort_by_key(|(pointed, _, _)| !pointed);
+    let mut placed: Vec<Rect> = Vec::new();
+    for (pointed, at, name) in labels {
+        let colour = if pointed {
+            Color32::from_gray(10)
+        } else {
+            Color32::from_gray(60)
+        };
+        let galley = painter.layout_no_wrap(name.to_owned(), FontId::proportional(12.0), colour);
+        let rect = Align2::CENTER_BOTTOM.anchor_size(at, galley.size());
+        if placed.iter().any(|r| r.intersects(rect)) {
+            continue;
+        }
+        placed.push(rect.expand(1.0));
+        painter.galley(rect.min, galley, colour);
+    }
+}
+
+/// Where a spring's ends are, given the particles' positions.
+pub(super) fn spring_ends(
+    scene: &Scene,
+    spring: &Spring,
+    positions: &[DVec2],
+) -> Option<(DVec2, DVec2)> {
+    let end = |e: &Endpoint| match e {
+        Endpoint::Particle(name) => scene
+            .particle_index(name)
+            .and_then(|k| positions.get(k).copied()),
+        Endpoint::Point(p) => Some(p.to_dvec2()),
+    };
+    Some((end(&spring.from)?, end(&spring.to)?))
+}
+
+/// Adds a filled disc to `mesh` as a fan of triangles, finer for larger discs.
+fn disc(mesh: &mut egui::Mesh, centre: Pos2, radius: f32, colour: Color32) {
+    let segments = (radius * 1.5).clamp(8.0, 32.0) as u32;
+    let first = mesh.vertices.len() as u32;
+    mesh.colored_vertex(centre, colour);
+    for k in 0..segments {
+        let angle = std::f32::consts::TAU * k as f32 / segments as f32;
+        mesh.colored_vertex(centre + Vec2::angled(angle) * radius, colour);
+    }
+    for k in 0..segments {
+        mesh.add_triangle(first, first + 1 + k, first + 1 + (k + 1) % segments);
+    }
+}
+
+fn particle_colour(scene: &Scene, i: usize) -> Color32 {
+    let [r, g, b] = scene.particles[i]
+        .color
+        .unwrap_or_else(|| physics::Color::palette(i))
+        .0;
+    Color32::from_rgb(r, g, b)
+}
+
+/// The zig-zag of a spring from `a` to `b`, with a straight lead at each end.
+fn coil(a: Pos2, b: Pos2) -> Vec<Pos2> {
+    let (d, length) = (b - a, (b - a).length());
+    if length < 1.0 {
+        return vec![a, b];
+    }
+    let (along, across) = (d / length, Vec2::new(-d.y, d.x) / length);
+    let width = (length * 0.08).clamp(3.0, 9.0);
+    let turns = 12;
+    let lead = length * 0.1;
+    let mut points = vec![a, a + along * lead];
+    for k in 1..turns * 2 {
+        let t = lead + (length - 2.0 * lead) * k as f32 / (turns * 2) as f32;
+        let side = if k % 2 == 0 { -width } else { width };
+        points.push(a + along * t + across * side);
+    }
+    points.push(b - along * lead);
+    points.push(b);
+    points
+}
+
+/// A fixed point's mark: a small hatched triangle.
+fn anchor(painter: &egui::Painter, at: Pos2) {
+    let stroke = Stroke::new(1.5, Color32::from_gray(50));
+    let (left, right) = (at + Vec2::new(-7.0, 10.0), at + Vec2::new(7.0, 10.0));
+    painter.add(Shape::closed_line(vec![at, left, right], stroke));
+    for k in 0..4 {
+        let x = -7.0 + 4.5 * k as f32;
+        painter.line_segment(
+            [at + Vec2::new(x, 10.0), at + Vec2::new(x - 3.0, 14.0)],
+            stroke,
+        );
+    }
+}
+
+fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, colour: Color32) {
+    let d = to - from;
+    if d.length() < 2.0 {
+        return;
+    }
+    painter.arrow(from, d, Stroke::new(2.0, colour));
+}

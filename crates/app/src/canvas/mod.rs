@@ -1,0 +1,374 @@
+//! The world on screen: metres, y up. Zoom (wheel or pinch, around the pointer) and pan,
+//! a grid with labelled metre ticks and a scale bar; particles, springs as coils, ramps
+//! as thick segments, fixed points as anchors; velocity, acceleration and force arrows
+//! and trails. While no simulation runs the scene can be edited here with the tools.
+//!
+//! In parts: `view.rs` (the transform, fitting and following), `draw.rs` (painting),
+//! `tools.rs` (one gesture handler per tool). This file holds the canvas's state and its
+//! frame: what to show, where the camera goes, then drawing and input.
+
+// World coordinates are f64 metres, screen coordinates f32 points: the conversions
+// narrow on purpose, and pixel counts are small positive numbers.
+#![expect(
+    clippy::cast_possible_truncation,
+    clippy::cast_sign_loss,
+    reason = "f64 world to f32 screen, see above"
+)]
+
+mod draw;
+mod tools;
+mod view;
+
+use egui::{Color32, Pos2, Rect, Sense, Ui, Vec2};
+use physics::{DVec2, Endpoint, Follow, Particle, Scene, Section};
+
+use crate::document::Document;
+use crate::recording::Recording;
+use crate::run_loop::Runner;
+use tools::Drag;
+pub use tools::keep_form;
+pub use view::{View, nice_length};
+
+/// What a click or drag on the canvas does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Tool {
+    Select,
+    Particle,
+    Spring,
+    Ramp,
+}
+
+impl Tool {
+    pub const ALL: [Self; 4] = [Self::Select, Self::Particle, Self::Spring, Self::Ramp];
+
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Select => "Select",
+            Self::Particle => "Particle",
+            Self::Spring => "Spring",
+            Self::Ramp => "Ramp",
+        }
+    }
+
+    pub fn hint(self) -> &'static str {
+        match self {
+            Self::Select => {
+                "Select and move objects; drag a velocity arrow's tip to set the velocity; drag empty space to pan (1)"
+            }
+            Self::Particle => "Click the canvas to place a particle (2)",
+            Self::Spring => {
+                "Drag from a particle to another particle, or to empty space for a fixed point (3)"
+            }
+            Self::Ramp => "Drag to draw a ramp (4)",
+        }
+    }
+}
+
+/// The selected object.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Selection {
+    Particle(usize),
+    Spring(usize),
+    Ramp(usize),
+}
+
+impl Selection {
+    /// The scene section of the selected object.
+    pub fn section(self) -> Section {
+        match self {
+            Self::Particle(i) => Section::Particle(i),
+            Self::Spring(i) => Section::Spring(i),
+            Self::Ramp(i) => Section::Ramp(i),
+        }
+    }
+}
+
+/// Which overlays are drawn.
+#[derive(Clone, Copy, Debug)]
+#[expect(clippy::struct_excessive_bools, reason = "independent on/off toggles")]
+pub struct Overlays {
+    pub velocity: bool,
+    pub acceleration: bool,
+    pub force: bool,
+    pub trails: bool,
+    pub names: bool,
+}
+
+impl Default for Overlays {
+    fn default() -> Self {
+        Self {
+            velocity: true,
+            acceleration: false,
+            force: false,
+            trails: false,
+            names: true,
+        }
+    }
+}
+
+/// Seconds of motion a velocity arrow shows: its tip is where the particle would be.
+pub const VELOCITY_ARROW_SECONDS: f64 = 0.5;
+
+/// How the view is to be set at the next frame, once the canvas's size is known.
+#[derive(Clone, Debug, PartialEq)]
+enum Framing {
+    /// Everything in the scene, with the recent paths.
+    Fit,
+    /// The scene file's `[view]`: a centre and a width, each defaulting to the fit's.
+    Scene(physics::View),
+}
+
+pub struct Canvas {
+    pub view: View,
+    pub tool: Tool,
+    pub overlays: Overlays,
+    /// What the camera keeps in view while a run plays.
+    pub follow: Option<Follow>,
+    /// Where the followed particle was at the last frame.
+    followed: Option<DVec2>,
+    drag: Option<Drag>,
+    framing: Option<Framing>,
+    /// The canvas rectangle of the last frame, for fitting from menus.
+    pub rect: Rect,
+}
+
+impl Default for Canvas {
+    fn default() -> Self {
+        Self {
+            view: View {
+                center: DVec2::ZERO,
+                pixels_per_metre: 30.0,
+            },
+            tool: Tool::Select,
+            overlays: Overlays::default(),
+            follow: None,
+            followed: None,
+            drag: None,
+            framing: Some(Framing::Fit),
+            rect: Rect::from_min_size(Pos2::ZERO, Vec2::new(800.0, 600.0)),
+        }
+    }
+}
+
+/// Positions and velocities to draw: the simulation's while one exists, else the scene's.
+struct Frame {
+    positions: Vec<DVec2>,
+    velocities: Vec<DVec2>,
+    accelerations: Option<Vec<DVec2>>,
+}
+
+impl Canvas {
+    /// Fits the view to the scene and the recent paths at the next frame.
+    pub fn request_fit(&mut self) {
+        self.framing = Some(Framing::Fit);
+    }
+
+    /// Frames a scene that was just opened as its file says (`[view]`), or fits it.
+    pub fn open(&mut self, scene: &Scene) {
+        self.follow = scene.view.as_ref().and_then(|v| v.follow.clone());
+        self.framing = Some(scene.view.clone().map_or(Framing::Fit, Framing::Scene));
+    }
+
+    /// The camera as a scene's `[view]`, to save with it: the centre on a step of a
+    /// hundredth of the grid, the width to four digits, so the file reads cleanly.
+    pub fn scene_view(&self) -> physics::View {
+        let step = nice_length(80.0 / self.view.pixels_per_metre) / 100.0;
+        let width = f64::from(self.rect.width()) / self.view.pixels_per_metre;
+        let digits = 10_f64.powf(width.log10().floor() - 3.0);
+        physics::View {
+            center: Some((self.view.center / step).round() * step),
+            width: Some((width / digits).round() * digits),
+            follow: self.follow.clone(),
+        }
+    }
+
+    /// The box around everything in the scene, and around `paths` too.
+    pub fn scene_box(
+        scene: &Scene,
+        positions: &[DVec2],
+        paths: impl IntoIterator<Item = DVec2>,
+    ) -> Option<(DVec2, DVec2)> {
+        let mut points: Vec<DVec2> = paths.into_iter().collect();
+        for (p, x) in scene.particles.iter().zip(positions) {
+            points.push(*x - DVec2::splat(p.radius));
+            points.push(*x + DVec2::splat(p.radius));
+        }
+        for ramp in &scene.ramps {
+            points.push(ramp.from.to_dvec2());
+            points.push(ramp.to.to_dvec2());
+        }
+        for spring in &scene.springs {
+            for end in [&spring.from, &spring.to] {
+                if let Endpoint::Point(p) = end {
+                    points.push(p.to_dvec2());
+                }
+            }
+        }
+        if let Some(bounds) = scene.world.bounds {
+            points.push(bounds.min.to_dvec2());
+            points.push(bounds.max.to_dvec2());
+        }
+        let first = *points.first()?;
+        Some(
+            points
+                .iter()
+                .filter(|p| p.is_finite())
+                .fold((first, first), |(lo, hi), p| (lo.min(*p), hi.max(*p))),
+        )
+    }
+
+    /// Draws the canvas and handles its input.
+    pub fn ui(
+        &mut self,
+        ui: &mut Ui,
+        document: &mut Document,
+        runner: &Runner,
+        selection: &mut Option<Selection>,
+    ) {
+        let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click_and_drag());
+        let rect = response.rect;
+        self.rect = rect;
+        let frame = self.frame(document.scene(), runner);
+        self.place_camera(document.scene(), &frame, runner);
+        let editable = runner.simulation.is_none();
+
+        // Zoom around the pointer, and pinch.
+        if let Some(pointer) = response.hover_pos() {
+            let (scroll, pinch) = ui.input(|i| (i.smooth_scroll_delta.y, i.zoom_delta()));
+            let factor = f64::from(pinch) * (f64::from(scroll) * 0.0025).exp();
+            if (factor - 1.0).abs() > 1e-6 {
+                self.view.zoom_at(rect, pointer, factor);
+            }
+        }
+        if response.dragged_by(egui::PointerButton::Secondary)
+            || response.dragged_by(egui::PointerButton::Middle)
+        {
+            self.pan(response.drag_delta());
+        }
+
+        painter.rect_filled(rect, 0.0, Color32::from_rgb(250, 250, 247));
+        self.draw_grid(&painter, rect);
+        let hovered = response
+            .hover_pos()
+            .and_then(|p| self.hit(rect, document.scene(), &frame, p));
+        self.draw_scene(
+            &painter,
+            rect,
+            document.scene(),
+            &frame,
+            runner,
+            *selection,
+            hovered,
+        );
+        self.draw_scale_bar(&painter, rect);
+
+        if editable {
+            self.edit(ui, &response, rect, document, &frame, selection);
+        } else if response.clicked() {
+            let pointer = response.interact_pointer_pos().unwrap_or(rect.center());
+            *selection = self.hit(rect, document.scene(), &frame, pointer);
+        } else if response.dragged_by(egui::PointerButton::Primary) {
+            self.pan(response.drag_delta());
+            // Panning by hand stops following.
+            self.follow = None;
+        }
+        self.draw_drag_preview(&painter, rect, &frame);
+    }
+
+    /// Sets the view as asked (fit, the scene's framing), then follows while running.
+    fn place_camera(&mut self, scene: &Scene, frame: &Frame, runner: &Runner) {
+        let rect = self.rect;
+        let paths = runner.trails.iter().flatten().copied();
+        match self.framing.take() {
+            Some(Framing::Fit) => {
+                if let Some((min, max)) = Self::scene_box(scene, &frame.positions, paths) {
+                    self.view.fit(rect, min, max);
+                }
+            }
+            Some(Framing::Scene(wanted)) => {
+                if let Some((min, max)) = Self::scene_box(scene, &frame.positions, paths) {
+                    self.view.fit(rect, min, max);
+                }
+                if let Some(center) = wanted.center {
+                    self.view.center = center;
+                }
+                if let Some(width) = wanted.width {
+                    self.view.pixels_per_metre = f64::from(rect.width()) / width;
+                }
+            }
+            None => {}
+        }
+        if runner.simulation.is_none() {
+            self.followed = None;
+            return;
+        }
+        match &self.follow {
+            Some(Follow::Particle(name)) => {
+                if let Some(&position) = scene
+                    .particle_index(name)
+                    .and_then(|i| frame.positions.get(i))
+                {
+                    // The camera moves with the particle, and closes any offset smoothly.
+                    let moved = self.followed.map_or(DVec2::ZERO, |last| position - last);
+                    self.view.center += moved;
+                    self.view.glide_to(position, self.view.pixels_per_metre);
+                    self.followed = Some(position).filter(|p| p.is_finite());
+                }
+            }
+            Some(Follow::All) => {
+                if let Some((min, max)) = frame
+                    .positions
+                    .iter()
+                    .zip(&scene.particles)
+                    .map(|(x, p)| (*x - DVec2::splat(p.radius), *x + DVec2::splat(p.radius)))
+                    .reduce(|(a, b), (c, d)| (a.min(c), b.max(d)))
+                {
+                    self.view.keep_in_view(rect, min, max);
+                }
+            }
+            None => {}
+        }
+    }
+
+    fn pan(&mut self, delta: Vec2) {
+        self.view.center -=
+            DVec2::new(f64::from(delta.x), -f64::from(delta.y)) / self.view.pixels_per_metre;
+    }
+
+    /// What to draw: the run's state, the last good state of a run that failed, or the
+    /// scene as edited.
+    fn frame(&self, scene: &Scene, runner: &Runner) -> Frame {
+        if runner.failure.is_some()
+            && let Some((positions, velocities)) =
+                runner.recording.as_ref().and_then(Recording::last_state)
+        {
+            return Frame {
+                positions,
+                velocities,
+                accelerations: None,
+            };
+        }
+        if let Some(simulation) = &runner.simulation {
+            let needs_acceleration = self.overlays.acceleration || self.overlays.force;
+            Frame {
+                positions: simulation.positions().to_vec(),
+                velocities: simulation.velocities().to_vec(),
+                accelerations: needs_acceleration.then(|| simulation.accelerations()),
+            }
+        } else {
+            Frame {
+                positions: scene
+                    .particles
+                    .iter()
+                    .map(|p| p.position.to_dvec2())
+                    .collect(),
+                velocities: scene
+                    .particles
+                    .iter()
+                    .map(Particle::initial_velocity)
+                    .collect(),
+                accelerations: None,
+            }
+        }
+    }
+}

@@ -1,0 +1,336 @@
+//! The editing gestures, one handler per tool: Select (move particles and ramps, drag a
+//! ramp's end or a velocity arrow's tip, pan empty space), Particle (click to place),
+//! Spring (drag from a particle to a particle or a fixed point), Ramp (drag to draw).
+//! A gesture starts where the pointer went down, not where egui noticed the drag, and
+//! places points on a grid step chosen from the zoom (hold Alt to place freely).
+
+use egui::{Pos2, Rect, Ui};
+use physics::{DVec2, Endpoint, Particle, Ramp, Scene, Spring, Vector};
+
+use super::view::nice_length;
+use super::{Canvas, Frame, Selection, Tool, VELOCITY_ARROW_SECONDS};
+use crate::document::Document;
+
+/// A drag in progress.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Drag {
+    Pan,
+    Particle { index: usize, grab: DVec2 },
+    Ramp { index: usize, last: DVec2 },
+    RampEnd { index: usize, to: bool },
+    Velocity { index: usize },
+    NewSpring { from: usize, tip: DVec2 },
+    NewRamp { from: DVec2, to: DVec2 },
+}
+
+impl Canvas {
+    /// The object under `pointer`, nearest first: particles, then ramps, then springs.
+    pub(super) fn hit(
+        &self,
+        rect: Rect,
+        scene: &Scene,
+        frame: &Frame,
+        pointer: Pos2,
+    ) -> Option<Selection> {
+        let world = self.view.to_world(rect, pointer);
+        let tolerance = 6.0 / self.view.pixels_per_metre;
+        let particle = scene
+            .particles
+            .iter()
+            .enumerate()
+            .filter_map(|(i, p)| {
+                frame
+                    .positions
+                    .get(i)
+                    .map(|x| (i, x.distance(world) - p.radius))
+            })
+            .filter(|(_, d)| *d <= tolerance)
+            .min_by(|a, b| a.1.total_cmp(&b.1));
+        if let Some((i, _)) = particle {
+            return Some(Selection::Particle(i));
+        }
+        for (i, ramp) in scene.ramps.iter().enumerate() {
+            if segment_distance(world, ramp.from.to_dvec2(), ramp.to.to_dvec2())
+                <= ramp.thickness / 2.0 + tolerance
+            {
+                return Some(Selection::Ramp(i));
+            }
+        }
+        for (i, spring) in scene.springs.iter().enumerate() {
+            if let Some((a, b)) = super::draw::spring_ends(scene, spring, &frame.positions)
+                && segment_distance(world, a, b) <= 2.0 * tolerance
+            {
+                return Some(Selection::Spring(i));
+            }
+        }
+        None
+    }
+
+    /// The editing gestures of this frame: a press starts the current tool's gesture,
+    /// a drag moves it on, a release finishes it, a click places or selects.
+    pub(super) fn edit(
+        &mut self,
+        ui: &Ui,
+        response: &egui::Response,
+        rect: Rect,
+        document: &mut Document,
+        frame: &Frame,
+        selection: &mut Option<Selection>,
+    ) {
+        if self.drag.is_some_and(|drag| drag.is_gone(document.scene())) {
+            // Its object is gone (undone mid-drag, say): the gesture ends quietly.
+            self.drag = None;
+            document.end_gesture();
+        }
+        let (pointer, origin, free) = ui.input(|i| {
+            (
+                i.pointer.interact_pos(),
+                i.pointer.press_origin(),
+                i.modifiers.alt,
+            )
+        });
+        let pointer = pointer.unwrap_or(rect.center());
+        let world = self.view.to_world(rect, pointer);
+        let step = (!free).then(|| self.snap_step());
+        let snap = |p: DVec2| step.map_or(p, |step| (p / step).round() * step);
+
+        if response.drag_started_by(egui::PointerButton::Primary) {
+            // Where the pointer went down, not where it is once egui calls it a drag.
+            let start = origin.unwrap_or(pointer);
+            self.drag = match self.tool {
+                Tool::Select => Some(self.press_select(rect, document, frame, selection, start)),
+                Tool::Spring => match self.hit(rect, document.scene(), frame, start) {
+                    Some(Selection::Particle(from)) => Some(Drag::NewSpring {
+                        from,
+                        tip: self.view.to_world(rect, start),
+                    }),
+                    _ => None,
+                },
+                Tool::Ramp => {
+                    let from = snap(self.view.to_world(rect, start));
+                    Some(Drag::NewRamp { from, to: from })
+                }
+                Tool::Particle => None,
+            };
+        }
+        if response.dragged_by(egui::PointerButton::Primary) {
+            self.drag_to(response.drag_delta(), world, &snap, document, frame);
+        }
+        if response.drag_stopped_by(egui::PointerButton::Primary) {
+            self.release(rect, document, frame, selection);
+        }
+        if response.clicked() {
+            let at = response.interact_pointer_pos().unwrap_or(pointer);
+            match self.tool {
+                Tool::Particle => {
+                    let name = document.unused_name("p");
+                    let position = snap(self.view.to_world(rect, at));
+                    let mut particle = Particle::new(name, 1.0).position(position);
+                    particle.radius = nice_length(12.0 / self.view.pixels_per_metre).min(0.5);
+                    document.apply("add particle", |scene| scene.particles.push(particle));
+                    *selection = Some(Selection::Particle(document.scene().particles.len() - 1));
+                }
+                _ => *selection = self.hit(rect, document.scene(), frame, at),
+            }
+        }
+    }
+
+    /// The snapping grid: a tenth of the drawn grid's spacing.
+    fn snap_step(&self) -> f64 {
+        nice_length(80.0 / self.view.pixels_per_metre) / 10.0
+    }
+
+    /// Select: a press on a velocity arrow's tip, a ramp's end, a particle or a ramp
+    /// grabs it; on empty space it pans.
+    fn press_select(
+        &self,
+        rect: Rect,
+        document: &mut Document,
+        frame: &Frame,
+        selection: &mut Option<Selection>,
+        start: Pos2,
+    ) -> Drag {
+        let scene = document.scene();
+        let at = self.view.to_world(rect, start);
+        let tolerance = 8.0 / self.view.pixels_per_metre;
+        let velocity_tip = scene.particles.iter().enumerate().find(|(i, p)| {
+            !p.fixed
+                && self.overlays.velocity
+                && frame.positions[*i].distance(at) > p.radius
+                && (frame.positions[*i] + frame.velocities[*i] * VELOCITY_ARROW_SECONDS)
+                    .distance(at)
+                    <= tolerance
+        });
+        let ramp_end = scene.ramps.iter().enumerate().find_map(|(i, r)| {
+            if r.from.to_dvec2().distance(at) <= tolerance {
+                Some((i, false))
+            } else if r.to.to_dvec2().distance(at) <= tolerance {
+                Some((i, true))
+            } else {
+                None
+            }
+        });
+        let (drag, label, selected) = if let Some((index, _)) = velocity_tip {
+            (
+                Drag::Velocity { index },
+                "set velocity",
+                Selection::Particle(index),
+            )
+        } else if let Some((index, to)) = ramp_end {
+            (
+                Drag::RampEnd { index, to },
+                "move ramp end",
+                Selection::Ramp(index),
+            )
+        } else {
+            match self.hit(rect, scene, frame, start) {
+                Some(Selection::Particle(index)) => (
+                    Drag::Particle {
+                        index,
+                        grab: at - frame.positions[index],
+                    },
+                    "move particle",
+                    Selection::Particle(index),
+                ),
+                Some(Selection::Ramp(index)) => (
+                    Drag::Ramp { index, last: at },
+                    "move ramp",
+                    Selection::Ramp(index),
+                ),
+                _ => return Drag::Pan,
+            }
+        };
+        *selection = Some(selected);
+        document.begin_gesture(label);
+        drag
+    }
+
+    /// The gesture follows the pointer, at `world`; `snap` puts a point on the grid.
+    fn drag_to(
+        &mut self,
+        delta: egui::Vec2,
+        world: DVec2,
+        snap: &dyn Fn(DVec2) -> DVec2,
+        document: &mut Document,
+        frame: &Frame,
+    ) {
+        match &mut self.drag {
+            Some(Drag::Pan) => self.pan(delta),
+            Some(Drag::Particle { index, grab }) => {
+                let (index, target) = (*index, snap(world - *grab));
+                document.apply("move particle", |scene| {
+                    let particle = &mut scene.particles[index];
+                    particle.position = keep_form(particle.position, target);
+                });
+            }
+            Some(Drag::Ramp { index, last }) => {
+                let (index, delta) = (*index, world - *last);
+                *last = world;
+                document.apply("move ramp", |scene| {
+                    let ramp = &mut scene.ramps[index];
+                    ramp.from = keep_form(ramp.from, ramp.from.to_dvec2() + delta);
+                    ramp.to = keep_form(ramp.to, ramp.to.to_dvec2() + delta);
+                });
+            }
+            Some(Drag::RampEnd { index, to }) => {
+                let (index, to) = (*index, *to);
+                document.apply("move ramp end", |scene| {
+                    let ramp = &mut scene.ramps[index];
+                    let end = if to { &mut ramp.to } else { &mut ramp.from };
+                    *end = keep_form(*end, snap(world));
+                });
+            }
+            Some(Drag::Velocity { index }) => {
+                let index = *index;
+                let velocity = (world - frame.positions[index]) / VELOCITY_ARROW_SECONDS;
+                document.apply("set velocity", |scene| {
+                    let particle = &mut scene.particles[index];
+                    particle.velocity = keep_form(particle.velocity, velocity);
+                });
+            }
+            Some(Drag::NewSpring { tip, .. }) => *tip = world,
+            Some(Drag::NewRamp { to, .. }) => *to = snap(world),
+            None => {}
+        }
+    }
+
+    /// The gesture ends: a new spring or ramp is added, a move becomes one undo step.
+    fn release(
+        &mut self,
+        rect: Rect,
+        document: &mut Document,
+        frame: &Frame,
+        selection: &mut Option<Selection>,
+    ) {
+        let tolerance = 8.0 / self.view.pixels_per_metre;
+        match self.drag.take() {
+            Some(Drag::NewSpring { from, tip }) => {
+                let scene = document.scene();
+                let target = match self.hit(rect, scene, frame, self.view.to_screen(rect, tip)) {
+                    Some(Selection::Particle(to)) if to != from => {
+                        Endpoint::Particle(scene.particles[to].name.clone())
+                    }
+                    Some(Selection::Particle(_)) => return,
+                    _ => Endpoint::Point(tip.into()),
+                };
+                let natural_length = match &target {
+                    Endpoint::Particle(name) => scene
+                        .particle_index(name)
+                        .map_or(1.0, |k| frame.positions[k].distance(frame.positions[from])),
+                    Endpoint::Point(p) => p.to_dvec2().distance(frame.positions[from]),
+                };
+                let spring = Spring::new(
+                    document.unused_name("s"),
+                    scene.particles[from].name.as_str(),
+                    target,
+                    10.0,
+                    natural_length,
+                );
+                document.apply("add spring", |scene| scene.springs.push(spring));
+                *selection = Some(Selection::Spring(document.scene().springs.len() - 1));
+            }
+            Some(Drag::NewRamp { from, to }) => {
+                if from.distance(to) > tolerance {
+                    let name = document.unused_name("r");
+                    document.apply("add ramp", |scene| {
+                        scene.ramps.push(Ramp::new(name, from, to));
+                    });
+                    *selection = Some(Selection::Ramp(document.scene().ramps.len() - 1));
+                }
+            }
+            _ => document.end_gesture(),
+        }
+    }
+}
+
+impl Drag {
+    /// Whether the object this drag holds no longer exists.
+    fn is_gone(self, scene: &Scene) -> bool {
+        match self {
+            Self::Particle { index, .. }
+            | Self::Velocity { index }
+            | Self::NewSpring { from: index, .. } => index >= scene.particles.len(),
+            Self::Ramp { index, .. } | Self::RampEnd { index, .. } => index >= scene.ramps.len(),
+            Self::Pan | Self::NewRamp { .. } => false,
+        }
+    }
+}
+
+/// A new value for a vector, in the form (Cartesian or polar) it was typed in.
+pub fn keep_form(old: Vector, new: DVec2) -> Vector {
+    match old {
+        Vector::Cartesian(_) => Vector::Cartesian(new),
+        Vector::Polar { .. } => Vector::Cartesian(new).to_polar(),
+    }
+}
+
+/// Distance from `p` to the segment `a`–`b`.
+fn segment_distance(p: DVec2, a: DVec2, b: DVec2) -> f64 {
+    let ab = b - a;
+    let s = if ab.length_squared() > 0.0 {
+        ((p - a).dot(ab) / ab.length_squared()).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    p.distance(a + ab * s)
+}

@@ -1,0 +1,84 @@
+//! Numbers for people: plain decimals with about six significant digits and a unit, the
+//! way a teacher writes them on a board (15.7378 J, 0.000123 m), switching to powers of
+//! ten only far from 1 (6.6742 × 10⁻¹¹). Full precision stays in the inspector's fields,
+//! the CSV exports and the command line.
+
+/// `value` to about six significant digits.
+pub fn number(value: f64) -> String {
+    if value == 0.0 {
+        return "0".to_owned();
+    }
+    if !value.is_finite() {
+        return value.to_string();
+    }
+    let exponent = value.abs().log10().floor();
+    if (-4.0..6.0).contains(&exponent) {
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a small count of decimals"
+        )]
+        let decimals = (5.0 - exponent).max(0.0) as usize;
+        let text = format!("{value:.decimals$}");
+        trim_zeros(&text)
+    } else {
+        let mantissa = value / 10_f64.powf(exponent);
+        format!(
+            "{} × 10{}",
+            trim_zeros(&format!("{mantissa:.4}")),
+            superscript(exponent)
+        )
+    }
+}
+
+/// `value` and its unit: "15.7378 J".
+pub fn with_unit(value: f64, unit: &str) -> String {
+    if unit.is_empty() {
+        number(value)
+    } else {
+        format!("{} {unit}", number(value))
+    }
+}
+
+/// "1.2500" → "1.25", "3.000" → "3".
+fn trim_zeros(text: &str) -> String {
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_owned()
+    } else {
+        text.to_owned()
+    }
+}
+
+#[expect(
+    clippy::cast_possible_truncation,
+    reason = "an exponent of an f64 fits an i32"
+)]
+fn superscript(exponent: f64) -> String {
+    (exponent as i32)
+        .to_string()
+        .chars()
+        .map(|c| match c {
+            '-' => '⁻',
+            d => ['⁰', '¹', '²', '³', '⁴', '⁵', '⁶', '⁷', '⁸', '⁹']
+                [d.to_digit(10).unwrap_or(0) as usize],
+        })
+        .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_read_as_a_person_writes_them() {
+        assert_eq!(number(15.737_825_81), "15.7378");
+        assert_eq!(number(-0.827_688_218_144_400_7), "-0.827688");
+        assert_eq!(number(3.0), "3");
+        assert_eq!(number(0.000_123), "0.000123");
+        assert_eq!(number(123_456.7), "123457");
+        assert_eq!(number(6.6742e-11), "6.6742 × 10⁻¹¹");
+        assert_eq!(number(8.988e9), "8.988 × 10⁹");
+        assert_eq!(number(0.0), "0");
+        assert_eq!(with_unit(-1.2e-11, "J"), "-1.2 × 10⁻¹¹ J");
+    }
+}

@@ -1,0 +1,249 @@
+//! The run's recording: every plottable quantity of every particle and of the system,
+//! sampled at the simulation's own instants from Play on, so a graph can be switched to
+//! another axis, a series added late or the whole run exported without losing anything.
+//!
+//! Samples are taken every `stride` steps, at t₀ + k·stride·dt exactly (the instants the
+//! simulation computes, never a frame's irregular time), the first at Play. Memory is
+//! bounded: when the samples fill [`BUDGET`] numbers, every other one is dropped and the
+//! stride doubles, so a run of any length keeps its whole span at a resolution that
+//! halves as it grows. At a 1 ms step the first samples are 5 ms apart; a two-particle
+//! scene keeps that resolution for about three hours of simulated time.
+
+use physics::{DVec2, Of, Quantity, Simulation, Total};
+
+/// Numbers kept at most: 32 MiB of f64.
+pub const BUDGET: usize = 1 << 22;
+/// The first samples are this far apart (or one step, if steps are longer), seconds.
+const FIRST_INTERVAL: f64 = 0.005;
+/// Numbers per particle per sample: x, y, vx, vy, ax, ay, kinetic energy.
+const PER_PARTICLE: usize = 7;
+/// System numbers per sample, after the particles'.
+const TOTALS: [Total; 5] = Total::ALL;
+
+#[derive(Clone, Debug)]
+pub struct Recording {
+    /// The particles' names at Play, in simulation order.
+    names: Vec<String>,
+    /// Numbers per sample: t, then each particle's, then the totals.
+    width: usize,
+    /// Samples, one after another.
+    data: Vec<f64>,
+    /// Steps between samples.
+    stride: u64,
+    /// The simulation's step count at the first sample.
+    first_step: u64,
+    /// Numbers kept at most.
+    budget: usize,
+}
+
+impl Recording {
+    /// A recording of `simulation` with its first sample taken now.
+    pub fn start(simulation: &Simulation) -> Self {
+        let dt = simulation.time_step();
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a small positive count of steps"
+        )]
+        let stride = (FIRST_INTERVAL / dt).floor().max(1.0) as u64;
+        let mut recording = Self {
+            names: simulation.names().to_vec(),
+            width: 1 + PER_PARTICLE * simulation.len() + TOTALS.len(),
+            data: Vec::new(),
+            stride,
+            first_step: simulation.steps_taken(),
+            budget: BUDGET,
+        };
+        recording.sample(simulation);
+        recording
+    }
+
+    /// Takes a sample if this step is one of the recorded instants.
+    pub fn after_step(&mut self, simulation: &Simulation) {
+        let steps = simulation.steps_taken() - self.first_step;
+        if steps.is_multiple_of(self.stride) {
+            self.sample(simulation);
+        }
+    }
+
+    fn sample(&mut self, simulation: &Simulation) {
+        if self.data.len() + self.width > self.budget.max(2 * self.width) {
+            self.thin();
+        }
+        let accelerations = simulation.accelerations();
+        self.data.push(simulation.time());
+        for i in 0..simulation.len() {
+            let p = simulation.particle(i, &accelerations);
+            self.data.extend([
+                p.position.x,
+                p.position.y,
+                p.velocity.x,
+                p.velocity.y,
+                p.acceleration.x,
+                p.acceleration.y,
+                p.kinetic_energy,
+            ]);
+        }
+        let d = simulation.diagnostics();
+        self.data.extend(TOTALS.map(|total| match total {
+            Total::KineticEnergy => d.energy.kinetic,
+            Total::PotentialEnergy => d.energy.potential(),
+            Total::TotalEnergy => d.energy.total(),
+            Total::MomentumX => d.momentum.x,
+            Total::MomentumY => d.momentum.y,
+        }));
+    }
+
+    /// Keeps samples 0, 2, 4, …: the instants of twice the stride.
+    fn thin(&mut self) {
+        let width = self.width;
+        let kept: Vec<f64> = self
+            .data
+            .chunks_exact(width)
+            .step_by(2)
+            .flatten()
+            .copied()
+            .collect();
+        self.data = kept;
+        self.stride *= 2;
+    }
+
+    /// The number of samples.
+    pub fn len(&self) -> usize {
+        self.data.len() / self.width
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.data.is_empty()
+    }
+
+    /// Steps between samples.
+    pub fn stride(&self) -> u64 {
+        self.stride
+    }
+
+    fn row(&self, k: usize) -> &[f64] {
+        &self.data[k * self.width..(k + 1) * self.width]
+    }
+
+    /// The value of `quantity` at sample `k`; `None` for a particle not in the run.
+    pub fn value(&self, k: usize, quantity: &Quantity) -> Option<f64> {
+        let row = self.row(k);
+        match quantity {
+            Quantity::Time => Some(row[0]),
+            Quantity::Particle(name, of) => {
+                let i = self.names.iter().position(|n| n == name)?;
+                let p = particle(row, i);
+                Some(match of {
+                    Of::X => p[0],
+                    Of::Y => p[1],
+                    Of::Vx => p[2],
+                    Of::Vy => p[3],
+                    Of::Speed => p[2].hypot(p[3]),
+                    Of::Ax => p[4],
+                    Of::Ay => p[5],
+                    Of::KineticEnergy => p[6],
+                })
+            }
+            Quantity::Total(total) => {
+                let j = TOTALS.iter().position(|t| t == total)?;
+                Some(row[self.width - TOTALS.len() + j])
+            }
+        }
+    }
+
+    /// Whether the run had a particle of this name.
+    pub fn has(&self, quantity: &Quantity) -> bool {
+        match quantity {
+            Quantity::Particle(name, _) => self.names.contains(name),
+            _ => true,
+        }
+    }
+
+    /// The positions and velocities at the last sample: the last good state of a run
+    /// that failed after it.
+    pub fn last_state(&self) -> Option<(Vec<DVec2>, Vec<DVec2>)> {
+        let k = self.len().checked_sub(1)?;
+        let row = self.row(k);
+        let n = self.names.len();
+        Some((
+            (0..n)
+                .map(|i| DVec2::new(particle(row, i)[0], particle(row, i)[1]))
+                .collect(),
+            (0..n)
+                .map(|i| DVec2::new(particle(row, i)[2], particle(row, i)[3]))
+                .collect(),
+        ))
+    }
+
+    /// The time of the last sample.
+    pub fn last_time(&self) -> Option<f64> {
+        self.len().checked_sub(1).map(|k| self.row(k)[0])
+    }
+
+    /// The system quantities at the last sample.
+    pub fn last_total(&self, total: Total) -> Option<f64> {
+        self.len()
+            .checked_sub(1)
+            .and_then(|k| self.value(k, &Quantity::Total(total)))
+    }
+}
+
+/// Particle `i`'s numbers in a sample's row.
+fn particle(row: &[f64], i: usize) -> &[f64] {
+    let first = 1 + PER_PARTICLE * i;
+    &row[first..first + PER_PARTICLE]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use physics::{Particle, Scene, World};
+
+    /// A ball thrown up in a uniform field: every sample is at a multiple of the stride's
+    /// instants and holds the closed-form motion, however often the recording is thinned.
+    #[test]
+    fn samples_are_at_the_steps_instants_and_thinning_keeps_the_span() {
+        let scene = Scene::new()
+            .with_world(World::default())
+            .with_particle(Particle::new("ball", 2.0).velocity([1.0, 20.0]));
+        let mut simulation = Simulation::new(&scene).unwrap();
+        let mut recording = Recording::start(&simulation);
+        assert_eq!(recording.stride(), 5, "5 ms at 1 ms steps");
+        let budget_samples = 100;
+        recording.budget = budget_samples * recording.width;
+        let steps = 2 * 5 * budget_samples as u64 + 7;
+        for _ in 0..steps {
+            simulation.step().unwrap();
+            recording.after_step(&simulation);
+        }
+        assert!(recording.stride() >= 10, "thinned at least once");
+        assert!(recording.len() <= budget_samples, "within the budget");
+        let dt = 0.001 * recording.stride() as f64;
+        for k in [0, 1, recording.len() / 2, recording.len() - 1] {
+            let t = recording.value(k, &Quantity::Time).unwrap();
+            assert!((t - k as f64 * dt).abs() < 1e-9, "sample {k} at {t}");
+            let y = recording
+                .value(k, &Quantity::Particle("ball".into(), Of::Y))
+                .unwrap();
+            // rk4 is exact for constant acceleration up to rounding.
+            let expected = 20.0 * t - 0.5 * 9.81 * t * t;
+            assert!(
+                (y - expected).abs() < 1e-6,
+                "y({t}) = {y}, expected {expected}"
+            );
+            let kinetic = recording
+                .value(k, &Quantity::Total(Total::KineticEnergy))
+                .unwrap();
+            let vy = 20.0 - 9.81 * t;
+            assert!(
+                (kinetic - (1.0 + vy * vy)).abs() < 1e-6,
+                "kinetic energy at {t}"
+            );
+        }
+        assert_eq!(
+            recording.value(0, &Quantity::Particle("nobody".into(), Of::X)),
+            None
+        );
+    }
+}

@@ -1,0 +1,110 @@
+//! Edits that are rules of the scene rather than of any one screen: a renamed particle's
+//! springs, graphs and camera follow it; a deleted particle takes its springs and its
+//! graph series with it. The app's inspector, canvas and keyboard all edit through these.
+
+use super::{Endpoint, Scene, Section};
+
+impl Scene {
+    /// The name of the object of `section`, if there is one.
+    pub fn name_of(&self, section: Section) -> Option<&str> {
+        match section {
+            Section::Particle(i) => self.particles.get(i).map(|p| p.name.as_str()),
+            Section::Spring(i) => self.springs.get(i).map(|s| s.name.as_str()),
+            Section::Ramp(i) => self.ramps.get(i).map(|r| r.name.as_str()),
+            _ => None,
+        }
+    }
+
+    /// Renames the object of `section`; everything that names a renamed particle (spring
+    /// ends, graph series, the camera) follows it. Nothing happens for a section that is
+    /// not an object.
+    pub fn rename(&mut self, section: Section, new: &str) {
+        let Some(old) = self.name_of(section).map(str::to_owned) else {
+            return;
+        };
+        match section {
+            Section::Particle(i) => {
+                new.clone_into(&mut self.particles[i].name);
+                for spring in &mut self.springs {
+                    for end in [&mut spring.from, &mut spring.to] {
+                        if matches!(end, Endpoint::Particle(name) if *name == old) {
+                            *end = Endpoint::Particle(new.to_owned());
+                        }
+                    }
+                }
+                self.rename_in_presentation(&old, new);
+            }
+            Section::Spring(i) => new.clone_into(&mut self.springs[i].name),
+            Section::Ramp(i) => new.clone_into(&mut self.ramps[i].name),
+            _ => {}
+        }
+    }
+
+    /// Removes the object of `section`. A particle takes with it the springs attached to
+    /// it and the graph series that plot it (a phase plot against it goes back to time).
+    pub fn remove(&mut self, section: Section) {
+        match section {
+            Section::Particle(i) if i < self.particles.len() => {
+                let name = self.particles.remove(i).name;
+                self.springs.retain(|s| {
+                    !matches!(&s.from, Endpoint::Particle(n) if *n == name)
+                        && !matches!(&s.to, Endpoint::Particle(n) if *n == name)
+                });
+                self.forget_in_presentation(&name);
+            }
+            Section::Spring(i) if i < self.springs.len() => {
+                self.springs.remove(i);
+            }
+            Section::Ramp(i) if i < self.ramps.len() => {
+                self.ramps.remove(i);
+            }
+            _ => {}
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::{Follow, Graph, Particle, Scene, Section, Spring, View};
+
+    fn two_balls() -> Scene {
+        let mut scene = Scene::new()
+            .with_particle(Particle::new("A", 1.0))
+            .with_particle(Particle::new("B", 1.0).position([1.0, 0.0]))
+            .with_spring(Spring::new("s1", "A", "B", 1.0, 1.0));
+        scene.graphs.push(Graph {
+            title: None,
+            x: "A.x".to_owned(),
+            y: vec!["A.vx".to_owned(), "B.y".to_owned()],
+        });
+        scene.view = Some(View {
+            follow: Some(Follow::Particle("A".to_owned())),
+            ..View::default()
+        });
+        scene
+    }
+
+    #[test]
+    fn a_renamed_particle_is_followed_by_its_springs_graphs_and_camera() {
+        let mut scene = two_balls();
+        scene.rename(Section::Particle(0), "C");
+        assert_eq!(scene.springs[0].from, "C".into());
+        assert_eq!(scene.graphs[0].x, "C.x");
+        assert_eq!(scene.graphs[0].y, ["C.vx", "B.y"]);
+        assert_eq!(
+            scene.view.unwrap().follow,
+            Some(Follow::Particle("C".to_owned()))
+        );
+    }
+
+    #[test]
+    fn a_deleted_particle_takes_its_springs_and_series() {
+        let mut scene = two_balls();
+        scene.remove(Section::Particle(0));
+        assert!(scene.springs.is_empty());
+        assert_eq!(scene.graphs[0].x, "t");
+        assert_eq!(scene.graphs[0].y, ["B.y"]);
+        assert_eq!(scene.view.as_ref().unwrap().follow, None);
+        assert!(scene.validate().is_empty());
+    }
+}

@@ -38,10 +38,10 @@ fn text_field(
     let mut draft: Draft = ui.data(|d| d.get_temp(id)).unwrap_or_default();
     let mut committed = None;
     ui.horizontal(|ui| {
-        let label = ui.add_sized([110.0, 18.0], egui::Label::new(label));
+        let label = ui.add_sized([96.0, 18.0], egui::Label::new(label));
         let mut text = draft.text.clone().unwrap_or_else(|| current.to_owned());
         let mut edit = egui::TextEdit::singleline(&mut text)
-            .desired_width(150.0)
+            .desired_width(130.0)
             .id(id.with("edit"));
         if draft.error.is_some() {
             edit = edit.text_color(ERROR);

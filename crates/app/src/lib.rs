@@ -55,6 +55,8 @@ pub struct Launch {
     pub play: bool,
     /// Measure this many frames while playing, print the frame times and close.
     pub measure_frames: Option<usize>,
+    /// Start in projector mode.
+    pub projector: bool,
 }
 
 /// Which side panels show, and projector mode (no panels, large text).
@@ -132,6 +134,7 @@ impl App {
         if launch.play {
             self.play_pause();
         }
+        self.panels.projector = launch.projector;
         self.launch = launch;
         self
     }
@@ -525,6 +528,11 @@ impl App {
                     Action::ToggleProjector,
                     true,
                 );
+                ui.menu_button("Follow", |ui| {
+                    toolbar::follow_menu(ui, &mut self.canvas, &self.document);
+                })
+                .response
+                .on_hover_text("Keep a particle, or all of them, in view while playing");
             })
             .response
             .on_hover_text("Framing, panels, projector mode");
@@ -634,6 +642,7 @@ impl App {
                 &mut self.canvas,
                 &mut self.document,
                 &self.runner,
+                self.panels.projector,
             ));
         });
         egui::Panel::bottom("status").show(ui, |ui| actions.extend(self.status(ui)));
@@ -642,7 +651,7 @@ impl App {
             // A fixed width: the canvas does not move when the selection changes.
             egui::Panel::left("inspector")
                 .resizable(false)
-                .exact_size(310.0)
+                .exact_size(290.0)
                 .show(ui, |ui| {
                     egui::ScrollArea::vertical().show(ui, |ui| {
                         ui.set_width(ui.available_width());
@@ -659,7 +668,7 @@ impl App {
         if side_panels && self.panels.graphs {
             egui::Panel::right("graphs")
                 .resizable(true)
-                .default_size(360.0)
+                .default_size(350.0)
                 .show(ui, |ui| {
                     egui::ScrollArea::vertical().show(ui, |ui| {
                         ui.set_width(ui.available_width());

@@ -9,7 +9,7 @@
 //! is an undoable change, saved with the file.
 
 use egui::Ui;
-use egui_plot::{Legend, Line, Plot, PlotPoints};
+use egui_plot::{AxisHints, Legend, Line, LineStyle, Plot, PlotPoints, VLine};
 use physics::{Graph, Of, Quantity, Total};
 
 use crate::action::Action;
@@ -250,7 +250,13 @@ impl Graphs {
         let every = samples.div_ceil(MAX_POINTS).max(1);
         Plot::new("graph")
             .legend(Legend::default())
-            .x_axis_label(label(&x))
+            // egui_plot's default hides x labels closer than 60 points, which on a panel
+            // this narrow leaves only "0"; a label that does not fit is still skipped.
+            .custom_x_axes(vec![
+                AxisHints::new_x()
+                    .label(label(&x))
+                    .label_spacing(24.0..=40.0),
+            ])
             .height(220.0)
             .show(ui, |plot| {
                 for q in &series {
@@ -264,8 +270,50 @@ impl Graphs {
                         .collect();
                     plot.line(Line::new(label(q), points));
                 }
+                if x == Quantity::Time {
+                    for t in impact_marks(recording, &series) {
+                        plot.vline(
+                            VLine::new("impacts", t)
+                                .color(egui::Color32::from_gray(140))
+                                .style(LineStyle::dashed_dense()),
+                        );
+                    }
+                }
             });
         action
+    }
+}
+
+/// Marks shown on a graph at most: more would be a grey smear.
+const MARKS: usize = 60;
+
+/// The instants of the impacts that involve the graph's particles (every impact, for a
+/// graph of system quantities), when there are few enough to mark legibly.
+pub fn impact_marks(recording: &Recording, series: &[Quantity]) -> Vec<f64> {
+    let particles: Vec<usize> = series
+        .iter()
+        .filter_map(|q| match q {
+            Quantity::Particle(name, _) => recording.index_of(name),
+            _ => None,
+        })
+        .collect();
+    let system = series.iter().any(|q| matches!(q, Quantity::Total(_)));
+    let involved = |impact: &physics::ImpactRecord| {
+        system
+            || particles.contains(&impact.particle)
+            || matches!(impact.other, physics::ImpactTarget::Particle(j) if particles.contains(&j))
+    };
+    let times: Vec<f64> = recording
+        .impacts()
+        .iter()
+        .filter(|i| involved(i))
+        .map(|i| i.time)
+        .take(MARKS + 1)
+        .collect();
+    if times.len() > MARKS {
+        Vec::new()
+    } else {
+        times
     }
 }
 
@@ -305,14 +353,11 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
     };
     let start = runner.start_energy;
     let drift = energy.total - start;
+    // As a share of the energy at Play; in joules when that was 0.
     let drift = if start == 0.0 {
-        format!("{} (started at 0 J)", format::with_unit(drift, "J"))
+        format::with_unit(drift, "J")
     } else {
-        format!(
-            "{} % of the starting {}",
-            format::number(100.0 * drift / start.abs()),
-            format::with_unit(start, "J")
-        )
+        format!("{} %", format::number(100.0 * drift / start.abs()))
     };
     egui::Grid::new("readouts")
         .num_columns(2)
@@ -326,6 +371,7 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
                     .map(|(name, value)| (*name, format::number(*value))),
             );
             rows.push(("total (J)", format::number(energy.total)));
+            rows.push(("total at Play (J)", format::number(start)));
             rows.push(("change since Play", drift));
             rows.push((
                 "momentum (kg·m/s)",

@@ -9,7 +9,7 @@
 //! halves as it grows. At a 1 ms step the first samples are 5 ms apart; a two-particle
 //! scene keeps that resolution for about three hours of simulated time.
 
-use physics::{DVec2, Of, Quantity, Simulation, Total};
+use physics::{DVec2, ImpactRecord, Of, Quantity, Simulation, Total};
 
 /// Numbers kept at most: 32 MiB of f64.
 pub const BUDGET: usize = 1 << 22;
@@ -34,7 +34,13 @@ pub struct Recording {
     first_step: u64,
     /// Numbers kept at most.
     budget: usize,
+    /// The impacts of the run, in time order, up to [`IMPACTS`].
+    impacts: Vec<ImpactRecord>,
 }
+
+/// Impacts kept at most; a pile of balls makes thousands a second, and past this many a
+/// graph could not mark them legibly anyway.
+pub const IMPACTS: usize = 100_000;
 
 impl Recording {
     /// A recording of `simulation` with its first sample taken now.
@@ -53,9 +59,26 @@ impl Recording {
             stride,
             first_step: simulation.steps_taken(),
             budget: BUDGET,
+            impacts: Vec::new(),
         };
         recording.sample(simulation);
         recording
+    }
+
+    /// Keeps the impacts of the last step (up to [`IMPACTS`] in all).
+    pub fn note_impacts(&mut self, impacts: Vec<ImpactRecord>) {
+        let room = IMPACTS.saturating_sub(self.impacts.len());
+        self.impacts.extend(impacts.into_iter().take(room));
+    }
+
+    /// The impacts recorded, in time order.
+    pub fn impacts(&self) -> &[ImpactRecord] {
+        &self.impacts
+    }
+
+    /// The run's particle index of `name`.
+    pub fn index_of(&self, name: &str) -> Option<usize> {
+        self.names.iter().position(|n| n == name)
     }
 
     /// Takes a sample if this step is one of the recorded instants.

@@ -70,7 +70,8 @@ impl Runner {
         if let Some(simulation) = self.simulation.take() {
             return Ok(self.simulation.insert(simulation));
         }
-        let simulation = Simulation::new(scene)?;
+        let mut simulation = Simulation::new(scene)?;
+        simulation.record_impacts();
         self.start_energy = simulation.diagnostics().energy.total();
         self.recording = Some(Recording::start(&simulation));
         self.trails = vec![VecDeque::new(); simulation.len()];
@@ -115,6 +116,7 @@ impl Runner {
             match simulation.step() {
                 Ok(()) => {
                     if let Some(recording) = &mut self.recording {
+                        recording.note_impacts(simulation.take_impacts());
                         recording.after_step(simulation);
                     }
                 }
@@ -149,6 +151,7 @@ impl Runner {
                 break;
             }
             if let Some(recording) = &mut self.recording {
+                recording.note_impacts(simulation.take_impacts());
                 recording.after_step(simulation);
             }
             self.debt -= step;

@@ -20,13 +20,16 @@ pub fn ui(
     canvas: &mut Canvas,
     document: &mut Document,
     runner: &Runner,
+    compact: bool,
 ) -> Option<Action> {
     let mut action = None;
     let editable = runner.simulation.is_none();
     let settings = document.scene().simulation.clone();
     ui.horizontal_wrapped(|ui| {
+        // Projector mode keeps the run controls only: the tools, the method and the
+        // overlays are for preparing a lesson, not for showing it.
         ui.add_enabled_ui(editable, |ui| {
-            for tool in Tool::ALL {
+            for tool in Tool::ALL.into_iter().filter(|_| !compact) {
                 if ui
                     .selectable_label(canvas.tool == tool, tool.label())
                     .on_hover_text(tool.hint())
@@ -61,11 +64,12 @@ pub fn ui(
             }
         }
         let mut time_scale = settings.time_scale;
+        ui.spacing_mut().slider_width = 70.0;
         let slider = ui
             .add(
                 egui::Slider::new(&mut time_scale, 0.01..=100.0)
                     .logarithmic(true)
-                    .text("× speed"),
+                    .text("×"),
             )
             .on_hover_text("Time scale: simulated seconds per real second (0.01× to 100×)");
         if slider.drag_started() {
@@ -81,6 +85,9 @@ pub fn ui(
         }
         ui.separator();
         ui.add_enabled_ui(editable, |ui| {
+            if compact {
+                return;
+            }
             let label = ui.label("integrator");
             egui::ComboBox::from_id_salt("toolbar-integrator")
                 .selected_text(settings.integrator.as_str())
@@ -132,16 +139,9 @@ pub fn ui(
         });
         ui.separator();
         let overlays = &mut canvas.overlays;
-        ui.toggle_value(&mut overlays.velocity, "velocity")
-            .on_hover_text("Velocity arrows (tip: where the particle will be in 0.5 s)");
-        ui.toggle_value(&mut overlays.acceleration, "acceleration")
-            .on_hover_text("Acceleration arrows");
-        ui.toggle_value(&mut overlays.force, "force")
-            .on_hover_text("Net force arrows (length grows with the logarithm of the force)");
-        ui.toggle_value(&mut overlays.trails, "trails")
-            .on_hover_text("Recent paths of the particles");
-        ui.toggle_value(&mut overlays.names, "names")
-            .on_hover_text("Object names");
+        if !compact {
+            overlays_ui(ui, overlays);
+        }
         if ui
             .button("Fit")
             .on_hover_text("Fit the scene and the recent paths in view (F)")
@@ -149,31 +149,38 @@ pub fn ui(
         {
             action = Some(Action::Fit);
         }
-        follow(ui, canvas, document);
     });
     action
 }
 
-/// What the camera follows: nothing, every particle, or one particle.
-fn follow(ui: &mut Ui, canvas: &mut Canvas, document: &Document) {
-    let label = ui.label("follow");
-    let shown = canvas
-        .follow
-        .as_ref()
-        .map_or("nothing", Follow::as_str)
-        .to_owned();
-    egui::ComboBox::from_id_salt("toolbar-follow")
-        .selected_text(shown)
-        .show_ui(ui, |ui| {
-            ui.selectable_value(&mut canvas.follow, None, "nothing");
-            ui.selectable_value(&mut canvas.follow, Some(Follow::All), "all")
-                .on_hover_text("Keep every particle in view");
+/// The toggles for what the canvas draws.
+fn overlays_ui(ui: &mut Ui, overlays: &mut crate::canvas::Overlays) {
+    ui.toggle_value(&mut overlays.velocity, "velocity")
+        .on_hover_text("Velocity arrows (tip: where the particle will be in 0.5 s)");
+    ui.toggle_value(&mut overlays.acceleration, "acceleration")
+        .on_hover_text("Acceleration arrows");
+    ui.toggle_value(&mut overlays.force, "force")
+        .on_hover_text("Net force arrows (length grows with the logarithm of the force)");
+    ui.toggle_value(&mut overlays.trails, "trails")
+        .on_hover_text("Recent paths of the particles");
+    ui.toggle_value(&mut overlays.names, "names")
+        .on_hover_text("Object names");
+}
+
+/// What the camera follows while playing (View → Follow): nothing, every particle, or
+/// one particle.
+pub fn follow_menu(ui: &mut Ui, canvas: &mut Canvas, document: &Document) {
+    ui.selectable_value(&mut canvas.follow, None, "nothing")
+        .on_hover_text("A still camera");
+    ui.selectable_value(&mut canvas.follow, Some(Follow::All), "all particles")
+        .on_hover_text("Keep every particle in view");
+    egui::ScrollArea::vertical()
+        .max_height(300.0)
+        .show(ui, |ui| {
             for particle in &document.scene().particles {
                 let target = Some(Follow::Particle(particle.name.clone()));
-                ui.selectable_value(&mut canvas.follow, target, &particle.name);
+                ui.selectable_value(&mut canvas.follow, target, &particle.name)
+                    .on_hover_text("Keep this particle at the centre");
             }
-        })
-        .response
-        .labelled_by(label.id)
-        .on_hover_text("Keep a particle, or all of them, in view while playing");
+        });
 }

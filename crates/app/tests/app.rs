@@ -10,7 +10,9 @@ use egui::{Key, Modifiers, Pos2};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use newtonlab_app::{Action, App, Recording, Selection, plots};
-use physics::{DVec2, Follow, Graph, Integrator, Particle, Scene, Spring, View, World};
+use physics::{
+    DVec2, Follow, Graph, Integrator, Of, Particle, Quantity, Scene, Spring, View, World,
+};
 
 fn harness(app: App) -> Harness<'static, App> {
     let mut harness = Harness::builder()
@@ -530,4 +532,34 @@ fn a_new_scene_has_no_pairwise_gravitation() {
     harness.run();
     assert!(!harness.state().document.scene().world.gravitation);
     assert_eq!(harness.state().title(), "untitled — NewtonLab");
+}
+
+/// An impact is marked on the graphs of the particles it involves, at its instant: two
+/// balls of radius 0.5 m, 5 m apart, one at 2 m/s, touch at t = (5 − 1)/2 = 2 s (the
+/// impact is located to 1e-9 s); a graph of a third ball has no mark.
+#[test]
+fn impacts_are_marked_on_the_graphs_of_the_particles_they_involve() {
+    let ball = |name: &str, x: f64| {
+        let mut p = Particle::new(name, 1.0).position([x, 0.0]);
+        p.radius = 0.5;
+        p
+    };
+    let scene = Scene::new()
+        .with_world(World::weightless())
+        .with_particle(ball("A", 0.0).velocity([2.0, 0.0]))
+        .with_particle(ball("B", 5.0))
+        .with_particle(ball("C", 0.0).position([0.0, 10.0]));
+    let mut harness = harness(App::new(scene));
+    play_frames(&mut harness, 30);
+    let recording = harness.state().runner.recording.as_ref().unwrap();
+    let of = |name: &str| vec![Quantity::Particle(name.to_owned(), Of::Vx)];
+    for involved in ["A", "B"] {
+        let marks = plots::impact_marks(recording, &of(involved));
+        assert_eq!(marks.len(), 1, "one impact for {involved}: {marks:?}");
+        assert!((marks[0] - 2.0).abs() < 1e-9, "at t = 2 s: {}", marks[0]);
+    }
+    assert!(
+        plots::impact_marks(recording, &of("C")).is_empty(),
+        "C is not involved"
+    );
 }

@@ -51,6 +51,9 @@ struct AppArgs {
     /// Play, measure this many frames, print the frame times and close.
     #[arg(long, value_name = "N")]
     measure_frames: Option<usize>,
+    /// Open in projector mode: the canvas alone, with large text (F11 switches).
+    #[arg(long)]
+    projector: bool,
 }
 
 /// Why a command failed, and the exit code that says so.
@@ -80,6 +83,7 @@ fn main() -> ExitCode {
             scene: None,
             play: false,
             measure_frames: None,
+            projector: false,
         }),
         Some(Command::App(args)) => open_app(&args),
         Some(Command::Run(args)) => run::run(&args),
@@ -101,8 +105,12 @@ fn open_app(args: &AppArgs) -> Result<(), Failure> {
     let mut app = match &args.scene {
         None => newtonlab_app::App::default(),
         Some(source) => {
-            let mut app = newtonlab_app::App::new(scene_source::load(source)?);
-            if !source.starts_with("example:") {
+            let scene = scene_source::load(source)?;
+            let title = scene.name.clone();
+            let mut app = newtonlab_app::App::new(scene);
+            if source.starts_with("example:") {
+                app.document.label = title;
+            } else {
                 app.document.mark_saved(source.clone());
             }
             app
@@ -111,6 +119,7 @@ fn open_app(args: &AppArgs) -> Result<(), Failure> {
     app = app.with_launch(newtonlab_app::Launch {
         play: args.play || args.measure_frames.is_some(),
         measure_frames: args.measure_frames,
+        projector: args.projector,
     });
     newtonlab_app::run_native(app).map_err(|e| {
         Failure::Simulation(format!(

@@ -227,6 +227,12 @@ impl Canvas {
     ) {
         let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click_and_drag());
         let rect = response.rect;
+        // A canvas that changes size (a panel hidden, projector mode, a resized window)
+        // still shows all it showed: the scale follows the dimension that shrank most.
+        if self.rect.area() > 0.0 && (rect.size() - self.rect.size()).length() > 0.5 {
+            let ratio = (rect.size() / self.rect.size()).min_elem();
+            self.view.pixels_per_metre *= f64::from(ratio.min(1.0));
+        }
         self.rect = rect;
         let frame = self.frame(document.scene(), runner);
         self.place_camera(document.scene(), &frame, runner);

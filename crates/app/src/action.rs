@@ -5,6 +5,7 @@
 use egui::{Key, KeyboardShortcut, Modifiers};
 
 use crate::canvas::Tool;
+use crate::picture::Subject;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Action {
@@ -14,6 +15,8 @@ pub enum Action {
     SaveAs,
     /// Export graph number N as CSV.
     ExportGraph(usize),
+    /// Save a picture of the canvas or a graph as PNG.
+    ExportPicture(Subject),
     Example(&'static str),
     Quit,
     Undo,

@@ -12,6 +12,8 @@ pub enum Purpose {
     Save,
     /// Export graph number N.
     ExportCsv(usize),
+    /// Save the picture waiting in the app.
+    ExportPng,
 }
 
 impl Purpose {
@@ -20,6 +22,7 @@ impl Purpose {
         match self {
             Self::Open | Self::Save => &["toml", "json"],
             Self::ExportCsv(_) => &["csv"],
+            Self::ExportPng => &["png"],
         }
     }
 }
@@ -143,7 +146,7 @@ impl Files {
             let verb = match dialog.purpose {
                 Purpose::Open => "Open",
                 Purpose::Save => "Save",
-                Purpose::ExportCsv(_) => "Export",
+                Purpose::ExportCsv(_) | Purpose::ExportPng => "Export",
             };
             let extensions = dialog.purpose.extensions();
             Modal::new(Id::unique("file-dialog")).show(ui.ctx(), |ui| {
@@ -152,6 +155,7 @@ impl Files {
                     Purpose::Open => "Open a scene",
                     Purpose::Save => "Save the scene",
                     Purpose::ExportCsv(_) => "Export the graph as CSV",
+                    Purpose::ExportPng => "Save the picture as PNG",
                 });
                 ui.horizontal(|ui| {
                     let label = ui.label("folder");

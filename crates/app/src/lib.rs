@@ -24,6 +24,7 @@ pub mod document;
 pub mod files;
 pub mod format;
 pub mod inspector;
+pub mod picture;
 pub mod platform;
 pub mod plots;
 pub mod recording;
@@ -95,6 +96,12 @@ pub struct App {
     quitting: bool,
     /// The scene was replaced: what was typed for the old one goes.
     forget_entries: bool,
+    /// A picture asked for: the screenshot is requested at the end of this frame…
+    picture_asked: Option<picture::Subject>,
+    /// …and arrives in a later one, through this slot.
+    picture_awaited: Option<(picture::Subject, picture::Slot)>,
+    /// A picture encoded, waiting for the file dialog's path.
+    picture_ready: Option<Vec<u8>>,
 }
 
 impl Default for App {
@@ -125,6 +132,9 @@ impl App {
             shown_title: String::new(),
             quitting: false,
             forget_entries: false,
+            picture_asked: None,
+            picture_awaited: None,
+            picture_ready: None,
         }
     }
 
@@ -166,6 +176,7 @@ impl App {
             Action::Save => self.save(),
             Action::SaveAs => self.save_as(),
             Action::ExportGraph(graph) => self.ask_export(graph),
+            Action::ExportPicture(subject) => self.picture_asked = Some(subject),
             Action::Example(name) => self.guard(Pending::Example(name)),
             Action::Quit => self.guard(Pending::Quit),
             Action::Undo => self.undo(),
@@ -438,6 +449,13 @@ impl App {
                 item(ui, "Save", "Save the scene", Action::Save, true);
                 item(
                     ui,
+                    "Save the canvas as PNG…",
+                    "A picture of the canvas as it is on screen",
+                    Action::ExportPicture(picture::Subject::Canvas),
+                    true,
+                );
+                item(
+                    ui,
                     "Save As…",
                     "Save the scene under another name",
                     Action::SaveAs,
@@ -686,13 +704,65 @@ impl App {
             Some(Choice::Path(Purpose::Open, path)) => self.open_path(&path),
             Some(Choice::Path(Purpose::Save, path)) => self.save_path(&path),
             Some(Choice::Path(Purpose::ExportCsv(graph), path)) => self.export_csv(&path, graph),
+            Some(Choice::Path(Purpose::ExportPng, path)) => self.save_picture(&path),
             Some(Choice::Discard(pending)) => self.proceed(pending),
             None => {}
         }
         for action in actions {
             self.perform(action);
         }
+        self.take_picture(ui);
         self.window(ui);
+    }
+
+    /// Asks for a screenshot when a picture was asked for, and turns the screenshot into
+    /// a PNG of the part wanted when it arrives.
+    fn take_picture(&mut self, ui: &Ui) {
+        if let Some(subject) = self.picture_asked.take() {
+            self.picture_awaited = Some((subject, picture::request(ui.ctx())));
+        }
+        let Some((subject, slot)) = &self.picture_awaited else {
+            return;
+        };
+        let (subject, Some(image)) = (*subject, picture::take(slot)) else {
+            return;
+        };
+        self.picture_awaited = None;
+        let rect = match subject {
+            picture::Subject::Canvas => self.canvas.rect,
+            picture::Subject::Graph(g) => self
+                .graphs
+                .rects
+                .get(g)
+                .copied()
+                .unwrap_or(egui::Rect::NOTHING),
+        };
+        match picture::png_of(&image, rect, ui.ctx().pixels_per_point()) {
+            Ok(bytes) => {
+                self.picture_ready = Some(bytes);
+                #[cfg(not(target_arch = "wasm32"))]
+                self.files
+                    .ask(Purpose::ExportPng, None, subject.file_name());
+                #[cfg(target_arch = "wasm32")]
+                self.save_picture(subject.file_name());
+            }
+            Err(message) => self.notify(message),
+        }
+    }
+
+    /// Writes the picture waiting to `path` (on the web: downloads it).
+    fn save_picture(&mut self, path: &str) {
+        let Some(bytes) = self.picture_ready.take() else {
+            return;
+        };
+        #[cfg(not(target_arch = "wasm32"))]
+        let written = platform::write_bytes(path, &bytes);
+        #[cfg(target_arch = "wasm32")]
+        let written = platform::web::download_bytes(path, &bytes, "image/png");
+        match written {
+            Ok(()) => self.notify(format!("Saved the picture to {path}.")),
+            Err(message) => self.notify(message),
+        }
     }
 
     /// The window's title, and closing it: never with unsaved changes unconfirmed.

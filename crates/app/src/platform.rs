@@ -17,7 +17,16 @@ pub fn read_text(path: &str) -> Result<String, String> {
 /// The operating system's reason, in words.
 #[cfg(not(target_arch = "wasm32"))]
 pub fn write_text(path: &str, text: &str) -> Result<(), String> {
-    std::fs::write(path, text).map_err(|e| format!("cannot write '{path}': {e}"))
+    write_bytes(path, text.as_bytes())
+}
+
+/// Writes `bytes` to the file at `path`, or says why it cannot.
+///
+/// # Errors
+/// The reason, naming the file.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn write_bytes(path: &str, bytes: &[u8]) -> Result<(), String> {
+    std::fs::write(path, bytes).map_err(|e| format!("cannot write '{path}': {e}"))
 }
 
 /// The entries of a folder, folders first, for the file dialog: (name, is a folder).
@@ -110,13 +119,21 @@ pub mod web {
     /// # Errors
     /// When the browser refuses (no document, no object URLs).
     pub fn download(name: &str, text: &str, mime: &str) -> Result<(), String> {
+        download_bytes(name, text.as_bytes(), mime)
+    }
+
+    /// Offers `bytes` as a download named `name`.
+    ///
+    /// # Errors
+    /// When the browser refuses.
+    pub fn download_bytes(name: &str, bytes: &[u8], mime: &str) -> Result<(), String> {
         let fail = |_| format!("the browser could not download '{name}'");
         let document = window().and_then(|w| w.document()).ok_or("no document")?;
-        let parts = js_sys::Array::of1(&JsValue::from_str(text));
+        let parts = js_sys::Array::of1(&js_sys::Uint8Array::from(bytes));
         let options = web_sys::BlobPropertyBag::new();
         options.set_type(mime);
-        let blob =
-            web_sys::Blob::new_with_str_sequence_and_options(&parts, &options).map_err(fail)?;
+        let blob = web_sys::Blob::new_with_u8_array_sequence_and_options(&parts, &options)
+            .map_err(fail)?;
         let url = web_sys::Url::create_object_url_with_blob(&blob).map_err(fail)?;
         let anchor = document
             .create_element("a")

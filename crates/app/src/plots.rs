@@ -15,6 +15,7 @@ use physics::{Graph, Of, Quantity, Total};
 use crate::action::Action;
 use crate::document::Document;
 use crate::format;
+use crate::picture::Subject;
 use crate::recording::Recording;
 use crate::run_loop::Runner;
 
@@ -28,6 +29,8 @@ type Edit = (&'static str, Box<dyn FnOnce(&mut Graph)>);
 #[derive(Default)]
 pub struct Graphs {
     choice: Vec<(usize, Of)>,
+    /// Where each graph's plot was drawn last frame, for its picture.
+    pub rects: Vec<egui::Rect>,
 }
 
 /// `A.vx (m/s)`, `total_energy (J)`, `t (s)`.
@@ -89,6 +92,7 @@ impl Graphs {
         let mut action = None;
         let count = document.scene().graphs.len();
         self.choice.resize(count, (0, Of::Y));
+        self.rects.resize(count, egui::Rect::NOTHING);
         for g in 0..count {
             ui.push_id(("graph", g), |ui| {
                 if let Some(a) = self.graph(ui, document, runner.recording.as_ref(), g) {
@@ -236,19 +240,30 @@ impl Graphs {
             });
         }
         let samples = recording.map_or(0, Recording::len);
-        if ui
-            .add_enabled(samples > 0, egui::Button::new("Export CSV…"))
-            .on_hover_text("Save every recorded sample of this graph's quantities as a CSV file")
-            .clicked()
-        {
-            action = Some(Action::ExportGraph(g));
-        }
+        ui.horizontal(|ui| {
+            if ui
+                .add_enabled(samples > 0, egui::Button::new("Export CSV…"))
+                .on_hover_text(
+                    "Save every recorded sample of this graph's quantities as a CSV file",
+                )
+                .clicked()
+            {
+                action = Some(Action::ExportGraph(g));
+            }
+            if ui
+                .add_enabled(samples > 0, egui::Button::new("Save PNG…"))
+                .on_hover_text("Save a picture of this graph as it is on screen")
+                .clicked()
+            {
+                action = Some(Action::ExportPicture(Subject::Graph(g)));
+            }
+        });
         let Some(recording) = recording else {
             ui.label("Press Play: the graph fills from the start of the run.");
             return action;
         };
         let every = samples.div_ceil(MAX_POINTS).max(1);
-        Plot::new("graph")
+        let shown = Plot::new("graph")
             .legend(Legend::default())
             // egui_plot's default hides x labels closer than 60 points, which on a panel
             // this narrow leaves only "0"; a label that does not fit is still skipped.
@@ -280,6 +295,7 @@ impl Graphs {
                     }
                 }
             });
+        self.rects[g] = shown.response.rect;
         action
     }
 }

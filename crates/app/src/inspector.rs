@@ -8,6 +8,7 @@
 use std::collections::HashMap;
 
 use egui::{Color32, Id, RichText, Ui};
+use physics::fields::{self, Field, Kind, Place, Value};
 use physics::{Endpoint, FieldRef, Rule, Scene, Section, Vector, check_value};
 
 use crate::action::Action;
@@ -41,7 +42,7 @@ fn text_field(
         let label = ui.add_sized([96.0, 18.0], egui::Label::new(label));
         let mut text = draft.text.clone().unwrap_or_else(|| current.to_owned());
         let mut edit = egui::TextEdit::singleline(&mut text)
-            .desired_width(130.0)
+            .desired_width(118.0)
             .id(id.with("edit"));
         if draft.error.is_some() {
             edit = edit.text_color(ERROR);
@@ -262,13 +263,29 @@ pub fn ui(
                     ui.label("Nothing selected: click an object on the canvas.");
                 }
                 Some(Selection::Particle(i)) if i < document.scene().particles.len() => {
-                    problem = particle(ui, document, i);
+                    problem = object(
+                        ui,
+                        document,
+                        Section::Particle(i),
+                        i,
+                        fields::PARTICLE,
+                        move |s| &mut s.particles[i],
+                    );
                 }
                 Some(Selection::Spring(i)) if i < document.scene().springs.len() => {
-                    problem = spring(ui, document, i);
+                    problem = object(
+                        ui,
+                        document,
+                        Section::Spring(i),
+                        i,
+                        fields::SPRING,
+                        move |s| &mut s.springs[i],
+                    );
                 }
                 Some(Selection::Ramp(i)) if i < document.scene().ramps.len() => {
-                    problem = ramp(ui, document, i);
+                    problem = object(ui, document, Section::Ramp(i), i, fields::RAMP, move |s| {
+                        &mut s.ramps[i]
+                    });
                 }
                 Some(_) => *selection = None,
             });
@@ -283,12 +300,29 @@ pub fn ui(
         egui::CollapsingHeader::new("World")
             .default_open(false)
             .show(ui, |ui| {
-                problem = problem.take().or_else(|| world(ui, document));
+                let id = Id::unique("world");
+                problem = problem.take().or_else(|| {
+                    table(ui, document, id, Section::World, 0, fields::WORLD, |s| {
+                        &mut s.world
+                    })
+                });
             });
         egui::CollapsingHeader::new("Simulation")
             .default_open(false)
             .show(ui, |ui| {
-                problem = problem.take().or_else(|| settings(ui, document));
+                // The integrator and the time step are in the tool bar.
+                let id = Id::unique("settings");
+                problem = problem.take().or_else(|| {
+                    table(
+                        ui,
+                        document,
+                        id,
+                        Section::Simulation,
+                        0,
+                        fields::SIMULATION,
+                        |s| &mut s.simulation,
+                    )
+                });
             });
     });
     ui.data_mut(|d| {
@@ -369,108 +403,6 @@ fn name_field(
     .err()
 }
 
-fn particle(ui: &mut Ui, document: &mut Document, i: usize) -> Option<String> {
-    let p = document.scene().particles[i].clone();
-    let id = Id::unique(("particle", i));
-    let section = Section::Particle(i);
-    let mut problem = name_field(ui, document, id.with("name"), section, &p.name);
-    let mut set =
-        |document: &mut Document, field: &'static str, change: &dyn Fn(&mut physics::Particle)| {
-            if let Err(message) = try_apply(
-                document,
-                &format!("set {field}"),
-                FieldRef { section, field },
-                |scene| change(&mut scene.particles[i]),
-            ) {
-                problem = Some(message);
-            }
-        };
-    if let Some(v) = number_field(
-        ui,
-        id.with("mass"),
-        "mass",
-        "kg",
-        p.mass,
-        Rule::Positive,
-        "Mass, kilograms, greater than 0",
-    ) {
-        set(document, "mass", &|p| p.mass = v);
-    }
-    if let Some(v) = number_field(
-        ui,
-        id.with("radius"),
-        "radius",
-        "m",
-        p.radius,
-        Rule::Positive,
-        "Radius, metres, greater than 0",
-    ) {
-        set(document, "radius", &|p| p.radius = v);
-    }
-    if let Some(v) = number_field(
-        ui,
-        id.with("charge"),
-        "charge",
-        "C",
-        p.charge,
-        Rule::Finite,
-        "Electric charge, coulombs",
-    ) {
-        set(document, "charge", &|p| p.charge = v);
-    }
-    if let Some(v) = vector_field(
-        ui,
-        id.with("position"),
-        "position",
-        "m",
-        p.position,
-        "Position, metres",
-    ) {
-        set(document, "position", &|p| p.position = v);
-    }
-    if let Some(v) = vector_field(
-        ui,
-        id.with("velocity"),
-        "velocity",
-        "m/s",
-        p.velocity,
-        "Velocity, metres per second",
-    ) {
-        set(document, "velocity", &|p| p.velocity = v);
-    }
-    if let Some(v) = vector_field(
-        ui,
-        id.with("acceleration"),
-        "acceleration",
-        "m/s²",
-        p.acceleration,
-        "A constant applied acceleration on top of all forces, m/s²",
-    ) {
-        set(document, "acceleration", &|p| p.acceleration = v);
-    }
-    let mut fixed = p.fixed;
-    if ui
-        .checkbox(&mut fixed, "fixed")
-        .on_hover_text("A fixed particle never moves; it still attracts, repels and is hit")
-        .changed()
-    {
-        set(document, "fixed", &|p| p.fixed = fixed);
-    }
-    let [r, g, b] = p.color.unwrap_or_else(|| physics::Color::palette(i)).0;
-    let mut rgb = [r, g, b];
-    ui.horizontal(|ui| {
-        ui.label("colour");
-        if ui
-            .color_edit_button_srgb(&mut rgb)
-            .on_hover_text("Display colour")
-            .changed()
-        {
-            set(document, "color", &|p| p.color = Some(physics::Color(rgb)));
-        }
-    });
-    problem
-}
-
 fn endpoint_field(
     ui: &mut Ui,
     id: Id,
@@ -520,305 +452,138 @@ fn endpoint_field(
     result
 }
 
-fn spring(ui: &mut Ui, document: &mut Document, i: usize) -> Option<String> {
-    let s = document.scene().springs[i].clone();
-    let id = Id::unique(("spring", i));
-    let section = Section::Spring(i);
-    let names: Vec<String> = document
+/// An object's name and then its fields from the table.
+fn object<T: Clone + 'static>(
+    ui: &mut Ui,
+    document: &mut Document,
+    section: Section,
+    index: usize,
+    fields: &[Field<T>],
+    access: impl Fn(&mut Scene) -> &mut T + Copy,
+) -> Option<String> {
+    let id = Id::unique(("object", section));
+    let name = document
         .scene()
-        .particles
-        .iter()
-        .map(|p| p.name.clone())
-        .collect();
-    let mut problem = name_field(ui, document, id.with("name"), section, &s.name);
-    let mut set =
-        |document: &mut Document, field: &'static str, change: &dyn Fn(&mut physics::Spring)| {
-            if let Err(message) = try_apply(
-                document,
-                &format!("set {field}"),
-                FieldRef { section, field },
-                |scene| change(&mut scene.springs[i]),
-            ) {
-                problem = Some(message);
-            }
-        };
-    if let Some(end) = endpoint_field(ui, id.with("from"), "from", &s.from, &names) {
-        set(document, "from", &|s| s.from = end.clone());
-    }
-    if let Some(end) = endpoint_field(ui, id.with("to"), "to", &s.to, &names) {
-        set(document, "to", &|s| s.to = end.clone());
-    }
-    if let Some(v) = number_field(
-        ui,
-        id.with("k"),
-        "stiffness",
-        "N/m",
-        s.stiffness,
-        Rule::NonNegative,
-        "k, newtons per metre, 0 or more",
-    ) {
-        set(document, "stiffness", &|s| s.stiffness = v);
-    }
-    if let Some(v) = number_field(
-        ui,
-        id.with("l0"),
-        "natural length",
-        "m",
-        s.natural_length,
-        Rule::NonNegative,
-        "The length at which the spring exerts no force, metres",
-    ) {
-        set(document, "natural_length", &|s| s.natural_length = v);
-    }
-    if let Some(v) = number_field(
-        ui,
-        id.with("b"),
-        "damping",
-        "N·s/m",
-        s.damping,
-        Rule::NonNegative,
-        "b: force −b·(relative velocity along the spring)",
-    ) {
-        set(document, "damping", &|s| s.damping = v);
-    }
-    problem
+        .name_of(section)
+        .unwrap_or_default()
+        .to_owned();
+    let problem = name_field(ui, document, id.with("name"), section, &name);
+    table(ui, document, id, section, index, fields, access).or(problem)
 }
 
-fn ramp(ui: &mut Ui, document: &mut Document, i: usize) -> Option<String> {
-    let r = document.scene().ramps[i].clone();
-    let id = Id::unique(("ramp", i));
-    let section = Section::Ramp(i);
-    let mut problem = name_field(ui, document, id.with("name"), section, &r.name);
-    let mut set =
-        |document: &mut Document, field: &'static str, change: &dyn Fn(&mut physics::Ramp)| {
-            if let Err(message) = try_apply(
-                document,
-                &format!("set {field}"),
-                FieldRef { section, field },
-                |scene| change(&mut scene.ramps[i]),
-            ) {
-                problem = Some(message);
-            }
-        };
-    if let Some(v) = vector_field(
-        ui,
-        id.with("from"),
-        "from",
-        "m",
-        r.from,
-        "One end of the ramp, metres",
-    ) {
-        set(document, "from", &|r| r.from = v);
-    }
-    if let Some(v) = vector_field(ui, id.with("to"), "to", "m", r.to, "The other end, metres") {
-        set(document, "to", &|r| r.to = v);
-    }
-    if let Some(v) = number_field(
-        ui,
-        id.with("t"),
-        "thickness",
-        "m",
-        r.thickness,
-        Rule::NonNegative,
-        "The ramp is every point within half this of its segment",
-    ) {
-        set(document, "thickness", &|r| r.thickness = v);
-    }
-    if let Some(v) = number_field(
-        ui,
-        id.with("e"),
-        "restitution",
-        "",
-        r.restitution,
-        Rule::Fraction,
-        "0 (no bounce) to 1 (perfectly elastic)",
-    ) {
-        set(document, "restitution", &|r| r.restitution = v);
-    }
-    if let Some(v) = number_field(
-        ui,
-        id.with("mu"),
-        "friction",
-        "",
-        r.friction,
-        Rule::NonNegative,
-        "Coefficient of static and kinetic friction",
-    ) {
-        set(document, "friction", &|r| r.friction = v);
-    }
-    problem
-}
-
-#[expect(
-    clippy::too_many_lines,
-    reason = "every field of the world, in the scene format's order"
-)]
-fn world(ui: &mut Ui, document: &mut Document) -> Option<String> {
-    let w = document.scene().world.clone();
-    let id = Id::unique("world");
+/// The fields of one section, as the field table describes them: each with its label,
+/// unit and help, checked by its rule, applied as one undoable edit. `palette` is the
+/// index whose palette colour a particle without one shows.
+fn table<T: Clone + 'static>(
+    ui: &mut Ui,
+    document: &mut Document,
+    id: Id,
+    section: Section,
+    palette: usize,
+    fields: &[Field<T>],
+    access: impl Fn(&mut Scene) -> &mut T + Copy,
+) -> Option<String> {
+    let mut scene = document.scene().clone();
+    let target = access(&mut scene).clone();
+    let names: Vec<String> = scene.particles.iter().map(|p| p.name.clone()).collect();
     let mut problem = None;
-    let mut set =
-        |document: &mut Document, field: &'static str, change: &dyn Fn(&mut physics::World)| {
-            if let Err(message) = try_apply(
-                document,
-                &format!("set {field}"),
-                FieldRef {
-                    section: Section::World,
-                    field,
-                },
-                |scene| change(&mut scene.world),
-            ) {
-                problem = Some(message);
-            }
+    for f in fields.iter().filter(|f| f.place == Place::Inspector) {
+        let field_id = id.with(f.key);
+        let Some(value) = field_ui(ui, field_id, f, (f.get)(&target), &names, palette) else {
+            continue;
         };
-    if let Some(v) = vector_field(
-        ui,
-        id.with("g"),
-        "gravity",
-        "m/s²",
-        w.gravity,
-        "The uniform field, m/s²",
-    ) {
-        set(document, "gravity", &|w| w.gravity = v);
+        let result = try_apply(
+            document,
+            &format!("set {}", f.key),
+            FieldRef {
+                section,
+                field: f.key,
+            },
+            |scene| (f.set)(access(scene), value),
+        );
+        if let Err(message) = result {
+            problem = Some(message);
+        }
     }
-    let mut on = w.gravitation;
+    problem
+}
+
+/// One field's widget; returns a new value the user committed.
+fn field_ui<T>(
+    ui: &mut Ui,
+    id: Id,
+    f: &Field<T>,
+    value: Value,
+    names: &[String],
+    palette: usize,
+) -> Option<Value> {
+    match (f.kind, value) {
+        (Kind::Number(rule), Value::Number(v)) => {
+            number_field(ui, id, f.label, f.unit, v, rule, f.help).map(Value::Number)
+        }
+        (Kind::Vector, Value::Vector(v)) => {
+            vector_field(ui, id, f.label, f.unit, v, f.help).map(Value::Vector)
+        }
+        (Kind::Bool, Value::Bool(mut on)) => ui
+            .checkbox(&mut on, f.label)
+            .on_hover_text(f.help)
+            .changed()
+            .then_some(Value::Bool(on)),
+        (Kind::Endpoint, Value::Endpoint(end)) => {
+            endpoint_field(ui, id, f.label, &end, names).map(Value::Endpoint)
+        }
+        (Kind::Color, Value::Color(color)) => {
+            let mut rgb = color.unwrap_or_else(|| physics::Color::palette(palette)).0;
+            ui.horizontal(|ui| {
+                ui.label(f.label);
+                ui.color_edit_button_srgb(&mut rgb)
+                    .on_hover_text(f.help)
+                    .changed()
+                    .then_some(Value::Color(Some(physics::Color(rgb))))
+            })
+            .inner
+        }
+        (Kind::Bounds, Value::Bounds(bounds)) => bounds_field(ui, id, f, bounds),
+        _ => None,
+    }
+}
+
+/// The world's box: a checkbox, and its corners when there is one.
+fn bounds_field<T>(
+    ui: &mut Ui,
+    id: Id,
+    f: &Field<T>,
+    bounds: Option<physics::Bounds>,
+) -> Option<Value> {
+    let mut boxed = bounds.is_some();
     if ui
-        .checkbox(&mut on, "gravitation between particles")
-        .on_hover_text("Newton's inverse-square attraction between every pair")
+        .checkbox(&mut boxed, f.label)
+        .on_hover_text(f.help)
         .changed()
     {
-        set(document, "gravitation", &|w| w.gravitation = on);
-    }
-    if let Some(v) = number_field(
-        ui,
-        id.with("G"),
-        "G",
-        "N·m²/kg²",
-        w.gravitational_constant,
-        Rule::Finite,
-        "The gravitational constant (the paper: 6.6742e-11)",
-    ) {
-        set(document, "gravitational_constant", &|w| {
-            w.gravitational_constant = v;
-        });
-    }
-    let mut on = w.electrostatics;
-    if ui
-        .checkbox(&mut on, "electrostatics")
-        .on_hover_text("Coulomb's law between charged particles")
-        .changed()
-    {
-        set(document, "electrostatics", &|w| w.electrostatics = on);
-    }
-    if let Some(v) = number_field(
-        ui,
-        id.with("k"),
-        "k",
-        "N·m²/C²",
-        w.coulomb_constant,
-        Rule::Finite,
-        "The Coulomb constant (8.988e9)",
-    ) {
-        set(document, "coulomb_constant", &|w| w.coulomb_constant = v);
-    }
-    if let Some(v) = number_field(
-        ui,
-        id.with("e"),
-        "restitution",
-        "",
-        w.restitution,
-        Rule::Fraction,
-        "Particle–particle impacts: 0 (sticky) to 1 (elastic)",
-    ) {
-        set(document, "restitution", &|w| w.restitution = v);
-    }
-    let mut boxed = w.bounds.is_some();
-    if ui
-        .checkbox(&mut boxed, "bounds")
-        .on_hover_text("A reflecting box around the world")
-        .changed()
-    {
-        let bounds = boxed.then(|| physics::Bounds {
+        return Some(Value::Bounds(boxed.then(|| physics::Bounds {
             min: Vector::cartesian(-20.0, -20.0),
             max: Vector::cartesian(20.0, 20.0),
-        });
-        set(document, "bounds", &|w| w.bounds = bounds);
+        })));
     }
-    if let Some(bounds) = w.bounds {
-        if let Some(v) = vector_field(
-            ui,
-            id.with("min"),
-            "min",
-            "m",
-            bounds.min,
-            "The box's lower-left corner",
-        ) {
-            set(document, "bounds", &|w| {
-                w.bounds = Some(physics::Bounds {
-                    min: v,
-                    max: bounds.max,
-                });
-            });
-        }
-        if let Some(v) = vector_field(
-            ui,
-            id.with("max"),
-            "max",
-            "m",
-            bounds.max,
-            "The box's upper-right corner",
-        ) {
-            set(document, "bounds", &|w| {
-                w.bounds = Some(physics::Bounds {
-                    min: bounds.min,
-                    max: v,
-                });
-            });
-        }
-    }
-    problem
-}
-
-fn settings(ui: &mut Ui, document: &mut Document) -> Option<String> {
-    let s = document.scene().simulation.clone();
-    let id = Id::unique("settings");
-    let mut problem = None;
-    // The integrator and the time step are chosen in the tool bar.
-    let mut set =
-        |document: &mut Document, field: &'static str, change: &dyn Fn(&mut physics::Settings)| {
-            if let Err(message) = try_apply(
-                document,
-                &format!("set {field}"),
-                FieldRef {
-                    section: Section::Simulation,
-                    field,
-                },
-                |scene| change(&mut scene.simulation),
-            ) {
-                problem = Some(message);
-            }
-        };
-    if let Some(v) = number_field(
+    let bounds = bounds?;
+    if let Some(min) = vector_field(
         ui,
-        id.with("tol"),
-        "tolerance",
-        "",
-        s.tolerance,
-        Rule::Positive,
-        "dopri5 only: error allowed per step, relative and absolute",
+        id.with("min"),
+        "min",
+        f.unit,
+        bounds.min,
+        "The box's lower-left corner",
     ) {
-        set(document, "tolerance", &|s| s.tolerance = v);
+        return Some(Value::Bounds(Some(physics::Bounds { min, ..bounds })));
     }
-    if let Some(v) = number_field(
+    vector_field(
         ui,
-        id.with("scale"),
-        "time scale",
-        "×",
-        s.time_scale,
-        Rule::Positive,
-        "Simulated seconds per real second when playing",
-    ) {
-        set(document, "time_scale", &|s| s.time_scale = v);
-    }
-    problem
+        id.with("max"),
+        "max",
+        f.unit,
+        bounds.max,
+        "The box's upper-right corner",
+    )
+    .map(|max| Value::Bounds(Some(physics::Bounds { max, ..bounds })))
 }

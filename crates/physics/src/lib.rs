@@ -91,6 +91,7 @@ pub use examples::{EXAMPLES, Example, example};
 pub use glam::DVec2;
 pub use integrators::{Integrator, UnknownIntegrator};
 pub use profile::{Clock, Profile, Stage};
+pub use scene::fields;
 pub use scene::format::{LoadError, Problem, SceneFormat};
 pub use scene::{
     Bounds, Color, Endpoint, FieldRef, Follow, Graph, Of, Particle, Quantity, Ramp, Rule, Scene,

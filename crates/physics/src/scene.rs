@@ -6,6 +6,7 @@
 //! into runtime state; [`Scene::validate`] lists everything wrong with one.
 
 mod edit;
+pub mod fields;
 pub mod format;
 mod presentation;
 mod validate;

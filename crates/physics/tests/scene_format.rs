@@ -352,3 +352,60 @@ y = ["B.x", "A.z", "t"]
         ]
     );
 }
+
+/// Every default in the field table is the default: a file that writes it out loads to
+/// the same scene as a file that leaves it out.
+#[test]
+fn the_field_tables_defaults_are_the_defaults() {
+    use physics::fields::{self, Field};
+    fn check<T>(header: &str, required: &str, fields: &[Field<T>]) {
+        let bare = format!("version = 1\n{header}\n{required}");
+        let expected = Scene::from_toml(&bare).expect("valid");
+        for f in fields {
+            let Some(default) = f.default.filter(|d| {
+                d.starts_with(['[', '"', '-'])
+                    || d.starts_with(|c: char| c.is_ascii_digit())
+                    || *d == "true"
+                    || *d == "false"
+            }) else {
+                continue; // "none", "a palette colour": no value to write
+            };
+            let text = format!("version = 1\n{header}\n{required}{} = {default}\n", f.key);
+            let written = Scene::from_toml(&text).unwrap_or_else(|e| panic!("{}: {e}", f.key));
+            assert_eq!(written, expected, "{header} {} = {default}", f.key);
+        }
+    }
+    check("[world]", "", fields::WORLD);
+    check("[simulation]", "", fields::SIMULATION);
+    check(
+        "[[particle]]",
+        "mass = 1.0\nposition = [0.0, 0.0]\n",
+        fields::PARTICLE,
+    );
+    check(
+        "[[particle]]\nname = \"A\"\nmass = 1.0\nposition = [0.0, 0.0]\n[[spring]]",
+        "from = \"A\"\nto = [1.0, 0.0]\nstiffness = 1.0\nnatural_length = 1.0\n",
+        fields::SPRING,
+    );
+    check(
+        "[[ramp]]",
+        "from = [0.0, 0.0]\nto = [1.0, 0.0]\n",
+        fields::RAMP,
+    );
+}
+
+/// The reference in docs/scene-format.md is the field table's: change a field and this
+/// fails until the docs say the same (the message has the text to paste).
+#[test]
+fn the_docs_reference_is_the_field_table() {
+    let docs = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/../../docs/scene-format.md"
+    ))
+    .expect("docs/scene-format.md");
+    let reference = physics::fields::reference();
+    assert!(
+        docs.contains(&reference),
+        "docs/scene-format.md should contain the field reference:\n\n{reference}"
+    );
+}

@@ -12,6 +12,7 @@ use std::collections::{HashMap, HashSet};
 use std::fmt::{self, Write as _};
 use std::ops::Range;
 
+use super::fields::{self, Field, Kind, Value as FieldValue};
 use super::validate::{FieldRef, Section};
 use super::{
     Bounds, Color, Endpoint, Follow, Graph, Particle, Ramp, Scene, Settings, Spring, Vector, View,
@@ -203,28 +204,8 @@ impl Scene {
         if let Some(description) = &self.description {
             root.push(("description", Out::Text(description.clone())));
         }
-        let w = &self.world;
-        let mut world = vec![
-            ("gravity", Out::Vector(w.gravity)),
-            ("gravitation", Out::Bool(w.gravitation)),
-            (
-                "gravitational_constant",
-                Out::Number(w.gravitational_constant),
-            ),
-            ("electrostatics", Out::Bool(w.electrostatics)),
-            ("coulomb_constant", Out::Number(w.coulomb_constant)),
-            ("restitution", Out::Number(w.restitution)),
-        ];
-        if let Some(bounds) = w.bounds {
-            world.push(("bounds", Out::Bounds(bounds)));
-        }
-        let s = &self.simulation;
-        let simulation = vec![
-            ("integrator", Out::Text(s.integrator.as_str().to_owned())),
-            ("time_step", Out::Number(s.time_step)),
-            ("tolerance", Out::Number(s.tolerance)),
-            ("time_scale", Out::Number(s.time_scale)),
-        ];
+        let world = out_fields(fields::WORLD, &self.world);
+        let simulation = out_fields(fields::SIMULATION, &self.simulation);
         let mut sections = vec![
             OutSection {
                 header: Header::Root,
@@ -239,53 +220,26 @@ impl Scene {
                 entries: simulation,
             },
         ];
-        for p in &self.particles {
-            let mut entries = vec![
-                ("name", Out::Text(p.name.clone())),
-                ("mass", Out::Number(p.mass)),
-                ("radius", Out::Number(p.radius)),
-                ("charge", Out::Number(p.charge)),
-                ("position", Out::Vector(p.position)),
-                ("velocity", Out::Vector(p.velocity)),
-                ("acceleration", Out::Vector(p.acceleration)),
-                ("fixed", Out::Bool(p.fixed)),
-            ];
-            if let Some(color) = p.color {
-                entries.push(("color", Out::Text(color.to_hex())));
-            }
+        let objects = self
+            .particles
+            .iter()
+            .map(|p| ("particle", &p.name, out_fields(fields::PARTICLE, p)))
+            .chain(
+                self.springs
+                    .iter()
+                    .map(|s| ("spring", &s.name, out_fields(fields::SPRING, s))),
+            )
+            .chain(
+                self.ramps
+                    .iter()
+                    .map(|r| ("ramp", &r.name, out_fields(fields::RAMP, r))),
+            );
+        for (kind, name, entries) in objects {
+            let mut named = vec![("name", Out::Text(name.clone()))];
+            named.extend(entries);
             sections.push(OutSection {
-                header: Header::ArrayItem("particle"),
-                entries,
-            });
-        }
-        for spring in &self.springs {
-            let end = |end: &Endpoint| match end {
-                Endpoint::Particle(name) => Out::Text(name.clone()),
-                Endpoint::Point(point) => Out::Vector(*point),
-            };
-            sections.push(OutSection {
-                header: Header::ArrayItem("spring"),
-                entries: vec![
-                    ("name", Out::Text(spring.name.clone())),
-                    ("from", end(&spring.from)),
-                    ("to", end(&spring.to)),
-                    ("stiffness", Out::Number(spring.stiffness)),
-                    ("natural_length", Out::Number(spring.natural_length)),
-                    ("damping", Out::Number(spring.damping)),
-                ],
-            });
-        }
-        for ramp in &self.ramps {
-            sections.push(OutSection {
-                header: Header::ArrayItem("ramp"),
-                entries: vec![
-                    ("name", Out::Text(ramp.name.clone())),
-                    ("from", Out::Vector(ramp.from)),
-                    ("to", Out::Vector(ramp.to)),
-                    ("thickness", Out::Number(ramp.thickness)),
-                    ("restitution", Out::Number(ramp.restitution)),
-                    ("friction", Out::Number(ramp.friction)),
-                ],
+                header: Header::ArrayItem(kind),
+                entries: named,
             });
         }
         sections.extend(self.presentation());
@@ -325,6 +279,27 @@ impl Scene {
         }
         sections
     }
+}
+
+/// A section's fields as written: every field in table order, optional ones only when
+/// set.
+fn out_fields<T>(fields: &[Field<T>], target: &T) -> Vec<(&'static str, Out)> {
+    fields
+        .iter()
+        .filter_map(|f| {
+            let out = match (f.get)(target) {
+                FieldValue::Number(x) => Out::Number(x),
+                FieldValue::Vector(v) => Out::Vector(v),
+                FieldValue::Bool(b) => Out::Bool(b),
+                FieldValue::Endpoint(Endpoint::Particle(name)) => Out::Text(name),
+                FieldValue::Endpoint(Endpoint::Point(point)) => Out::Vector(point),
+                FieldValue::Integrator(method) => Out::Text(method.as_str().to_owned()),
+                FieldValue::Color(color) => Out::Text(color?.to_hex()),
+                FieldValue::Bounds(bounds) => Out::Bounds(bounds?),
+            };
+            Some((f.key, out))
+        })
+        .collect()
 }
 
 enum Header {
@@ -606,36 +581,6 @@ const ROOT_KEYS: &[&str] = &[
     "graph",
     "view",
 ];
-const WORLD_KEYS: &[&str] = &[
-    "gravity",
-    "gravitation",
-    "gravitational_constant",
-    "electrostatics",
-    "coulomb_constant",
-    "restitution",
-    "bounds",
-];
-const SIMULATION_KEYS: &[&str] = &["integrator", "time_step", "tolerance", "time_scale"];
-const PARTICLE_KEYS: &[&str] = &[
-    "name",
-    "mass",
-    "radius",
-    "charge",
-    "position",
-    "velocity",
-    "acceleration",
-    "fixed",
-    "color",
-];
-const SPRING_KEYS: &[&str] = &[
-    "name",
-    "from",
-    "to",
-    "stiffness",
-    "natural_length",
-    "damping",
-];
-const RAMP_KEYS: &[&str] = &["name", "from", "to", "thickness", "restitution", "friction"];
 const GRAPH_KEYS: &[&str] = &["title", "x", "y"];
 const VIEW_KEYS: &[&str] = &["center", "width", "follow"];
 
@@ -835,52 +780,37 @@ impl<'t> Reader<'t> {
         }
     }
 
+    /// Reads every field of `fields` present in `t` into `target`; a required one that
+    /// is missing is a problem (and `target` keeps its placeholder).
+    fn fields<T>(&mut self, t: &mut Table<'_>, fields: &[Field<T>], target: &mut T) {
+        for f in fields {
+            let read = |node: &Node| read_value(f.kind, node);
+            let value = if f.default.is_none() {
+                self.required(t, f.key, |node| read(node).map(Some), None)
+            } else {
+                self.field(t, f.key, read)
+            };
+            if let Some(value) = value {
+                (f.set)(target, value);
+            }
+        }
+    }
+
     fn world(&mut self, node: &Node) -> World {
         let mut world = World::default();
-        let Some(mut t) = self.table(node, Section::World, "[world]".to_owned()) else {
-            return world;
-        };
-        if let Some(v) = self.field(&mut t, "gravity", read_vector) {
-            world.gravity = v;
+        if let Some(mut t) = self.table(node, Section::World, "[world]".to_owned()) {
+            self.fields(&mut t, fields::WORLD, &mut world);
+            self.close(&t, &fields::keys(&[], fields::WORLD));
         }
-        if let Some(v) = self.field(&mut t, "gravitation", read_bool) {
-            world.gravitation = v;
-        }
-        if let Some(v) = self.field(&mut t, "gravitational_constant", read_number) {
-            world.gravitational_constant = v;
-        }
-        if let Some(v) = self.field(&mut t, "electrostatics", read_bool) {
-            world.electrostatics = v;
-        }
-        if let Some(v) = self.field(&mut t, "coulomb_constant", read_number) {
-            world.coulomb_constant = v;
-        }
-        if let Some(v) = self.field(&mut t, "restitution", read_number) {
-            world.restitution = v;
-        }
-        world.bounds = self.field(&mut t, "bounds", read_bounds);
-        self.close(&t, WORLD_KEYS);
         world
     }
 
     fn settings(&mut self, node: &Node) -> Settings {
         let mut settings = Settings::default();
-        let Some(mut t) = self.table(node, Section::Simulation, "[simulation]".to_owned()) else {
-            return settings;
-        };
-        if let Some(v) = self.field(&mut t, "integrator", read_integrator) {
-            settings.integrator = v;
+        if let Some(mut t) = self.table(node, Section::Simulation, "[simulation]".to_owned()) {
+            self.fields(&mut t, fields::SIMULATION, &mut settings);
+            self.close(&t, &fields::keys(&[], fields::SIMULATION));
         }
-        if let Some(v) = self.field(&mut t, "time_step", read_number) {
-            settings.time_step = v;
-        }
-        if let Some(v) = self.field(&mut t, "tolerance", read_number) {
-            settings.tolerance = v;
-        }
-        if let Some(v) = self.field(&mut t, "time_scale", read_number) {
-            settings.time_scale = v;
-        }
-        self.close(&t, SIMULATION_KEYS);
         settings
     }
 
@@ -904,31 +834,14 @@ impl<'t> Reader<'t> {
     }
 
     fn particle(&mut self, node: &Node, index: usize) -> Particle {
-        let mut particle = Particle::new(format!("p{}", index + 1), f64::NAN);
-        let Some((mut t, name)) = self.object(node, "particle", Section::Particle(index), index)
-        else {
-            return particle;
-        };
-        particle.name = name;
-        particle.mass = self.required(&mut t, "mass", read_number, 1.0);
-        if let Some(v) = self.field(&mut t, "radius", read_number) {
-            particle.radius = v;
+        // Placeholders for required fields: a missing one is reported, never used.
+        let mut particle = Particle::new(format!("p{}", index + 1), 1.0);
+        if let Some((mut t, name)) = self.object(node, "particle", Section::Particle(index), index)
+        {
+            particle.name = name;
+            self.fields(&mut t, fields::PARTICLE, &mut particle);
+            self.close(&t, &fields::keys(&["name"], fields::PARTICLE));
         }
-        if let Some(v) = self.field(&mut t, "charge", read_number) {
-            particle.charge = v;
-        }
-        particle.position = self.required(&mut t, "position", read_vector, Vector::ZERO);
-        if let Some(v) = self.field(&mut t, "velocity", read_vector) {
-            particle.velocity = v;
-        }
-        if let Some(v) = self.field(&mut t, "acceleration", read_vector) {
-            particle.acceleration = v;
-        }
-        if let Some(v) = self.field(&mut t, "fixed", read_bool) {
-            particle.fixed = v;
-        }
-        particle.color = self.field(&mut t, "color", read_color);
-        self.close(&t, PARTICLE_KEYS);
         particle
     }
 
@@ -941,39 +854,21 @@ impl<'t> Reader<'t> {
             0.0,
             0.0,
         );
-        let Some((mut t, name)) = self.object(node, "spring", Section::Spring(index), index) else {
-            return spring;
-        };
-        spring.name = name;
-        spring.from = self.required(&mut t, "from", read_endpoint, placeholder());
-        spring.to = self.required(&mut t, "to", read_endpoint, placeholder());
-        spring.stiffness = self.required(&mut t, "stiffness", read_number, 0.0);
-        spring.natural_length = self.required(&mut t, "natural_length", read_number, 0.0);
-        if let Some(v) = self.field(&mut t, "damping", read_number) {
-            spring.damping = v;
+        if let Some((mut t, name)) = self.object(node, "spring", Section::Spring(index), index) {
+            spring.name = name;
+            self.fields(&mut t, fields::SPRING, &mut spring);
+            self.close(&t, &fields::keys(&["name"], fields::SPRING));
         }
-        self.close(&t, SPRING_KEYS);
         spring
     }
 
     fn ramp(&mut self, node: &Node, index: usize) -> Ramp {
         let mut ramp = Ramp::new(format!("r{}", index + 1), Vector::ZERO, Vector::ZERO);
-        let Some((mut t, name)) = self.object(node, "ramp", Section::Ramp(index), index) else {
-            return ramp;
-        };
-        ramp.name = name;
-        ramp.from = self.required(&mut t, "from", read_vector, Vector::ZERO);
-        ramp.to = self.required(&mut t, "to", read_vector, Vector::ZERO);
-        if let Some(v) = self.field(&mut t, "thickness", read_number) {
-            ramp.thickness = v;
+        if let Some((mut t, name)) = self.object(node, "ramp", Section::Ramp(index), index) {
+            ramp.name = name;
+            self.fields(&mut t, fields::RAMP, &mut ramp);
+            self.close(&t, &fields::keys(&["name"], fields::RAMP));
         }
-        if let Some(v) = self.field(&mut t, "restitution", read_number) {
-            ramp.restitution = v;
-        }
-        if let Some(v) = self.field(&mut t, "friction", read_number) {
-            ramp.friction = v;
-        }
-        self.close(&t, RAMP_KEYS);
         ramp
     }
 
@@ -1059,6 +954,19 @@ fn read_text(node: &Node) -> Result<String, String> {
         Value::Text(text) => Ok(text.clone()),
         other => Err(format!("must be text in quotes, got {}", other.kind())),
     }
+}
+
+/// Reads a value of `kind`.
+fn read_value(kind: Kind, node: &Node) -> Result<FieldValue, String> {
+    Ok(match kind {
+        Kind::Number(_) => FieldValue::Number(read_number(node)?),
+        Kind::Vector => FieldValue::Vector(read_vector(node)?),
+        Kind::Bool => FieldValue::Bool(read_bool(node)?),
+        Kind::Endpoint => FieldValue::Endpoint(read_endpoint(node)?),
+        Kind::Integrator => FieldValue::Integrator(read_integrator(node)?),
+        Kind::Color => FieldValue::Color(Some(read_color(node)?)),
+        Kind::Bounds => FieldValue::Bounds(Some(read_bounds(node)?)),
+    })
 }
 
 fn read_text_list(node: &Node) -> Result<Vec<String>, String> {

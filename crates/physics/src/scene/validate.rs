@@ -5,6 +5,7 @@
 
 use std::collections::HashMap;
 
+use super::fields::{self, Field, Kind, Value};
 use super::format::Problem;
 use super::{Color, Endpoint, Follow, Quantity, Scene, Vector};
 
@@ -152,18 +153,24 @@ impl Checker<'_> {
         }
     }
 
+    /// The rules of the field table: every number obeys its rule, every vector (and
+    /// fixed point) is finite.
+    fn rules<T>(&mut self, section: Section, fields: &[Field<T>], target: &T) {
+        for f in fields {
+            match ((f.get)(target), f.kind) {
+                (Value::Number(v), Kind::Number(rule)) => self.number(section, f.key, rule, v),
+                (Value::Vector(v) | Value::Endpoint(Endpoint::Point(v)), _) => {
+                    self.vector(section, f.key, v);
+                }
+                _ => {}
+            }
+        }
+    }
+
     fn world(&mut self) {
         let world = &self.scene.world;
         let s = Section::World;
-        self.vector(s, "gravity", world.gravity);
-        self.number(
-            s,
-            "gravitational_constant",
-            Rule::Finite,
-            world.gravitational_constant,
-        );
-        self.number(s, "coulomb_constant", Rule::Finite, world.coulomb_constant);
-        self.number(s, "restitution", Rule::Fraction, world.restitution);
+        self.rules(s, fields::WORLD, world);
         if let Some(bounds) = world.bounds {
             self.vector(s, "bounds", bounds.min);
             self.vector(s, "bounds", bounds.max);
@@ -183,10 +190,7 @@ impl Checker<'_> {
 
     fn settings(&mut self) {
         let settings = &self.scene.simulation;
-        let s = Section::Simulation;
-        self.number(s, "time_step", Rule::Positive, settings.time_step);
-        self.number(s, "tolerance", Rule::Positive, settings.tolerance);
-        self.number(s, "time_scale", Rule::Positive, settings.time_scale);
+        self.rules(Section::Simulation, fields::SIMULATION, settings);
     }
 
     fn names(&mut self) {
@@ -250,37 +254,23 @@ impl Checker<'_> {
                     ),
                 );
             }
-            self.number(s, "mass", Rule::Positive, particle.mass);
-            self.number(s, "radius", Rule::Positive, particle.radius);
-            self.number(s, "charge", Rule::Finite, particle.charge);
-            self.vector(s, "position", particle.position);
-            self.vector(s, "velocity", particle.velocity);
-            self.vector(s, "acceleration", particle.acceleration);
+            self.rules(s, fields::PARTICLE, particle);
         }
     }
 
     fn springs(&mut self) {
         for (i, spring) in self.scene.springs.iter().enumerate() {
             let s = Section::Spring(i);
-            self.number(s, "stiffness", Rule::NonNegative, spring.stiffness);
-            self.number(
-                s,
-                "natural_length",
-                Rule::NonNegative,
-                spring.natural_length,
-            );
-            self.number(s, "damping", Rule::NonNegative, spring.damping);
+            self.rules(s, fields::SPRING, spring);
             for (field, end) in [("from", &spring.from), ("to", &spring.to)] {
-                match end {
-                    Endpoint::Particle(name) if self.scene.particle_index(name).is_none() => {
-                        self.report(
-                            s,
-                            field,
-                            &format!("{field}: there is no particle named '{name}'"),
-                        );
-                    }
-                    Endpoint::Point(point) => self.vector(s, field, *point),
-                    Endpoint::Particle(_) => {}
+                if let Endpoint::Particle(name) = end
+                    && self.scene.particle_index(name).is_none()
+                {
+                    self.report(
+                        s,
+                        field,
+                        &format!("{field}: there is no particle named '{name}'"),
+                    );
                 }
             }
             match (&spring.from, &spring.to) {
@@ -303,12 +293,7 @@ impl Checker<'_> {
 
     fn ramps(&mut self) {
         for (i, ramp) in self.scene.ramps.iter().enumerate() {
-            let s = Section::Ramp(i);
-            self.vector(s, "from", ramp.from);
-            self.vector(s, "to", ramp.to);
-            self.number(s, "thickness", Rule::NonNegative, ramp.thickness);
-            self.number(s, "restitution", Rule::Fraction, ramp.restitution);
-            self.number(s, "friction", Rule::NonNegative, ramp.friction);
+            self.rules(Section::Ramp(i), fields::RAMP, ramp);
         }
     }
 

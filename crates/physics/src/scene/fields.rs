@@ -1,0 +1,523 @@
+//! One table of the scene's fields. Each field of `[world]`, `[simulation]`,
+//! `[[particle]]`, `[[spring]]` and `[[ramp]]` is defined once here — its key, what a
+//! person calls it, its kind and rule, unit, default and one line of help — and that
+//! definition drives the TOML/JSON reader and writer, [`Scene::validate`]'s rules for
+//! numbers and vectors, the app's inspector (label, unit, tooltip, checking) and the
+//! reference table in `docs/scene-format.md` (a test keeps that table equal to
+//! [`reference()`]).
+//!
+//! Names are the one field outside the table: every object has one, it labels every
+//! message about the object, and renaming carries references along (`edit.rs`).
+//! `[[graph]]` and `[view]` are the app's and have their own reader (`presentation.rs`).
+//!
+//! [`Scene::validate`]: super::Scene::validate
+
+use std::fmt::Write as _;
+
+use super::{Bounds, Color, Endpoint, Particle, Ramp, Settings, Spring, Vector, World};
+use crate::Integrator;
+use crate::scene::Rule;
+
+/// What kind of value a field holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kind {
+    /// A number, with its rule.
+    Number(Rule),
+    /// `[x, y]` or `{ magnitude, angle }`.
+    Vector,
+    /// `true` or `false`.
+    Bool,
+    /// A particle's name, or a fixed point.
+    Endpoint,
+    /// An integration method's name.
+    Integrator,
+    /// `"#rrggbb"`, optional.
+    Color,
+    /// `{ min = [x, y], max = [x, y] }`, optional.
+    Bounds,
+}
+
+/// A field's value, whatever its kind.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    /// [`Kind::Number`].
+    Number(f64),
+    /// [`Kind::Vector`].
+    Vector(Vector),
+    /// [`Kind::Bool`].
+    Bool(bool),
+    /// [`Kind::Endpoint`].
+    Endpoint(Endpoint),
+    /// [`Kind::Integrator`].
+    Integrator(Integrator),
+    /// [`Kind::Color`]; `None` when not chosen.
+    Color(Option<Color>),
+    /// [`Kind::Bounds`]; `None` when there are none.
+    Bounds(Option<Bounds>),
+}
+
+/// Where the app edits a field.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Place {
+    /// In the inspector.
+    Inspector,
+    /// In the tool bar (the integrator and the time step).
+    Toolbar,
+}
+
+/// One field of a section whose values are of type `T`.
+pub struct Field<T: 'static> {
+    /// The key in a scene file.
+    pub key: &'static str,
+    /// What a person calls it (the inspector's label).
+    pub label: &'static str,
+    /// Its kind, with the rule a number obeys.
+    pub kind: Kind,
+    /// The SI unit, or "" for a pure number.
+    pub unit: &'static str,
+    /// The default as a file would write it; `None` when the field is required.
+    pub default: Option<&'static str>,
+    /// One line of help (the inspector's tooltip, the docs' description).
+    pub help: &'static str,
+    /// Where the app edits it.
+    pub place: Place,
+    /// Reads the value.
+    pub get: fn(&T) -> Value,
+    /// Writes the value; a value of another kind is ignored.
+    pub set: fn(&mut T, Value),
+}
+
+/// A field read and written as it is stored: a number, a vector or a flag.
+macro_rules! plain {
+    ($variant:ident, $kind:expr, $key:literal, $label:literal, $field:ident, $unit:literal, $default:expr, $help:literal) => {
+        Field {
+            key: $key,
+            label: $label,
+            kind: $kind,
+            unit: $unit,
+            default: $default,
+            help: $help,
+            place: Place::Inspector,
+            get: |t| Value::$variant(t.$field),
+            set: |t, v| {
+                if let Value::$variant(v) = v {
+                    t.$field = v;
+                }
+            },
+        }
+    };
+}
+
+macro_rules! number {
+    ($key:literal, $label:literal, $field:ident, $rule:expr, $unit:literal, $default:expr, $help:literal) => {
+        plain!(
+            Number,
+            Kind::Number($rule),
+            $key,
+            $label,
+            $field,
+            $unit,
+            $default,
+            $help
+        )
+    };
+}
+
+macro_rules! vector {
+    ($key:literal, $label:literal, $field:ident, $unit:literal, $default:expr, $help:literal) => {
+        plain!(
+            Vector,
+            Kind::Vector,
+            $key,
+            $label,
+            $field,
+            $unit,
+            $default,
+            $help
+        )
+    };
+}
+
+macro_rules! boolean {
+    ($key:literal, $label:literal, $field:ident, $default:literal, $help:literal) => {
+        plain!(
+            Bool,
+            Kind::Bool,
+            $key,
+            $label,
+            $field,
+            "",
+            Some($default),
+            $help
+        )
+    };
+}
+
+macro_rules! endpoint {
+    ($key:literal, $field:ident, $help:literal) => {
+        Field {
+            key: $key,
+            label: $key,
+            kind: Kind::Endpoint,
+            unit: "",
+            default: None,
+            help: $help,
+            place: Place::Inspector,
+            get: |t| Value::Endpoint(t.$field.clone()),
+            set: |t, v| {
+                if let Value::Endpoint(v) = v {
+                    t.$field = v;
+                }
+            },
+        }
+    };
+}
+
+/// `[world]`.
+pub const WORLD: &[Field<World>] = &[
+    vector!(
+        "gravity",
+        "gravity",
+        gravity,
+        "m/s²",
+        Some("[0.0, -9.81]"),
+        "The uniform field"
+    ),
+    boolean!(
+        "gravitation",
+        "gravitation between particles",
+        gravitation,
+        "true",
+        "Newton's inverse-square attraction between every pair"
+    ),
+    number!(
+        "gravitational_constant",
+        "G",
+        gravitational_constant,
+        Rule::Finite,
+        "N·m²/kg²",
+        Some("6.6742e-11"),
+        "The gravitational constant (the paper's value)"
+    ),
+    boolean!(
+        "electrostatics",
+        "electrostatics",
+        electrostatics,
+        "true",
+        "Coulomb's law between charged particles"
+    ),
+    number!(
+        "coulomb_constant",
+        "k",
+        coulomb_constant,
+        Rule::Finite,
+        "N·m²/C²",
+        Some("8.988e9"),
+        "The Coulomb constant"
+    ),
+    number!(
+        "restitution",
+        "restitution",
+        restitution,
+        Rule::Fraction,
+        "",
+        Some("1.0"),
+        "Particle–particle impacts: 0 (sticky) to 1 (elastic)"
+    ),
+    Field {
+        key: "bounds",
+        label: "bounds",
+        kind: Kind::Bounds,
+        unit: "m",
+        default: Some("none"),
+        help: "A reflecting box around the world",
+        place: Place::Inspector,
+        get: |w| Value::Bounds(w.bounds),
+        set: |w, v| {
+            if let Value::Bounds(v) = v {
+                w.bounds = v;
+            }
+        },
+    },
+];
+
+/// `[simulation]`.
+pub const SIMULATION: &[Field<Settings>] = &[
+    Field {
+        key: "integrator",
+        label: "integrator",
+        kind: Kind::Integrator,
+        unit: "",
+        default: Some("\"rk4\""),
+        help: "How the motion is integrated in time: euler, semi-implicit-euler, verlet, rk4, dopri5",
+        place: Place::Toolbar,
+        get: |s| Value::Integrator(s.integrator),
+        set: |s, v| {
+            if let Value::Integrator(v) = v {
+                s.integrator = v;
+            }
+        },
+    },
+    Field {
+        place: Place::Toolbar,
+        ..number!(
+            "time_step",
+            "time step",
+            time_step,
+            Rule::Positive,
+            "s",
+            Some("0.001"),
+            "The step (dopri5: the largest step)"
+        )
+    },
+    number!(
+        "tolerance",
+        "tolerance",
+        tolerance,
+        Rule::Positive,
+        "",
+        Some("1e-9"),
+        "dopri5 only: error allowed per step, relative and absolute"
+    ),
+    number!(
+        "time_scale",
+        "time scale",
+        time_scale,
+        Rule::Positive,
+        "×",
+        Some("1.0"),
+        "Simulated seconds per real second when playing in the app"
+    ),
+];
+
+/// `[[particle]]`, after its name.
+pub const PARTICLE: &[Field<Particle>] = &[
+    number!(
+        "mass",
+        "mass",
+        mass,
+        Rule::Positive,
+        "kg",
+        None,
+        "Mass, greater than 0"
+    ),
+    number!(
+        "radius",
+        "radius",
+        radius,
+        Rule::Positive,
+        "m",
+        Some("0.5"),
+        "Radius, greater than 0"
+    ),
+    number!(
+        "charge",
+        "charge",
+        charge,
+        Rule::Finite,
+        "C",
+        Some("0.0"),
+        "Electric charge"
+    ),
+    vector!("position", "position", position, "m", None, "Position"),
+    vector!(
+        "velocity",
+        "velocity",
+        velocity,
+        "m/s",
+        Some("[0.0, 0.0]"),
+        "Velocity"
+    ),
+    vector!(
+        "acceleration",
+        "acceleration",
+        acceleration,
+        "m/s²",
+        Some("[0.0, 0.0]"),
+        "A constant applied acceleration on top of all forces"
+    ),
+    boolean!(
+        "fixed",
+        "fixed",
+        fixed,
+        "false",
+        "A fixed particle never moves; it still attracts, repels and is hit"
+    ),
+    Field {
+        key: "color",
+        label: "colour",
+        kind: Kind::Color,
+        unit: "",
+        default: Some("a palette colour"),
+        help: "Display colour, \"#rrggbb\"",
+        place: Place::Inspector,
+        get: |p| Value::Color(p.color),
+        set: |p, v| {
+            if let Value::Color(v) = v {
+                p.color = v;
+            }
+        },
+    },
+];
+
+/// `[[spring]]`, after its name.
+pub const SPRING: &[Field<Spring>] = &[
+    endpoint!("from", from, "A particle's name, or a fixed point [x, y]"),
+    endpoint!("to", to, "A particle's name, or a fixed point [x, y]"),
+    number!(
+        "stiffness",
+        "stiffness",
+        stiffness,
+        Rule::NonNegative,
+        "N/m",
+        None,
+        "k, 0 or more"
+    ),
+    number!(
+        "natural_length",
+        "natural length",
+        natural_length,
+        Rule::NonNegative,
+        "m",
+        None,
+        "The length at which the spring exerts no force"
+    ),
+    number!(
+        "damping",
+        "damping",
+        damping,
+        Rule::NonNegative,
+        "N·s/m",
+        Some("0.0"),
+        "b: force −b·(relative velocity along the spring)"
+    ),
+];
+
+/// `[[ramp]]`, after its name.
+pub const RAMP: &[Field<Ramp>] = &[
+    vector!("from", "from", from, "m", None, "One end of the ramp"),
+    vector!("to", "to", to, "m", None, "The other end"),
+    number!(
+        "thickness",
+        "thickness",
+        thickness,
+        Rule::NonNegative,
+        "m",
+        Some("0.1"),
+        "The ramp is every point within half this of its segment"
+    ),
+    number!(
+        "restitution",
+        "restitution",
+        restitution,
+        Rule::Fraction,
+        "",
+        Some("1.0"),
+        "0 (no bounce) to 1 (perfectly elastic)"
+    ),
+    number!(
+        "friction",
+        "friction",
+        friction,
+        Rule::NonNegative,
+        "",
+        Some("0.0"),
+        "Coefficient of static and kinetic friction"
+    ),
+];
+
+/// The keys of a section's fields, after `first` (such as `name`).
+pub fn keys<T>(first: &[&'static str], fields: &[Field<T>]) -> Vec<&'static str> {
+    first
+        .iter()
+        .copied()
+        .chain(fields.iter().map(|f| f.key))
+        .collect()
+}
+
+/// The reference of every field as a Markdown table per section: what
+/// `docs/scene-format.md` shows.
+pub fn reference() -> String {
+    fn section<T>(out: &mut String, title: &str, fields: &[Field<T>]) {
+        let _ = writeln!(out, "`{title}`\n");
+        out.push_str("| key | kind | unit | default | |\n|---|---|---|---|---|\n");
+        for f in fields {
+            let kind = match f.kind {
+                Kind::Number(Rule::Finite) => "number",
+                Kind::Number(Rule::Positive) => "number > 0",
+                Kind::Number(Rule::NonNegative) => "number ≥ 0",
+                Kind::Number(Rule::Fraction) => "number in 0..1",
+                Kind::Vector => "vector",
+                Kind::Bool => "true or false",
+                Kind::Endpoint => "name or point",
+                Kind::Integrator => "method",
+                Kind::Color => "colour",
+                Kind::Bounds => "box",
+            };
+            let _ = writeln!(
+                out,
+                "| `{}` | {kind} | {} | {} | {} |",
+                f.key,
+                f.unit,
+                f.default.unwrap_or("**required**"),
+                f.help
+            );
+        }
+        out.push('\n');
+    }
+    let mut out = String::new();
+    section(&mut out, "[world]", WORLD);
+    section(&mut out, "[simulation]", SIMULATION);
+    section(&mut out, "[[particle]]", PARTICLE);
+    section(&mut out, "[[spring]]", SPRING);
+    section(&mut out, "[[ramp]]", RAMP);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Every field's getter and setter agree: set what was got, on another object, and
+    /// get it back.
+    #[test]
+    fn setters_write_what_getters_read() {
+        fn check<T>(fields: &[Field<T>], from: &T, to: &mut T) {
+            for f in fields {
+                let value = (f.get)(from);
+                (f.set)(to, value.clone());
+                assert_eq!((f.get)(to), value, "{}", f.key);
+            }
+        }
+        let mut a = Particle::new("a", 2.0)
+            .position([1.0, 2.0])
+            .velocity([3.0, 4.0])
+            .acceleration([5.0, 6.0])
+            .radius(0.7)
+            .charge(-1.0)
+            .fixed();
+        a.color = Some(Color([1, 2, 3]));
+        check(PARTICLE, &a, &mut Particle::new("b", 1.0));
+        let spring = Spring::new("s", "a", [1.0, 1.0], 3.0, 4.0).damping(0.5);
+        check(SPRING, &spring, &mut Spring::new("t", "x", "y", 1.0, 1.0));
+        let ramp = Ramp::new("r", [0.0, 1.0], [2.0, 3.0])
+            .thickness(0.3)
+            .restitution(0.4)
+            .friction(0.6);
+        check(RAMP, &ramp, &mut Ramp::new("q", [0.0, 0.0], [1.0, 0.0]));
+        let mut world = World::weightless();
+        world.bounds = Some(Bounds {
+            min: Vector::cartesian(-1.0, -1.0),
+            max: Vector::cartesian(1.0, 1.0),
+        });
+        world.restitution = 0.3;
+        check(WORLD, &world, &mut World::default());
+        let settings = Settings {
+            integrator: Integrator::Dopri5,
+            time_step: 0.1,
+            tolerance: 1e-6,
+            time_scale: 3.0,
+        };
+        check(SIMULATION, &settings, &mut Settings::default());
+    }
+}

@@ -199,6 +199,27 @@ impl Recording {
         ))
     }
 
+    /// Every particle's positions over the last `seconds` of the recording: the recent
+    /// paths that Fit frames.
+    pub fn recent_positions(&self, seconds: f64) -> Vec<DVec2> {
+        let Some(end) = self.last_time() else {
+            return Vec::new();
+        };
+        let first = (0..self.len())
+            .rev()
+            .take_while(|&k| self.row(k)[0] >= end - seconds)
+            .last()
+            .unwrap_or(0);
+        (first..self.len())
+            .flat_map(|k| {
+                let row = self.row(k);
+                (0..self.names.len())
+                    .map(move |i| DVec2::new(particle(row, i)[0], particle(row, i)[1]))
+            })
+            .filter(|p| p.is_finite())
+            .collect()
+    }
+
     /// The time of the last sample.
     pub fn last_time(&self) -> Option<f64> {
         self.len().checked_sub(1).map(|k| self.row(k)[0])

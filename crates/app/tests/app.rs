@@ -563,3 +563,23 @@ fn impacts_are_marked_on_the_graphs_of_the_particles_they_involve() {
         "C is not involved"
     );
 }
+
+/// Fit frames the objects and their recent paths: after a ball crosses 40 m in 2 s, the
+/// view holds where it was a second and a half ago as well as where it is.
+#[test]
+fn fit_frames_the_recent_path() {
+    let mut scene = one_ball();
+    scene.particles[0].velocity = [20.0, 0.0].into();
+    let mut harness = harness(App::new(scene));
+    play_frames(&mut harness, 20);
+    harness.key_press(Key::F);
+    harness.run();
+    let app = harness.state();
+    let now = app.runner.simulation.as_ref().unwrap().positions()[0];
+    let earlier = now - DVec2::new(30.0, 0.0);
+    assert!(now.x > 35.0, "the ball went on: {now}");
+    for point in [now, earlier] {
+        let at = app.canvas.view.to_screen(app.canvas.rect, point);
+        assert!(app.canvas.rect.contains(at), "{point} is in view");
+    }
+}

@@ -109,6 +109,9 @@ impl Default for Overlays {
 /// Seconds of motion a velocity arrow shows: its tip is where the particle would be.
 pub const VELOCITY_ARROW_SECONDS: f64 = 0.5;
 
+/// Seconds of recent motion that Fit keeps in view.
+const RECENT_SECONDS: f64 = 2.0;
+
 /// How the view is to be set at the next frame, once the canvas's size is known.
 #[derive(Clone, Debug, PartialEq)]
 enum Framing {
@@ -284,17 +287,17 @@ impl Canvas {
     /// Sets the view as asked (fit, the scene's framing), then follows while running.
     fn place_camera(&mut self, scene: &Scene, frame: &Frame, runner: &Runner) {
         let rect = self.rect;
-        let paths = runner.trails.iter().flatten().copied();
-        match self.framing.take() {
-            Some(Framing::Fit) => {
-                if let Some((min, max)) = Self::scene_box(scene, &frame.positions, paths) {
-                    self.view.fit(rect, min, max);
-                }
+        if let Some(framing) = self.framing.take() {
+            // The recent paths: the trails when drawn, and the recording's last seconds.
+            let recent = match (&runner.simulation, &runner.recording) {
+                (Some(_), Some(recording)) => recording.recent_positions(RECENT_SECONDS),
+                _ => Vec::new(),
+            };
+            let paths = runner.trails.iter().flatten().copied().chain(recent);
+            if let Some((min, max)) = Self::scene_box(scene, &frame.positions, paths) {
+                self.view.fit(rect, min, max);
             }
-            Some(Framing::Scene(wanted)) => {
-                if let Some((min, max)) = Self::scene_box(scene, &frame.positions, paths) {
-                    self.view.fit(rect, min, max);
-                }
+            if let Framing::Scene(wanted) = framing {
                 if let Some(center) = wanted.center {
                     self.view.center = center;
                 }
@@ -302,7 +305,6 @@ impl Canvas {
                     self.view.pixels_per_metre = f64::from(rect.width()) / width;
                 }
             }
-            None => {}
         }
         if runner.simulation.is_none() {
             self.followed = None;

@@ -19,6 +19,8 @@ pub struct Document {
     pub path: Option<String>,
     /// What to call a scene that has no file (an example's title).
     pub label: Option<String>,
+    /// The file's modification time and length when last opened or saved here.
+    pub disk: Option<(std::time::SystemTime, u64)>,
     /// The scene as last saved or opened, to tell whether there are unsaved changes.
     saved: Scene,
     /// A gesture (a drag) in progress: its first change made the undo step.
@@ -35,6 +37,7 @@ impl Document {
             redo: Vec::new(),
             path: None,
             label: None,
+            disk: None,
             gesture: false,
         }
     }
@@ -111,6 +114,16 @@ impl Document {
     /// Whether the scene differs from the one last saved or opened.
     pub fn is_dirty(&self) -> bool {
         self.scene != self.saved
+    }
+
+    /// Marks the whole scene as unsaved work belonging to `path` (recovered after a
+    /// crash): saving is needed to keep it.
+    pub fn mark_unsaved(&mut self, path: Option<String>) {
+        self.saved = Scene::new();
+        if self.saved == self.scene {
+            self.saved.name = Some(String::new());
+        }
+        self.path = path;
     }
 
     /// Records that the scene was saved to `path`.

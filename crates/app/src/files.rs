@@ -45,12 +45,20 @@ pub enum Pending {
 }
 
 /// What the user chose in a dialog this frame.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Choice {
     /// Read or write this path for the dialog's purpose.
     Path(Purpose, String),
     /// Go ahead and discard the unsaved changes.
     Discard(Pending),
+    /// Save over this file although it changed on disk.
+    Overwrite(String),
+    /// Bring back the work an earlier session left unsaved.
+    #[cfg(not(target_arch = "wasm32"))]
+    Recover(Box<crate::autosave::Recovered>),
+    /// Throw that work away.
+    #[cfg(not(target_arch = "wasm32"))]
+    DropRecovery,
 }
 
 #[derive(Default)]
@@ -59,6 +67,11 @@ pub struct Files {
     pub confirm: Option<Pending>,
     /// A message to show (a file that failed to load, a save that failed).
     pub message: Option<String>,
+    /// A file that changed on disk, waiting for the word to overwrite it.
+    pub overwrite: Option<String>,
+    /// Work an earlier session left unsaved, waiting for the word to recover it.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub recover: Option<crate::autosave::Recovered>,
 }
 
 impl Files {
@@ -108,6 +121,48 @@ impl Files {
             });
             if modal.inner || modal.should_close() {
                 self.message = None;
+            }
+        }
+        if let Some(path) = self.overwrite.clone() {
+            let answer = two_buttons(
+                ui,
+                "Changed on disk",
+                &format!("“{path}” has changed on disk since it was opened. Overwrite it?"),
+                ("Overwrite", "Replace the file on disk with this scene"),
+                (
+                    "Cancel",
+                    "Keep the file on disk; save under another name instead",
+                ),
+            );
+            if let Some(overwrite) = answer {
+                self.overwrite = None;
+                if overwrite {
+                    choice = Some(Choice::Overwrite(path));
+                }
+            }
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Some(recovered) = self.recover.clone() {
+            let belonged = recovered
+                .path
+                .as_deref()
+                .map_or_else(String::new, |p| format!(" to “{p}”"));
+            let answer = two_buttons(
+                ui,
+                "Recover unsaved work",
+                &format!(
+                    "NewtonLab closed last time with changes{belonged} that were not saved. Recover them?"
+                ),
+                ("Recover", "Open the unsaved work"),
+                ("Discard", "Throw the unsaved work away"),
+            );
+            if let Some(recover) = answer {
+                self.recover = None;
+                choice = Some(if recover {
+                    Choice::Recover(Box::new(recovered))
+                } else {
+                    Choice::DropRecovery
+                });
             }
         }
         if let Some(pending) = self.confirm.clone() {
@@ -242,4 +297,33 @@ impl Files {
         }
         choice
     }
+}
+
+/// A question with two answers in a modal: `Some(true)` for the first, `Some(false)` for
+/// the second or Esc, `None` while unanswered.
+fn two_buttons(
+    ui: &Ui,
+    heading: &str,
+    question: &str,
+    yes: (&str, &str),
+    no: (&str, &str),
+) -> Option<bool> {
+    let modal = Modal::new(Id::unique(("question", heading))).show(ui.ctx(), |ui| {
+        ui.set_max_width(520.0);
+        ui.heading(heading);
+        ui.label(question);
+        ui.horizontal(|ui| {
+            if ui.button(yes.0).on_hover_text(yes.1).clicked() {
+                return Some(true);
+            }
+            if ui.button(no.0).on_hover_text(no.1).clicked() {
+                return Some(false);
+            }
+            None
+        })
+        .inner
+    });
+    modal
+        .inner
+        .or_else(|| modal.should_close().then_some(false))
 }

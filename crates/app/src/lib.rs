@@ -19,6 +19,8 @@
 #![expect(missing_docs, reason = "an application crate; see above")]
 
 pub mod action;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod autosave;
 pub mod canvas;
 pub mod document;
 pub mod files;
@@ -102,6 +104,12 @@ pub struct App {
     picture_awaited: Option<(picture::Subject, picture::Slot)>,
     /// A picture encoded, waiting for the file dialog's path.
     picture_ready: Option<Vec<u8>>,
+    /// Copies of unsaved work, for recovery after a crash (desktop).
+    #[cfg(not(target_arch = "wasm32"))]
+    pub autosave: Option<autosave::Autosave>,
+    /// An autosave failed and the user was told; not again until one succeeds.
+    #[cfg(not(target_arch = "wasm32"))]
+    autosave_failed: bool,
 }
 
 impl Default for App {
@@ -135,6 +143,10 @@ impl App {
             picture_asked: None,
             picture_awaited: None,
             picture_ready: None,
+            #[cfg(not(target_arch = "wasm32"))]
+            autosave: None,
+            #[cfg(not(target_arch = "wasm32"))]
+            autosave_failed: false,
         }
     }
 
@@ -146,6 +158,16 @@ impl App {
         }
         self.panels.projector = launch.projector;
         self.launch = launch;
+        self
+    }
+
+    /// Keeps copies of unsaved work with `autosave`, and offers to recover what an
+    /// earlier session left unsaved.
+    #[cfg(not(target_arch = "wasm32"))]
+    #[must_use]
+    pub fn with_autosave(mut self, autosave: autosave::Autosave) -> Self {
+        self.files.recover = autosave.find();
+        self.autosave = Some(autosave);
         self
     }
 
@@ -290,7 +312,12 @@ impl App {
         let text: Result<String, String> = Err(format!("cannot read '{path}' in the browser"));
         match text {
             Ok(text) => {
-                self.open_text(path, &text);
+                if self.open_text(path, &text) {
+                    #[cfg(not(target_arch = "wasm32"))]
+                    {
+                        self.document.disk = platform::stamp(path);
+                    }
+                }
             }
             Err(message) => self.notify(message),
         }
@@ -311,8 +338,22 @@ impl App {
     }
 
     /// Saves the scene to `path` (TOML, or JSON for a `.json` name), with the camera as
-    /// its `[view]` so that it reopens as it was left.
+    /// its `[view]` so that it reopens as it was left. A file changed on disk since it was
+    /// opened or saved here is not overwritten without asking.
     pub fn save_path(&mut self, path: &str) {
+        #[cfg(not(target_arch = "wasm32"))]
+        if self.document.path.as_deref() == Some(path)
+            && self.document.disk.is_some()
+            && platform::stamp(path) != self.document.disk
+        {
+            self.files.overwrite = Some(path.to_owned());
+            return;
+        }
+        self.write_scene(path);
+    }
+
+    /// Writes the scene to `path`, whatever is there.
+    fn write_scene(&mut self, path: &str) {
         self.document.set_view(self.canvas.scene_view());
         let text = self
             .document
@@ -323,7 +364,13 @@ impl App {
         #[cfg(target_arch = "wasm32")]
         let written = platform::web::download(path, &text, "text/plain");
         match written {
-            Ok(()) => self.document.mark_saved(path.to_owned()),
+            Ok(()) => {
+                self.document.mark_saved(path.to_owned());
+                #[cfg(not(target_arch = "wasm32"))]
+                {
+                    self.document.disk = platform::stamp(path);
+                }
+            }
             Err(message) => self.notify(message),
         }
     }
@@ -368,7 +415,14 @@ impl App {
             #[cfg(target_arch = "wasm32")]
             Pending::Open => platform::web::pick_scene_file(),
             Pending::Example(name) => self.load_example(name),
-            Pending::Quit => self.quitting = true,
+            Pending::Quit => {
+                // Leaving without the changes, on purpose: no copy to recover.
+                #[cfg(not(target_arch = "wasm32"))]
+                if let Some(autosave) = &mut self.autosave {
+                    autosave.clear();
+                }
+                self.quitting = true;
+            }
         }
     }
 
@@ -706,13 +760,52 @@ impl App {
             Some(Choice::Path(Purpose::ExportCsv(graph), path)) => self.export_csv(&path, graph),
             Some(Choice::Path(Purpose::ExportPng, path)) => self.save_picture(&path),
             Some(Choice::Discard(pending)) => self.proceed(pending),
+            Some(Choice::Overwrite(path)) => self.write_scene(&path),
+            #[cfg(not(target_arch = "wasm32"))]
+            Some(Choice::Recover(recovered)) => self.recover(recovered),
+            #[cfg(not(target_arch = "wasm32"))]
+            Some(Choice::DropRecovery) => {
+                if let Some(autosave) = &mut self.autosave {
+                    autosave.clear();
+                }
+            }
             None => {}
         }
         for action in actions {
             self.perform(action);
         }
         self.take_picture(ui);
+        #[cfg(not(target_arch = "wasm32"))]
+        self.keep_copy();
         self.window(ui);
+    }
+
+    /// Autosaves unsaved work when due (desktop; the browser keeps its copy in `web.rs`).
+    #[cfg(not(target_arch = "wasm32"))]
+    fn keep_copy(&mut self) {
+        if self.files.recover.is_none()
+            && let Some(autosave) = &mut self.autosave
+        {
+            match autosave.tick(&self.document) {
+                Some(message) if !self.autosave_failed => {
+                    self.autosave_failed = true;
+                    self.notify(format!(
+                        "{message}\nUnsaved work is not being kept: save it."
+                    ));
+                }
+                Some(_) => {}
+                None => self.autosave_failed = false,
+            }
+        }
+    }
+
+    /// Brings back work an earlier session left unsaved: unsaved again, with its file.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn recover(&mut self, recovered: Box<autosave::Recovered>) {
+        let recovered = *recovered;
+        let label = recovered.scene.name.clone();
+        self.replace(recovered.scene, None, label);
+        self.document.mark_unsaved(recovered.path);
     }
 
     /// Asks for a screenshot when a picture was asked for, and turns the screenshot into

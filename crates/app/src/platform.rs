@@ -26,7 +26,39 @@ pub fn write_text(path: &str, text: &str) -> Result<(), String> {
 /// The reason, naming the file.
 #[cfg(not(target_arch = "wasm32"))]
 pub fn write_bytes(path: &str, bytes: &[u8]) -> Result<(), String> {
-    std::fs::write(path, bytes).map_err(|e| format!("cannot write '{path}': {e}"))
+    write_atomically(std::path::Path::new(path), bytes)
+}
+
+/// Writes `bytes` to `path` so that a crash or a kill at any moment leaves either the old
+/// file or the new one, never a mix: a temporary file beside it, flushed to the disk, then
+/// renamed over it.
+///
+/// # Errors
+/// The operating system's reason, naming the file.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn write_atomically(path: &std::path::Path, bytes: &[u8]) -> Result<(), String> {
+    use std::io::Write as _;
+    let fail = |e: std::io::Error| format!("cannot write '{}': {e}", path.display());
+    let name = path
+        .file_name()
+        .map_or_else(|| "file".to_owned(), |n| n.to_string_lossy().into_owned());
+    let temporary = path.with_file_name(format!(".{name}.newtonlab-tmp"));
+    let mut file = std::fs::File::create(&temporary).map_err(fail)?;
+    file.write_all(bytes).map_err(fail)?;
+    file.sync_all().map_err(fail)?;
+    drop(file);
+    std::fs::rename(&temporary, path).map_err(|e| {
+        let _ = std::fs::remove_file(&temporary);
+        fail(e)
+    })
+}
+
+/// When the file at `path` was last changed, and its length: to notice a file changed
+/// on disk since it was opened or saved.
+#[cfg(not(target_arch = "wasm32"))]
+pub fn stamp(path: &str) -> Option<(std::time::SystemTime, u64)> {
+    let metadata = std::fs::metadata(path).ok()?;
+    Some((metadata.modified().ok()?, metadata.len()))
 }
 
 /// The entries of a folder, folders first, for the file dialog: (name, is a folder).

@@ -583,3 +583,81 @@ fn fit_frames_the_recent_path() {
         assert!(app.canvas.rect.contains(at), "{point} is in view");
     }
 }
+
+/// Unsaved work survives a crash: it is copied to the data directory while it has
+/// unsaved changes; an app started afterwards (the first one never closed: as after a
+/// kill) offers it back, and recovering gives the same scene, unsaved, with its file.
+#[test]
+fn unsaved_work_is_recovered_after_a_crash() {
+    use newtonlab_app::autosave::Autosave;
+    let dir = std::env::temp_dir().join(format!("newtonlab-autosave-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    let mut first = harness(App::new(one_ball()).with_autosave(Autosave::in_dir(&dir, 0.0)));
+    first
+        .state_mut()
+        .document
+        .apply("change", |s| s.particles[0].mass = 7.5);
+    first.state_mut().document.path = Some("/lessons/ball.toml".to_owned());
+    first.run();
+    let edited = first.state().document.scene().clone();
+    drop(first); // killed: nothing runs on the way out
+
+    let mut second = harness(App::new(Scene::new()).with_autosave(Autosave::in_dir(&dir, 0.0)));
+    second.get_by_label_contains("that were not saved. Recover them?");
+    second.get_by_label("Recover").click();
+    second.run();
+    let app = second.state();
+    assert_eq!(app.document.scene(), &edited, "the work is back");
+    assert!(app.document.is_dirty(), "and still unsaved");
+    assert_eq!(app.document.path.as_deref(), Some("/lessons/ball.toml"));
+
+    // Saving it (here: marking it saved) removes the copy.
+    second
+        .state_mut()
+        .document
+        .mark_saved("/tmp/ball.toml".to_owned());
+    second.run();
+    assert!(
+        Autosave::in_dir(&dir, 0.0).find().is_none(),
+        "no copy once saved"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A file changed on disk since it was opened is not overwritten without asking.
+#[test]
+fn a_file_changed_on_disk_is_not_silently_overwritten() {
+    let dir = std::env::temp_dir().join(format!("newtonlab-disk-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("ball.toml");
+    std::fs::write(&path, one_ball().to_toml()).unwrap();
+    let path_text = path.to_string_lossy().into_owned();
+    let mut harness = harness(App::new(Scene::new()));
+    harness.state_mut().open_path(&path_text);
+    harness.run();
+    // Someone else changes the file (a different length, so the change shows at once).
+    std::fs::write(
+        &path,
+        format!("{}\n# edited elsewhere\n", one_ball().to_toml()),
+    )
+    .unwrap();
+    harness
+        .state_mut()
+        .document
+        .apply("change", |s| s.particles[0].mass = 2.0);
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::S);
+    harness.run();
+    harness.get_by_label_contains("has changed on disk since it was opened");
+    assert!(
+        std::fs::read_to_string(&path)
+            .unwrap()
+            .contains("edited elsewhere"),
+        "not overwritten yet"
+    );
+    harness.get_by_label("Overwrite").click();
+    harness.run();
+    let saved = Scene::from_toml(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    assert_eq!(saved.particles[0].mass, 2.0, "overwritten when asked");
+    assert!(!harness.state().document.is_dirty());
+    std::fs::remove_dir_all(&dir).ok();
+}

@@ -116,6 +116,17 @@ fn open_app(args: &AppArgs) -> Result<(), Failure> {
             app
         }
     };
+    // Unsaved work is kept in the platform's data directory (NEWTONLAB_DATA_DIR
+    // overrides it: for tests, and for a portable install).
+    let data = std::env::var_os("NEWTONLAB_DATA_DIR")
+        .map(std::path::PathBuf::from)
+        .or_else(newtonlab_app::autosave::Autosave::default_dir);
+    if let Some(dir) = data {
+        app = app.with_autosave(newtonlab_app::autosave::Autosave::in_dir(
+            dir,
+            newtonlab_app::autosave::INTERVAL,
+        ));
+    }
     app = app.with_launch(newtonlab_app::Launch {
         play: args.play || args.measure_frames.is_some(),
         measure_frames: args.measure_frames,

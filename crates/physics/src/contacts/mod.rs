@@ -100,6 +100,9 @@ pub(crate) struct Contacts {
     coupled: Vec<bool>,
     /// Each particle's path through the step.
     paths: Vec<Path>,
+    /// Each path's Bézier control points over the whole step, before any impact changed
+    /// it: computed once a step, read by every search that starts at the step's start.
+    controls: Vec<[DVec2; 4]>,
     /// Bumped when a particle's path changes, to recognise stale queued impacts.
     versions: Vec<u32>,
     /// Particles whose paths impacts changed during this step, and the same as flags.
@@ -216,6 +219,7 @@ impl Contacts {
                 })
                 .collect(),
             paths: Vec::new(),
+            controls: Vec::new(),
             versions: Vec::new(),
             changed: Vec::new(),
             is_changed: Vec::new(),
@@ -500,12 +504,15 @@ impl Contacts {
         self.changed.clear();
         self.queue.clear();
         profiler.lap(Stage::TimeOfImpact);
+        self.controls.clear();
+        self.controls
+            .extend(self.paths.iter().map(|path| path.after(0.0, h)));
         self.boxes.clear();
         self.boxes.extend(
-            self.paths
+            self.controls
                 .iter()
                 .zip(&self.radius)
-                .map(|(path, r)| Aabb::around(&path.after(0.0, h), *r)),
+                .map(|(controls, r)| Aabb::around(controls, *r)),
         );
         // Touching pairs are the resting solver's: both lists are ascending, so one walk
         // through the touching list takes them out.
@@ -659,10 +666,19 @@ impl Contacts {
         }
     }
 
+    /// The control points of `p`'s path from `from` seconds to the end of the step.
+    fn path_after(&self, p: usize, from: f64, h: f64) -> [DVec2; 4] {
+        if from == 0.0 && !self.is_changed[p] {
+            self.controls[p]
+        } else {
+            self.paths[p].after(from, h)
+        }
+    }
+
     /// The first impact of particles `i < j` after `after` seconds into the step.
     fn search_pair(&self, i: usize, j: usize, after: f64, h: f64) -> Option<Event> {
         let from = after;
-        let (a, b) = (self.paths[i].after(from, h), self.paths[j].after(from, h));
+        let (a, b) = (self.path_after(i, from, h), self.path_after(j, from, h));
         let relative: [DVec2; 4] = std::array::from_fn(|k| b[k] - a[k]);
         let reach = self.radius[i] + self.radius[j];
         if relative[0].length() - reach <= TOUCHING * reach {
@@ -683,7 +699,7 @@ impl Contacts {
     /// The first impact of particle `p` with each obstacle after `after` seconds.
     fn search_obstacles(&self, p: usize, after: f64, h: f64, found: &mut Vec<Event>) {
         let from = after;
-        let path = self.paths[p].after(from, h);
+        let path = self.path_after(p, from, h);
         let bounds = Aabb::around(&path, self.radius[p]);
         for (k, obstacle) in self.obstacles.iter().enumerate() {
             if obstacle.shape.clear_of_box(bounds.min, bounds.max)

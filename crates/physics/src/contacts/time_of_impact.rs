@@ -113,10 +113,7 @@ impl Region {
     /// Whether the piece of path with control points `p` certainly stays outside.
     fn clear_of(&self, p: &[DVec2; 4]) -> bool {
         match *self {
-            Self::Disc { centre, reach } => {
-                let d = p.map(|q| q - centre);
-                disc_coefficients(&d, reach).into_iter().all(|c| c > 0.0)
-            }
+            Self::Disc { centre, reach } => disc_clear(&p.map(|q| q - centre), reach),
             Self::Slab {
                 origin,
                 direction,
@@ -139,22 +136,22 @@ impl Region {
     }
 }
 
-/// Bernstein coefficients of |D(s)|² − reach² for the cubic D with control points `d`:
-/// the product of two cubics is a sextic with `c[m] = Σ_{i+j=m} C(3,i) C(3,j) / C(6,m) D[i]·D[j]`.
-fn disc_coefficients(d: &[DVec2; 4], reach: f64) -> [f64; 7] {
-    const BINOMIAL_3: [f64; 4] = [1.0, 3.0, 3.0, 1.0];
-    const BINOMIAL_6: [f64; 7] = [1.0, 6.0, 15.0, 20.0, 15.0, 6.0, 1.0];
-    let mut c = [0.0; 7];
-    for i in 0..4 {
-        for j in 0..4 {
-            c[i + j] += BINOMIAL_3[i] * BINOMIAL_3[j] * d[i].dot(d[j]);
-        }
-    }
-    let reach_squared = reach * reach;
-    for (m, c) in c.iter_mut().enumerate() {
-        *c = *c / BINOMIAL_6[m] - reach_squared;
-    }
-    c
+/// Whether the cubic D with control points `d` stays farther than `reach` from the
+/// origin: every Bernstein coefficient of |D(s)|² − reach² is positive. The product of two
+/// cubics is a sextic with coefficients `c[m] = Σ_{i+j=m} C(3,i) C(3,j) D[i]·D[j] / C(6,m)`;
+/// the test is made on `C(6,m) c[m]`, which has the same sign and needs no division, from
+/// the ten distinct dot products (the sum is symmetric in i and j), lowest degree first so
+/// that a piece that starts inside stops at once.
+fn disc_clear(d: &[DVec2; 4], reach: f64) -> bool {
+    let r2 = reach * reach;
+    let dot = |i: usize, j: usize| d[i].dot(d[j]);
+    d[0].length_squared() > r2
+        && d[3].length_squared() > r2
+        && dot(0, 1) > r2
+        && dot(2, 3) > r2
+        && 6.0 * dot(0, 2) + 9.0 * d[1].length_squared() > 15.0 * r2
+        && 6.0 * dot(1, 3) + 9.0 * d[2].length_squared() > 15.0 * r2
+        && 2.0 * dot(0, 3) + 18.0 * dot(1, 2) > 20.0 * r2
 }
 
 /// The Bézier control points of the Hermite path from (x0, v0) to (x1, v1) over `h`.

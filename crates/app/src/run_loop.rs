@@ -12,11 +12,15 @@ use web_time::Instant;
 
 use crate::recording::Recording;
 
-/// Computing time per frame spent on physics at most, seconds. Drawing a thousand balls
-/// with software rendering takes some 20 ms on two cores, so 8 ms of physics keeps the
-/// app above 30 frames per second; a scene that needs more runs slower than real time and
-/// says so, rather than making the app sluggish.
-const FRAME_BUDGET: f64 = 0.008;
+/// The frame time the app keeps to while physics is behind: 30 frames per second.
+/// Physics gets what is left of each frame after drawing and the rest of the app
+/// (measured, smoothed), within [`LEAST_BUDGET`, `MOST_BUDGET`]: a heavy scene runs as
+/// fast as the frame rate allows, and says how far it falls short of real time.
+const TARGET_FRAME: f64 = 1.0 / 30.0;
+/// Physics per frame at least, seconds: even when drawing alone takes a whole frame.
+const LEAST_BUDGET: f64 = 0.004;
+/// Physics per frame at most, seconds.
+const MOST_BUDGET: f64 = 0.025;
 /// A frame longer than this (a stall, a breakpoint) does not ask for more physics.
 const LONGEST_FRAME: f64 = 0.1;
 /// Points kept per trail.
@@ -34,6 +38,10 @@ pub struct Runner {
     pub steps_per_second: f64,
     /// Computing time spent on physics per frame, seconds, smoothed.
     pub physics_per_frame: f64,
+    /// The rest of a frame (drawing, the app), seconds, smoothed.
+    other_per_frame: f64,
+    /// Physics time of the last frame, seconds.
+    last_physics: f64,
     /// The last run, sampled from its start: kept after Reset until the next Play.
     pub recording: Option<Recording>,
     /// Why the simulation stopped, if it failed.
@@ -53,6 +61,8 @@ impl Default for Runner {
             achieved: 0.0,
             steps_per_second: 0.0,
             physics_per_frame: 0.0,
+            other_per_frame: 0.0,
+            last_physics: 0.0,
             recording: None,
             failure: None,
             start_energy: 0.0,
@@ -140,6 +150,11 @@ impl Runner {
             return false;
         };
         let real_dt = real_dt.clamp(0.0, LONGEST_FRAME);
+        if real_dt > 0.0 {
+            let other = (real_dt - self.last_physics).max(0.0);
+            self.other_per_frame = smooth(self.other_per_frame, other);
+        }
+        let budget = (TARGET_FRAME - self.other_per_frame).clamp(LEAST_BUDGET, MOST_BUDGET);
         let step = simulation.time_step();
         self.debt += real_dt * time_scale;
         let (clock, start_time) = (Instant::now(), simulation.time());
@@ -156,13 +171,14 @@ impl Runner {
             }
             self.debt -= step;
             steps += 1;
-            if clock.elapsed().as_secs_f64() > FRAME_BUDGET {
+            if clock.elapsed().as_secs_f64() > budget {
                 // Behind: drop what is owed instead of carrying it into the next frame.
                 self.debt = self.debt.min(step);
                 break;
             }
         }
         let computing = clock.elapsed().as_secs_f64();
+        self.last_physics = computing;
         if steps > 0 && computing > 0.0 {
             self.steps_per_second = smooth(self.steps_per_second, f64::from(steps) / computing);
         }

@@ -8,6 +8,10 @@ use crate::{Failure, scene_source};
 
 /// The most rows one run may write: beyond this a typo in --every is likelier than intent.
 const MAX_ROWS: f64 = 1e8;
+/// The most time steps one run may take: 10⁹ steps of even the lightest scene take about
+/// a quarter of an hour here; more is a time step or a --until mistyped, and would look
+/// like a hang.
+const MAX_STEPS: f64 = 1e9;
 
 #[derive(Debug, clap::Args)]
 pub(crate) struct RunArgs {
@@ -49,6 +53,13 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         )));
     }
     let scene = scene_source::load(&args.scene)?;
+    let steps = args.until / scene.simulation.time_step;
+    if steps > MAX_STEPS {
+        return Err(Failure::Input(format!(
+            "--until {} at a time step of {:e} s would take {steps:.1e} steps, more than NewtonLab runs ({MAX_STEPS:e}); choose a larger time_step or a shorter --until",
+            args.until, scene.simulation.time_step
+        )));
+    }
     let simulation = Simulation::new(&scene).map_err(|e| Failure::Input(e.to_string()))?;
     if let Some(note) = sampling_note(&scene.simulation, args.every) {
         eprintln!("note: {note}");

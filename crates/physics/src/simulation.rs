@@ -51,6 +51,23 @@ pub enum SimulationError {
         /// The scene's tolerance.
         tolerance: f64,
     },
+    /// Reaching the requested instant took far more adaptive steps than the time step
+    /// implies: the time step is far too long for the motion.
+    #[error(
+        "at t = {time} s reaching {target:e} s took more than {limit} adaptive steps \
+         (the time step of {time_step:e} s is far too long for this scene's motion); \
+         choose a smaller time_step"
+    )]
+    TooManySteps {
+        /// Seconds, where it stopped.
+        time: f64,
+        /// Seconds, the instant asked for.
+        target: f64,
+        /// The scene's time step, seconds.
+        time_step: f64,
+        /// The steps allowed.
+        limit: u64,
+    },
 }
 
 /// A scene in motion.
@@ -243,7 +260,28 @@ impl Simulation {
     /// When the state becomes non-finite or the adaptive integrator fails; the state is
     /// then the one at which the failure was found.
     pub fn step_to(&mut self, time: f64) -> Result<(), SimulationError> {
+        // Every loop here is bounded: dopri5 may take many more steps than the time step
+        // implies (a close pass), but not a hundred thousand times more.
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a count of steps, capped far below u64::MAX"
+        )]
+        let limit = ((time - self.state.time) / self.time_step)
+            .ceil()
+            .clamp(1.0, 1e12) as u64
+            * 100_000;
+        let mut taken_steps = 0_u64;
         while self.state.time < time {
+            taken_steps += 1;
+            if taken_steps > limit {
+                return Err(SimulationError::TooManySteps {
+                    time: self.state.time,
+                    target: time,
+                    time_step: self.time_step,
+                    limit,
+                });
+            }
             let remaining = time - self.state.time;
             // Within a hair of the target, one step lands on it: no sliver steps.
             let last = remaining <= self.time_step * (1.0 + 1e-9);

@@ -194,7 +194,7 @@ mass = 0.1
 radius = 0.2
 charge = -1.6e-19
 position = { magnitude = 32.725, angle = 45 }
-velocity = [1e-300, -0.0]
+velocity = [1e-100, -0.0]
 acceleration = [0.1, 0.2]
 fixed = true
 color = "#A1b2C3"

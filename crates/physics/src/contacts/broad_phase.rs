@@ -119,18 +119,23 @@ impl Grid {
             self.members.clear();
             return;
         }
-        // At most about four cells per particle: a sparse scene gets larger cells.
+        // At most about four cells per particle: a sparse scene gets larger cells. The
+        // sizes are worked out in f64, so boxes near the ends of the f64 range (whose
+        // span overflows) get one cell for all rather than a wrapped-around count.
         let span = hi - lo;
         let limit = (4 * fitting + 64) as f64;
         self.cell = self.cell.max((span.x * span.y / limit).sqrt());
         self.origin = lo;
-        self.columns = (span.x / self.cell) as usize + 1;
-        self.rows = (span.y / self.cell) as usize + 1;
-        while (self.columns * self.rows) as f64 > 2.0 * limit {
-            self.cell *= 2.0;
-            self.columns = (span.x / self.cell) as usize + 1;
-            self.rows = (span.y / self.cell) as usize + 1;
+        let dimensions = |cell: f64| ((span.x / cell).floor() + 1.0, (span.y / cell).floor() + 1.0);
+        let (mut columns, mut rows) = dimensions(self.cell);
+        if !(span.is_finite() && self.cell.is_finite()) {
+            (self.cell, columns, rows) = (f64::INFINITY, 1.0, 1.0);
         }
+        while columns * rows > 2.0 * limit {
+            self.cell *= 2.0;
+            (columns, rows) = dimensions(self.cell);
+        }
+        (self.columns, self.rows) = (columns as usize, rows as usize);
         let cells = self.columns * self.rows;
         self.first.clear();
         self.first.resize(cells + 1, 0);
@@ -263,6 +268,26 @@ impl BroadPhase {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Boxes near both ends of the f64 range (a span that overflows), and boxes over a
+    /// span of 1e200 across by 1 high (a column count beyond usize): the same pairs as a
+    /// brute-force search. (A ball at 1e300 m/s once made the grid index out of bounds;
+    /// validation now refuses such a speed, and the grid works out its sizes in f64, with
+    /// one cell for all when the span overflows.)
+    #[test]
+    fn boxes_at_the_ends_of_the_range_are_paired_without_overflow() {
+        let at = |x: f64, y: f64| Aabb {
+            min: DVec2::new(x, y),
+            max: DVec2::new(x + x.abs() * 1e-3 + 1.0, y + 1.0),
+        };
+        let overflowing = [at(-1e308, 0.0), at(1e308, 0.0), at(0.0, 0.0), at(0.0, 0.5)];
+        let wide = [at(0.0, 0.0), at(1e200, 0.0), at(1e200, 0.5), at(0.0, 0.5)];
+        for boxes in [&overflowing[..], &wide[..]] {
+            let mut broad = BroadPhase::default();
+            let found = broad.pairs(boxes, |_, _| false, &Workers::new(1)).to_vec();
+            assert_eq!(found, brute_force(boxes));
+        }
+    }
 
     fn brute_force(boxes: &[Aabb]) -> Vec<(u32, u32)> {
         let mut expected = Vec::new();

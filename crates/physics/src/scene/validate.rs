@@ -96,6 +96,7 @@ pub fn check_value(rule: Rule, field: &str, value: f64) -> Result<(), String> {
     if !value.is_finite() {
         return Err(format!("{field} must be a finite number, got {value}"));
     }
+    check_magnitude(field, value)?;
     match rule {
         Rule::Positive if value <= 0.0 => {
             Err(format!("{field} must be greater than 0, got {value}"))
@@ -106,6 +107,30 @@ pub fn check_value(rule: Rule, field: &str, value: f64) -> Result<(), String> {
         }
         _ => Ok(()),
     }
+}
+
+/// The largest magnitude of any number in a scene. Forces multiply up to three inputs
+/// (G m₁ m₂ / r², k q₁ q₂ / r²) and energies square speeds: with every input within
+/// 10⁻¹⁰⁰ … 10¹⁰⁰ every such product stays inside the range of f64, so no force or
+/// energy overflows to infinity or vanishes into zero.
+pub const LARGEST_MAGNITUDE: f64 = 1e100;
+/// The smallest non-zero magnitude of any number in a scene; see [`LARGEST_MAGNITUDE`].
+pub const SMALLEST_MAGNITUDE: f64 = 1e-100;
+
+/// A value (finite) is 0 or of a magnitude NewtonLab simulates reliably.
+fn check_magnitude(field: &str, value: f64) -> Result<(), String> {
+    let size = value.abs();
+    if size == 0.0 || (SMALLEST_MAGNITUDE..=LARGEST_MAGNITUDE).contains(&size) {
+        return Ok(());
+    }
+    let which = if size > LARGEST_MAGNITUDE {
+        "large"
+    } else {
+        "small"
+    };
+    Err(format!(
+        "{field} {value:e} is too {which} to simulate reliably: numbers in a scene are 0 or between 1e-100 and 1e100 in size, so that forces and energies stay within the range of f64"
+    ))
 }
 
 /// What a number field must satisfy.
@@ -150,6 +175,17 @@ impl Checker<'_> {
                 field,
                 &format!("{field} must have finite components"),
             );
+            return;
+        }
+        let sizes = match value {
+            Vector::Cartesian(v) => [v.x, v.y],
+            Vector::Polar { magnitude, .. } => [magnitude, 0.0],
+        };
+        if let Some(reason) = sizes
+            .into_iter()
+            .find_map(|size| check_magnitude(field, size).err())
+        {
+            self.report(section, field, &reason);
         }
     }
 

@@ -60,6 +60,9 @@ pub struct Launch {
     pub measure_frames: Option<usize>,
     /// Start in projector mode.
     pub projector: bool,
+    /// While measuring, also print every this many frames the mean frame time of those
+    /// frames and the simulated time (for a soak: growth shows as a trend).
+    pub report_every: Option<usize>,
 }
 
 /// Which side panels show, and projector mode (no panels, large text).
@@ -890,6 +893,27 @@ impl App {
                 .push(now.duration_since(last).as_secs_f64());
         }
         ui.ctx().request_repaint();
+        if let Some(every) = self.launch.report_every.filter(|&e| e > 0)
+            && !self.frame_times.is_empty()
+            && self.frame_times.len().is_multiple_of(every)
+        {
+            let window = &self.frame_times[self.frame_times.len() - every..];
+            let mean = window.iter().sum::<f64>() / window.len() as f64;
+            #[expect(
+                clippy::print_stdout,
+                reason = "the measurement is the output of this mode"
+            )]
+            {
+                println!(
+                    "frames {}-{}: mean {:.1} ms; t = {:.1} s simulated, physics {:.2}× real time",
+                    self.frame_times.len() - every + 1,
+                    self.frame_times.len(),
+                    mean * 1000.0,
+                    self.time(),
+                    self.runner.achieved,
+                );
+            }
+        }
         if self.frame_times.len() >= frames {
             let mut times = self.frame_times.clone();
             times.sort_by(f64::total_cmp);

@@ -54,6 +54,9 @@ struct AppArgs {
     /// Open in projector mode: the canvas alone, with large text (F11 switches).
     #[arg(long)]
     projector: bool,
+    /// With --measure-frames, also print the mean frame time of every N frames.
+    #[arg(long, value_name = "N")]
+    report_every: Option<usize>,
 }
 
 /// Why a command failed, and the exit code that says so.
@@ -84,6 +87,7 @@ fn main() -> ExitCode {
             play: false,
             measure_frames: None,
             projector: false,
+            report_every: None,
         }),
         Some(Command::App(args)) => open_app(&args),
         Some(Command::Run(args)) => run::run(&args),
@@ -131,6 +135,7 @@ fn open_app(args: &AppArgs) -> Result<(), Failure> {
         play: args.play || args.measure_frames.is_some(),
         measure_frames: args.measure_frames,
         projector: args.projector,
+        report_every: args.report_every,
     });
     newtonlab_app::run_native(app).map_err(|e| {
         Failure::Simulation(format!(

@@ -261,7 +261,8 @@ impl Simulation {
     /// then the one at which the failure was found.
     pub fn step_to(&mut self, time: f64) -> Result<(), SimulationError> {
         // Every loop here is bounded: dopri5 may take many more steps than the time step
-        // implies (a close pass), but not a hundred thousand times more.
+        // implies (a close pass), but not ten thousand times more: that would take seconds
+        // for one step, and says the time step is far too long for the motion.
         #[expect(
             clippy::cast_possible_truncation,
             clippy::cast_sign_loss,
@@ -270,7 +271,7 @@ impl Simulation {
         let limit = ((time - self.state.time) / self.time_step)
             .ceil()
             .clamp(1.0, 1e12) as u64
-            * 100_000;
+            * 10_000;
         let mut taken_steps = 0_u64;
         while self.state.time < time {
             taken_steps += 1;

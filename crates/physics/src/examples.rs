@@ -1,6 +1,8 @@
 //! The built-in example scenes: one registry that the command line (`example:NAME`), the
 //! tests, the validation report and the app's Examples menu all read. The files live in
-//! `examples/scenes/` and are compiled in.
+//! `examples/scenes/` and are compiled in; the largest scene is made by code instead
+//! ([`crate::generated`]), since ten thousand particles in a file would only weigh down
+//! the program (and the web page) that carries it.
 
 use crate::scene::Scene;
 use crate::scene::format::LoadError;
@@ -10,8 +12,16 @@ use crate::scene::format::LoadError;
 pub struct Example {
     /// What `example:NAME` names: the file's stem.
     pub name: &'static str,
-    /// The scene file's text.
-    pub source: &'static str,
+    source: Source,
+}
+
+/// Where an example comes from.
+#[derive(Clone, Copy, Debug)]
+enum Source {
+    /// A scene file's text.
+    File(&'static str),
+    /// A scene made by code.
+    Generated(fn() -> Scene),
 }
 
 impl Example {
@@ -21,8 +31,26 @@ impl Example {
     /// Never for the shipped files (a test loads every one); kept as a `Result` so a
     /// broken file is a message, not a crash.
     pub fn scene(&self) -> Result<Scene, LoadError> {
-        Scene::from_toml(self.source)
+        match self.source {
+            Source::File(text) => Scene::from_toml(text),
+            Source::Generated(make) => Ok(make()),
+        }
     }
+
+    /// The scene file's text, for an example shipped as a file.
+    pub fn file_text(&self) -> Option<&'static str> {
+        match self.source {
+            Source::File(text) => Some(text),
+            Source::Generated(_) => None,
+        }
+    }
+}
+
+/// The 10,000-ball pit: the generated layout of the `ball-pit` example, ten times larger.
+fn ball_pit_10000() -> Scene {
+    let mut scene = crate::generated::ball_pit(10_000);
+    scene.name = Some("Ball pit of 10,000".to_owned());
+    scene
 }
 
 macro_rules! examples {
@@ -30,8 +58,11 @@ macro_rules! examples {
         /// Every built-in scene, in menu order.
         pub static EXAMPLES: &[Example] = &[$(Example {
             name: $name,
-            source: include_str!(concat!("../../../examples/scenes/", $name, ".toml")),
-        }),*];
+            source: Source::File(include_str!(concat!("../../../examples/scenes/", $name, ".toml"))),
+        }),*, Example {
+            name: "ball-pit-10000",
+            source: Source::Generated(ball_pit_10000),
+        }];
     };
 }
 

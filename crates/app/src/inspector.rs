@@ -258,37 +258,7 @@ pub fn ui(
         egui::CollapsingHeader::new(heading)
             .id_salt("selected")
             .default_open(true)
-            .show(ui, |ui| match *selection {
-                None => {
-                    ui.label("Nothing selected: click an object on the canvas.");
-                }
-                Some(Selection::Particle(i)) if i < document.scene().particles.len() => {
-                    problem = object(
-                        ui,
-                        document,
-                        Section::Particle(i),
-                        i,
-                        fields::PARTICLE,
-                        move |s| &mut s.particles[i],
-                    );
-                }
-                Some(Selection::Spring(i)) if i < document.scene().springs.len() => {
-                    problem = object(
-                        ui,
-                        document,
-                        Section::Spring(i),
-                        i,
-                        fields::SPRING,
-                        move |s| &mut s.springs[i],
-                    );
-                }
-                Some(Selection::Ramp(i)) if i < document.scene().ramps.len() => {
-                    problem = object(ui, document, Section::Ramp(i), i, fields::RAMP, move |s| {
-                        &mut s.ramps[i]
-                    });
-                }
-                Some(_) => *selection = None,
-            });
+            .show(ui, |ui| problem = selected(ui, document, selection));
         if selection.is_some()
             && ui
                 .button("Delete")
@@ -302,9 +272,15 @@ pub fn ui(
             .show(ui, |ui| {
                 let id = Id::unique("world");
                 problem = problem.take().or_else(|| {
-                    table(ui, document, id, Section::World, 0, fields::WORLD, |s| {
-                        &mut s.world
-                    })
+                    table(
+                        ui,
+                        document,
+                        id,
+                        Section::World,
+                        0,
+                        fields::WORLD,
+                        (|s| &s.world, |s| &mut s.world),
+                    )
                 });
             });
         egui::CollapsingHeader::new("Simulation")
@@ -320,7 +296,7 @@ pub fn ui(
                         Section::Simulation,
                         0,
                         fields::SIMULATION,
-                        |s| &mut s.simulation,
+                        (|s| &s.simulation, |s| &mut s.simulation),
                     )
                 });
             });
@@ -452,6 +428,52 @@ fn endpoint_field(
     result
 }
 
+/// The selected object's name and fields; a selection whose object is gone is dropped.
+fn selected(
+    ui: &mut Ui,
+    document: &mut Document,
+    selection: &mut Option<Selection>,
+) -> Option<String> {
+    let mut problem = None;
+    match *selection {
+        None => {
+            ui.label("Nothing selected: click an object on the canvas.");
+        }
+        Some(Selection::Particle(i)) if i < document.scene().particles.len() => {
+            problem = object(
+                ui,
+                document,
+                Section::Particle(i),
+                i,
+                fields::PARTICLE,
+                (move |s| &s.particles[i], move |s| &mut s.particles[i]),
+            );
+        }
+        Some(Selection::Spring(i)) if i < document.scene().springs.len() => {
+            problem = object(
+                ui,
+                document,
+                Section::Spring(i),
+                i,
+                fields::SPRING,
+                (move |s| &s.springs[i], move |s| &mut s.springs[i]),
+            );
+        }
+        Some(Selection::Ramp(i)) if i < document.scene().ramps.len() => {
+            problem = object(
+                ui,
+                document,
+                Section::Ramp(i),
+                i,
+                fields::RAMP,
+                (move |s| &s.ramps[i], move |s| &mut s.ramps[i]),
+            );
+        }
+        Some(_) => *selection = None,
+    }
+    problem
+}
+
 /// An object's name and then its fields from the table.
 fn object<T: Clone + 'static>(
     ui: &mut Ui,
@@ -459,7 +481,7 @@ fn object<T: Clone + 'static>(
     section: Section,
     index: usize,
     fields: &[Field<T>],
-    access: impl Fn(&mut Scene) -> &mut T + Copy,
+    access: (impl Fn(&Scene) -> &T, impl Fn(&mut Scene) -> &mut T + Copy),
 ) -> Option<String> {
     let id = Id::unique(("object", section));
     let name = document
@@ -472,8 +494,9 @@ fn object<T: Clone + 'static>(
 }
 
 /// The fields of one section, as the field table describes them: each with its label,
-/// unit and help, checked by its rule, applied as one undoable edit. `palette` is the
-/// index whose palette colour a particle without one shows.
+/// unit and help, checked by its rule, applied as one undoable edit. `access` reads and
+/// writes the section in a scene; `palette` is the index whose palette colour a particle
+/// without one shows.
 fn table<T: Clone + 'static>(
     ui: &mut Ui,
     document: &mut Document,
@@ -481,11 +504,16 @@ fn table<T: Clone + 'static>(
     section: Section,
     palette: usize,
     fields: &[Field<T>],
-    access: impl Fn(&mut Scene) -> &mut T + Copy,
+    (read, write): (impl Fn(&Scene) -> &T, impl Fn(&mut Scene) -> &mut T + Copy),
 ) -> Option<String> {
-    let mut scene = document.scene().clone();
-    let target = access(&mut scene).clone();
-    let names: Vec<String> = scene.particles.iter().map(|p| p.name.clone()).collect();
+    // Only the section is copied, not the scene, every frame.
+    let target = read(document.scene()).clone();
+    let names: Vec<String> = document
+        .scene()
+        .particles
+        .iter()
+        .map(|p| p.name.clone())
+        .collect();
     let mut problem = None;
     for f in fields.iter().filter(|f| f.place == Place::Inspector) {
         let field_id = id.with(f.key);
@@ -499,7 +527,7 @@ fn table<T: Clone + 'static>(
                 section,
                 field: f.key,
             },
-            |scene| (f.set)(access(scene), value),
+            |scene| (f.set)(write(scene), value),
         );
         if let Err(message) = result {
             problem = Some(message);

@@ -69,14 +69,11 @@ pub fn to_csv(recording: &Recording, graph: &Graph) -> String {
     let header: Vec<String> = columns.iter().map(|q| quote(label(q))).collect();
     let mut out = header.join(",");
     out.push('\n');
+    let found: Vec<_> = columns.iter().map(|q| recording.column(q)).collect();
     for k in 0..recording.len() {
-        let fields: Vec<String> = columns
+        let fields: Vec<String> = found
             .iter()
-            .map(|q| {
-                recording
-                    .value(k, q)
-                    .map_or_else(String::new, |v| format!("{v:?}"))
-            })
+            .map(|c| c.map_or_else(String::new, |c| format!("{:?}", recording.at(k, c))))
             .collect();
         out.push_str(&fields.join(","));
         out.push('\n');
@@ -124,8 +121,14 @@ impl Graphs {
         recording: Option<&Recording>,
         g: usize,
     ) -> Option<Action> {
-        let scene = document.scene().clone();
-        let graph = &scene.graphs[g];
+        // Only what the panel reads, not the whole scene, every frame.
+        let graph = &document.scene().graphs[g].clone();
+        let names: Vec<String> = document
+            .scene()
+            .particles
+            .iter()
+            .map(|p| p.name.clone())
+            .collect();
         let (x, series) = axes(graph);
         let mut action = None;
         let mut change: Option<Edit> = None;
@@ -145,15 +148,14 @@ impl Graphs {
             }
         });
         ui.horizontal_wrapped(|ui| {
-            let names: Vec<&str> = scene.particles.iter().map(|p| p.name.as_str()).collect();
             let (mut particle, mut of) = self.choice[g];
             particle = particle.min(names.len().saturating_sub(1));
             let label = ui.label("particle");
             egui::ComboBox::from_id_salt("graph-particle")
-                .selected_text(names.get(particle).copied().unwrap_or("—"))
+                .selected_text(names.get(particle).map_or("—", String::as_str))
                 .show_ui(ui, |ui| {
                     for (i, name) in names.iter().enumerate() {
-                        ui.selectable_value(&mut particle, i, *name);
+                        ui.selectable_value(&mut particle, i, name.as_str());
                     }
                 })
                 .response
@@ -173,7 +175,7 @@ impl Graphs {
             self.choice[g] = (particle, of);
             let chosen = names
                 .get(particle)
-                .map(|name| Quantity::Particle((*name).to_owned(), of).to_string());
+                .map(|name| Quantity::Particle(name.clone(), of).to_string());
             if ui
                 .add_enabled(chosen.is_some(), egui::Button::new("Add"))
                 .on_hover_text("Plot this quantity")
@@ -275,13 +277,14 @@ impl Graphs {
             .height(220.0)
             .show(ui, |plot| {
                 for q in &series {
-                    if !recording.has(q) || !recording.has(&x) {
+                    let (Some(across), Some(up)) = (recording.column(&x), recording.column(q))
+                    else {
                         continue;
-                    }
+                    };
                     let points: PlotPoints = (0..samples)
                         .step_by(every)
                         .chain((!(samples - 1).is_multiple_of(every)).then_some(samples - 1))
-                        .filter_map(|k| Some([recording.value(k, &x)?, recording.value(k, q)?]))
+                        .map(|k| [recording.at(k, across), recording.at(k, up)])
                         .collect();
                     plot.line(Line::new(label(q), points));
                 }

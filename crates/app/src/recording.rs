@@ -20,6 +20,14 @@ const PER_PARTICLE: usize = 7;
 /// System numbers per sample, after the particles'.
 const TOTALS: [Total; 5] = Total::ALL;
 
+/// Where a quantity is in a sample: a number stored, or the speed from the velocity's
+/// two components.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Column {
+    Plain(usize),
+    Speed(usize),
+}
+
 #[derive(Clone, Debug)]
 pub struct Recording {
     /// The particles' names at Play, in simulation order.
@@ -149,38 +157,43 @@ impl Recording {
         &self.data[k * self.width..(k + 1) * self.width]
     }
 
-    /// The value of `quantity` at sample `k`; `None` for a particle not in the run.
-    pub fn value(&self, k: usize, quantity: &Quantity) -> Option<f64> {
-        let row = self.row(k);
-        match quantity {
-            Quantity::Time => Some(row[0]),
+    /// Where `quantity` is in every sample; `None` for a particle not in the run. Found
+    /// once, then read for every sample with [`Self::at`].
+    pub fn column(&self, quantity: &Quantity) -> Option<Column> {
+        Some(match quantity {
+            Quantity::Time => Column::Plain(0),
             Quantity::Particle(name, of) => {
-                let i = self.names.iter().position(|n| n == name)?;
-                let p = particle(row, i);
-                Some(match of {
-                    Of::X => p[0],
-                    Of::Y => p[1],
-                    Of::Vx => p[2],
-                    Of::Vy => p[3],
-                    Of::Speed => p[2].hypot(p[3]),
-                    Of::Ax => p[4],
-                    Of::Ay => p[5],
-                    Of::KineticEnergy => p[6],
-                })
+                let first = 1 + PER_PARTICLE * self.names.iter().position(|n| n == name)?;
+                match of {
+                    Of::X => Column::Plain(first),
+                    Of::Y => Column::Plain(first + 1),
+                    Of::Vx => Column::Plain(first + 2),
+                    Of::Vy => Column::Plain(first + 3),
+                    Of::Speed => Column::Speed(first + 2),
+                    Of::Ax => Column::Plain(first + 4),
+                    Of::Ay => Column::Plain(first + 5),
+                    Of::KineticEnergy => Column::Plain(first + 6),
+                }
             }
             Quantity::Total(total) => {
                 let j = TOTALS.iter().position(|t| t == total)?;
-                Some(row[self.width - TOTALS.len() + j])
+                Column::Plain(self.width - TOTALS.len() + j)
             }
+        })
+    }
+
+    /// The value in `column` at sample `k`.
+    pub fn at(&self, k: usize, column: Column) -> f64 {
+        let row = self.row(k);
+        match column {
+            Column::Plain(c) => row[c],
+            Column::Speed(c) => row[c].hypot(row[c + 1]),
         }
     }
 
-    /// Whether the run had a particle of this name.
-    pub fn has(&self, quantity: &Quantity) -> bool {
-        match quantity {
-            Quantity::Particle(name, _) => self.names.contains(name),
-            _ => true,
-        }
+    /// The value of `quantity` at sample `k`; `None` for a particle not in the run.
+    pub fn value(&self, k: usize, quantity: &Quantity) -> Option<f64> {
+        self.column(quantity).map(|c| self.at(k, c))
     }
 
     /// The positions and velocities at the last sample: the last good state of a run

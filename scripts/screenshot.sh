@@ -6,18 +6,18 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-target/screenshot.png}
-display=:97
-Xvfb "$display" -screen 0 1280x800x24 >/dev/null 2>&1 &
-xvfb=$!
 app=
-cleanup() { [ -n "$app" ] && kill "$app" 2>/dev/null; kill "$xvfb" 2>/dev/null; true; }
+xvfb=
+cleanup() { [ -n "$app" ] && kill "$app" 2>/dev/null; [ -n "$xvfb" ] && kill "$xvfb" 2>/dev/null; true; }
 trap cleanup EXIT
-sleep 1
-DISPLAY=$display target/release/newtonlab app example:marble-run --play >/dev/null 2>&1 &
+# shellcheck source=scripts/xvfb.sh
+. scripts/xvfb.sh
+start_xvfb :97
+target/release/newtonlab app example:marble-run --play >/dev/null 2>&1 &
 app=$!
 sleep 6
 kill -0 "$app" || { echo "the app exited before the screenshot"; exit 1; }
-DISPLAY=$display import -window root "$out"
+import -window root "$out"
 colours=$(convert "$out" -format %k info:)
 echo "screenshot $out: $colours colours"
 if [ "$colours" -lt 64 ]; then
@@ -26,4 +26,4 @@ if [ "$colours" -lt 64 ]; then
 fi
 kill "$app"
 app=
-DISPLAY=$display timeout 120 target/release/newtonlab app example:ball-pit --measure-frames 300
+timeout 120 target/release/newtonlab app example:ball-pit --measure-frames 300

@@ -9,14 +9,14 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 scene=${1:-example:ball-pit}
 frames=${2:-108000}
-display=:95
-Xvfb "$display" -screen 0 1280x800x24 >/dev/null 2>&1 &
-xvfb=$!
 app=
-cleanup() { [ -n "$app" ] && kill "$app" 2>/dev/null; kill "$xvfb" 2>/dev/null; true; }
+xvfb=
+cleanup() { [ -n "$app" ] && kill "$app" 2>/dev/null; [ -n "$xvfb" ] && kill "$xvfb" 2>/dev/null; true; }
 trap cleanup EXIT
-sleep 1
-DISPLAY=$display NEWTONLAB_DATA_DIR=$(mktemp -d) target/release/newtonlab app "$scene" \
+# shellcheck source=scripts/xvfb.sh
+. scripts/xvfb.sh
+start_xvfb :95
+NEWTONLAB_DATA_DIR=$(mktemp -d) target/release/newtonlab app "$scene" \
     --measure-frames "$frames" --report-every 1800 &
 app=$!
 start=$(date +%s)

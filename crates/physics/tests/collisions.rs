@@ -329,3 +329,69 @@ fn newtons_cradle_passes_the_blow_on_when_the_balls_attract() {
     simulation.step_to(1.0).unwrap();
     assert_only_the_last_ball_leaves(&simulation, 1e-8);
 }
+
+/// Two balls set moving by impacts inside one step (of 2 s) then strike each other in
+/// it, far from where either was at the step's start: A (5 m/s) strikes B at rest at
+/// t = 0.4 s, sending B along y = 0; C (5 m/s down) strikes D at rest at (4, 3) at 0.6 s,
+/// sending D down x = 4. Equal masses, radii 0.5, e = 1, no forces. B and D meet when
+/// √2 (6 − 5t) = 1, at t = (6 − 1/√2) / 5 ≈ 1.0586 s, with the normal (1, 1)/√2, and
+/// swap velocities: at 2 s B is at (5t − 2, −5 (2 − t)) and D at (4 + 5 (2 − t), 1/√2).
+///
+/// The broad phase carries each particle's fat box from the step's start; both new
+/// paths leave theirs, so this impact is found only because a search after an impact
+/// also tries every particle whose path left its fat box.
+#[test]
+fn balls_set_moving_inside_a_step_meet_far_from_where_they_started() {
+    let ball = |name: &str, position: [f64; 2], velocity: [f64; 2]| {
+        Particle::new(name, 1.0)
+            .radius(0.5)
+            .position(position)
+            .velocity(velocity)
+    };
+    let scene = Scene::new()
+        .with_world(no_forces())
+        .with_integrator(Integrator::Rk4, 2.0)
+        .with_particle(ball("A", [-3.0, 0.0], [5.0, 0.0]))
+        .with_particle(ball("B", [0.0, 0.0], [0.0, 0.0]))
+        .with_particle(ball("C", [4.0, 7.0], [0.0, -5.0]))
+        .with_particle(ball("D", [4.0, 3.0], [0.0, 0.0]));
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.record_impacts();
+    simulation.step_to(2.0).unwrap();
+    assert_eq!(simulation.steps_taken(), 1, "one step");
+    let meeting = (6.0 - std::f64::consts::FRAC_1_SQRT_2) / 5.0;
+    let times: Vec<f64> = simulation.take_impacts().iter().map(|i| i.time).collect();
+    assert_eq!(times.len(), 3, "three impacts: {times:?}");
+    for (time, theory) in times.iter().zip([0.4, 0.6, meeting]) {
+        assert!(
+            (time - theory).abs() < 1e-12,
+            "impact at {time} s, theory {theory} s"
+        );
+    }
+    let expected = [
+        (DVec2::new(-1.0, 0.0), DVec2::ZERO),
+        (
+            DVec2::new(5.0 * meeting - 2.0, -5.0 * (2.0 - meeting)),
+            DVec2::new(0.0, -5.0),
+        ),
+        (DVec2::new(4.0, 4.0), DVec2::ZERO),
+        (
+            DVec2::new(4.0 + 5.0 * (2.0 - meeting), std::f64::consts::FRAC_1_SQRT_2),
+            DVec2::new(5.0, 0.0),
+        ),
+    ];
+    let (x, v) = (simulation.positions(), simulation.velocities());
+    for (k, (position, velocity)) in expected.into_iter().enumerate() {
+        // Rounding of the 10 m travelled and the 1/√2 in the normal: 1e-11.
+        assert!(
+            x[k].distance(position) < 1e-11,
+            "ball {k} at {}, theory {position}",
+            x[k]
+        );
+        assert!(
+            v[k].distance(velocity) < 1e-11,
+            "ball {k} moving {}, theory {velocity}",
+            v[k]
+        );
+    }
+}

@@ -44,7 +44,7 @@ use std::collections::BinaryHeap;
 
 use glam::DVec2;
 
-use self::broad_phase::{Aabb, BroadPhase};
+use self::broad_phase::{Aabb, Proxies};
 use self::obstacles::{Obstacle, Shape};
 use self::resting::{RestingSolver, Touching};
 use self::time_of_impact::{Region, control_points, earliest_entry};
@@ -57,6 +57,11 @@ use crate::state::State;
 /// Contact closer than this fraction of the reach (sum of radii, or radius plus half a
 /// ramp's thickness) counts as touching.
 const TOUCHING: f64 = 1e-6;
+/// A particle's fat box (see [`Proxies`]) is its box grown by this fraction of its radius
+/// and by its travel over this many steps: a resting pile keeps its fat boxes for many
+/// steps, and a ball in flight gets a new one every few.
+const FAT_RADII: f64 = 0.25;
+const FAT_STEPS: f64 = 4.0;
 /// What hits what.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub(crate) enum Impact {
@@ -85,12 +90,14 @@ pub(crate) struct Contacts {
     restitution: f64,
     /// The largest acceleration seen in the last step, m/s².
     acceleration_scale: f64,
-    broad: BroadPhase,
+    proxies: Proxies,
     boxes: Vec<Aabb>,
     /// Pairs (i < j) touching at the start of the step, ascending.
     touching_pairs: Vec<(u32, u32)>,
     /// (particle, obstacle) touching at the start of the step, ascending.
     touching_obstacles: Vec<(u32, u32)>,
+    /// The touching pairs by particle: `p` touches `partners[first[p]..first[p + 1]]`.
+    touching_by_particle: Adjacency,
     resting: RestingSolver,
     /// The threads the searches may use.
     pub workers: Workers,
@@ -108,6 +115,9 @@ pub(crate) struct Contacts {
     /// Particles whose paths impacts changed during this step, and the same as flags.
     changed: Vec<u32>,
     is_changed: Vec<bool>,
+    /// Changed particles whose new path left their fat box, so the broad phase may not
+    /// find them: every search after an impact also tries these.
+    escaped: Vec<u32>,
     queue: BinaryHeap<Reverse<Event>>,
     neighbours: Vec<u32>,
     /// The impacts applied in this step, with their time in seconds into it.
@@ -204,9 +214,10 @@ impl Contacts {
                 .iter()
                 .map(|a| a.length())
                 .fold(0.0, f64::max),
-            broad: BroadPhase::default(),
+            proxies: Proxies::default(),
             boxes: Vec::new(),
             touching_pairs: Vec::new(),
+            touching_by_particle: Adjacency::default(),
             touching_obstacles: Vec::new(),
             resting: RestingSolver::default(),
             workers: Workers::default(),
@@ -223,6 +234,7 @@ impl Contacts {
             versions: Vec::new(),
             changed: Vec::new(),
             is_changed: Vec::new(),
+            escaped: Vec::new(),
             queue: BinaryHeap::new(),
             neighbours: Vec::new(),
             applied: Vec::new(),
@@ -255,7 +267,7 @@ impl Contacts {
         let had_surface_contacts = !forces.surface_contacts.is_empty();
         self.applied.clear();
         forces.surface_contacts.clear();
-        self.find_touching(state, forces, profiler);
+        self.find_touching(state, forces, h, profiler);
         let resting_speed = self.resting_speed(h);
         let mut changed = self.impacts_now(state, forces, resting_speed);
         // Friction needs to know how hard the other forces press and pull.
@@ -312,7 +324,13 @@ impl Contacts {
     }
 
     /// Fills the touching lists from the current positions.
-    fn find_touching(&mut self, state: &State, forces: &ForceModel, profiler: &mut Profiler) {
+    fn find_touching(
+        &mut self,
+        state: &State,
+        forces: &ForceModel,
+        h: f64,
+        profiler: &mut Profiler,
+    ) {
         let n = state.len();
         profiler.lap(Stage::StartContacts);
         self.boxes.clear();
@@ -320,20 +338,24 @@ impl Contacts {
             (0..n).map(|i| Aabb::around(&[state.position[i]], self.radius[i] * (1.0 + TOUCHING))),
         );
         let radius = &self.radius;
-        let position = &state.position;
+        let (position, velocity) = (&state.position, &state.velocity);
         self.touching_pairs.clear();
-        let candidates = self.broad.pairs(
+        let candidates = self.proxies.update(
             &self.boxes,
+            |i| fat_margin(radius[i], velocity[i], h),
             |i, j| forces.is_fixed(i) && forces.is_fixed(j),
             &self.workers,
         );
-        profiler.lap(Stage::BroadPhase);
+        let boxes = &self.boxes;
         self.touching_pairs
             .extend(candidates.iter().copied().filter(|&(i, j)| {
                 let (i, j) = (i as usize, j as usize);
                 let reach = radius[i] + radius[j];
-                position[i].distance(position[j]) - reach <= TOUCHING * reach
+                boxes[i].overlaps(&boxes[j])
+                    && position[i].distance(position[j]) - reach <= TOUCHING * reach
             }));
+        self.touching_by_particle.fill(n, &self.touching_pairs);
+        profiler.lap(Stage::BroadPhase);
         self.touching_obstacles.clear();
         for p in (0..n).filter(|&p| !forces.is_fixed(p)) {
             for (k, obstacle) in self.obstacles.iter().enumerate() {
@@ -488,51 +510,9 @@ impl Contacts {
                 f64::max,
             );
         let resting_speed = self.resting_speed(h);
-        self.paths.clear();
-        self.paths.extend((0..n).map(|i| Path {
-            start: (start.position[i], start.velocity[i]),
-            end: (end.position[i], end.velocity[i]),
-            kick: DVec2::ZERO,
-            kick_moment: DVec2::ZERO,
-        }));
-        self.versions.clear();
-        self.versions.resize(n, 0);
-        for &p in &self.changed {
-            self.is_changed[p as usize] = false;
-        }
-        self.is_changed.resize(n, false);
-        self.changed.clear();
-        self.queue.clear();
+        self.start_paths(start, end, h);
         profiler.lap(Stage::TimeOfImpact);
-        self.controls.clear();
-        self.controls
-            .extend(self.paths.iter().map(|path| path.after(0.0, h)));
-        self.boxes.clear();
-        self.boxes.extend(
-            self.controls
-                .iter()
-                .zip(&self.radius)
-                .map(|(controls, r)| Aabb::around(controls, *r)),
-        );
-        // Touching pairs are the resting solver's: both lists are ascending, so one walk
-        // through the touching list takes them out.
-        let mut touching = self.touching_pairs.as_slice();
-        let candidates: Vec<(u32, u32)> = self
-            .broad
-            .pairs(
-                &self.boxes,
-                |i, j| forces.is_fixed(i) && forces.is_fixed(j),
-                &self.workers,
-            )
-            .iter()
-            .copied()
-            .filter(|pair| {
-                while touching.first().is_some_and(|t| t < pair) {
-                    touching = &touching[1..];
-                }
-                touching.first() != Some(pair)
-            })
-            .collect();
+        let candidates = self.swept_candidates(start, h, forces);
         profiler.lap(Stage::BroadPhase);
         // Every search reads the paths only: pieces of the lists go to different threads,
         // and the events found join in the lists' order.
@@ -578,6 +558,63 @@ impl Contacts {
         }
         profiler.lap(Stage::TimeOfImpact);
         interruption
+    }
+
+    /// Each particle's path through the step, unchanged by impacts yet, with its control
+    /// points and swept box; and the impact bookkeeping of the last step cleared.
+    fn start_paths(&mut self, start: &State, end: &State, h: f64) {
+        let n = start.len();
+        self.paths.clear();
+        self.paths.extend((0..n).map(|i| Path {
+            start: (start.position[i], start.velocity[i]),
+            end: (end.position[i], end.velocity[i]),
+            kick: DVec2::ZERO,
+            kick_moment: DVec2::ZERO,
+        }));
+        self.versions.clear();
+        self.versions.resize(n, 0);
+        for &p in &self.changed {
+            self.is_changed[p as usize] = false;
+        }
+        self.is_changed.resize(n, false);
+        self.changed.clear();
+        self.escaped.clear();
+        self.queue.clear();
+        self.controls.clear();
+        self.controls
+            .extend(self.paths.iter().map(|path| path.after(0.0, h)));
+        self.boxes.clear();
+        self.boxes.extend(
+            self.controls
+                .iter()
+                .zip(&self.radius)
+                .map(|(controls, r)| Aabb::around(controls, *r)),
+        );
+    }
+
+    /// The pairs whose swept boxes overlap and that do not touch, ascending.
+    fn swept_candidates(&mut self, start: &State, h: f64, forces: &ForceModel) -> Vec<(u32, u32)> {
+        // Touching pairs are the resting solver's: both lists are ascending, so one walk
+        // through the touching list takes them out.
+        let mut touching = self.touching_pairs.as_slice();
+        let (radius, boxes) = (&self.radius, &self.boxes);
+        self.proxies
+            .update(
+                boxes,
+                |i| fat_margin(radius[i], start.velocity[i], h),
+                |i, j| forces.is_fixed(i) && forces.is_fixed(j),
+                &self.workers,
+            )
+            .iter()
+            .copied()
+            .filter(|&(i, j)| boxes[i as usize].overlaps(&boxes[j as usize]))
+            .filter(|pair| {
+                while touching.first().is_some_and(|t| t < pair) {
+                    touching = &touching[1..];
+                }
+                touching.first() != Some(pair)
+            })
+            .collect()
     }
 
     /// Whether impacts inside the last step changed any path.
@@ -638,25 +675,24 @@ impl Contacts {
                 continue;
             }
             let bounds = Aabb::around(&self.paths[p].after(event.time, h), self.radius[p]);
+            if !self.proxies.fat(p).contains(&bounds) && !self.escaped.contains(&(p as u32)) {
+                self.escaped.push(p as u32);
+            }
             self.neighbours.clear();
-            self.broad.query(&bounds, &mut self.neighbours);
-            self.neighbours.extend_from_slice(&self.changed);
+            self.proxies.query(&bounds, &mut self.neighbours);
+            self.neighbours.extend_from_slice(&self.escaped);
             self.neighbours.sort_unstable();
             self.neighbours.dedup();
             let neighbours = std::mem::take(&mut self.neighbours);
             for &q in &neighbours {
                 let q = q as usize;
-                if q == p || (forces.is_fixed(p) && forces.is_fixed(q)) {
-                    continue;
-                }
-                let pair = (p.min(q), p.max(q));
-                if self
-                    .touching_pairs
-                    .binary_search(&(pair.0 as u32, pair.1 as u32))
-                    .is_ok()
+                if q == p
+                    || (forces.is_fixed(p) && forces.is_fixed(q))
+                    || self.touching_by_particle.contains(p, q as u32)
                 {
                     continue;
                 }
+                let pair = (p.min(q), p.max(q));
                 if let Some(event) = self.search_pair(pair.0, pair.1, event.time, h) {
                     found.push(event);
                 }
@@ -775,6 +811,47 @@ impl Contacts {
         self.resting
             .solve(&touching, state, h, resting_speed, is_struck)
     }
+}
+
+/// Pairs listed by particle (compressed rows): each pair (i, j) under both i and j.
+#[derive(Clone, Debug, Default)]
+struct Adjacency {
+    first: Vec<u32>,
+    partners: Vec<u32>,
+}
+
+impl Adjacency {
+    fn fill(&mut self, n: usize, pairs: &[(u32, u32)]) {
+        self.first.clear();
+        self.first.resize(n + 1, 0);
+        for &(i, j) in pairs {
+            self.first[i as usize + 1] += 1;
+            self.first[j as usize + 1] += 1;
+        }
+        for p in 0..n {
+            self.first[p + 1] += self.first[p];
+        }
+        self.partners.clear();
+        self.partners.resize(2 * pairs.len(), 0);
+        let mut next = self.first.clone();
+        for &(i, j) in pairs {
+            for (a, b) in [(i, j), (j, i)] {
+                let slot = &mut next[a as usize];
+                self.partners[*slot as usize] = b;
+                *slot += 1;
+            }
+        }
+    }
+
+    /// Whether `p` and `q` are a listed pair.
+    fn contains(&self, p: usize, q: u32) -> bool {
+        self.partners[self.first[p] as usize..self.first[p + 1] as usize].contains(&q)
+    }
+}
+
+/// How far a particle's fat box reaches beyond its box, metres.
+fn fat_margin(radius: f64, velocity: DVec2, h: f64) -> f64 {
+    FAT_RADII * radius + FAT_STEPS * velocity.length() * h
 }
 
 fn half_thickness(shape: &Shape) -> f64 {

@@ -55,7 +55,7 @@ fn parse_integrator(name: &str) -> Result<Integrator, String> {
 fn evaluations_per_step(integrator: Integrator) -> u64 {
     match integrator {
         Integrator::Euler | Integrator::SemiImplicitEuler | Integrator::Verlet => 1,
-        Integrator::Rk4 => 4,
+        Integrator::Rk4 | Integrator::Pefrl => 4,
         Integrator::Dopri5 => 6,
     }
 }

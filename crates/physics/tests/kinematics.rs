@@ -11,19 +11,19 @@ fn kinematics(x0: DVec2, v0: DVec2, a: DVec2, t: f64) -> DVec2 {
     x0 + v0 * t + 0.5 * a * t * t
 }
 
-/// Verlet and RK4 are exact for constant acceleration: what remains is rounding. Error is
+/// Verlet, RK4 and PEFRL are exact for constant acceleration: what remains is rounding. Error is
 /// measured relative to the size of the motion, |x0| + |v0 t| + |a t²/2| per component:
 /// y here is 120 + 400 − 490 = 30 at t = 10, and rounding of the large terms is what
 /// 10⁴ steps accumulate (about 10⁴ × 1e-16 of them). Any truncation error of a
 /// non-exact method would be ~1e-3 of the motion.
 #[test]
-fn constant_acceleration_is_exact_with_verlet_and_rk4() {
+fn constant_acceleration_is_exact_with_verlet_rk4_and_pefrl() {
     let (x0, v0, a) = (
         DVec2::new(-3.25, 120.5),
         DVec2::new(17.5, 40.0),
         DVec2::new(0.75, -9.81),
     );
-    for integrator in [Integrator::Verlet, Integrator::Rk4] {
+    for integrator in [Integrator::Verlet, Integrator::Rk4, Integrator::Pefrl] {
         let scene = Scene::new()
             .with_integrator(integrator, 0.001)
             .with_particle(

@@ -61,7 +61,7 @@ fn every_problem_is_reported_at_once_with_its_position() {
     let expected = [
         "3:15 [world]: restitution must be between 0 and 1, got 1.5",
         "4:1 [world]: unknown key 'gravty'; did you mean 'gravity'?",
-        "6:14 [simulation]: integrator 'rk5' is not an integrator; choose one of euler, semi-implicit-euler, verlet, rk4, dopri5",
+        "6:14 [simulation]: integrator 'rk5' is not an integrator; choose one of euler, semi-implicit-euler, verlet, rk4, pefrl, dopri5",
         "7:13 [simulation]: time_step must be greater than 0, got -0.1",
         "14:8 particle 'B': mass must be greater than 0, got -2",
         "15:10 particle 'B': radius must be greater than 0, got 0",

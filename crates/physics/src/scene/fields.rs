@@ -249,7 +249,7 @@ pub const SIMULATION: &[Field<Settings>] = &[
         kind: Kind::Integrator,
         unit: "",
         default: Some("\"rk4\""),
-        help: "How the motion is integrated in time: euler, semi-implicit-euler, verlet, rk4, dopri5",
+        help: "How the motion is integrated in time: euler, semi-implicit-euler, verlet, rk4, pefrl, dopri5",
         place: Place::Toolbar,
         get: |s| Value::Integrator(s.integrator),
         set: |s, v| {

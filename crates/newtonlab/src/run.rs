@@ -31,6 +31,11 @@ pub(crate) struct RunArgs {
     /// Where to write the CSV; standard output when absent or `-`.
     #[arg(long, value_name = "FILE")]
     out: Option<String>,
+    /// Also write every impact to FILE as CSV, one row each: t, particle, other (a
+    /// particle's or a ramp's name, or wall), impulse (N·s), the normal speeds before
+    /// and after (m/s), and the kinetic energy lost (J).
+    #[arg(long, value_name = "FILE")]
+    impacts: Option<String>,
 }
 
 pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
@@ -60,7 +65,14 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
             args.until, scene.simulation.time_step
         )));
     }
-    let simulation = Simulation::new(&scene).map_err(|e| Failure::Input(e.to_string()))?;
+    let mut simulation = Simulation::new(&scene).map_err(|e| Failure::Input(e.to_string()))?;
+    let mut impacts = match args.impacts.as_deref() {
+        Some(path) => {
+            simulation.record_impacts();
+            Some(ImpactLog::create(path, &scene)?)
+        }
+        None => None,
+    };
     if let Some(note) = sampling_note(&scene.simulation, args.every) {
         eprintln!("note: {note}");
     }
@@ -72,8 +84,11 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         })?),
     };
     let mut out = BufWriter::new(sink);
-    let written =
-        write_csv(simulation, &times, &mut out).and_then(|outcome| out.flush().map(|()| outcome));
+    let written = write_csv(simulation, &times, &mut out, impacts.as_mut())
+        .and_then(|outcome| out.flush().map(|()| outcome));
+    if let Some(log) = impacts {
+        log.finish()?;
+    }
     match written {
         Ok(outcome) => outcome,
         // A reader that stops early (`| head`) is not an error of ours.
@@ -130,11 +145,16 @@ fn write_csv(
     mut simulation: Simulation,
     times: &[f64],
     out: &mut impl Write,
+    mut impacts: Option<&mut ImpactLog>,
 ) -> io::Result<Result<(), Failure>> {
     writeln!(out, "{}", simulation.csv_header())?;
     let progress = progress_bar(times.len() as u64);
     for &t in times {
-        if let Err(error) = simulation.step_to(t) {
+        let stepped = simulation.step_to(t);
+        if let Some(log) = impacts.as_deref_mut() {
+            log.write(&simulation.take_impacts());
+        }
+        if let Err(error) = stepped {
             progress.finish_and_clear();
             return Ok(Err(Failure::Simulation(error.to_string())));
         }
@@ -143,6 +163,75 @@ fn write_csv(
     }
     progress.finish_and_clear();
     Ok(Ok(()))
+}
+
+/// `--impacts FILE`: one row per impact, with names rather than indices. A write error
+/// is kept and reported when the run ends, so the trajectory is still written.
+struct ImpactLog {
+    path: String,
+    out: BufWriter<std::fs::File>,
+    particles: Vec<String>,
+    ramps: Vec<String>,
+    error: Option<io::Error>,
+}
+
+impl ImpactLog {
+    fn create(path: &str, scene: &physics::Scene) -> Result<Self, Failure> {
+        let file = std::fs::File::create(path).map_err(|error| {
+            Failure::Input(format!("cannot create the impact log '{path}': {error}"))
+        })?;
+        let mut log = Self {
+            path: path.to_owned(),
+            out: BufWriter::new(file),
+            particles: scene.particles.iter().map(|p| p.name.clone()).collect(),
+            ramps: scene.ramps.iter().map(|r| r.name.clone()).collect(),
+            error: None,
+        };
+        log.line(format_args!(
+            "t,particle,other,impulse,normal_speed_before,normal_speed_after,kinetic_energy_lost"
+        ));
+        Ok(log)
+    }
+
+    fn line(&mut self, text: std::fmt::Arguments<'_>) {
+        if self.error.is_none() {
+            self.error = writeln!(self.out, "{text}").err();
+        }
+    }
+
+    fn write(&mut self, impacts: &[physics::ImpactRecord]) {
+        for impact in impacts {
+            let other = match impact.other {
+                physics::ImpactTarget::Particle(j) => self.particles[j].clone(),
+                physics::ImpactTarget::Ramp(k) => self.ramps[k].clone(),
+                physics::ImpactTarget::Wall => "wall".to_owned(),
+            };
+            let particle = self.particles[impact.particle].clone();
+            self.line(format_args!(
+                "{},{},{},{},{},{},{}",
+                impact.time,
+                physics::csv_field(&particle),
+                physics::csv_field(&other),
+                impact.impulse,
+                impact.normal_speed_before,
+                impact.normal_speed_after,
+                impact.kinetic_energy_lost
+            ));
+        }
+    }
+
+    fn finish(mut self) -> Result<(), Failure> {
+        if self.error.is_none() {
+            self.error = self.out.flush().err();
+        }
+        match self.error {
+            None => Ok(()),
+            Some(error) => Err(Failure::Input(format!(
+                "cannot write the impact log '{}': {error}",
+                self.path
+            ))),
+        }
+    }
 }
 
 /// A progress bar on stderr when it is a terminal; hidden otherwise.

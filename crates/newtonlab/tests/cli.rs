@@ -379,3 +379,101 @@ fn sampling_off_the_step_grid_gives_a_note() {
     assert!(on.status.success(), "{}", stderr(&on));
     assert!(stderr(&on).is_empty(), "no note: {}", stderr(&on));
 }
+
+/// `--impacts FILE` against the impulse formulas. A (2 kg, 3 m/s) meets B (1 kg, at rest)
+/// head on at t = 1 s with restitution 0.5: effective mass μ = 2/3 kg, approach u = 3 m/s,
+/// impulse μ (1 + e) u = 3 N·s, separation e u = 1.5 m/s, kinetic energy lost
+/// ½ μ (1 − e²) u² = 2.25 J. B leaves at 3 m/s and meets a ramp standing at x = 10 (0.1 m
+/// thick: its centre stops at 9.45) at t = 1 + 5.45/3 s with the ramp's restitution 0.8:
+/// μ = 1 kg, impulse 5.4 N·s, 2.4 m/s after, 1.62 J lost. The log's losses add up to the
+/// kinetic energy the trajectory lost, to rounding.
+#[test]
+fn the_impact_log_gives_each_impulse_and_the_energy_it_took() {
+    let (dir, scene) = scene_file(
+        "impacts.toml",
+        r#"version = 1
+[world]
+gravity = [0.0, 0.0]
+gravitation = false
+electrostatics = false
+restitution = 0.5
+[[ramp]]
+name = "right wall"
+from = [10.0, -5.0]
+to = [10.0, 5.0]
+restitution = 0.8
+[[particle]]
+name = "A"
+mass = 2.0
+radius = 0.5
+position = [0.0, 0.0]
+velocity = [3.0, 0.0]
+[[particle]]
+name = "B, the target"
+mass = 1.0
+radius = 0.5
+position = [4.0, 0.0]
+"#,
+    );
+    let log = dir.path.join("impacts.csv");
+    let log_path = log.to_string_lossy().into_owned();
+    let output = newtonlab(&[
+        "run",
+        &scene,
+        "--until",
+        "3.5",
+        "--every",
+        "3.5",
+        "--impacts",
+        &log_path,
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = std::fs::read_to_string(&log).expect("the log is written");
+    let mut lines = text.lines();
+    assert_eq!(
+        lines.next(),
+        Some("t,particle,other,impulse,normal_speed_before,normal_speed_after,kinetic_energy_lost")
+    );
+    let rows: Vec<&str> = lines.collect();
+    assert_eq!(rows.len(), 2, "two impacts in 3.5 s:\n{text}");
+    let expected = [
+        (1.0, "A", "\"B, the target\"", [3.0, 3.0, 1.5, 2.25]),
+        (
+            1.0 + 5.45 / 3.0,
+            "\"B, the target\"",
+            "right wall",
+            [5.4, 3.0, 2.4, 1.62],
+        ),
+    ];
+    let mut lost = 0.0;
+    for (row, (time, particle, other, numbers)) in rows.iter().zip(expected) {
+        // The name with a comma is quoted: split on the fields' own commas.
+        let (t, rest) = row.split_once(',').expect("a time");
+        assert!((t.parse::<f64>().unwrap() - time).abs() < 1e-9, "{row}");
+        assert!(rest.starts_with(&format!("{particle},{other},")), "{row}");
+        let values: Vec<f64> = rest[particle.len() + other.len() + 2..]
+            .split(',')
+            .map(|v| v.parse().expect("a number"))
+            .collect();
+        for (got, want) in values.iter().zip(numbers) {
+            assert!(
+                (got - want).abs() < 1e-9 * want,
+                "{row}: {got} against {want}"
+            );
+        }
+        lost += values[3];
+    }
+    // The trajectory's kinetic energy: ½ m v² from its first and last rows.
+    let csv = stdout(&output);
+    let kinetic = |line: &str| {
+        let v: Vec<f64> = line.split(',').map(|x| x.parse().unwrap()).collect();
+        // t, then x, y, vx, vy, ax, ay per particle.
+        0.5 * 2.0 * (v[3] * v[3] + v[4] * v[4]) + 0.5 * (v[9] * v[9] + v[10] * v[10])
+    };
+    let rows: Vec<&str> = csv.lines().skip(1).collect();
+    let drop = kinetic(rows[0]) - kinetic(rows[rows.len() - 1]);
+    assert!(
+        (drop - lost).abs() < 1e-9,
+        "the trajectory lost {drop} J, the log {lost} J"
+    );
+}

@@ -60,8 +60,9 @@ impl Simulation {
     }
 }
 
-/// A CSV field, quoted when a particle's name holds a comma, quote or line break.
-fn csv_field(text: &str) -> String {
+/// A CSV field, quoted when a name holds a comma, quote or line break.
+#[must_use]
+pub fn csv_field(text: &str) -> String {
     if text.contains([',', '"', '\n', '\r']) {
         format!("\"{}\"", text.replace('"', "\"\""))
     } else {

@@ -75,6 +75,7 @@
 
 mod contacts;
 mod csv;
+pub use csv::csv_field;
 mod diagnostics;
 mod examples;
 mod forces;

@@ -101,6 +101,15 @@ pub struct ImpactRecord {
     pub particle: usize,
     /// What it hit.
     pub other: ImpactTarget,
+    /// The impulse along the contact normal, N·s.
+    pub impulse: f64,
+    /// The approach speed along the normal just before, m/s.
+    pub normal_speed_before: f64,
+    /// The separation speed along the normal just after, m/s: the restitution times the
+    /// approach.
+    pub normal_speed_after: f64,
+    /// The kinetic energy the impact took, J: ½ μ (1 − e²) u² with μ the effective mass.
+    pub kinetic_energy_lost: f64,
 }
 
 /// What a particle hit.
@@ -343,16 +352,29 @@ impl Simulation {
         }
         if let Some(log) = &mut self.impact_log {
             let ramps = self.contacts.ramp_count();
-            for &(time, impact) in &self.contacts.applied {
-                let (particle, other) = match impact {
-                    Impact::Pair(i, j) => (i, ImpactTarget::Particle(j)),
-                    Impact::Obstacle(p, k) if k < ramps => (p, ImpactTarget::Ramp(k)),
-                    Impact::Obstacle(p, _) => (p, ImpactTarget::Wall),
+            let w = &self.forces.inverse_mass;
+            for applied in &self.contacts.applied {
+                let (particle, other, inverse_mass) = match applied.impact {
+                    Impact::Pair(i, j) => (i, ImpactTarget::Particle(j), w[i] + w[j]),
+                    Impact::Obstacle(p, k) if k < ramps => (p, ImpactTarget::Ramp(k), w[p]),
+                    Impact::Obstacle(p, _) => (p, ImpactTarget::Wall, w[p]),
                 };
+                // The two-body impulse along the normal: effective mass 1/(1/mᵢ + 1/mⱼ)
+                // (1/m against a surface); the approach u becomes a separation e·u.
+                let mass = if inverse_mass > 0.0 {
+                    1.0 / inverse_mass
+                } else {
+                    0.0
+                };
+                let (u, e) = (applied.approach, applied.restitution);
                 log.push(ImpactRecord {
-                    time: self.start.time + time,
+                    time: self.start.time + applied.time,
                     particle,
                     other,
+                    impulse: mass * (1.0 + e) * u,
+                    normal_speed_before: u,
+                    normal_speed_after: e * u,
+                    kinetic_energy_lost: 0.5 * mass * (1.0 - e * e) * u * u,
                 });
             }
         }

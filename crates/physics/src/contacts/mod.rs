@@ -122,8 +122,8 @@ pub(crate) struct Contacts {
     escaped: Vec<u32>,
     queue: BinaryHeap<Reverse<Event>>,
     neighbours: Vec<u32>,
-    /// The impacts applied in this step, with their time in seconds into it.
-    pub applied: Vec<(f64, Impact)>,
+    /// The impacts applied in this step.
+    pub applied: Vec<Applied>,
 }
 
 /// A particle's path through the step: the cubic Hermite curve through the integrator's
@@ -176,6 +176,19 @@ impl Path {
         }
         points
     }
+}
+
+/// An impact as it was applied.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Applied {
+    /// Seconds into the step.
+    pub time: f64,
+    pub impact: Impact,
+    /// The approach speed along the normal before, m/s (positive).
+    pub approach: f64,
+    /// The restitution it was given: the separation speed after is `restitution ×
+    /// approach`.
+    pub restitution: f64,
 }
 
 /// An impact found inside the step, valid while both paths are those it was found on.
@@ -417,7 +430,12 @@ impl Contacts {
                     state,
                     forces,
                 );
-                self.applied.push((0.0, impact));
+                self.applied.push(Applied {
+                    time: 0.0,
+                    impact,
+                    approach,
+                    restitution,
+                });
                 any = true;
             }
             changed |= any;
@@ -652,7 +670,12 @@ impl Contacts {
             return;
         }
         let restitution = self.restitution_at(event.impact, approach, resting_speed);
-        self.applied.push((event.time, event.impact));
+        self.applied.push(Applied {
+            time: event.time,
+            impact: event.impact,
+            approach,
+            restitution,
+        });
         let (dv_first, dv_second) =
             velocity_changes(event.impact, normal, approach * (1.0 + restitution), forces);
         let mut moved = vec![(first, dv_first)];
@@ -783,7 +806,12 @@ impl Contacts {
             state,
             forces,
         );
-        self.applied.push((h, impact));
+        self.applied.push(Applied {
+            time: h,
+            impact,
+            approach,
+            restitution,
+        });
     }
 
     /// Resting contact after a step of `h` ([`resting`]). `struck` is an impact applied

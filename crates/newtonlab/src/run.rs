@@ -36,12 +36,16 @@ pub(crate) struct RunArgs {
     /// and after (m/s), and the kinetic energy lost (J).
     #[arg(long, value_name = "FILE")]
     impacts: Option<String>,
+    /// Also write the state at T to FILE as a scene whose start time is T, so a later
+    /// run continues from there: JSON when FILE ends in .json, TOML otherwise.
+    #[arg(long, value_name = "FILE")]
+    save_state: Option<String>,
 }
 
 pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
-    if !(args.until.is_finite() && args.until >= 0.0) {
+    if !args.until.is_finite() {
         return Err(Failure::Input(format!(
-            "--until must be a finite number of seconds, 0 or more; got {}",
+            "--until must be a finite number of seconds; got {}",
             args.until
         )));
     }
@@ -51,14 +55,26 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
             args.every
         )));
     }
-    if args.until / args.every > MAX_ROWS {
+    let scene = scene_source::load(&args.scene)?;
+    let start = scene.simulation.start_time;
+    if args.until < start {
+        return Err(Failure::Input(if start == 0.0 {
+            format!("--until must be 0 or more seconds; got {}", args.until)
+        } else {
+            format!(
+                "--until {} is before the scene's start_time {start} s; a run goes forward from its start",
+                args.until
+            )
+        }));
+    }
+    let span = args.until - start;
+    if span / args.every > MAX_ROWS {
         return Err(Failure::Input(format!(
             "--until {} with --every {} would write more than {MAX_ROWS} rows; choose a larger --every",
             args.until, args.every
         )));
     }
-    let scene = scene_source::load(&args.scene)?;
-    let steps = args.until / scene.simulation.time_step;
+    let steps = span / scene.simulation.time_step;
     if steps > MAX_STEPS {
         return Err(Failure::Input(format!(
             "--until {} at a time step of {:e} s would take {steps:.1e} steps, more than NewtonLab runs ({MAX_STEPS:e}); choose a larger time_step or a shorter --until",
@@ -76,7 +92,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
     if let Some(note) = sampling_note(&scene.simulation, args.every) {
         eprintln!("note: {note}");
     }
-    let times = sample_times(args.until, args.every);
+    let times = sample_times(start, args.until, args.every);
     let sink: Box<dyn Write> = match args.out.as_deref() {
         None | Some("-") => Box::new(io::stdout().lock()),
         Some(path) => Box::new(std::fs::File::create(path).map_err(|error| {
@@ -84,17 +100,32 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         })?),
     };
     let mut out = BufWriter::new(sink);
-    let written = write_csv(simulation, &times, &mut out, impacts.as_mut())
+    let written = write_csv(&mut simulation, &times, &mut out, impacts.as_mut())
         .and_then(|outcome| out.flush().map(|()| outcome));
     if let Some(log) = impacts {
         log.finish()?;
     }
-    match written {
+    let outcome = match written {
         Ok(outcome) => outcome,
         // A reader that stops early (`| head`) is not an error of ours.
         Err(error) if error.kind() == io::ErrorKind::BrokenPipe => Ok(()),
         Err(error) => Err(Failure::Input(format!("cannot write the CSV: {error}"))),
+    };
+    if let (Ok(()), Some(path)) = (&outcome, args.save_state.as_deref()) {
+        save_state(&simulation, &scene, path)?;
     }
+    outcome
+}
+
+/// `--save-state FILE`: the scene with the state reached, as a scene file.
+fn save_state(simulation: &Simulation, scene: &physics::Scene, path: &str) -> Result<(), Failure> {
+    let saved = simulation.saved_state(scene);
+    let text = match physics::SceneFormat::from_file_name(path) {
+        physics::SceneFormat::Json => saved.to_json(),
+        physics::SceneFormat::Toml => saved.to_toml(),
+    };
+    std::fs::write(path, text)
+        .map_err(|error| Failure::Input(format!("cannot write the state to '{path}': {error}")))
 }
 
 /// A fixed-step method lands exactly on every sample, so when --every is not a whole
@@ -117,22 +148,36 @@ fn sampling_note(settings: &physics::Settings, every: f64) -> Option<String> {
     ))
 }
 
-/// t = k·DT for every k with k·DT ≤ T (each computed as k × DT, never accumulated), and T
-/// itself when it is not among them.
-fn sample_times(until: f64, every: f64) -> Vec<f64> {
+/// t = k·DT for every k with start ≤ k·DT ≤ T (each computed as k × DT, never
+/// accumulated: the grid of a run from 0), with `start` first and T last when they are
+/// not among them.
+fn sample_times(start: f64, until: f64, every: f64) -> Vec<f64> {
     #[expect(
         clippy::cast_possible_truncation,
-        clippy::cast_sign_loss,
-        reason = "until / every is finite, >= 0 and at most MAX_ROWS, checked by the caller"
+        reason = "until / every and start / every are finite and bounded by the caller's checks"
     )]
-    let mut last = (until / every).floor() as u64;
-    while (last + 1) as f64 * every <= until {
+    let index = |t: f64| (t / every).floor() as i64;
+    let at = |k: i64| k as f64 * every;
+    let (mut first, mut last) = (index(start), index(until));
+    // The division may round either way: settle each end on the exact products.
+    while at(first) < start {
+        first += 1;
+    }
+    while at(first - 1) >= start {
+        first -= 1;
+    }
+    while at(last + 1) <= until {
         last += 1;
     }
-    while last > 0 && last as f64 * every > until {
+    while at(last) > until {
         last -= 1;
     }
-    let mut times: Vec<f64> = (0..=last).map(|k| k as f64 * every).collect();
+    let mut times = Vec::new();
+    // Exact: the start is a row of its own unless it is a grid instant to the bit.
+    if first > last || at(first).to_bits() != start.to_bits() {
+        times.push(start);
+    }
+    times.extend((first..=last).map(at));
     if times.last() != Some(&until) {
         times.push(until);
     }
@@ -142,7 +187,7 @@ fn sample_times(until: f64, every: f64) -> Vec<f64> {
 /// Writes the header and a row per sample; a simulation failure ends the table after the
 /// last good row and becomes the outcome.
 fn write_csv(
-    mut simulation: Simulation,
+    simulation: &mut Simulation,
     times: &[f64],
     out: &mut impl Write,
     mut impacts: Option<&mut ImpactLog>,
@@ -250,7 +295,11 @@ fn progress_bar(rows: u64) -> indicatif::ProgressBar {
 
 #[cfg(test)]
 mod tests {
-    use super::sample_times;
+    use super::sample_times as from;
+
+    fn sample_times(until: f64, every: f64) -> Vec<f64> {
+        from(0.0, until, every)
+    }
 
     #[test]
     fn samples_are_multiples_of_the_interval_and_end_at_until() {
@@ -277,6 +326,33 @@ mod tests {
             times[7].to_bits(),
             (7.0_f64 * 0.1).to_bits(),
             "k·DT, not accumulated"
+        );
+    }
+
+    /// From a start time the rows are those of the grid of a run from 0 that fall in
+    /// [start, T], with the start first and T last when they are not on it.
+    #[test]
+    fn from_a_start_time_the_rows_keep_the_grid_of_a_run_from_zero() {
+        assert_eq!(
+            from(0.25, 1.0, 0.5),
+            vec![0.25, 0.5, 1.0],
+            "start off the grid"
+        );
+        assert_eq!(from(0.5, 1.0, 0.5), vec![0.5, 1.0], "start on the grid");
+        assert_eq!(from(0.3, 0.4, 0.5), vec![0.3, 0.4], "no grid point between");
+        assert_eq!(from(1.0, 1.0, 0.5), vec![1.0], "zero duration");
+        assert_eq!(
+            from(-1.2, 0.3, 0.5),
+            vec![-1.2, -1.0, -0.5, 0.0, 0.3],
+            "negative start"
+        );
+        let times = from(1.0, 2.0, 0.1);
+        // 10 × 0.1 = 1 exactly; 11 × 0.1 = 1.1000000000000001 is the grid's, not 1 + 0.1.
+        assert_eq!(times.len(), 11, "{times:?}");
+        assert_eq!(
+            times[1].to_bits(),
+            (11.0_f64 * 0.1).to_bits(),
+            "the grid of a run from 0"
         );
     }
 }

@@ -477,3 +477,71 @@ position = [4.0, 0.0]
         "the trajectory lost {drop} J, the log {lost} J"
     );
 }
+
+/// `--save-state` writes the state at T as a scene with `start_time = T`, and a run from it
+/// continues the clock: the spring (x = 10 + 5 cos t) saved at t = 10.05 (off the --every
+/// grid) and run on to 20 starts with a row at 10.05, then the grid of a run from 0
+/// (10.1, 10.2, …, each k × 0.1), and matches the theory to 1e-9 and the run that
+/// never stopped to 1e-12 (the state is saved exactly; only step boundaries round
+/// differently). A --until before the start time is refused.
+#[test]
+fn a_saved_state_continues_the_run_and_its_clock() {
+    let dir = tempdir::Dir::new();
+    let saved = dir.path.join("saved.toml").to_string_lossy().into_owned();
+    let first = newtonlab(&[
+        "run",
+        "example:spring-undamped",
+        "--until",
+        "10.05",
+        "--save-state",
+        &saved,
+    ]);
+    assert!(first.status.success(), "{}", stderr(&first));
+    let text = std::fs::read_to_string(&saved).expect("the state is written");
+    assert!(text.contains("start_time = 10.05"), "{text}");
+    let parse = |output: &Output| -> Vec<Vec<f64>> {
+        stdout(output)
+            .lines()
+            .skip(1)
+            .map(|l| l.split(',').map(|f| f.parse().unwrap()).collect())
+            .collect()
+    };
+    let continued = newtonlab(&["run", &saved, "--until", "20", "--every", "0.1"]);
+    assert!(continued.status.success(), "{}", stderr(&continued));
+    let continued = parse(&continued);
+    let whole = parse(&newtonlab(&[
+        "run",
+        "example:spring-undamped",
+        "--until",
+        "20",
+        "--every",
+        "0.1",
+    ]));
+    assert_eq!(continued.len(), 1 + 100, "10.05, then 10.1 to 20");
+    assert_eq!(
+        continued[0][0].to_bits(),
+        10.05_f64.to_bits(),
+        "the first row at the start time"
+    );
+    for (k, row) in continued.iter().enumerate().skip(1) {
+        let t = (100 + k) as f64 * 0.1;
+        assert_eq!(row[0].to_bits(), t.to_bits(), "row {k} on the grid");
+        assert!((row[1] - (10.0 + 5.0 * t.cos())).abs() < 1e-9, "x at {t}");
+        let same = &whole[100 + k];
+        assert_eq!(same[0].to_bits(), row[0].to_bits());
+        assert!(
+            (row[1] - same[1]).abs() < 1e-12,
+            "x at {t}: {} and {}",
+            row[1],
+            same[1]
+        );
+        assert!((row[3] - same[3]).abs() < 1e-12, "vx at {t}");
+    }
+    let backwards = newtonlab(&["run", &saved, "--until", "5"]);
+    assert_eq!(backwards.status.code(), Some(2));
+    assert!(
+        stderr(&backwards).contains("start_time"),
+        "{}",
+        stderr(&backwards)
+    );
+}

@@ -402,6 +402,9 @@ pub struct Settings {
     pub tolerance: f64,
     /// App playback: simulated seconds per real second. Default 1.
     pub time_scale: f64,
+    /// Seconds: the instant the scene's state describes. Default 0; a state saved at
+    /// time T keeps T, so a run from it continues the clock.
+    pub start_time: f64,
 }
 
 impl Default for Settings {
@@ -411,6 +414,7 @@ impl Default for Settings {
             time_step: 0.001,
             tolerance: 1e-9,
             time_scale: 1.0,
+            start_time: 0.0,
         }
     }
 }

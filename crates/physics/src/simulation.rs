@@ -23,7 +23,7 @@ use crate::forces::ForceModel;
 use crate::integrators::{self, Integrator, Workspace};
 use crate::profile::{Clock, Profile, Profiler, Stage};
 use crate::scene::format::LoadError;
-use crate::scene::{Particle, Scene};
+use crate::scene::{Particle, Scene, Vector};
 use crate::state::State;
 
 /// Why a simulation stopped.
@@ -124,7 +124,8 @@ pub enum ImpactTarget {
 }
 
 impl Simulation {
-    /// Builds the runtime state of a scene, at t = 0.
+    /// Builds the runtime state of a scene, at its start time (0 unless it was saved
+    /// from a run).
     ///
     /// # Errors
     /// The scene's problems, as [`Scene::validate`] lists them.
@@ -142,7 +143,7 @@ impl Simulation {
             forces,
             start: State::default(),
             state: State {
-                time: 0.0,
+                time: scene.simulation.start_time,
                 position: particles.iter().map(|p| p.position.to_dvec2()).collect(),
                 velocity: particles.iter().map(Particle::initial_velocity).collect(),
             },
@@ -162,6 +163,25 @@ impl Simulation {
             &mut simulation.profiler,
         );
         Ok(simulation)
+    }
+
+    /// `scene` (the one this simulation was built from) with the state reached: each
+    /// particle's position and velocity now, in Cartesian form, and the start time now.
+    /// A simulation built from it continues this one; what it does not carry is the
+    /// contact solver's memory (its warm start) and dopri5's last step size, so a
+    /// continued run agrees to rounding, not bit for bit.
+    #[must_use]
+    pub fn saved_state(&self, scene: &Scene) -> Scene {
+        let mut saved = scene.clone();
+        for (i, particle) in saved.particles.iter_mut().enumerate() {
+            let (x, v) = (self.state.position[i], self.state.velocity[i]);
+            particle.position = Vector::cartesian(x.x, x.y);
+            if !particle.fixed {
+                particle.velocity = Vector::cartesian(v.x, v.y);
+            }
+        }
+        saved.simulation.start_time = self.state.time;
+        saved
     }
 
     /// Starts keeping a log of impacts, read with [`Self::take_impacts`].

@@ -288,6 +288,15 @@ pub const SIMULATION: &[Field<Settings>] = &[
         Some("1.0"),
         "Simulated seconds per real second when playing in the app"
     ),
+    number!(
+        "start_time",
+        "start time",
+        start_time,
+        Rule::Finite,
+        "s",
+        Some("0.0"),
+        "The instant the scene's state describes (a saved state keeps its time)"
+    ),
 ];
 
 /// `[[particle]]`, after its name.
@@ -517,6 +526,7 @@ mod tests {
             time_step: 0.1,
             tolerance: 1e-6,
             time_scale: 3.0,
+            start_time: 2.5,
         };
         check(SIMULATION, &settings, &mut Settings::default());
     }

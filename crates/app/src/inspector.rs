@@ -572,6 +572,19 @@ fn field_ui<T>(
             .inner
         }
         (Kind::Bounds, Value::Bounds(bounds)) => bounds_field(ui, id, f, bounds),
+        (Kind::PairForces, Value::PairForces(mut mode)) => {
+            let before = mode;
+            egui::ComboBox::from_id_salt(id)
+                .selected_text(format!("{}: {}", f.label, mode.as_str()))
+                .show_ui(ui, |ui| {
+                    for choice in physics::PairForces::ALL {
+                        ui.selectable_value(&mut mode, choice, choice.as_str());
+                    }
+                })
+                .response
+                .on_hover_text(f.help);
+            (mode != before).then_some(Value::PairForces(mode))
+        }
         _ => None,
     }
 }

@@ -1,11 +1,14 @@
 //! `newtonlab bench`: simulation speed, measured on this machine.
 //!
-//! Two scenes, both generated so that any size can be measured:
+//! Three scenes, all generated so that any size can be measured:
 //! - `cloud` ([`physics::generated::charged_cloud`]): `n` particles that all attract by
 //!   gravitation and attract or repel by Coulomb's law, so every step evaluates all
 //!   n(n−1)/2 pairs once per force evaluation; reports pair interactions per second;
 //! - `pit` ([`physics::generated::ball_pit`]): `n` balls dropped into a box at the app's
-//!   time step (1 ms), measured from the drop, through the crash, to rest: contacts.
+//!   time step (1 ms), measured from the drop, through the crash, to rest: contacts;
+//! - `cluster` ([`physics::generated::cluster`]): `n` bodies in orbit in a disc, their
+//!   gravitation summed with the Barnes–Hut tree; reports whole force evaluations per
+//!   second.
 //!
 //! The wall clock is read here, in the binary: the library never reads clocks.
 
@@ -23,6 +26,8 @@ enum BenchScene {
     Cloud,
     /// Balls dropped into a box: impacts and resting contact.
     Pit,
+    /// A star cluster summed with the Barnes–Hut tree: gravitation at scale.
+    Cluster,
 }
 
 #[derive(Debug, clap::Args)]
@@ -74,6 +79,9 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
         BenchScene::Pit => {
             physics::generated::ball_pit(args.particles).with_integrator(args.integrator, 1e-3)
         }
+        BenchScene::Cluster => {
+            physics::generated::cluster(args.particles).with_integrator(args.integrator, 1e-3)
+        }
     };
     let mut simulation = Simulation::new(&scene).map_err(|e| Failure::Input(e.to_string()))?;
     simulation.set_threads(
@@ -89,7 +97,7 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
     // The cloud's cost per step is the same throughout; the pit's changes as it falls,
     // crashes and settles, so it is measured over a fixed simulated interval.
     let running = |simulation: &Simulation| match args.scene {
-        BenchScene::Cloud => start.elapsed() < budget,
+        BenchScene::Cloud | BenchScene::Cluster => start.elapsed() < budget,
         BenchScene::Pit => simulation.time() < args.seconds,
     };
     while running(&simulation) {
@@ -112,6 +120,17 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
             println!("  {steps_per_second:.1} steps per second");
             println!(
                 "  {pair_rate:.3e} pair interactions per second ({pairs} pairs, {evaluations} force evaluations per step)"
+            );
+        }
+        BenchScene::Cluster => {
+            let evaluations = evaluations_per_step(integrator);
+            let rate = steps_per_second * evaluations as f64;
+            println!(
+                "{n}-body cluster, Barnes–Hut tree (opening angle 0.5), {integrator}: {steps} steps in {elapsed:.2} s"
+            );
+            println!("  {steps_per_second:.1} steps per second");
+            println!(
+                "  {rate:.1} force evaluations per second (all {n} bodies each; {evaluations} per step, more when an impact integrates again)"
             );
         }
         BenchScene::Pit => {

@@ -28,6 +28,38 @@ pub fn charged_cloud(n: usize) -> Scene {
     scene
 }
 
+/// A star cluster of `n` bodies for the tree benchmark: 1 to 2 kg each on a sunflower
+/// spiral in a disc of radius 10 m, denser towards the middle, G = 1 (so the motion is
+/// seen within seconds), each on a circular orbit about the centre at the speed the mass
+/// inside its radius gives, and summed with the Barnes–Hut tree at the default opening
+/// angle. The bodies are 10 µm across, so that impacts (each of which integrates the
+/// whole system again to its instant) stay rare and the benchmark measures the forces.
+#[must_use]
+pub fn cluster(n: usize) -> Scene {
+    let mut world = World::weightless();
+    world.gravitational_constant = 1.0;
+    world.electrostatics = false;
+    let mut scene = Scene::new().with_world(world);
+    scene.name = Some(format!("Cluster of {n}"));
+    scene.simulation.pair_forces = crate::scene::PairForces::Tree;
+    let total: f64 = (0..n).map(|i| 1.0 + (i as f64 * 0.618_034).fract()).sum();
+    for i in 0..n {
+        let f = i as f64;
+        let radius = 10.0 * (f / n as f64).powf(0.75) + 1e-2;
+        let angle = f * GOLDEN_ANGLE;
+        // The mass inside: the bodies are placed in order of radius.
+        let inside = total * (f / n as f64);
+        let speed = (inside / radius).sqrt();
+        scene.particles.push(
+            Particle::new(format!("s{}", i + 1), 1.0 + (f * 0.618_034).fract())
+                .radius(1e-5)
+                .position([radius * angle.cos(), radius * angle.sin()])
+                .velocity([-speed * angle.sin(), speed * angle.cos()]),
+        );
+    }
+    scene
+}
+
 /// `n` balls of radius 0.1 m and 1 kg dropped into a box with restitution 0.5 under
 /// gravity: a grid 0.3 m apart, each with a small sideways velocity that differs ball to
 /// ball so the pile does not stack in columns. The box is as wide as a square of the

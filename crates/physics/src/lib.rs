@@ -95,7 +95,7 @@ pub use profile::{Clock, Profile, Stage};
 pub use scene::fields;
 pub use scene::format::{LoadError, Problem, SceneFormat};
 pub use scene::{
-    Bounds, Color, Endpoint, FieldRef, Follow, Graph, Of, Particle, Quantity, Ramp, Rule, Scene,
-    Section, Settings, Spring, Total, Vector, View, World, check_value,
+    Bounds, Color, Endpoint, FieldRef, Follow, Graph, Of, PairForces, Particle, Quantity, Ramp,
+    Rule, Scene, Section, Settings, Spring, Total, Vector, View, World, check_value,
 };
 pub use simulation::{ImpactRecord, ImpactTarget, Simulation, SimulationError};

@@ -391,6 +391,32 @@ impl Default for World {
     }
 }
 
+/// How pairwise gravitation is summed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum PairForces {
+    /// Every pair, exactly: O(n²).
+    #[default]
+    Direct,
+    /// A Barnes–Hut quadtree: distant groups act through their total mass at their
+    /// centre of mass, O(n log n), with the error set by the opening angle. Coulomb
+    /// forces (charges of both signs, which a group's total does not represent) stay
+    /// direct.
+    Tree,
+}
+
+impl PairForces {
+    /// Both modes.
+    pub const ALL: [Self; 2] = [Self::Direct, Self::Tree];
+
+    /// The scene-file name: `direct` or `tree`.
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Self::Direct => "direct",
+            Self::Tree => "tree",
+        }
+    }
+}
+
 /// How the scene is integrated and played back.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Settings {
@@ -405,6 +431,11 @@ pub struct Settings {
     /// Seconds: the instant the scene's state describes. Default 0; a state saved at
     /// time T keeps T, so a run from it continues the clock.
     pub start_time: f64,
+    /// How pairwise gravitation is summed. Default direct.
+    pub pair_forces: PairForces,
+    /// The tree's opening angle θ: a group of size s at distance d acts as one body
+    /// when s/d < θ. Default 0.5.
+    pub opening_angle: f64,
 }
 
 impl Default for Settings {
@@ -415,6 +446,8 @@ impl Default for Settings {
             tolerance: 1e-9,
             time_scale: 1.0,
             start_time: 0.0,
+            pair_forces: PairForces::Direct,
+            opening_angle: 0.5,
         }
     }
 }

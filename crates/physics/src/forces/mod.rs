@@ -6,11 +6,12 @@ pub(crate) mod coulomb;
 pub(crate) mod gravitation;
 pub(crate) mod normal;
 pub(crate) mod spring;
+pub(crate) mod tree;
 pub(crate) mod uniform;
 
 use glam::DVec2;
 
-use crate::scene::{Endpoint, Scene};
+use crate::scene::{Endpoint, PairForces, Scene};
 pub(crate) use normal::SurfaceContact;
 pub(crate) use spring::SpringLink;
 
@@ -32,6 +33,10 @@ pub(crate) struct ForceModel {
     pub coulomb_constant: Option<f64>,
     /// The particles that take part in pairwise forces, ascending.
     pub interacting: Vec<usize>,
+    /// Those of them with a charge, ascending.
+    pub charged: Vec<usize>,
+    /// The opening angle when gravitation is summed with a tree.
+    pub tree: Option<f64>,
     pub springs: Vec<SpringLink>,
     /// Particles resting on or sliding along a ramp or wall during the current step.
     pub surface_contacts: Vec<SurfaceContact>,
@@ -47,9 +52,14 @@ impl ForceModel {
         let coulomb_constant = (scene.world.electrostatics && scene.world.coulomb_constant != 0.0)
             .then_some(scene.world.coulomb_constant);
         let particles = &scene.particles;
-        let interacting = (0..particles.len())
+        let interacting: Vec<usize> = (0..particles.len())
             .filter(|&i| gravitational_constant.is_some() || particles[i].charge != 0.0)
             .filter(|_| gravitational_constant.is_some() || coulomb_constant.is_some())
+            .collect();
+        let charged = interacting
+            .iter()
+            .copied()
+            .filter(|&i| particles[i].charge != 0.0)
             .collect();
         let index = |end: &Endpoint| match end {
             Endpoint::Particle(name) => {
@@ -77,6 +87,9 @@ impl ForceModel {
             gravitational_constant,
             coulomb_constant,
             interacting,
+            charged,
+            tree: (scene.simulation.pair_forces == PairForces::Tree)
+                .then_some(scene.simulation.opening_angle),
             springs: scene
                 .springs
                 .iter()
@@ -116,12 +129,27 @@ impl ForceModel {
         }
     }
 
-    /// Gravitation and Coulomb in one pass over the pairs: both are central
-    /// inverse-square laws, so one distance computation serves both.
+    /// Gravitation and Coulomb. Directly, in one pass over the pairs: both are central
+    /// inverse-square laws, so one distance computation serves both. With a tree,
+    /// gravitation through the tree and Coulomb directly among the charged particles.
     fn pairwise(&self, x: &[DVec2], force: &mut [DVec2]) {
         let g = self.gravitational_constant.unwrap_or(0.0);
         let k = self.coulomb_constant.unwrap_or(0.0);
-        let ids = &self.interacting;
+        match self.tree {
+            None => self.direct(x, force, g, k, &self.interacting),
+            Some(theta) => {
+                if g != 0.0 {
+                    tree::gravitation(g, theta, &self.interacting, x, &self.mass, force);
+                }
+                if k != 0.0 {
+                    self.direct(x, force, 0.0, k, &self.charged);
+                }
+            }
+        }
+    }
+
+    /// Gravitation (G = `g`) and Coulomb (`k`) between every pair of `ids`.
+    fn direct(&self, x: &[DVec2], force: &mut [DVec2], g: f64, k: f64, ids: &[usize]) {
         for (n, &i) in ids.iter().enumerate() {
             let (xi, mi, qi, fixed_i) = (x[i], self.mass[i], self.charge[i], self.is_fixed(i));
             let mut fi = DVec2::ZERO;

@@ -14,7 +14,7 @@
 
 use std::fmt::Write as _;
 
-use super::{Bounds, Color, Endpoint, Particle, Ramp, Settings, Spring, Vector, World};
+use super::{Bounds, Color, Endpoint, PairForces, Particle, Ramp, Settings, Spring, Vector, World};
 use crate::Integrator;
 use crate::scene::Rule;
 
@@ -31,6 +31,8 @@ pub enum Kind {
     Endpoint,
     /// An integration method's name.
     Integrator,
+    /// How pairwise forces are summed: `direct` or `tree`.
+    PairForces,
     /// `"#rrggbb"`, optional.
     Color,
     /// `{ min = [x, y], max = [x, y] }`, optional.
@@ -50,6 +52,8 @@ pub enum Value {
     Endpoint(Endpoint),
     /// [`Kind::Integrator`].
     Integrator(Integrator),
+    /// [`Kind::PairForces`].
+    PairForces(PairForces),
     /// [`Kind::Color`]; `None` when not chosen.
     Color(Option<Color>),
     /// [`Kind::Bounds`]; `None` when there are none.
@@ -288,6 +292,30 @@ pub const SIMULATION: &[Field<Settings>] = &[
         Some("1.0"),
         "Simulated seconds per real second when playing in the app"
     ),
+    Field {
+        key: "pair_forces",
+        label: "pair forces",
+        kind: Kind::PairForces,
+        unit: "",
+        default: Some("\"direct\""),
+        help: "How gravitation is summed: direct (every pair, exact) or tree (Barnes–Hut, for thousands of bodies)",
+        place: Place::Inspector,
+        get: |s| Value::PairForces(s.pair_forces),
+        set: |s, v| {
+            if let Value::PairForces(v) = v {
+                s.pair_forces = v;
+            }
+        },
+    },
+    number!(
+        "opening_angle",
+        "opening angle",
+        opening_angle,
+        Rule::Positive,
+        "",
+        Some("0.5"),
+        "Tree only: a group of size s at distance d acts as one body when s/d is below this"
+    ),
     number!(
         "start_time",
         "start time",
@@ -460,6 +488,7 @@ pub fn reference() -> String {
                 Kind::Bool => "true or false",
                 Kind::Endpoint => "name or point",
                 Kind::Integrator => "method",
+                Kind::PairForces => "direct or tree",
                 Kind::Color => "colour",
                 Kind::Bounds => "box",
             };
@@ -527,6 +556,8 @@ mod tests {
             tolerance: 1e-6,
             time_scale: 3.0,
             start_time: 2.5,
+            pair_forces: PairForces::Tree,
+            opening_angle: 0.3,
         };
         check(SIMULATION, &settings, &mut Settings::default());
     }

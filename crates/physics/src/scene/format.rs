@@ -19,6 +19,7 @@ use super::{
     World,
 };
 use crate::Integrator;
+use crate::scene::PairForces;
 
 /// The scene-format version this library reads and writes.
 pub const VERSION: i64 = 1;
@@ -294,6 +295,7 @@ fn out_fields<T>(fields: &[Field<T>], target: &T) -> Vec<(&'static str, Out)> {
                 FieldValue::Endpoint(Endpoint::Particle(name)) => Out::Text(name),
                 FieldValue::Endpoint(Endpoint::Point(point)) => Out::Vector(point),
                 FieldValue::Integrator(method) => Out::Text(method.as_str().to_owned()),
+                FieldValue::PairForces(mode) => Out::Text(mode.as_str().to_owned()),
                 FieldValue::Color(color) => Out::Text(color?.to_hex()),
                 FieldValue::Bounds(bounds) => Out::Bounds(bounds?),
             };
@@ -964,6 +966,7 @@ fn read_value(kind: Kind, node: &Node) -> Result<FieldValue, String> {
         Kind::Bool => FieldValue::Bool(read_bool(node)?),
         Kind::Endpoint => FieldValue::Endpoint(read_endpoint(node)?),
         Kind::Integrator => FieldValue::Integrator(read_integrator(node)?),
+        Kind::PairForces => FieldValue::PairForces(read_pair_forces(node)?),
         Kind::Color => FieldValue::Color(Some(read_color(node)?)),
         Kind::Bounds => FieldValue::Bounds(Some(read_bounds(node)?)),
     })
@@ -1052,6 +1055,14 @@ fn read_integrator(node: &Node) -> Result<Integrator, String> {
             names.join(", ")
         )
     })
+}
+
+fn read_pair_forces(node: &Node) -> Result<PairForces, String> {
+    let name = read_text(node)?;
+    PairForces::ALL
+        .into_iter()
+        .find(|mode| mode.as_str() == name)
+        .ok_or_else(|| format!("'{name}' is not a way to sum pair forces; choose direct or tree"))
 }
 
 fn read_color(node: &Node) -> Result<Color, String> {

@@ -1,0 +1,101 @@
+//! Gravitation summed by the Barnes–Hut tree (`pair_forces = "tree"`) against the direct
+//! sum over every pair, which is Newton's law itself (tested against Kepler in
+//! `orbits.rs`).
+
+use physics::{DVec2, PairForces, Particle, Scene, Simulation, World};
+
+/// `n` bodies of 1 to 2 kg in a disc of radius 10 m, denser towards the centre (a
+/// cluster), from a fixed sequence: the golden angle and a square-root radius.
+fn cluster(n: u32, pair_forces: PairForces, opening_angle: f64) -> Scene {
+    let mut world = World::weightless();
+    world.gravitational_constant = 1.0;
+    world.electrostatics = false;
+    let mut scene = Scene::new().with_world(world);
+    scene.simulation.pair_forces = pair_forces;
+    scene.simulation.opening_angle = opening_angle;
+    for i in 0..n {
+        let f = f64::from(i);
+        let r = 10.0 * (f / f64::from(n)).powf(0.75) + 1e-3;
+        let angle = f * 2.399_963_229_728_653;
+        scene.particles.push(
+            Particle::new(format!("b{i}"), 1.0 + (f * 0.618_034).fract())
+                .radius(1e-6)
+                .position([r * angle.cos(), r * angle.sin()]),
+        );
+    }
+    scene
+}
+
+fn accelerations(scene: &Scene) -> Vec<DVec2> {
+    Simulation::new(scene)
+        .expect("a valid scene")
+        .accelerations()
+}
+
+/// Each body's relative error, the tree's acceleration against the direct one, sorted.
+fn relative_errors(n: u32, opening_angle: f64) -> Vec<f64> {
+    let direct = accelerations(&cluster(n, PairForces::Direct, 0.5));
+    let tree = accelerations(&cluster(n, PairForces::Tree, opening_angle));
+    let mut errors: Vec<f64> = tree
+        .iter()
+        .zip(&direct)
+        .map(|(t, d)| t.distance(*d) / d.length())
+        .collect();
+    errors.sort_by(f64::total_cmp);
+    errors
+}
+
+/// The documented bound of the default opening angle 0.5, on a cluster of 3,000 bodies:
+/// the median body's force is within 2e-3 of the direct sum and the worst within 2e-2
+/// (measured: 9.1e-4 and 6.8e-3). With the quadrupole the error falls faster than θ²
+/// (the monopole's): at 0.25 the median is under an eighth of that at 0.5 (measured: a
+/// twentieth; the monopole alone gave a quarter, and a median of 1.6e-2 at 0.5).
+#[test]
+fn the_tree_is_within_its_documented_bound_of_the_direct_sum() {
+    let errors = relative_errors(3000, 0.5);
+    let (median, worst) = (errors[errors.len() / 2], errors[errors.len() - 1]);
+    assert!(median > 0.0, "the tree does approximate");
+    assert!(median < 2e-3, "median relative error {median}");
+    assert!(worst < 2e-2, "worst relative error {worst}");
+    let finer = relative_errors(3000, 0.25);
+    let finer_median = finer[finer.len() / 2];
+    assert!(
+        finer_median < median / 8.0,
+        "θ = 0.25: median {finer_median}, against {median} at 0.5"
+    );
+}
+
+/// With an opening angle so small that no group is ever taken as one body, the tree
+/// sums every pair: the direct result to rounding.
+#[test]
+fn a_tiny_opening_angle_is_the_direct_sum() {
+    let errors = relative_errors(500, 1e-9);
+    let worst = errors[errors.len() - 1];
+    assert!(worst < 1e-12, "worst relative error {worst}");
+}
+
+/// Two bodies far apart and a close pair: the far body feels the pair as one body of
+/// their total mass at their centre of mass, G (m₁ + m₂) / d² (to the monopole's error,
+/// (s/d)² ≈ 1e-8 here), and a body never pulls itself.
+#[test]
+fn a_distant_pair_pulls_as_its_total_mass_at_its_centre() {
+    let mut world = World::weightless();
+    world.gravitational_constant = 1.0;
+    world.electrostatics = false;
+    let mut scene = Scene::new().with_world(world);
+    scene.simulation.pair_forces = PairForces::Tree;
+    for (name, mass, x) in [("a", 1.0, -0.01), ("b", 3.0, 0.01), ("far", 1.0, 100.0)] {
+        scene
+            .particles
+            .push(Particle::new(name, mass).radius(1e-4).position([x, 0.0]));
+    }
+    let a = accelerations(&scene);
+    let centre = (1.0 * -0.01 + 3.0 * 0.01) / 4.0;
+    let theory = -4.0 / (100.0 - centre) / (100.0 - centre);
+    assert!(
+        (a[2].x - theory).abs() < 1e-7 * theory.abs(),
+        "the far body: {} against {theory}",
+        a[2].x
+    );
+    assert!(a[2].y.abs() < 1e-15, "on the axis: {}", a[2].y);
+}

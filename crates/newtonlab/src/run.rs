@@ -40,6 +40,11 @@ pub(crate) struct RunArgs {
     /// run continues from there: JSON when FILE ends in .json, TOML otherwise.
     #[arg(long, value_name = "FILE")]
     save_state: Option<String>,
+    /// Append the energy ledger to each row, joules: what spring damping, surface
+    /// friction and impacts (with resting contact) took out of the motion since the
+    /// start, and the residual: kinetic + potential + all three − the starting energy.
+    #[arg(long)]
+    ledger: bool,
 }
 
 pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
@@ -82,6 +87,9 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         )));
     }
     let mut simulation = Simulation::new(&scene).map_err(|e| Failure::Input(e.to_string()))?;
+    if args.ledger {
+        simulation.keep_ledger();
+    }
     let mut impacts = match args.impacts.as_deref() {
         Some(path) => {
             simulation.record_impacts();
@@ -192,7 +200,18 @@ fn write_csv(
     out: &mut impl Write,
     mut impacts: Option<&mut ImpactLog>,
 ) -> io::Result<Result<(), Failure>> {
-    writeln!(out, "{}", simulation.csv_header())?;
+    let ledger_start = simulation
+        .ledger()
+        .map(|_| simulation.diagnostics().energy.total());
+    if ledger_start.is_some() {
+        writeln!(
+            out,
+            "{},dissipated_damping,dissipated_friction,dissipated_impacts,energy_residual",
+            simulation.csv_header()
+        )?;
+    } else {
+        writeln!(out, "{}", simulation.csv_header())?;
+    }
     let progress = progress_bar(times.len() as u64);
     for &t in times {
         let stepped = simulation.step_to(t);
@@ -203,7 +222,20 @@ fn write_csv(
             progress.finish_and_clear();
             return Ok(Err(Failure::Simulation(error.to_string())));
         }
-        writeln!(out, "{}", simulation.csv_row())?;
+        match (simulation.ledger(), ledger_start) {
+            (Some(ledger), Some(start)) => {
+                let residual = simulation.diagnostics().energy.total() + ledger.total() - start;
+                writeln!(
+                    out,
+                    "{},{},{},{},{residual}",
+                    simulation.csv_row(),
+                    ledger.damping,
+                    ledger.friction,
+                    ledger.impacts
+                )?;
+            }
+            _ => writeln!(out, "{}", simulation.csv_row())?,
+        }
         progress.inc(1);
     }
     progress.finish_and_clear();

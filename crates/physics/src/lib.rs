@@ -98,4 +98,4 @@ pub use scene::{
     Bounds, Color, Endpoint, FieldRef, Follow, Graph, Of, PairForces, Particle, Quantity, Ramp,
     Rule, Scene, Section, Settings, Spring, Total, Vector, View, World, check_value,
 };
-pub use simulation::{ImpactRecord, ImpactTarget, Simulation, SimulationError};
+pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};

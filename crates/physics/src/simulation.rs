@@ -17,7 +17,7 @@
 
 use glam::DVec2;
 
-use crate::contacts::{Contacts, Impact};
+use crate::contacts::{Applied, Contacts, Impact};
 use crate::diagnostics::{self, Diagnostics, ParticleReadout};
 use crate::forces::ForceModel;
 use crate::integrators::{self, Integrator, Workspace};
@@ -88,6 +88,8 @@ pub struct Simulation {
     steps: u64,
     /// Impacts so far, when asked for with [`Simulation::record_impacts`].
     impact_log: Option<Vec<ImpactRecord>>,
+    /// Where the energy taken out of the motion went, when asked for.
+    ledger: Option<Ledger>,
     /// Time per stage, when a clock is lent with [`Simulation::set_clock`].
     profiler: Profiler,
 }
@@ -110,6 +112,46 @@ pub struct ImpactRecord {
     pub normal_speed_after: f64,
     /// The kinetic energy the impact took, J: ½ μ (1 − e²) u² with μ the effective mass.
     pub kinetic_energy_lost: f64,
+}
+
+/// The energy the dissipative parts of the physics took out of the motion since the
+/// ledger was started, joules. With the kinetic and potential energy it closes: kinetic +
+/// potential + the three − the starting energy is what is left, the residual (the
+/// integrator's error, and the
+/// potential energy the position correction of overlapping piles moves).
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Ledger {
+    /// Spring damping: ∫ b (closing speed)² dt, by the trapezoid rule over each step.
+    pub damping: f64,
+    /// Surface friction: ∫ −F·v dt of the surfaces' tangential force, the same way.
+    pub friction: f64,
+    /// Impacts and resting contact: ½ μ (1 − e²) u² per impact, and the kinetic energy
+    /// the resting contacts' inelastic impulses remove.
+    pub impacts: f64,
+}
+
+impl Ledger {
+    /// All three, joules.
+    pub fn total(&self) -> f64 {
+        self.damping + self.friction + self.impacts
+    }
+}
+
+/// The effective mass of an impact, kg: 1/(1/mᵢ + 1/mⱼ) for a pair, m against a
+/// surface (0 when nothing can move). `w` is each particle's 1/m.
+fn effective_mass(applied: &Applied, w: &[f64]) -> f64 {
+    let inverse = match applied.impact {
+        Impact::Pair(i, j) => w[i] + w[j],
+        Impact::Obstacle(p, _) => w[p],
+    };
+    if inverse > 0.0 { 1.0 / inverse } else { 0.0 }
+}
+
+/// The kinetic energy an impact takes, joules: ½ μ (1 − e²) u², the approach u becoming
+/// a separation e·u.
+fn impact_energy_lost(applied: &Applied, w: &[f64]) -> f64 {
+    let (u, e) = (applied.approach, applied.restitution);
+    0.5 * effective_mass(applied, w) * (1.0 - e * e) * u * u
 }
 
 /// What a particle hit.
@@ -153,6 +195,7 @@ impl Simulation {
             work: Workspace::default(),
             steps: 0,
             impact_log: None,
+            ledger: None,
             profiler: Profiler::default(),
         };
         // Contacts from the start: a particle placed on a ramp is held by it at t = 0.
@@ -182,6 +225,16 @@ impl Simulation {
         }
         saved.simulation.start_time = self.state.time;
         saved
+    }
+
+    /// Starts the energy ledger at zero, read with [`Self::ledger`].
+    pub fn keep_ledger(&mut self) {
+        self.ledger = Some(Ledger::default());
+    }
+
+    /// The energy ledger since [`Self::keep_ledger`], if it was started.
+    pub fn ledger(&self) -> Option<Ledger> {
+        self.ledger
     }
 
     /// Starts keeping a log of impacts, read with [`Self::take_impacts`].
@@ -327,6 +380,9 @@ impl Simulation {
     /// taken.
     fn advance(&mut self, max_step: f64) -> Result<f64, SimulationError> {
         self.profiler.start();
+        let kinetic = self
+            .ledger
+            .map(|_| self.forces.kinetic_energy(&self.state.velocity));
         if self.contacts.begin_step(
             &mut self.state,
             &mut self.forces,
@@ -335,6 +391,15 @@ impl Simulation {
         ) {
             self.work.start_acceleration = None;
         }
+        // What impacts at the step's start and the surfaces' catching took.
+        let begun = self.contacts.applied.len();
+        let power_at_start = kinetic.map(|before| {
+            let caught = before - self.forces.kinetic_energy(&self.state.velocity);
+            let power = self
+                .forces
+                .dissipation(&self.state.position, &self.state.velocity);
+            (caught, power)
+        });
         self.start.clone_from(&self.state);
         let mut taken = integrators::advance(
             self.integrator,
@@ -360,49 +425,39 @@ impl Simulation {
             self.work.start_acceleration = None;
         }
         let mut struck = None;
+        let mut power_at_end = None;
         if let Some((time, impact)) = interruption {
             let step = taken;
             taken = self.integrate_to_impact(time, step, impact);
             self.contacts.patch(&mut self.state, taken, step);
+            if self.ledger.is_some() {
+                power_at_end = Some(
+                    self.forces
+                        .dissipation(&self.state.position, &self.state.velocity),
+                );
+            }
             self.contacts
                 .apply(impact, &mut self.state, &self.forces, taken);
             self.work.start_acceleration = None;
             struck = Some(impact);
             self.profiler.lap(Stage::Reintegration);
         }
-        if let Some(log) = &mut self.impact_log {
-            let ramps = self.contacts.ramp_count();
-            let w = &self.forces.inverse_mass;
-            for applied in &self.contacts.applied {
-                let (particle, other, inverse_mass) = match applied.impact {
-                    Impact::Pair(i, j) => (i, ImpactTarget::Particle(j), w[i] + w[j]),
-                    Impact::Obstacle(p, k) if k < ramps => (p, ImpactTarget::Ramp(k), w[p]),
-                    Impact::Obstacle(p, _) => (p, ImpactTarget::Wall, w[p]),
-                };
-                // The two-body impulse along the normal: effective mass 1/(1/mᵢ + 1/mⱼ)
-                // (1/m against a surface); the approach u becomes a separation e·u.
-                let mass = if inverse_mass > 0.0 {
-                    1.0 / inverse_mass
-                } else {
-                    0.0
-                };
-                let (u, e) = (applied.approach, applied.restitution);
-                log.push(ImpactRecord {
-                    time: self.start.time + applied.time,
-                    particle,
-                    other,
-                    impulse: mass * (1.0 + e) * u,
-                    normal_speed_before: u,
-                    normal_speed_after: e * u,
-                    kinetic_energy_lost: 0.5 * mass * (1.0 - e * e) * u * u,
-                });
-            }
-        }
+        self.log_impacts();
+        let before_settling = self.ledger.map(|_| {
+            let end = power_at_end.unwrap_or_else(|| {
+                self.forces
+                    .dissipation(&self.state.position, &self.state.velocity)
+            });
+            (end, self.forces.kinetic_energy(&self.state.velocity))
+        });
         if self
             .contacts
             .settle(&mut self.state, &self.forces, taken, struck)
         {
             self.work.start_acceleration = None;
+        }
+        if let (Some(start), Some(end)) = (power_at_start, before_settling) {
+            self.book(start, end, begun, taken);
         }
         self.profiler.lap(Stage::RestingSolver);
         self.steps += 1;
@@ -413,6 +468,51 @@ impl Simulation {
             });
         }
         Ok(taken)
+    }
+
+    /// Adds the impacts applied in this step to the log, if one is kept.
+    fn log_impacts(&mut self) {
+        if let Some(log) = &mut self.impact_log {
+            let ramps = self.contacts.ramp_count();
+            let w = &self.forces.inverse_mass;
+            for applied in &self.contacts.applied {
+                let (particle, other) = match applied.impact {
+                    Impact::Pair(i, j) => (i, ImpactTarget::Particle(j)),
+                    Impact::Obstacle(p, k) if k < ramps => (p, ImpactTarget::Ramp(k)),
+                    Impact::Obstacle(p, _) => (p, ImpactTarget::Wall),
+                };
+                let (u, e) = (applied.approach, applied.restitution);
+                log.push(ImpactRecord {
+                    time: self.start.time + applied.time,
+                    particle,
+                    other,
+                    impulse: effective_mass(applied, w) * (1.0 + e) * u,
+                    normal_speed_before: u,
+                    normal_speed_after: e * u,
+                    kinetic_energy_lost: impact_energy_lost(applied, w),
+                });
+            }
+        }
+    }
+
+    /// Adds a step of `taken` seconds to the ledger: `start` is what the step's start
+    /// took impulsively and the dissipated power there; `end`, the power at its end and
+    /// the kinetic energy before the resting solver; impacts inside the step are those
+    /// applied from `begun` on.
+    fn book(&mut self, start: (f64, (f64, f64)), end: ((f64, f64), f64), begun: usize, taken: f64) {
+        let Some(ledger) = &mut self.ledger else {
+            return;
+        };
+        let ((caught, (damping_0, friction_0)), ((damping_1, friction_1), kinetic)) = (start, end);
+        ledger.damping += 0.5 * (damping_0 + damping_1) * taken;
+        ledger.friction += 0.5 * (friction_0 + friction_1) * taken;
+        let w = &self.forces.inverse_mass;
+        let in_step: f64 = self.contacts.applied[begun..]
+            .iter()
+            .map(|applied| impact_energy_lost(applied, w))
+            .sum();
+        let settled = kinetic - self.forces.kinetic_energy(&self.state.velocity);
+        ledger.impacts += caught + in_step + settled;
     }
 
     /// Integrates from the step's start to the instant of `impact`, first estimated at

@@ -115,6 +115,15 @@ impl ForceModel {
     /// opposite, so the total internal force is zero up to rounding and momentum is
     /// conserved; then divided by mass.
     pub fn accelerations(&self, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
+        self.accelerations_off_surfaces(x, v, out);
+        // Last: a surface answers the sum of all the other forces.
+        for contact in &self.surface_contacts {
+            contact.apply(&mut out[contact.particle]);
+        }
+    }
+
+    /// The accelerations of every force but the surfaces'.
+    fn accelerations_off_surfaces(&self, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
         out.fill(DVec2::ZERO);
         self.pairwise(x, out);
         for link in &self.springs {
@@ -123,10 +132,37 @@ impl ForceModel {
         for (i, a) in out.iter_mut().enumerate() {
             *a = uniform::acceleration(self.uniform[i]) + *a * self.inverse_mass[i];
         }
-        // Last: a surface answers the sum of all the other forces.
-        for contact in &self.surface_contacts {
-            contact.apply(&mut out[contact.particle]);
+    }
+
+    /// The power the dissipative forces take out of the motion at positions `x` and
+    /// velocities `v`, watts: (spring damping, surface friction). Friction is the part
+    /// of a surface's force along the surface; its power is −F·v.
+    pub fn dissipation(&self, x: &[DVec2], v: &[DVec2]) -> (f64, f64) {
+        let damping = self.springs.iter().map(|s| s.damping_power(x, v)).sum();
+        let mut friction = 0.0;
+        if self.surface_contacts.iter().any(|c| c.friction > 0.0) {
+            let mut a = vec![DVec2::ZERO; x.len()];
+            self.accelerations_off_surfaces(x, v, &mut a);
+            for contact in &self.surface_contacts {
+                let p = contact.particle;
+                let before = a[p];
+                contact.apply(&mut a[p]);
+                let change = a[p] - before;
+                let along = change - contact.normal * change.dot(contact.normal);
+                friction -= self.mass[p] * along.dot(v[p]);
+            }
         }
+        (damping, friction)
+    }
+
+    /// Σ ½ m v² over the moving particles, joules.
+    pub fn kinetic_energy(&self, v: &[DVec2]) -> f64 {
+        v.iter()
+            .zip(&self.mass)
+            .zip(&self.inverse_mass)
+            .filter(|&(_, &w)| w > 0.0)
+            .map(|((v, m), _)| 0.5 * m * v.length_squared())
+            .sum()
     }
 
     /// Gravitation and Coulomb. Directly, in one pass over the pairs: both are central

@@ -64,6 +64,21 @@ impl SpringLink {
         self.to.add_force(force, -f);
     }
 
+    /// The power its damping takes out of the motion, watts (≥ 0): b times the square of
+    /// the closing speed (of the relative velocity when the ends meet).
+    pub fn damping_power(&self, x: &[DVec2], v: &[DVec2]) -> f64 {
+        let d = self.to.position(x) - self.from.position(x);
+        let relative = self.to.velocity(v) - self.from.velocity(v);
+        let length = d.length();
+        let speed_squared = if length > 0.0 {
+            let closing = relative.dot(d / length);
+            closing * closing
+        } else {
+            relative.length_squared()
+        };
+        self.damping * speed_squared
+    }
+
     /// Whether particle `i` is at one of the ends.
     pub fn touches(&self, i: usize) -> bool {
         matches!(self.from, End::Particle(p) if p == i)

@@ -121,7 +121,7 @@ pub struct ImpactRecord {
 /// potential energy the position correction of overlapping piles moves).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Ledger {
-    /// Spring damping: ∫ b (closing speed)² dt, by the trapezoid rule over each step.
+    /// Spring damping: ∫ b (closing speed)² dt, by Simpson's rule over each step.
     pub damping: f64,
     /// Surface friction: ∫ −F·v dt of the surfaces' tangential force, the same way.
     pub friction: f64,
@@ -136,6 +136,9 @@ impl Ledger {
         self.damping + self.friction + self.impacts
     }
 }
+
+/// Dissipated power, watts: (spring damping, surface friction).
+type Power = (f64, f64);
 
 /// The effective mass of an impact, kg: 1/(1/mᵢ + 1/mⱼ) for a pair, m against a
 /// surface (0 when nothing can move). `w` is each particle's 1/m.
@@ -431,10 +434,7 @@ impl Simulation {
             taken = self.integrate_to_impact(time, step, impact);
             self.contacts.patch(&mut self.state, taken, step);
             if self.ledger.is_some() {
-                power_at_end = Some(
-                    self.forces
-                        .dissipation(&self.state.position, &self.state.velocity),
-                );
+                power_at_end = Some(self.power_over_step(taken));
             }
             self.contacts
                 .apply(impact, &mut self.state, &self.forces, taken);
@@ -444,10 +444,7 @@ impl Simulation {
         }
         self.log_impacts();
         let before_settling = self.ledger.map(|_| {
-            let end = power_at_end.unwrap_or_else(|| {
-                self.forces
-                    .dissipation(&self.state.position, &self.state.velocity)
-            });
+            let end = power_at_end.unwrap_or_else(|| self.power_over_step(taken));
             (end, self.forces.kinetic_energy(&self.state.velocity))
         });
         if self
@@ -495,17 +492,44 @@ impl Simulation {
         }
     }
 
+    /// The dissipated power (damping, friction) half way through the step just taken
+    /// (`taken` seconds from `self.start` to `self.state`), on the cubic through both
+    /// ends' positions and velocities, and at its end.
+    fn power_over_step(&self, taken: f64) -> (Power, Power) {
+        let (start, end) = (&self.start, &self.state);
+        let h = taken;
+        let (mut x, mut v) = (Vec::with_capacity(end.len()), Vec::with_capacity(end.len()));
+        for i in 0..end.len() {
+            let (x0, v0, x1, v1) = (
+                start.position[i],
+                start.velocity[i],
+                end.position[i],
+                end.velocity[i],
+            );
+            x.push((x0 + x1) * 0.5 + (v0 - v1) * (h / 8.0));
+            v.push((x1 - x0) * (1.5 / h) - (v0 + v1) * 0.25);
+        }
+        (
+            self.forces.dissipation(&x, &v),
+            self.forces.dissipation(&end.position, &end.velocity),
+        )
+    }
+
     /// Adds a step of `taken` seconds to the ledger: `start` is what the step's start
     /// took impulsively and the dissipated power there; `end`, the power at its end and
     /// the kinetic energy before the resting solver; impacts inside the step are those
     /// applied from `begun` on.
-    fn book(&mut self, start: (f64, (f64, f64)), end: ((f64, f64), f64), begun: usize, taken: f64) {
+    fn book(&mut self, start: (f64, Power), end: ((Power, Power), f64), begun: usize, taken: f64) {
         let Some(ledger) = &mut self.ledger else {
             return;
         };
-        let ((caught, (damping_0, friction_0)), ((damping_1, friction_1), kinetic)) = (start, end);
-        ledger.damping += 0.5 * (damping_0 + damping_1) * taken;
-        ledger.friction += 0.5 * (friction_0 + friction_1) * taken;
+        let (
+            (caught, (damping_0, friction_0)),
+            (((damping_m, friction_m), (damping_1, friction_1)), kinetic),
+        ) = (start, end);
+        // Simpson's rule over the step.
+        ledger.damping += (damping_0 + 4.0 * damping_m + damping_1) * taken / 6.0;
+        ledger.friction += (friction_0 + 4.0 * friction_m + friction_1) * taken / 6.0;
         let w = &self.forces.inverse_mass;
         let in_step: f64 = self.contacts.applied[begun..]
             .iter()

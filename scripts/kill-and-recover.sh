@@ -10,7 +10,7 @@ data=$(mktemp -d)
 app=
 log=$data.log
 xvfb=
-cleanup() { [ -n "$app" ] && kill -9 "$app" 2>/dev/null; [ -n "$xvfb" ] && kill "$xvfb" 2>/dev/null; rm -rf "$data" "$log"; true; }
+cleanup() { if [ -n "$app" ]; then kill -9 "$app" 2>/dev/null || true; wait "$app" 2>/dev/null || true; fi; [ -z "$xvfb" ] || kill "$xvfb" 2>/dev/null || true; rm -rf "$data" "$log"; }
 # On failure, show what the app printed: a bare exit code says nothing on a CI log.
 failed() { echo "kill-and-recover failed; the app printed:"; cat "$log" 2>/dev/null; }
 trap failed ERR

@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 out=${1:-target/screenshot.png}
 app=
 xvfb=
-cleanup() { [ -n "$app" ] && kill "$app" 2>/dev/null; [ -n "$xvfb" ] && kill "$xvfb" 2>/dev/null; true; }
+cleanup() { [ -z "$app" ] || kill "$app" 2>/dev/null || true; [ -z "$xvfb" ] || kill "$xvfb" 2>/dev/null || true; }
 trap cleanup EXIT
 # shellcheck source=scripts/xvfb.sh
 . scripts/xvfb.sh

@@ -11,7 +11,7 @@ scene=${1:-example:ball-pit}
 frames=${2:-108000}
 app=
 xvfb=
-cleanup() { [ -n "$app" ] && kill "$app" 2>/dev/null; [ -n "$xvfb" ] && kill "$xvfb" 2>/dev/null; true; }
+cleanup() { [ -z "$app" ] || kill "$app" 2>/dev/null || true; [ -z "$xvfb" ] || kill "$xvfb" 2>/dev/null || true; }
 trap cleanup EXIT
 # shellcheck source=scripts/xvfb.sh
 . scripts/xvfb.sh

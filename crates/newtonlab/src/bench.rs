@@ -84,6 +84,9 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
         }
     };
     let mut simulation = Simulation::new(&scene).map_err(|e| Failure::Input(e.to_string()))?;
+    let tree_error = matches!(args.scene, BenchScene::Cluster)
+        .then(|| tree_error(&scene, &simulation))
+        .flatten();
     simulation.set_threads(
         args.threads
             .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from)),
@@ -132,6 +135,14 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
             println!(
                 "  {rate:.1} force evaluations per second (all {n} bodies each; {evaluations} per step, more when an impact integrates again)"
             );
+            match tree_error {
+                Some(error) => println!(
+                    "  {error:.2e} normalised RMS force error against the direct sum, at the start"
+                ),
+                None => println!(
+                    "  (the force error is measured up to {TREE_ERROR_BODIES} bodies: the direct sum is O(n²))"
+                ),
+            }
         }
         BenchScene::Pit => {
             let simulated = simulation.time();
@@ -146,6 +157,28 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
     }
     print_profile(&simulation.profile(), steps);
     Ok(())
+}
+
+/// The most bodies whose tree forces `bench` checks against the direct sum.
+const TREE_ERROR_BODIES: usize = 20_000;
+
+/// √(Σ|tree − direct|² / Σ|direct|²) of the accelerations over every body at the start of `scene`, whose
+/// `simulation` sums with the tree; `None` above [`TREE_ERROR_BODIES`].
+fn tree_error(scene: &physics::Scene, simulation: &Simulation) -> Option<f64> {
+    if scene.particles.len() > TREE_ERROR_BODIES {
+        return None;
+    }
+    let mut direct = scene.clone();
+    direct.simulation.pair_forces = physics::PairForces::Direct;
+    let exact = Simulation::new(&direct).ok()?.accelerations();
+    let tree = simulation.accelerations();
+    let error: f64 = tree
+        .iter()
+        .zip(&exact)
+        .map(|(t, d)| t.distance_squared(*d))
+        .sum();
+    let size: f64 = exact.iter().map(|d| d.length_squared()).sum();
+    Some((error / size).sqrt())
 }
 
 /// Seconds since the first call: the clock lent to the simulation's profiler.

@@ -156,6 +156,20 @@ fn check(source: &str) -> Result<(), Failure> {
             scene.simulation.integrator,
             scene.simulation.time_step,
         );
+        if scene.simulation.pair_forces == physics::PairForces::Tree {
+            let charged = scene.particles.iter().filter(|p| p.charge != 0.0).count();
+            println!(
+                "note: gravitation is summed with the Barnes–Hut tree (opening angle {}){}",
+                scene.simulation.opening_angle,
+                if charged > 0 && scene.world.electrostatics {
+                    format!(
+                        "; Coulomb forces between its {charged} charged particle(s) are summed directly, pair by pair"
+                    )
+                } else {
+                    String::new()
+                }
+            );
+        }
     }
     Ok(())
 }

@@ -634,3 +634,21 @@ fn a_run_continued_from_a_saved_state_is_bit_identical() {
         assert_eq!(whole, rest, "{example}: the continued run");
     }
 }
+
+/// `check` says how a tree scene's pair forces are summed: gravitation by the tree,
+/// Coulomb directly.
+#[test]
+fn check_says_coulomb_stays_direct_under_the_tree() {
+    let (_dir, scene) = scene_file(
+        "tree.toml",
+        "version = 1\n[simulation]\npair_forces = \"tree\"\n[[particle]]\nname = \"a\"\nmass = 1.0\ncharge = 1e-6\nposition = [0.0, 0.0]\n[[particle]]\nname = \"b\"\nmass = 1.0\nposition = [1.0, 0.0]\n",
+    );
+    let output = newtonlab(&["check", &scene]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = stdout(&output);
+    assert!(
+        text.contains("Barnes–Hut tree")
+            && text.contains("1 charged particles are summed directly"),
+        "{text}"
+    );
+}

@@ -648,7 +648,7 @@ fn check_says_coulomb_stays_direct_under_the_tree() {
     let text = stdout(&output);
     assert!(
         text.contains("Barnes–Hut tree")
-            && text.contains("1 charged particles are summed directly"),
+            && text.contains("between its 1 charged particle(s) are summed directly"),
         "{text}"
     );
 }

@@ -1,4 +1,5 @@
-//! Readouts and graphs. Energies by kind, the energy drift since Play as a percentage and
+//! Readouts and graphs. Energies by kind, what damping, friction and impacts took since
+//! Play, the numerical error (what the books leave unaccounted) as a percentage and
 //! the total momentum; then the scene's graphs (`[[graph]]`): any quantities against time
 //! or against one another (a phase plot such as x against vx), several series each.
 //!
@@ -336,7 +337,7 @@ pub fn impact_marks(recording: &Recording, series: &[Quantity]) -> Vec<f64> {
     }
 }
 
-/// Energies by kind, drift since Play, momentum: live while running, the last recorded
+/// Energies by kind, the energy ledger, momentum: live while running, the last recorded
 /// values after a failure.
 fn readouts(ui: &mut Ui, runner: &Runner) {
     ui.heading("Energy and momentum");
@@ -371,12 +372,19 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
         }
     };
     let start = runner.start_energy;
-    let drift = energy.total - start;
-    // As a share of the energy at Play; in joules when that was 0.
-    let drift = if start == 0.0 {
-        format::with_unit(drift, "J")
+    // The books: what damping, friction and impacts took since Play, and what is left
+    // unaccounted, the numerical error (the integrator's, and the position correction
+    // of piles), as a share of the energy at Play (in joules when that was 0).
+    let ledger = runner
+        .simulation
+        .as_ref()
+        .and_then(physics::Simulation::ledger)
+        .unwrap_or_default();
+    let residual = energy.total + ledger.total() - start;
+    let residual = if start == 0.0 {
+        format::with_unit(residual, "J")
     } else {
-        format!("{} %", format::number(100.0 * drift / start.abs()))
+        format!("{} %", format::number(100.0 * residual / start.abs()))
     };
     egui::Grid::new("readouts")
         .num_columns(2)
@@ -391,7 +399,10 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
             );
             rows.push(("total (J)", format::number(energy.total)));
             rows.push(("total at Play (J)", format::number(start)));
-            rows.push(("change since Play", drift));
+            rows.push(("taken by damping (J)", format::number(ledger.damping)));
+            rows.push(("taken by friction (J)", format::number(ledger.friction)));
+            rows.push(("taken by impacts (J)", format::number(ledger.impacts)));
+            rows.push(("numerical error", residual));
             rows.push((
                 "momentum (kg·m/s)",
                 format!(

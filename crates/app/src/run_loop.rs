@@ -82,6 +82,7 @@ impl Runner {
         }
         let mut simulation = Simulation::new(scene)?;
         simulation.record_impacts();
+        simulation.keep_ledger();
         self.start_energy = simulation.diagnostics().energy.total();
         self.recording = Some(Recording::start(&simulation));
         self.trails = vec![VecDeque::new(); simulation.len()];

@@ -661,3 +661,32 @@ fn a_file_changed_on_disk_is_not_silently_overwritten() {
     assert!(!harness.state().document.is_dirty());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// The readouts keep the energy books while the damped spring plays: damping has taken
+/// E₀ − E(t) of the closed form (x − 10 = 5 e^(−γt)(cos ωt + (γ/ω) sin ωt), γ = 0.125,
+/// ω² = 1 − γ²), to 1e-9 J, and the panel shows it beside the numerical error.
+#[test]
+fn the_readouts_show_what_damping_took_and_the_numerical_error() {
+    let scene = physics::example("spring-damped-light")
+        .expect("the example")
+        .scene()
+        .expect("it loads");
+    let mut harness = harness(App::new(scene));
+    play_frames(&mut harness, 8);
+    harness.get_by_label("taken by damping (J)");
+    harness.get_by_label("numerical error");
+    let simulation = harness.state().runner.simulation.as_ref().expect("playing");
+    let t = simulation.time();
+    assert!(t > 0.5, "it played: t = {t}");
+    let (gamma, omega) = (0.125_f64, (1.0_f64 - 0.125 * 0.125).sqrt());
+    let decay = 5.0 * (-gamma * t).exp();
+    let stretch = decay * ((omega * t).cos() + gamma / omega * (omega * t).sin());
+    let v = -decay * (gamma * gamma + omega * omega) / omega * (omega * t).sin();
+    let lost = 12.5 - 0.5 * v * v - 0.5 * stretch * stretch;
+    let ledger = simulation.ledger().expect("the app keeps the ledger");
+    assert!(
+        (ledger.damping - lost).abs() < 1e-9,
+        "t = {t}: damping took {} J, theory {lost} J",
+        ledger.damping
+    );
+}

@@ -496,6 +496,9 @@ impl Simulation {
     /// (`taken` seconds from `self.start` to `self.state`), on the cubic through both
     /// ends' positions and velocities, and at its end.
     fn power_over_step(&self, taken: f64) -> (Power, Power) {
+        if !self.forces.dissipates() {
+            return ((0.0, 0.0), (0.0, 0.0));
+        }
         let (start, end) = (&self.start, &self.state);
         let h = taken;
         let (mut x, mut v) = (Vec::with_capacity(end.len()), Vec::with_capacity(end.len()));

@@ -138,6 +138,9 @@ impl ForceModel {
     /// velocities `v`, watts: (spring damping, surface friction). Friction is the part
     /// of a surface's force along the surface; its power is −F·v.
     pub fn dissipation(&self, x: &[DVec2], v: &[DVec2]) -> (f64, f64) {
+        if !self.dissipates() {
+            return (0.0, 0.0);
+        }
         let damping = self.springs.iter().map(|s| s.damping_power(x, v)).sum();
         let mut friction = 0.0;
         if self.surface_contacts.iter().any(|c| c.friction > 0.0) {
@@ -153,6 +156,13 @@ impl ForceModel {
             }
         }
         (damping, friction)
+    }
+
+    /// Whether any force dissipates smoothly now: a damped spring, or friction on a
+    /// surface a particle rests on.
+    pub fn dissipates(&self) -> bool {
+        self.springs.iter().any(|s| s.damping != 0.0)
+            || self.surface_contacts.iter().any(|c| c.friction > 0.0)
     }
 
     /// Σ ½ m v² over the moving particles, joules.

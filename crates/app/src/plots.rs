@@ -86,6 +86,7 @@ impl Graphs {
     /// The readouts and the graphs. Returns an action the user asked for (export).
     pub fn ui(&mut self, ui: &mut Ui, document: &mut Document, runner: &Runner) -> Option<Action> {
         readouts(ui, runner);
+        impact_list(ui, runner, document.scene());
         ui.separator();
         let mut action = None;
         let count = document.scene().graphs.len();
@@ -416,6 +417,58 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
                 ui.monospace(value);
                 ui.end_row();
             }
+        });
+}
+
+/// The impacts of the run, in time order (as many as the recording keeps): when, what
+/// hit what, the impulse and the kinetic energy each took. Only the rows in view are
+/// laid out, so a run of a hundred thousand impacts costs what twenty do.
+fn impact_list(ui: &mut Ui, runner: &Runner, scene: &physics::Scene) {
+    let Some(recording) = &runner.recording else {
+        return;
+    };
+    let impacts = recording.impacts();
+    egui::CollapsingHeader::new(format!("Impacts ({})", impacts.len()))
+        .id_salt("impacts")
+        .show(ui, |ui| {
+            if impacts.is_empty() {
+                ui.label("No impacts yet.");
+                return;
+            }
+            let names = recording.names();
+            let name = |i: usize| names.get(i).map_or("?", String::as_str);
+            let row_height = ui.text_style_height(&egui::TextStyle::Body) + 4.0;
+            egui::ScrollArea::vertical()
+                .max_height(180.0)
+                .auto_shrink([false, true])
+                .show_rows(ui, row_height, impacts.len(), |ui, rows| {
+                    egui::Grid::new("impact rows")
+                        .num_columns(5)
+                        .striped(true)
+                        .show(ui, |ui| {
+                            for label in ["t (s)", "particle", "hit", "impulse (N·s)", "lost (J)"]
+                            {
+                                ui.strong(label);
+                            }
+                            ui.end_row();
+                            for impact in &impacts[rows] {
+                                let other = match impact.other {
+                                    physics::ImpactTarget::Particle(j) => name(j).to_owned(),
+                                    physics::ImpactTarget::Ramp(k) => scene
+                                        .ramps
+                                        .get(k)
+                                        .map_or_else(|| "a ramp".to_owned(), |r| r.name.clone()),
+                                    physics::ImpactTarget::Wall => "wall".to_owned(),
+                                };
+                                ui.monospace(format::number(impact.time));
+                                ui.label(name(impact.particle));
+                                ui.label(other);
+                                ui.monospace(format::number(impact.impulse));
+                                ui.monospace(format::number(impact.kinetic_energy_lost));
+                                ui.end_row();
+                            }
+                        });
+                });
         });
 }
 

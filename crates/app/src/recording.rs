@@ -84,6 +84,11 @@ impl Recording {
         &self.impacts
     }
 
+    /// The particles' names at Play, in simulation order.
+    pub fn names(&self) -> &[String] {
+        &self.names
+    }
+
     /// The run's particle index of `name`.
     pub fn index_of(&self, name: &str) -> Option<usize> {
         self.names.iter().position(|n| n == name)

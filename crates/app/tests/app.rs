@@ -690,3 +690,31 @@ fn the_readouts_show_what_damping_took_and_the_numerical_error() {
         ledger.damping
     );
 }
+
+/// The impact list: after the paper's 4.3 collision (equal 1 kg masses, A at 20 m/s,
+/// impact parameter 0.53 × the sum of the radii: approach u = 20 √(1 − 0.53²) along the normal,
+/// impulse μ (1 + e) u = u with μ = ½ kg and e = 1, nothing lost) the list has one row,
+/// which shows that impulse.
+#[test]
+fn the_impact_list_shows_each_impact_with_its_impulse() {
+    let scene = physics::example("collision")
+        .expect("the example")
+        .scene()
+        .expect("it loads");
+    let mut harness = harness(App::new(scene));
+    play_frames(&mut harness, 4);
+    harness.get_by_label("Impacts (1)").click();
+    harness.run();
+    let impulse = 20.0 * (1.0_f64 - 0.53 * 0.53).sqrt();
+    let impacts = harness
+        .state()
+        .runner
+        .recording
+        .as_ref()
+        .expect("recorded")
+        .impacts();
+    assert_eq!(impacts.len(), 1);
+    assert!((impacts[0].impulse - impulse).abs() < 1e-9, "{impacts:?}");
+    harness.get_by_label(&newtonlab_app::format::number(impacts[0].impulse));
+    harness.get_by_label("impulse (N·s)");
+}

@@ -129,28 +129,26 @@ impl Tree {
             node.quadrupole = quadrupole;
             return index;
         }
-        // Sort the range into the quarters (a stable counting sort): lower-left,
+        // Sort the range into the quarters, keeping the order within each: lower-left,
         // lower-right, upper-left, upper-right.
         let half = side / 2.0;
         let middle = corner + DVec2::splat(half);
         let quarter = |p: DVec2| usize::from(p.x >= middle.x) + 2 * usize::from(p.y >= middle.y);
         scratch.clear();
-        for q in 0..4 {
+        let mut ends = [0; 4];
+        for (q, end_of_quarter) in ends.iter_mut().enumerate() {
             scratch.extend(
                 self.order[start..end]
                     .iter()
                     .copied()
                     .filter(|&i| quarter(x[i]) == q),
             );
+            *end_of_quarter = start + scratch.len();
         }
         self.order[start..end].copy_from_slice(scratch);
         let mut first = start;
         let mut children = [0; 4];
         for (q, child) in children.iter_mut().enumerate() {
-            let count = self.order[first..end]
-                .iter()
-                .take_while(|&&i| quarter(x[i]) == q)
-                .count();
             let offset = DVec2::new(
                 if q % 2 == 1 { half } else { 0.0 },
                 if q >= 2 { half } else { 0.0 },
@@ -159,13 +157,13 @@ impl Tree {
                 corner + offset,
                 half,
                 first,
-                first + count,
+                ends[q],
                 depth + 1,
                 x,
                 mass,
                 scratch,
             );
-            first += count;
+            first = ends[q];
         }
         let (mut total, mut moment) = (0.0, DVec2::ZERO);
         for &c in &children {

@@ -508,12 +508,7 @@ fn table<T: Clone + 'static>(
 ) -> Option<String> {
     // Only the section is copied, not the scene, every frame.
     let target = read(document.scene()).clone();
-    let names: Vec<String> = document
-        .scene()
-        .particles
-        .iter()
-        .map(|p| p.name.clone())
-        .collect();
+    let names = document.scene().particle_names();
     let mut problem = None;
     for f in fields.iter().filter(|f| f.place == Place::Inspector) {
         let field_id = id.with(f.key);

@@ -125,12 +125,7 @@ impl Graphs {
     ) -> Option<Action> {
         // Only what the panel reads, not the whole scene, every frame.
         let graph = &document.scene().graphs[g].clone();
-        let names: Vec<String> = document
-            .scene()
-            .particles
-            .iter()
-            .map(|p| p.name.clone())
-            .collect();
+        let names = document.scene().particle_names();
         let (x, series) = axes(graph);
         let mut action = None;
         let mut change: Option<Edit> = None;

@@ -260,7 +260,7 @@ impl ImpactLog {
         let mut log = Self {
             path: path.to_owned(),
             out: BufWriter::new(file),
-            particles: scene.particles.iter().map(|p| p.name.clone()).collect(),
+            particles: scene.particle_names(),
             ramps: scene.ramps.iter().map(|r| r.name.clone()).collect(),
             error: None,
         };

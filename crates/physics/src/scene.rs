@@ -529,4 +529,9 @@ impl Scene {
     pub fn particle_index(&self, name: &str) -> Option<usize> {
         self.particles.iter().position(|p| p.name == name)
     }
+
+    /// The particles' names, in file order.
+    pub fn particle_names(&self) -> Vec<String> {
+        self.particles.iter().map(|p| p.name.clone()).collect()
+    }
 }

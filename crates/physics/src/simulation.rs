@@ -182,7 +182,7 @@ impl Simulation {
         let particles = &scene.particles;
         let forces = ForceModel::new(scene);
         let mut simulation = Self {
-            names: particles.iter().map(|p| p.name.clone()).collect(),
+            names: scene.particle_names(),
             radius: particles.iter().map(|p| p.radius).collect(),
             contacts: Contacts::new(scene, &forces),
             forces,

@@ -65,6 +65,8 @@ pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
     (plain(Key::Num2), Action::Tool(Tool::Particle)),
     (plain(Key::Num3), Action::Tool(Tool::Spring)),
     (plain(Key::Num4), Action::Tool(Tool::Ramp)),
+    (plain(Key::Num5), Action::Tool(Tool::Rod)),
+    (plain(Key::Num6), Action::Tool(Tool::String)),
     (plain(Key::Delete), Action::Delete),
     (plain(Key::Backspace), Action::Delete),
     (plain(Key::F9), Action::ToggleInspector),

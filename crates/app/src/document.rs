@@ -153,10 +153,12 @@ impl Document {
         let taken = |name: &str| {
             scene.particles.iter().any(|p| p.name == name)
                 || scene.springs.iter().any(|s| s.name == name)
+                || scene.ties.iter().any(|t| t.name == name)
                 || scene.ramps.iter().any(|r| r.name == name)
         };
         // Some number up to one past the count of objects is always free.
-        let count = scene.particles.len() + scene.springs.len() + scene.ramps.len();
+        let count =
+            scene.particles.len() + scene.springs.len() + scene.ties.len() + scene.ramps.len();
         (1..=count + 1)
             .map(|n| format!("{prefix}{n}"))
             .find(|name| !taken(name))

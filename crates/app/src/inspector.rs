@@ -459,6 +459,17 @@ fn selected(
                 (move |s| &s.springs[i], move |s| &mut s.springs[i]),
             );
         }
+        Some(Selection::Tie(i)) if i < document.scene().ties.len() => {
+            let kind = document.scene().ties[i].kind;
+            problem = object(
+                ui,
+                document,
+                Section::Tie(i),
+                i,
+                fields::tie_fields(kind),
+                (move |s| &s.ties[i], move |s| &mut s.ties[i]),
+            );
+        }
         Some(Selection::Ramp(i)) if i < document.scene().ramps.len() => {
             problem = object(
                 ui,

@@ -284,6 +284,10 @@ impl App {
             let label = match selected {
                 Selection::Particle(_) => "delete particle",
                 Selection::Spring(_) => "delete spring",
+                Selection::Tie(i) => match self.document.scene().ties.get(i).map(|t| t.kind) {
+                    Some(physics::TieKind::String) => "delete string",
+                    _ => "delete rod",
+                },
                 Selection::Ramp(_) => "delete ramp",
             };
             self.document
@@ -681,9 +685,10 @@ impl App {
             ui.separator();
             let scene = self.document.scene();
             ui.label(format!(
-                "{} particles, {} springs, {} ramps",
+                "{} particles, {} springs, {} rods and strings, {} ramps",
                 scene.particles.len(),
                 scene.springs.len(),
+                scene.ties.len(),
                 scene.ramps.len()
             ));
         });

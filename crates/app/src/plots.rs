@@ -190,12 +190,23 @@ impl Graphs {
                 change = Some(("set x axis", Box::new(move |graph| graph.x = text)));
             }
         });
+        let ties: Vec<Quantity> = document
+            .scene()
+            .ties
+            .iter()
+            .map(|t| Quantity::Tension(t.name.clone()))
+            .collect();
         ui.horizontal_wrapped(|ui| {
-            for total in Total::ALL {
-                let quantity = Quantity::Total(total);
+            let totals = Total::ALL.into_iter().map(Quantity::Total);
+            for quantity in totals.chain(ties) {
+                let hint = if matches!(quantity, Quantity::Tension(_)) {
+                    "Plot the force this rod or string carries (pulling is positive)"
+                } else {
+                    "Plot this system quantity"
+                };
                 if ui
                     .small_button(label(&quantity))
-                    .on_hover_text("Plot this system quantity")
+                    .on_hover_text(hint)
                     .clicked()
                 {
                     let text = quantity.to_string();

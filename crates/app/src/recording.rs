@@ -32,7 +32,9 @@ pub enum Column {
 pub struct Recording {
     /// The particles' names at Play, in simulation order.
     names: Vec<String>,
-    /// Numbers per sample: t, then each particle's, then the totals.
+    /// The rods and strings at Play, whose tensions follow the particles' numbers.
+    ties: Vec<String>,
+    /// Numbers per sample: t, then each particle's, each tie's tension, then the totals.
     width: usize,
     /// Samples, one after another.
     data: Vec<f64>,
@@ -62,7 +64,11 @@ impl Recording {
         let stride = (FIRST_INTERVAL / dt).floor().max(1.0) as u64;
         let mut recording = Self {
             names: simulation.names().to_vec(),
-            width: 1 + PER_PARTICLE * simulation.len() + TOTALS.len(),
+            ties: simulation.tie_names().to_vec(),
+            width: 1
+                + PER_PARTICLE * simulation.len()
+                + simulation.tie_names().len()
+                + TOTALS.len(),
             data: Vec::new(),
             stride,
             first_step: simulation.steps_taken(),
@@ -120,6 +126,7 @@ impl Recording {
                 p.kinetic_energy,
             ]);
         }
+        self.data.extend(simulation.tensions());
         let d = simulation.diagnostics();
         self.data.extend(TOTALS.map(|total| match total {
             Total::KineticEnergy => d.energy.kinetic,
@@ -179,6 +186,10 @@ impl Recording {
                     Of::Ay => Column::Plain(first + 5),
                     Of::KineticEnergy => Column::Plain(first + 6),
                 }
+            }
+            Quantity::Tension(name) => {
+                let k = self.ties.iter().position(|n| n == name)?;
+                Column::Plain(1 + PER_PARTICLE * self.names.len() + k)
             }
             Quantity::Total(total) => {
                 let j = TOTALS.iter().position(|t| t == total)?;

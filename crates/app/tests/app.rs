@@ -11,7 +11,7 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use newtonlab_app::{Action, App, Recording, Selection, plots};
 use physics::{
-    DVec2, Follow, Graph, Integrator, Of, Particle, Quantity, Scene, Spring, View, World,
+    DVec2, Follow, Graph, Integrator, Of, Particle, Quantity, Scene, Spring, TieKind, View, World,
 };
 
 fn harness(app: App) -> Harness<'static, App> {
@@ -717,4 +717,79 @@ fn the_impact_list_shows_each_impact_with_its_impulse() {
     assert!((impacts[0].impulse - impulse).abs() < 1e-9, "{impacts:?}");
     harness.get_by_label(&newtonlab_app::format::number(impacts[0].impulse));
     harness.get_by_label("impulse (N·s)");
+}
+
+/// The Rod tool makes a pendulum: a drag from a ball to empty space above it ties the
+/// ball to a fixed point there with a rod as long as the drag, and Play swings it on
+/// that length; the rod's tension can be graphed. The String tool makes a string the
+/// same way.
+#[test]
+fn the_rod_and_string_tools_tie_a_particle_to_a_point() {
+    let scene = Scene::new()
+        .with_world(World {
+            gravitation: false,
+            ..World::default()
+        })
+        .with_particle(Particle::new("ball", 1.0).radius(0.2).velocity([1.0, 0.0]));
+    let mut harness = harness(App::new(scene));
+    let drag = |harness: &mut Harness<'_, App>, tool: &str, offset: egui::Vec2| {
+        harness.get_by_label(tool).click();
+        harness.run();
+        let app = harness.state();
+        let rect = app.canvas.rect;
+        let ball = app.canvas.view.to_screen(rect, DVec2::ZERO);
+        let end = ball + offset;
+        let anchor = app.canvas.view.to_world(rect, end);
+        harness.hover_at(ball);
+        harness.run();
+        harness.drag_at(ball);
+        harness.run();
+        harness.hover_at(end);
+        harness.run();
+        harness.drop_at(end);
+        harness.run();
+        anchor
+    };
+    let anchor = drag(&mut harness, "Rod", egui::vec2(30.0, -120.0));
+    let ties = &harness.state().document.scene().ties;
+    assert_eq!(ties.len(), 1, "a rod was added");
+    assert_eq!(
+        (ties[0].name.as_str(), ties[0].kind),
+        ("rod1", TieKind::Rod)
+    );
+    let length = ties[0].length;
+    assert!(
+        (length - anchor.length()).abs() < 1e-9,
+        "as long as the drag: {length}"
+    );
+    harness.state_mut().document.apply("graph", |scene| {
+        scene.graphs.push(Graph::against_time(["rod1.tension"]));
+    });
+    play_frames(&mut harness, 4);
+    let app = harness.state();
+    let simulation = app.runner.simulation.as_ref().expect("running");
+    let swung = simulation.positions()[0];
+    assert!(swung.length() > 0.0, "it moved: {swung}");
+    let pivot = app
+        .document
+        .scene()
+        .end_position(&app.document.scene().ties[0].to)
+        .expect("a fixed point");
+    assert!(
+        (swung.distance(pivot) - length).abs() < 1e-9,
+        "on the rod's length: {} m of {length} m",
+        swung.distance(pivot)
+    );
+    let (header, rows) = csv_rows(app, 0);
+    assert!(header.contains("rod1.tension"), "{header}");
+    assert!(rows.iter().all(|row| row[1] > 0.0), "the rod pulls");
+    harness.get_by_label("Reset").click();
+    harness.run();
+    drag(&mut harness, "String", egui::vec2(-150.0, -150.0));
+    let ties = &harness.state().document.scene().ties;
+    assert_eq!(ties.len(), 2, "a string was added");
+    assert_eq!(
+        (ties[1].name.as_str(), ties[1].kind),
+        ("string1", TieKind::String)
+    );
 }

@@ -82,6 +82,9 @@ examples!(
     "newtons-cradle",
     "marble-run",
     "ball-pit",
+    "pendulum",
+    "double-pendulum",
+    "string-circle",
 );
 
 /// The built-in scene with this name.

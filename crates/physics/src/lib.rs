@@ -73,6 +73,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod constraints;
 mod contacts;
 mod csv;
 pub use csv::csv_field;
@@ -96,6 +97,6 @@ pub use scene::fields;
 pub use scene::format::{LoadError, Problem, SceneFormat};
 pub use scene::{
     Bounds, Color, Endpoint, FieldRef, Follow, Graph, Of, PairForces, Particle, Quantity, Ramp,
-    Rule, Scene, Section, Settings, Spring, Total, Vector, View, World, check_value,
+    Rule, Scene, Section, Settings, Spring, Tie, TieKind, Total, Vector, View, World, check_value,
 };
 pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};

@@ -277,6 +277,87 @@ impl Spring {
     }
 }
 
+/// What a [`Tie`] holds its ends to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TieKind {
+    /// `[[rod]]`: exactly its length, pushing or pulling.
+    Rod,
+    /// `[[string]]`: at most its length, only pulling; slack when shorter.
+    String,
+}
+
+impl TieKind {
+    /// The scene-file name: `rod` or `string`.
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Self::Rod => "rod",
+            Self::String => "string",
+        }
+    }
+}
+
+/// A rigid rod or an inextensible string between two ends: a distance constraint,
+/// enforced exactly (no stiffness, no stretch). A rod keeps its ends at its length; a
+/// string keeps them at most that far apart and snaps taut with its restitution.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tie {
+    /// Unique among all objects of the scene.
+    pub name: String,
+    /// A rod or a string.
+    pub kind: TieKind,
+    /// First end.
+    pub from: Endpoint,
+    /// Second end.
+    pub to: Endpoint,
+    /// Metres, > 0. A file that leaves it out gets the distance between the ends at the
+    /// scene's start.
+    pub length: f64,
+    /// Strings only: the restitution when it snaps taut, 0..=1 (0: the ends stop moving
+    /// apart, like a rope jerked tight). Default 0.
+    pub restitution: f64,
+}
+
+impl Tie {
+    /// A rod of `length` metres between two ends.
+    #[must_use]
+    pub fn rod(
+        name: impl Into<String>,
+        from: impl Into<Endpoint>,
+        to: impl Into<Endpoint>,
+        length: f64,
+    ) -> Self {
+        Self {
+            name: name.into(),
+            kind: TieKind::Rod,
+            from: from.into(),
+            to: to.into(),
+            length,
+            restitution: 0.0,
+        }
+    }
+
+    /// A string of `length` metres between two ends, snapping taut inelastically.
+    #[must_use]
+    pub fn string(
+        name: impl Into<String>,
+        from: impl Into<Endpoint>,
+        to: impl Into<Endpoint>,
+        length: f64,
+    ) -> Self {
+        Self {
+            kind: TieKind::String,
+            ..Self::rod(name, from, to, length)
+        }
+    }
+
+    /// Sets the restitution of a string snapping taut.
+    #[must_use]
+    pub fn restitution(mut self, restitution: f64) -> Self {
+        self.restitution = restitution;
+        self
+    }
+}
+
 /// A solid ramp: every point within `thickness / 2` of the segment `from`–`to`.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Ramp {
@@ -467,6 +548,8 @@ pub struct Scene {
     pub particles: Vec<Particle>,
     /// In file order.
     pub springs: Vec<Spring>,
+    /// Rods and strings: the rods in file order, then the strings in file order.
+    pub ties: Vec<Tie>,
     /// In file order.
     pub ramps: Vec<Ramp>,
     /// The app's graphs when the scene opens (`[[graph]]`), in file order.
@@ -518,6 +601,13 @@ impl Scene {
         self
     }
 
+    /// Adds a rod or a string.
+    #[must_use]
+    pub fn with_tie(mut self, tie: Tie) -> Self {
+        self.ties.push(tie);
+        self
+    }
+
     /// Adds a ramp.
     #[must_use]
     pub fn with_ramp(mut self, ramp: Ramp) -> Self {
@@ -528,6 +618,22 @@ impl Scene {
     /// The index of the particle with this name.
     pub fn particle_index(&self, name: &str) -> Option<usize> {
         self.particles.iter().position(|p| p.name == name)
+    }
+
+    /// Where an end is at the scene's start, metres; `None` for a particle that does
+    /// not exist.
+    pub fn end_position(&self, end: &Endpoint) -> Option<DVec2> {
+        match end {
+            Endpoint::Particle(name) => self
+                .particle_index(name)
+                .map(|i| self.particles[i].position.to_dvec2()),
+            Endpoint::Point(point) => Some(point.to_dvec2()),
+        }
+    }
+
+    /// The distance between two ends at the scene's start, metres.
+    pub fn distance(&self, from: &Endpoint, to: &Endpoint) -> Option<f64> {
+        Some(self.end_position(from)?.distance(self.end_position(to)?))
     }
 
     /// The particles' names, in file order.

@@ -15,6 +15,8 @@
 //! `step_to(t)` shortens the last step so that it lands exactly on `t`: a sample at
 //! `t` is the state at `t`, not at the nearest step.
 
+mod ties;
+
 use glam::DVec2;
 
 use crate::contacts::{Applied, Contacts, Impact};
@@ -29,7 +31,7 @@ use crate::state::State;
 /// Why a simulation stopped.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SimulationError {
-    /// A position or velocity became infinite or NaN.
+    /// A position or velocity became infinite or NaN, or ran away beyond 1e150.
     #[error(
         "at t = {time} s particle '{particle}' reached a non-finite position or velocity \
          (two bodies came too close, or the time step is too large for the forces)"
@@ -74,6 +76,8 @@ pub enum SimulationError {
 #[derive(Clone, Debug)]
 pub struct Simulation {
     names: Vec<String>,
+    /// The rods' and strings' names, in the order of [`Scene::ties`].
+    tie_names: Vec<String>,
     radius: Vec<f64>,
     forces: ForceModel,
     contacts: Contacts,
@@ -183,6 +187,7 @@ impl Simulation {
         let forces = ForceModel::new(scene);
         let mut simulation = Self {
             names: scene.particle_names(),
+            tie_names: scene.ties.iter().map(|t| t.name.clone()).collect(),
             radius: particles.iter().map(|p| p.radius).collect(),
             contacts: Contacts::new(scene, &forces),
             forces,
@@ -201,6 +206,7 @@ impl Simulation {
             ledger: None,
             profiler: Profiler::default(),
         };
+        simulation.begin_ties_at_start();
         // Contacts from the start: a particle placed on a ramp is held by it at t = 0.
         simulation.contacts.begin_step(
             &mut simulation.state,
@@ -306,6 +312,11 @@ impl Simulation {
         &self.state.velocity
     }
 
+    /// The rods' and strings' names, in scene order (as [`Self::tensions`] lists them).
+    pub fn tie_names(&self) -> &[String] {
+        &self.tie_names
+    }
+
     /// Radii, metres.
     pub fn radii(&self) -> &[f64] {
         &self.radius
@@ -394,7 +405,11 @@ impl Simulation {
         ) {
             self.work.start_acceleration = None;
         }
-        // What impacts at the step's start and the surfaces' catching took.
+        if self.begin_ties(max_step) {
+            self.work.start_acceleration = None;
+        }
+        // What impacts at the step's start, strings snapping taut and the surfaces'
+        // catching took.
         let begun = self.contacts.applied.len();
         let power_at_start = kinetic.map(|before| {
             let caught = before - self.forces.kinetic_energy(&self.state.velocity);
@@ -416,6 +431,12 @@ impl Simulation {
             time: self.state.time,
             tolerance: self.tolerance,
         })?;
+        // A blown-up trial step stops here: the searches below assume a sane state.
+        self.check_finite()?;
+        let mut tie_event = self.find_tie_event(taken);
+        if let Some((_, time)) = tie_event {
+            taken = time;
+        }
         self.profiler.lap(Stage::Integration);
         let interruption = self.contacts.resolve_impacts(
             &self.start,
@@ -430,6 +451,8 @@ impl Simulation {
         let mut struck = None;
         let mut power_at_end = None;
         if let Some((time, impact)) = interruption {
+            // The impact comes first; a string's event, if still due, is found again.
+            tie_event = None;
             let step = taken;
             taken = self.integrate_to_impact(time, step, impact);
             self.contacts.patch(&mut self.state, taken, step);
@@ -447,6 +470,10 @@ impl Simulation {
             let end = power_at_end.unwrap_or_else(|| self.power_over_step(taken));
             (end, self.forces.kinetic_energy(&self.state.velocity))
         });
+        if let Some((k, _)) = tie_event {
+            self.apply_tie_event(k);
+            self.work.start_acceleration = None;
+        }
         if self
             .contacts
             .settle(&mut self.state, &self.forces, taken, struck)
@@ -457,14 +484,23 @@ impl Simulation {
             self.book(start, end, begun, taken);
         }
         self.profiler.lap(Stage::RestingSolver);
+        if !self.forces.constraints.is_empty() {
+            self.project_onto_ties();
+            self.work.start_acceleration = None;
+        }
         self.steps += 1;
-        if let Some(i) = self.state.first_non_finite() {
-            return Err(SimulationError::NonFinite {
+        self.check_finite()?;
+        Ok(taken)
+    }
+
+    fn check_finite(&self) -> Result<(), SimulationError> {
+        match self.state.first_non_finite() {
+            Some(i) => Err(SimulationError::NonFinite {
                 particle: self.names[i].clone(),
                 time: self.state.time,
-            });
+            }),
+            None => Ok(()),
         }
-        Ok(taken)
     }
 
     /// Adds the impacts applied in this step to the log, if one is kept.
@@ -550,14 +586,7 @@ impl Simulation {
         let tolerance = 1e-12 * self.contacts.reach(impact);
         let mut time = estimate;
         for attempt in 0..4 {
-            self.state.clone_from(&self.start);
-            integrators::advance_exactly(
-                self.integrator,
-                &self.forces,
-                &mut self.state,
-                time,
-                &mut self.work,
-            );
+            self.integrate_from_start(time);
             let (gap, _, approach) = self.contacts.measure(impact, &self.state);
             if gap.abs() <= tolerance || approach <= 0.0 || attempt == 3 {
                 break;
@@ -570,6 +599,18 @@ impl Simulation {
             time = refined;
         }
         time
+    }
+
+    /// The state integrated from the step's start for `time` seconds, exactly.
+    fn integrate_from_start(&mut self, time: f64) {
+        self.state.clone_from(&self.start);
+        integrators::advance_exactly(
+            self.integrator,
+            &self.forces,
+            &mut self.state,
+            time,
+            &mut self.work,
+        );
     }
 
     /// The acceleration of every particle from the smooth forces at this instant, m/s².

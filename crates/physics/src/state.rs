@@ -23,11 +23,17 @@ impl State {
         self.position.len()
     }
 
-    /// The first particle whose position or velocity is not finite.
+    /// The first particle whose position or velocity is not finite, or has run away
+    /// beyond [`RUNAWAY`] (a scene's numbers are at most 1e100; a state 1e50 times
+    /// larger is an integration that has blown up, on its way to infinity).
     pub fn first_non_finite(&self) -> Option<usize> {
+        let bounded = |v: DVec2| v.abs().max_element() <= RUNAWAY;
         self.position
             .iter()
             .zip(&self.velocity)
-            .position(|(x, v)| !x.is_finite() || !v.is_finite())
+            .position(|(&x, &v)| !bounded(x) || !bounded(v))
     }
 }
+
+/// See [`State::first_non_finite`].
+const RUNAWAY: f64 = 1e150;

@@ -3,7 +3,7 @@
 //! placed so they do not collide, and the preview of a gesture in progress.
 
 use egui::{Align2, Color32, FontId, Pos2, Rect, Shape, Stroke, Vec2, epaint::PathStroke};
-use physics::{DVec2, Endpoint, Ramp, Scene, Spring};
+use physics::{DVec2, Endpoint, Ramp, Scene, Spring, TieKind};
 
 use super::tools::Drag;
 use super::view::{format_metres, nice_length};
@@ -179,6 +179,40 @@ impl Canvas {
                 }
             }
         }
+        for (i, tie) in scene.ties.iter().enumerate() {
+            let Some((a, b)) = ends(scene, &tie.from, &tie.to, &frame.positions) else {
+                continue;
+            };
+            let selected = selection == Some(Selection::Tie(i));
+            let colour = if selected {
+                highlight
+            } else {
+                Color32::from_rgb(90, 75, 60)
+            };
+            match tie.kind {
+                TieKind::Rod => {
+                    painter.line_segment(
+                        [screen(a), screen(b)],
+                        Stroke::new(if selected { 5.0 } else { 3.5 }, colour),
+                    );
+                }
+                TieKind::String => {
+                    let points = string_points(a, b, tie.length)
+                        .into_iter()
+                        .map(screen)
+                        .collect();
+                    painter.add(Shape::line(
+                        points,
+                        Stroke::new(if selected { 2.5 } else { 1.2 }, colour),
+                    ));
+                }
+            }
+            for (e, p) in [(&tie.from, a), (&tie.to, b)] {
+                if matches!(e, Endpoint::Point(_)) {
+                    anchor(painter, screen(p));
+                }
+            }
+        }
         let many = scene.particles.len() > 150;
         // A crowd is drawn as one mesh of plain discs: egui's anti-aliased, outlined
         // circles cost ten times as many triangles, which software rendering feels.
@@ -258,12 +292,14 @@ impl Canvas {
     pub(super) fn draw_drag_preview(&self, painter: &egui::Painter, rect: Rect, frame: &Frame) {
         let screen = |p: DVec2| self.view.to_screen(rect, p);
         match self.drag {
-            Some(Drag::NewSpring { from, tip }) => {
+            Some(Drag::NewLink { from, tip, tool }) => {
                 if let Some(&a) = frame.positions.get(from) {
-                    painter.add(Shape::line(
-                        coil(screen(a), screen(tip)),
-                        Stroke::new(1.6, Color32::from_rgb(70, 70, 200)),
-                    ));
+                    let stroke = Stroke::new(1.6, Color32::from_rgb(70, 70, 200));
+                    if tool == super::Tool::Spring {
+                        painter.add(Shape::line(coil(screen(a), screen(tip)), stroke));
+                    } else {
+                        painter.line_segment([screen(a), screen(tip)], stroke);
+                    }
                 }
             }
             Some(Drag::NewRamp { from, to }) => {
@@ -308,13 +344,46 @@ pub(super) fn spring_ends(
     spring: &Spring,
     positions: &[DVec2],
 ) -> Option<(DVec2, DVec2)> {
+    ends(scene, &spring.from, &spring.to, positions)
+}
+
+/// Where two ends (of a spring, rod or string) are, given the particles' positions.
+pub(super) fn ends(
+    scene: &Scene,
+    from: &Endpoint,
+    to: &Endpoint,
+    positions: &[DVec2],
+) -> Option<(DVec2, DVec2)> {
     let end = |e: &Endpoint| match e {
         Endpoint::Particle(name) => scene
             .particle_index(name)
             .and_then(|k| positions.get(k).copied()),
         Endpoint::Point(p) => Some(p.to_dvec2()),
     };
-    Some((end(&spring.from)?, end(&spring.to)?))
+    Some((end(from)?, end(to)?))
+}
+
+/// A string from `a` to `b` (metres) of `length`: straight when taut, else the parabola
+/// of that arc length hanging below the chord (sag s with L ≈ c + 8 s² / (3 c)).
+fn string_points(a: DVec2, b: DVec2, length: f64) -> Vec<DVec2> {
+    let chord = a.distance(b);
+    if chord <= 0.0 || length <= chord {
+        return vec![a, b];
+    }
+    let sag = (3.0 * chord * (length - chord) / 8.0)
+        .sqrt()
+        .min(length / 2.0);
+    let along = (b - a) / chord;
+    let mut down = along.perp();
+    if down.y > 0.0 {
+        down = -down;
+    }
+    (0..=16)
+        .map(|k| {
+            let s = f64::from(k) / 16.0;
+            a + (b - a) * s + down * (4.0 * sag * s * (1.0 - s))
+        })
+        .collect()
 }
 
 /// Adds a filled disc to `mesh` as a fan of triangles, finer for larger discs.

@@ -35,17 +35,28 @@ pub enum Tool {
     Select,
     Particle,
     Spring,
+    Rod,
+    String,
     Ramp,
 }
 
 impl Tool {
-    pub const ALL: [Self; 4] = [Self::Select, Self::Particle, Self::Spring, Self::Ramp];
+    pub const ALL: [Self; 6] = [
+        Self::Select,
+        Self::Particle,
+        Self::Spring,
+        Self::Rod,
+        Self::String,
+        Self::Ramp,
+    ];
 
     pub fn label(self) -> &'static str {
         match self {
             Self::Select => "Select",
             Self::Particle => "Particle",
             Self::Spring => "Spring",
+            Self::Rod => "Rod",
+            Self::String => "String",
             Self::Ramp => "Ramp",
         }
     }
@@ -59,6 +70,12 @@ impl Tool {
             Self::Spring => {
                 "Drag from a particle to another particle, or to empty space for a fixed point (3)"
             }
+            Self::Rod => {
+                "A rigid rod: drag from a particle to another particle, or to empty space for a fixed point (5)"
+            }
+            Self::String => {
+                "A string (slack when shorter): drag from a particle to another particle, or to empty space for a fixed point (6)"
+            }
             Self::Ramp => "Drag to draw a ramp (4)",
         }
     }
@@ -69,6 +86,8 @@ impl Tool {
 pub enum Selection {
     Particle(usize),
     Spring(usize),
+    /// A rod or a string.
+    Tie(usize),
     Ramp(usize),
 }
 
@@ -78,6 +97,7 @@ impl Selection {
         match self {
             Self::Particle(i) => Section::Particle(i),
             Self::Spring(i) => Section::Spring(i),
+            Self::Tie(i) => Section::Tie(i),
             Self::Ramp(i) => Section::Ramp(i),
         }
     }
@@ -200,11 +220,11 @@ impl Canvas {
             points.push(ramp.from.to_dvec2());
             points.push(ramp.to.to_dvec2());
         }
-        for spring in &scene.springs {
-            for end in [&spring.from, &spring.to] {
-                if let Endpoint::Point(p) = end {
-                    points.push(p.to_dvec2());
-                }
+        let spring_ends = scene.springs.iter().flat_map(|s| [&s.from, &s.to]);
+        let tie_ends = scene.ties.iter().flat_map(|t| [&t.from, &t.to]);
+        for end in spring_ends.chain(tie_ends) {
+            if let Endpoint::Point(p) = end {
+                points.push(p.to_dvec2());
             }
         }
         if let Some(bounds) = scene.world.bounds {

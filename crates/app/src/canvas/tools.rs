@@ -1,11 +1,12 @@
 //! The editing gestures, one handler per tool: Select (move particles and ramps, drag a
 //! ramp's end or a velocity arrow's tip, pan empty space), Particle (click to place),
-//! Spring (drag from a particle to a particle or a fixed point), Ramp (drag to draw).
+//! Spring, Rod and String (drag from a particle to a particle or a fixed point), Ramp
+//! (drag to draw).
 //! A gesture starts where the pointer went down, not where egui noticed the drag, and
 //! places points on a grid step chosen from the zoom (hold Alt to place freely).
 
 use egui::{Pos2, Rect, Ui};
-use physics::{DVec2, Endpoint, Particle, Ramp, Scene, Spring, Vector};
+use physics::{DVec2, Endpoint, Particle, Ramp, Scene, Spring, Tie, Vector};
 
 use super::view::nice_length;
 use super::{Canvas, Frame, Selection, Tool, VELOCITY_ARROW_SECONDS};
@@ -15,16 +16,36 @@ use crate::document::Document;
 #[derive(Clone, Copy, Debug)]
 pub(super) enum Drag {
     Pan,
-    Particle { index: usize, grab: DVec2 },
-    Ramp { index: usize, last: DVec2 },
-    RampEnd { index: usize, to: bool },
-    Velocity { index: usize },
-    NewSpring { from: usize, tip: DVec2 },
-    NewRamp { from: DVec2, to: DVec2 },
+    Particle {
+        index: usize,
+        grab: DVec2,
+    },
+    Ramp {
+        index: usize,
+        last: DVec2,
+    },
+    RampEnd {
+        index: usize,
+        to: bool,
+    },
+    Velocity {
+        index: usize,
+    },
+    /// A new spring, rod or string (the tool says which).
+    NewLink {
+        from: usize,
+        tip: DVec2,
+        tool: Tool,
+    },
+    NewRamp {
+        from: DVec2,
+        to: DVec2,
+    },
 }
 
 impl Canvas {
-    /// The object under `pointer`, nearest first: particles, then ramps, then springs.
+    /// The object under `pointer`, nearest first: particles, then ramps, then springs,
+    /// rods and strings.
     pub(super) fn hit(
         &self,
         rect: Rect,
@@ -63,6 +84,13 @@ impl Canvas {
                 return Some(Selection::Spring(i));
             }
         }
+        for (i, tie) in scene.ties.iter().enumerate() {
+            if let Some((a, b)) = super::draw::ends(scene, &tie.from, &tie.to, &frame.positions)
+                && segment_distance(world, a, b) <= 2.0 * tolerance
+            {
+                return Some(Selection::Tie(i));
+            }
+        }
         None
     }
 
@@ -99,13 +127,16 @@ impl Canvas {
             let start = origin.unwrap_or(pointer);
             self.drag = match self.tool {
                 Tool::Select => Some(self.press_select(rect, document, frame, selection, start)),
-                Tool::Spring => match self.hit(rect, document.scene(), frame, start) {
-                    Some(Selection::Particle(from)) => Some(Drag::NewSpring {
-                        from,
-                        tip: self.view.to_world(rect, start),
-                    }),
-                    _ => None,
-                },
+                tool @ (Tool::Spring | Tool::Rod | Tool::String) => {
+                    match self.hit(rect, document.scene(), frame, start) {
+                        Some(Selection::Particle(from)) => Some(Drag::NewLink {
+                            from,
+                            tip: self.view.to_world(rect, start),
+                            tool,
+                        }),
+                        _ => None,
+                    }
+                }
                 Tool::Ramp => {
                     let from = snap(self.view.to_world(rect, start));
                     Some(Drag::NewRamp { from, to: from })
@@ -248,13 +279,14 @@ impl Canvas {
                     particle.velocity = keep_form(particle.velocity, velocity);
                 });
             }
-            Some(Drag::NewSpring { tip, .. }) => *tip = world,
+            Some(Drag::NewLink { tip, .. }) => *tip = world,
             Some(Drag::NewRamp { to, .. }) => *to = snap(world),
             None => {}
         }
     }
 
-    /// The gesture ends: a new spring or ramp is added, a move becomes one undo step.
+    /// The gesture ends: a new spring, rod, string or ramp is added, a move becomes one
+    /// undo step.
     fn release(
         &mut self,
         rect: Rect,
@@ -264,7 +296,7 @@ impl Canvas {
     ) {
         let tolerance = 8.0 / self.view.pixels_per_metre;
         match self.drag.take() {
-            Some(Drag::NewSpring { from, tip }) => {
+            Some(Drag::NewLink { from, tip, tool }) => {
                 let scene = document.scene();
                 let target = match self.hit(rect, scene, frame, self.view.to_screen(rect, tip)) {
                     Some(Selection::Particle(to)) if to != from => {
@@ -273,21 +305,31 @@ impl Canvas {
                     Some(Selection::Particle(_)) => return,
                     _ => Endpoint::Point(tip.into()),
                 };
-                let natural_length = match &target {
+                let length = match &target {
                     Endpoint::Particle(name) => scene
                         .particle_index(name)
                         .map_or(1.0, |k| frame.positions[k].distance(frame.positions[from])),
                     Endpoint::Point(p) => p.to_dvec2().distance(frame.positions[from]),
                 };
-                let spring = Spring::new(
-                    document.unused_name("s"),
-                    scene.particles[from].name.as_str(),
-                    target,
-                    10.0,
-                    natural_length,
-                );
-                document.apply("add spring", |scene| scene.springs.push(spring));
-                *selection = Some(Selection::Spring(document.scene().springs.len() - 1));
+                let from = scene.particles[from].name.as_str();
+                if tool == Tool::Spring {
+                    let spring = Spring::new(document.unused_name("s"), from, target, 10.0, length);
+                    document.apply("add spring", |scene| scene.springs.push(spring));
+                    *selection = Some(Selection::Spring(document.scene().springs.len() - 1));
+                } else if length > 0.0 {
+                    // A rod or string as long as the drag: it holds the scene as drawn.
+                    let (tie, label) = if tool == Tool::Rod {
+                        (
+                            Tie::rod(document.unused_name("rod"), from, target, length),
+                            "add rod",
+                        )
+                    } else {
+                        let name = document.unused_name("string");
+                        (Tie::string(name, from, target, length), "add string")
+                    };
+                    document.apply(label, |scene| scene.ties.push(tie));
+                    *selection = Some(Selection::Tie(document.scene().ties.len() - 1));
+                }
             }
             Some(Drag::NewRamp { from, to }) => {
                 if from.distance(to) > tolerance {
@@ -309,7 +351,7 @@ impl Drag {
         match self {
             Self::Particle { index, .. }
             | Self::Velocity { index }
-            | Self::NewSpring { from: index, .. } => index >= scene.particles.len(),
+            | Self::NewLink { from: index, .. } => index >= scene.particles.len(),
             Self::Ramp { index, .. } | Self::RampEnd { index, .. } => index >= scene.ramps.len(),
             Self::Pan | Self::NewRamp { .. } => false,
         }

@@ -241,7 +241,8 @@ impl Contacts {
                 .map(|i| {
                     !forces.is_fixed(i)
                         && (forces.interacting.contains(&i)
-                            || forces.springs.iter().any(|s| s.touches(i)))
+                            || forces.springs.iter().any(|s| s.touches(i))
+                            || forces.constraints.touches(i))
                 })
                 .collect(),
             paths: Vec::new(),

@@ -11,7 +11,8 @@ pub(crate) mod uniform;
 
 use glam::DVec2;
 
-use crate::scene::{Endpoint, PairForces, Scene};
+use crate::constraints::Constraints;
+use crate::scene::{PairForces, Scene};
 pub(crate) use normal::SurfaceContact;
 pub(crate) use spring::SpringLink;
 
@@ -38,6 +39,8 @@ pub(crate) struct ForceModel {
     /// The opening angle when gravitation is summed with a tree.
     pub tree: Option<f64>,
     pub springs: Vec<SpringLink>,
+    /// Rods and strings: their forces are added last, answering all the others.
+    pub constraints: Constraints,
     /// Particles resting on or sliding along a ramp or wall during the current step.
     pub surface_contacts: Vec<SurfaceContact>,
 }
@@ -61,18 +64,15 @@ impl ForceModel {
             .copied()
             .filter(|&i| particles[i].charge != 0.0)
             .collect();
-        let index = |end: &Endpoint| match end {
-            Endpoint::Particle(name) => {
-                spring::End::Particle(scene.particle_index(name).unwrap_or(0))
-            }
-            Endpoint::Point(point) => spring::End::Point(point.to_dvec2()),
-        };
+        let index = |end| spring::End::of(scene, end);
+        let inverse_mass: Vec<f64> = particles
+            .iter()
+            .map(|p| if p.fixed { 0.0 } else { 1.0 / p.mass })
+            .collect();
         Self {
             mass: particles.iter().map(|p| p.mass).collect(),
-            inverse_mass: particles
-                .iter()
-                .map(|p| if p.fixed { 0.0 } else { 1.0 / p.mass })
-                .collect(),
+            constraints: Constraints::new(scene, &inverse_mass),
+            inverse_mass,
             charge: particles.iter().map(|p| p.charge).collect(),
             uniform: particles
                 .iter()
@@ -124,6 +124,15 @@ impl ForceModel {
 
     /// The accelerations of every force but the surfaces'.
     fn accelerations_off_surfaces(&self, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
+        self.free_accelerations(x, v, out);
+        if !self.constraints.is_empty() {
+            self.constraints.add_forces(x, v, &self.inverse_mass, out);
+        }
+    }
+
+    /// The accelerations of the fields, pairwise forces and springs: everything the
+    /// rods, strings and surfaces answer.
+    pub fn free_accelerations(&self, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
         out.fill(DVec2::ZERO);
         self.pairwise(x, out);
         for link in &self.springs {
@@ -132,6 +141,17 @@ impl ForceModel {
         for (i, a) in out.iter_mut().enumerate() {
             *a = uniform::acceleration(self.uniform[i]) + *a * self.inverse_mass[i];
         }
+    }
+
+    /// Each rod's and string's tension at positions `x` and velocities `v`, N (pulling
+    /// positive; 0 for a slack string), in the scene's order of ties.
+    pub fn tensions(&self, x: &[DVec2], v: &[DVec2]) -> Vec<f64> {
+        if self.constraints.is_empty() {
+            return Vec::new();
+        }
+        let mut a = vec![DVec2::ZERO; x.len()];
+        self.free_accelerations(x, v, &mut a);
+        self.constraints.tensions(x, v, &self.inverse_mass, &a)
     }
 
     /// The power the dissipative forces take out of the motion at positions `x` and

@@ -13,21 +13,31 @@ pub(crate) enum End {
 }
 
 impl End {
-    fn position(self, x: &[DVec2]) -> DVec2 {
+    /// The runtime form of an end of a valid scene.
+    pub fn of(scene: &crate::scene::Scene, end: &crate::scene::Endpoint) -> Self {
+        match end {
+            crate::scene::Endpoint::Particle(name) => {
+                Self::Particle(scene.particle_index(name).unwrap_or(0))
+            }
+            crate::scene::Endpoint::Point(point) => Self::Point(point.to_dvec2()),
+        }
+    }
+
+    pub fn position(self, x: &[DVec2]) -> DVec2 {
         match self {
             Self::Particle(i) => x[i],
             Self::Point(p) => p,
         }
     }
 
-    fn velocity(self, v: &[DVec2]) -> DVec2 {
+    pub fn velocity(self, v: &[DVec2]) -> DVec2 {
         match self {
             Self::Particle(i) => v[i],
             Self::Point(_) => DVec2::ZERO,
         }
     }
 
-    fn add_force(self, force: &mut [DVec2], f: DVec2) {
+    pub fn add_force(self, force: &mut [DVec2], f: DVec2) {
         if let Self::Particle(i) = self {
             force[i] += f;
         }

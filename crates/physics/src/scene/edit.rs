@@ -1,6 +1,6 @@
 //! Edits that are rules of the scene rather than of any one screen: a renamed particle's
-//! springs, graphs and camera follow it; a deleted particle takes its springs and its
-//! graph series with it. The app's inspector, canvas and keyboard all edit through these.
+//! springs, rods, strings, graphs and camera follow it; a deleted particle takes its
+//! springs, rods, strings and graph series with it. The app's inspector, canvas and keyboard all edit through these.
 
 use super::{Endpoint, Scene, Section};
 
@@ -10,6 +10,7 @@ impl Scene {
         match section {
             Section::Particle(i) => self.particles.get(i).map(|p| p.name.as_str()),
             Section::Spring(i) => self.springs.get(i).map(|s| s.name.as_str()),
+            Section::Tie(i) => self.ties.get(i).map(|t| t.name.as_str()),
             Section::Ramp(i) => self.ramps.get(i).map(|r| r.name.as_str()),
             _ => None,
         }
@@ -25,16 +26,20 @@ impl Scene {
         match section {
             Section::Particle(i) => {
                 new.clone_into(&mut self.particles[i].name);
-                for spring in &mut self.springs {
-                    for end in [&mut spring.from, &mut spring.to] {
-                        if matches!(end, Endpoint::Particle(name) if *name == old) {
-                            *end = Endpoint::Particle(new.to_owned());
-                        }
+                let ends = self.springs.iter_mut().map(|s| [&mut s.from, &mut s.to]);
+                let tie_ends = self.ties.iter_mut().map(|t| [&mut t.from, &mut t.to]);
+                for end in ends.chain(tie_ends).flatten() {
+                    if matches!(end, Endpoint::Particle(name) if *name == old) {
+                        *end = Endpoint::Particle(new.to_owned());
                     }
                 }
                 self.rename_in_presentation(&old, new);
             }
             Section::Spring(i) => new.clone_into(&mut self.springs[i].name),
+            Section::Tie(i) => {
+                new.clone_into(&mut self.ties[i].name);
+                self.rename_in_presentation(&old, new);
+            }
             Section::Ramp(i) => new.clone_into(&mut self.ramps[i].name),
             _ => {}
         }
@@ -46,14 +51,18 @@ impl Scene {
         match section {
             Section::Particle(i) if i < self.particles.len() => {
                 let name = self.particles.remove(i).name;
-                self.springs.retain(|s| {
-                    !matches!(&s.from, Endpoint::Particle(n) if *n == name)
-                        && !matches!(&s.to, Endpoint::Particle(n) if *n == name)
-                });
+                let attached = |end: &Endpoint| matches!(end, Endpoint::Particle(n) if *n == name);
+                self.springs
+                    .retain(|s| !attached(&s.from) && !attached(&s.to));
+                self.ties.retain(|t| !attached(&t.from) && !attached(&t.to));
                 self.forget_in_presentation(&name);
             }
             Section::Spring(i) if i < self.springs.len() => {
                 self.springs.remove(i);
+            }
+            Section::Tie(i) if i < self.ties.len() => {
+                let name = self.ties.remove(i).name;
+                self.forget_in_presentation(&name);
             }
             Section::Ramp(i) if i < self.ramps.len() => {
                 self.ramps.remove(i);

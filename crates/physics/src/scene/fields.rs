@@ -1,5 +1,5 @@
 //! One table of the scene's fields. Each field of `[world]`, `[simulation]`,
-//! `[[particle]]`, `[[spring]]` and `[[ramp]]` is defined once here — its key, what a
+//! `[[particle]]`, `[[spring]]`, `[[rod]]`, `[[string]]` and `[[ramp]]` is defined once here — its key, what a
 //! person calls it, its kind and rule, unit, default and one line of help — and that
 //! definition drives the TOML/JSON reader and writer, [`Scene::validate`]'s rules for
 //! numbers and vectors, the app's inspector (label, unit, tooltip, checking) and the
@@ -14,7 +14,9 @@
 
 use std::fmt::Write as _;
 
-use super::{Bounds, Color, Endpoint, PairForces, Particle, Ramp, Settings, Spring, Vector, World};
+use super::{
+    Bounds, Color, Endpoint, PairForces, Particle, Ramp, Settings, Spring, Tie, Vector, World,
+};
 use crate::Integrator;
 use crate::scene::Rule;
 
@@ -430,6 +432,53 @@ pub const SPRING: &[Field<Spring>] = &[
     ),
 ];
 
+/// `[[rod]]`, after its name.
+pub const ROD: &[Field<Tie>] = &[
+    endpoint!("from", from, "A particle's name, or a fixed point [x, y]"),
+    endpoint!("to", to, "A particle's name, or a fixed point [x, y]"),
+    number!(
+        "length",
+        "length",
+        length,
+        Rule::Positive,
+        "m",
+        Some("the distance at the start"),
+        "The distance the rod keeps between its ends"
+    ),
+];
+
+/// `[[string]]`, after its name: a rod's fields and the restitution of snapping taut.
+pub const STRING: &[Field<Tie>] = &[
+    endpoint!("from", from, "A particle's name, or a fixed point [x, y]"),
+    endpoint!("to", to, "A particle's name, or a fixed point [x, y]"),
+    number!(
+        "length",
+        "length",
+        length,
+        Rule::Positive,
+        "m",
+        Some("the distance at the start"),
+        "The farthest apart the string lets its ends go"
+    ),
+    number!(
+        "restitution",
+        "restitution",
+        restitution,
+        Rule::Fraction,
+        "",
+        Some("0.0"),
+        "When it snaps taut: 0 (the ends stop separating) to 1 (they bounce back)"
+    ),
+];
+
+/// The fields of a rod or a string.
+pub fn tie_fields(kind: super::TieKind) -> &'static [Field<Tie>] {
+    match kind {
+        super::TieKind::Rod => ROD,
+        super::TieKind::String => STRING,
+    }
+}
+
 /// `[[ramp]]`, after its name.
 pub const RAMP: &[Field<Ramp>] = &[
     vector!("from", "from", from, "m", None, "One end of the ramp"),
@@ -508,6 +557,8 @@ pub fn reference() -> String {
     section(&mut out, "[simulation]", SIMULATION);
     section(&mut out, "[[particle]]", PARTICLE);
     section(&mut out, "[[spring]]", SPRING);
+    section(&mut out, "[[rod]]", ROD);
+    section(&mut out, "[[string]]", STRING);
     section(&mut out, "[[ramp]]", RAMP);
     out
 }
@@ -538,6 +589,8 @@ mod tests {
         check(PARTICLE, &a, &mut Particle::new("b", 1.0));
         let spring = Spring::new("s", "a", [1.0, 1.0], 3.0, 4.0).damping(0.5);
         check(SPRING, &spring, &mut Spring::new("t", "x", "y", 1.0, 1.0));
+        let string = Tie::string("s", "a", [1.0, 1.0], 3.0).restitution(0.5);
+        check(STRING, &string, &mut Tie::rod("t", "x", "y", 1.0));
         let ramp = Ramp::new("r", [0.0, 1.0], [2.0, 3.0])
             .thickness(0.3)
             .restitution(0.4)

@@ -15,8 +15,8 @@ use std::ops::Range;
 use super::fields::{self, Field, Kind, Value as FieldValue};
 use super::validate::{FieldRef, Section};
 use super::{
-    Bounds, Color, Endpoint, Follow, Graph, Particle, Ramp, Scene, Settings, Spring, Vector, View,
-    World,
+    Bounds, Color, Endpoint, Follow, Graph, Particle, Ramp, Scene, Settings, Spring, Tie, TieKind,
+    Vector, View, World,
 };
 use crate::Integrator;
 use crate::scene::PairForces;
@@ -230,6 +230,13 @@ impl Scene {
                     .iter()
                     .map(|s| ("spring", &s.name, out_fields(fields::SPRING, s))),
             )
+            .chain(self.ties.iter().map(|t| {
+                (
+                    t.kind.as_str(),
+                    &t.name,
+                    out_fields(fields::tie_fields(t.kind), t),
+                )
+            }))
             .chain(
                 self.ramps
                     .iter()
@@ -579,6 +586,8 @@ const ROOT_KEYS: &[&str] = &[
     "simulation",
     "particle",
     "spring",
+    "rod",
+    "string",
     "ramp",
     "graph",
     "view",
@@ -745,6 +754,12 @@ impl<'t> Reader<'t> {
             let spring = self.spring(node, i);
             scene.springs.push(spring);
         }
+        for kind in [TieKind::Rod, TieKind::String] {
+            for (i, node) in self.items(&mut top, kind.as_str()).iter().enumerate() {
+                let tie = self.tie(node, kind, i, &scene);
+                scene.ties.push(tie);
+            }
+        }
         for (i, node) in self.items(&mut top, "ramp").iter().enumerate() {
             let ramp = self.ramp(node, i);
             scene.ramps.push(ramp);
@@ -824,7 +839,12 @@ impl<'t> Reader<'t> {
         section: Section,
         index: usize,
     ) -> Option<(Table<'n>, String)> {
-        let default_name = format!("{}{}", &kind[..1], index + 1);
+        // Particles, springs and ramps are named by their initial (p1, s1, r1); rods and
+        // strings in full (rod1, string1), which would clash with ramps and springs.
+        let default_name = match kind {
+            "rod" | "string" => format!("{kind}{}", index + 1),
+            _ => format!("{}{}", &kind[..1], index + 1),
+        };
         let mut t = self.table(node, section, format!("{kind} #{}", index + 1))?;
         let name = self
             .field(&mut t, "name", read_text)
@@ -862,6 +882,26 @@ impl<'t> Reader<'t> {
             self.close(&t, &fields::keys(&["name"], fields::SPRING));
         }
         spring
+    }
+
+    /// A rod or a string, the `index`-th of its kind; `scene` holds the particles read so
+    /// far, which give a length left out of the file.
+    fn tie(&mut self, node: &Node, kind: TieKind, index: usize, scene: &Scene) -> Tie {
+        let placeholder = || Endpoint::Point(Vector::ZERO);
+        let mut tie = Tie::rod(String::new(), placeholder(), placeholder(), 1.0);
+        tie.kind = kind;
+        let section = Section::Tie(scene.ties.len());
+        if let Some((mut t, name)) = self.object(node, kind.as_str(), section, index) {
+            let fields = fields::tie_fields(kind);
+            let has_length = t.entries.iter().any(|e| e.key == "length");
+            tie.name = name;
+            self.fields(&mut t, fields, &mut tie);
+            self.close(&t, &fields::keys(&["name"], fields));
+            if !has_length && let Some(distance) = scene.distance(&tie.from, &tie.to) {
+                tie.length = distance;
+            }
+        }
+        tie
     }
 
     fn ramp(&mut self, node: &Node, index: usize) -> Ramp {

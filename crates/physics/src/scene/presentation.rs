@@ -184,10 +184,12 @@ pub enum Quantity {
     Particle(String, Of),
     /// A system quantity.
     Total(Total),
+    /// `NAME.tension`: the force a rod or string carries, N (pulling positive).
+    Tension(String),
 }
 
 impl Quantity {
-    /// Reads `t`, `NAME.x|y|vx|vy|speed|ax|ay|kinetic_energy`, `kinetic_energy`,
+    /// Reads `t`, `NAME.x|y|vx|vy|speed|ax|ay|kinetic_energy`, `ROD.tension`, `kinetic_energy`,
     /// `potential_energy`, `total_energy`, `momentum_x` or `momentum_y`. Whether the
     /// particle exists is the scene's question ([`Scene::validate`]).
     ///
@@ -203,16 +205,19 @@ impl Quantity {
         if let Some((name, key)) = text.rsplit_once('.')
             && !name.is_empty()
         {
+            if key == "tension" {
+                return Ok(Self::Tension(name.to_owned()));
+            }
             return match Of::ALL.into_iter().find(|of| of.key() == key) {
                 Some(of) => Ok(Self::Particle(name.to_owned(), of)),
                 None => Err(format!(
-                    "'{text}': a particle's quantity is one of {}",
+                    "'{text}': a particle's quantity is one of {}; a rod's or string's is tension",
                     Of::ALL.map(Of::key).join(", ")
                 )),
             };
         }
         Err(format!(
-            "'{text}' is not a quantity: write t, NAME.x (or .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy), or one of {}",
+            "'{text}' is not a quantity: write t, NAME.x (or .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy), ROD.tension, or one of {}",
             Total::ALL.map(Total::key).join(", ")
         ))
     }
@@ -223,6 +228,7 @@ impl Quantity {
             Self::Time => "s",
             Self::Particle(_, of) => of.unit(),
             Self::Total(total) => total.unit(),
+            Self::Tension(_) => "N",
         }
     }
 }
@@ -233,20 +239,23 @@ impl fmt::Display for Quantity {
             Self::Time => f.write_str("t"),
             Self::Particle(name, of) => write!(f, "{name}.{}", of.key()),
             Self::Total(total) => f.write_str(total.key()),
+            Self::Tension(name) => write!(f, "{name}.tension"),
         }
     }
 }
 
 impl Scene {
-    /// Renames every reference to the particle `old` in the graphs and the view, as
-    /// renaming the particle itself does for springs.
+    /// Renames every reference to the particle, rod or string `old` in the graphs and the
+    /// view, as renaming a particle does for its springs.
     pub(super) fn rename_in_presentation(&mut self, old: &str, new: &str) {
-        let rename = |text: &mut String| {
-            if let Ok(Quantity::Particle(name, of)) = Quantity::parse(text)
-                && name == old
-            {
+        let rename = |text: &mut String| match Quantity::parse(text) {
+            Ok(Quantity::Particle(name, of)) if name == old => {
                 *text = Quantity::Particle(new.to_owned(), of).to_string();
             }
+            Ok(Quantity::Tension(name)) if name == old => {
+                *text = Quantity::Tension(new.to_owned()).to_string();
+            }
+            _ => {}
         };
         for graph in &mut self.graphs {
             rename(&mut graph.x);
@@ -259,11 +268,14 @@ impl Scene {
         }
     }
 
-    /// Drops every reference to the particle `name` from the graphs and the view (a
-    /// graph's x axis falls back to time), as deleting it does for its springs.
+    /// Drops every reference to the particle, rod or string `name` from the graphs and
+    /// the view (a graph's x axis falls back to time), as deleting a particle does for
+    /// its springs.
     pub(super) fn forget_in_presentation(&mut self, name: &str) {
-        let names =
-            |text: &str| matches!(Quantity::parse(text), Ok(Quantity::Particle(n, _)) if n == name);
+        let names = |text: &str| match Quantity::parse(text) {
+            Ok(Quantity::Particle(n, _) | Quantity::Tension(n)) => n == name,
+            _ => false,
+        };
         for graph in &mut self.graphs {
             if names(&graph.x) {
                 "t".clone_into(&mut graph.x);

@@ -22,6 +22,8 @@ pub enum Section {
     Particle(usize),
     /// The spring at this index.
     Spring(usize),
+    /// The rod or string at this index of [`Scene::ties`].
+    Tie(usize),
     /// The ramp at this index.
     Ramp(usize),
     /// The graph at this index (`[[graph]]`).
@@ -53,6 +55,7 @@ impl Scene {
         check.names();
         check.particles();
         check.springs();
+        check.ties();
         check.ramps();
         check.graphs();
         check.view();
@@ -77,6 +80,10 @@ impl Scene {
                 i,
             ),
             Section::Spring(i) => named("spring", self.springs.get(i).map(|s| s.name.as_str()), i),
+            Section::Tie(i) => match self.ties.get(i) {
+                Some(tie) => named(tie.kind.as_str(), Some(&tie.name), i),
+                None => named("rod", None, i),
+            },
             Section::Ramp(i) => named("ramp", self.ramps.get(i).map(|r| r.name.as_str()), i),
             Section::Graph(i) => named(
                 "graph",
@@ -237,6 +244,7 @@ impl Checker<'_> {
                 (0..scene.springs.len())
                     .map(|i| (Section::Spring(i), scene.springs[i].name.as_str())),
             )
+            .chain((0..scene.ties.len()).map(|i| (Section::Tie(i), scene.ties[i].name.as_str())))
             .chain(
                 (0..scene.ramps.len()).map(|i| (Section::Ramp(i), scene.ramps[i].name.as_str())),
             );
@@ -249,6 +257,7 @@ impl Checker<'_> {
                     Section::Particle(i) => format!("particle #{}", i + 1),
                     Section::Spring(i) => format!("spring #{}", i + 1),
                     Section::Ramp(i) => format!("ramp #{}", i + 1),
+                    Section::Tie(i) => format!("{} '{name}'", scene.ties[i].kind.as_str()),
                     other => scene.describe(other),
                 };
                 self.report(
@@ -298,32 +307,75 @@ impl Checker<'_> {
         for (i, spring) in self.scene.springs.iter().enumerate() {
             let s = Section::Spring(i);
             self.rules(s, fields::SPRING, spring);
-            for (field, end) in [("from", &spring.from), ("to", &spring.to)] {
-                if let Endpoint::Particle(name) = end
-                    && self.scene.particle_index(name).is_none()
-                {
-                    self.report(
-                        s,
-                        field,
-                        &format!("{field}: there is no particle named '{name}'"),
-                    );
-                }
-            }
-            match (&spring.from, &spring.to) {
-                (Endpoint::Point(_), Endpoint::Point(_)) => self.report(
-                    s,
-                    "to",
-                    "a spring needs a particle at one end at least; both ends are fixed points",
-                ),
-                (Endpoint::Particle(a), Endpoint::Particle(b)) if a == b => self.report(
+            self.ends(s, "spring", &spring.from, &spring.to);
+        }
+    }
+
+    /// Rods and strings: ends as for springs, a length the ends can have together.
+    fn ties(&mut self) {
+        for (i, tie) in self.scene.ties.iter().enumerate() {
+            let s = Section::Tie(i);
+            self.rules(s, fields::tie_fields(tie.kind), tie);
+            self.ends(s, tie.kind.as_str(), &tie.from, &tie.to);
+            let fixed = |end: &Endpoint| match end {
+                Endpoint::Point(_) => true,
+                Endpoint::Particle(name) => self
+                    .scene
+                    .particle_index(name)
+                    .is_none_or(|p| self.scene.particles[p].fixed),
+            };
+            if fixed(&tie.from)
+                && fixed(&tie.to)
+                && !matches!(
+                    (&tie.from, &tie.to),
+                    (Endpoint::Point(_), Endpoint::Point(_))
+                )
+            {
+                self.report(
                     s,
                     "to",
                     &format!(
-                        "both ends are the particle '{a}'; a spring joins two different things"
+                        "a {} needs a moving particle at one end at least; both ends are fixed",
+                        tie.kind.as_str()
                     ),
-                ),
-                _ => {}
+                );
             }
+        }
+        if self.problems.is_empty()
+            && let Some((section, message)) = crate::constraints::unsatisfiable(self.scene)
+        {
+            self.report(section, "length", &message);
+        }
+    }
+
+    /// The ends of a spring, rod or string: particles that exist, not both fixed points,
+    /// not one particle twice.
+    fn ends(&mut self, s: Section, kind: &str, from: &Endpoint, to: &Endpoint) {
+        for (field, end) in [("from", from), ("to", to)] {
+            if let Endpoint::Particle(name) = end
+                && self.scene.particle_index(name).is_none()
+            {
+                self.report(
+                    s,
+                    field,
+                    &format!("{field}: there is no particle named '{name}'"),
+                );
+            }
+        }
+        match (from, to) {
+            (Endpoint::Point(_), Endpoint::Point(_)) => self.report(
+                s,
+                "to",
+                &format!(
+                    "a {kind} needs a particle at one end at least; both ends are fixed points"
+                ),
+            ),
+            (Endpoint::Particle(a), Endpoint::Particle(b)) if a == b => self.report(
+                s,
+                "to",
+                &format!("both ends are the particle '{a}'; a {kind} joins two different things"),
+            ),
+            _ => {}
         }
     }
 
@@ -349,6 +401,17 @@ impl Checker<'_> {
                             field,
                             &format!(
                                 "{field}: '{text}' names no particle; there is no particle '{name}'"
+                            ),
+                        );
+                    }
+                    Ok(Quantity::Tension(name))
+                        if !self.scene.ties.iter().any(|t| t.name == name) =>
+                    {
+                        self.report(
+                            s,
+                            field,
+                            &format!(
+                                "{field}: '{text}' names no rod or string; there is none named '{name}'"
                             ),
                         );
                     }

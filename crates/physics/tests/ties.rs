@@ -1,0 +1,421 @@
+//! Rods and strings against theory: the large-amplitude pendulum's elliptic-integral
+//! period, the double pendulum's energy, a string going slack at the instant its tension
+//! vanishes and snapping taut where the projectile's path meets its length, Newton's
+//! cradle on strings.
+//!
+//! Every run uses rk4 at the default 1 ms step unless it says otherwise.
+
+use physics::{DVec2, Integrator, Particle, Scene, SceneFormat, Simulation, Tie, TieKind, World};
+
+const G: f64 = 9.81;
+
+/// Gravity down, nothing else.
+fn gravity_only() -> World {
+    World {
+        gravitation: false,
+        electrostatics: false,
+        ..World::default()
+    }
+}
+
+/// K(k), the complete elliptic integral of the first kind, by the arithmetic–geometric
+/// mean: K = π / (2 AGM(1, √(1 − k²))), to rounding after a handful of iterations.
+fn elliptic_k(k: f64) -> f64 {
+    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
+    for _ in 0..20 {
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+    }
+    std::f64::consts::PI / (2.0 * a)
+}
+
+fn start(scene: &Scene) -> Simulation {
+    Simulation::new(scene).expect("the scene is valid")
+}
+
+fn run_to(simulation: &mut Simulation, t: f64) {
+    simulation.step_to(t).expect("the run stays finite");
+}
+
+/// A bob of 1 kg on a rod of `length` from the origin, released at rest `angle` degrees
+/// from the downward vertical.
+fn pendulum(length: f64, angle: f64) -> Scene {
+    let (sin, cos) = angle.to_radians().sin_cos();
+    Scene::new()
+        .with_world(gravity_only())
+        .with_particle(
+            Particle::new("bob", 1.0)
+                .radius(0.1)
+                .position([length * sin, -length * cos]),
+        )
+        .with_tie(Tie::rod("rod", [0.0, 0.0], "bob", length))
+}
+
+/// 120° from the vertical, far from the small-angle law (which is off by 28 % there): the
+/// period is 4 √(L/g) K(sin(θ₀/2)). After exactly one period the bob is back where it was
+/// released, at rest; its speed there, divided by its tangential acceleration g sin θ₀,
+/// is how far the simulated period is from the theory's. Tolerances: 1e-9 of the period
+/// (rk4's error at 1 ms is about 1e-12 per step, the period is 4,400 steps) and 1e-8 m.
+/// The rod keeps its length to 1e-12 at every sample.
+#[test]
+fn a_pendulum_at_120_degrees_keeps_the_elliptic_period() {
+    let (length, angle) = (2.0, 120.0_f64);
+    let scene = pendulum(length, angle);
+    let theta = angle.to_radians();
+    let period = 4.0 * (length / G).sqrt() * elliptic_k((theta / 2.0).sin());
+    let release = DVec2::new(length * theta.sin(), -length * theta.cos());
+    let mut simulation = start(&scene);
+    let mut t = 0.0;
+    while t < period {
+        t = (t + 0.01).min(period);
+        run_to(&mut simulation, t);
+        let stretch = simulation.positions()[0].length() / length - 1.0;
+        assert!(
+            stretch.abs() < 1e-12,
+            "at t = {t} s the rod is off by {stretch:e}"
+        );
+    }
+    let speed = simulation.velocities()[0].length();
+    let period_error = speed / (G * theta.sin()) / period;
+    assert!(
+        period_error < 1e-9,
+        "period off by {period_error:e} of {period} s"
+    );
+    let miss = simulation.positions()[0].distance(release);
+    assert!(miss < 1e-8, "back {miss:e} m from the release point");
+    // Half a period on, it is at the mirror image of the release point.
+    let mut half = simulation_at(&scene, period / 2.0);
+    let mirror = DVec2::new(-release.x, release.y);
+    assert!(
+        half.positions()[0].distance(mirror) < 1e-8,
+        "{}",
+        half.positions()[0]
+    );
+    // The tension at the release point, at rest: m g cos θ₀ (negative here: the rod
+    // pushes, a string would go slack).
+    half = start(&scene);
+    let tension = half.tensions()[0];
+    assert!(
+        (tension - G * theta.cos()).abs() < 1e-9,
+        "tension {tension} N at release"
+    );
+}
+
+fn simulation_at(scene: &Scene, t: f64) -> Simulation {
+    let mut simulation = start(scene);
+    run_to(&mut simulation, t);
+    simulation
+}
+
+/// A double pendulum of two 1 kg bobs on 1 m rods from the origin, the upper released
+/// level with the pivot and the lower at `lower_y`, run for 20 s at `time_step`: the
+/// largest energy error (J), with both rods checked at every sample to 1e-12.
+fn double_pendulum_energy_error(lower_angle: f64, time_step: f64) -> f64 {
+    let (sin, cos) = lower_angle.to_radians().sin_cos();
+    let scene = Scene::new()
+        .with_world(gravity_only())
+        .with_particle(Particle::new("A", 1.0).radius(0.1).position([1.0, 0.0]))
+        .with_particle(
+            Particle::new("B", 1.0)
+                .radius(0.1)
+                .position([1.0 + sin, -cos]),
+        )
+        .with_tie(Tie::rod("upper", [0.0, 0.0], "A", 1.0))
+        .with_tie(Tie::rod("lower", "A", "B", 1.0))
+        .with_integrator(Integrator::Rk4, time_step);
+    let mut simulation = start(&scene);
+    let energy = |s: &Simulation| s.diagnostics().energy.total();
+    let initial = energy(&simulation);
+    let mut worst = 0.0_f64;
+    for k in 1..=2000 {
+        run_to(&mut simulation, f64::from(k) * 0.01);
+        let x = simulation.positions();
+        for (stretch, which) in [(x[0].length(), "upper"), (x[0].distance(x[1]), "lower")] {
+            assert!(
+                (stretch - 1.0).abs() < 1e-12,
+                "{which} rod {stretch} m at t = {} s",
+                simulation.time()
+            );
+        }
+        worst = worst.max((energy(&simulation) - initial).abs());
+    }
+    worst
+}
+
+/// The double pendulum is chaotic, its energy is not. Released with both rods level (the
+/// lower bob whips round at up to 9 m/s), rk4 keeps the energy over 20 s to 1e-9 of the
+/// pendulum's energy scale 3 m g L at half the default step, as the `double-pendulum`
+/// example runs (measured 2.0e-9 J of 29 J), and to 1.5e-9 of it at the default step
+/// (measured 3.0e-8 J). The error is rk4's own: it shrinks 16-fold when the step halves
+/// (fourth order), which an error of the constraint handling (a projection adding
+/// energy, a wrong multiplier) would not.
+#[test]
+fn a_double_pendulum_conserves_energy_to_the_integrators_order() {
+    let scale = 3.0 * G;
+    let (coarse, fine) = (
+        double_pendulum_energy_error(90.0, 1e-3),
+        double_pendulum_energy_error(90.0, 5e-4),
+    );
+    assert!(
+        fine < 1e-9 * scale,
+        "at 0.5 ms the energy drifted by {fine:e} J"
+    );
+    assert!(
+        coarse < 1.5e-9 * scale,
+        "at 1 ms the energy drifted by {coarse:e} J"
+    );
+    let order = (coarse / fine).log2();
+    assert!(
+        (3.5..4.5).contains(&order),
+        "error order {order} ({coarse:e} J → {fine:e} J)"
+    );
+}
+
+/// A ball on a 1 m string, started at the bottom at √(3.5 g L): not fast enough to go
+/// over the top (that takes √(5 g L)). The tension m v²/L + m g cos φ (φ from the
+/// downward vertical) reaches zero where cos φ = (2 g L − v₀²)/(3 g L) = −½, at 120°,
+/// with v² = g L / 2. From there the ball is a projectile until it is 1 m from the
+/// pivot again, where the string snaps taut (restitution 0: the radial speed is taken).
+#[test]
+fn a_string_goes_slack_where_its_tension_vanishes_and_snaps_taut_where_the_parabola_meets_it() {
+    let length = 1.0;
+    let v0 = (3.5 * G * length).sqrt();
+    let scene = Scene::new()
+        .with_world(gravity_only())
+        .with_particle(
+            Particle::new("ball", 1.0)
+                .radius(0.05)
+                .position([0.0, -length])
+                .velocity([v0, 0.0]),
+        )
+        .with_tie(Tie::string("string", [0.0, 0.0], "ball", length));
+    // Closed form of the circular part: dt = L dφ / v(φ), v² = v0² − 2 g L (1 − cos φ).
+    let phi_slack = (-0.5_f64).acos();
+    let speed = |phi: f64| (v0 * v0 - 2.0 * G * length * (1.0 - phi.cos())).sqrt();
+    let t_slack = simpson(|phi| length / speed(phi), 0.0, phi_slack, 200_000);
+    let (sin, cos) = phi_slack.sin_cos();
+    let p_slack = DVec2::new(length * sin, -length * cos);
+    let v_slack = DVec2::new(cos, sin) * speed(phi_slack);
+    let flight = |t: f64| {
+        let s = t - t_slack;
+        p_slack + v_slack * s + DVec2::new(0.0, -0.5 * G * s * s)
+    };
+    // Where the parabola is 1 m from the pivot again: bisection on the closed form.
+    let (mut lo, mut hi) = (t_slack + 1e-3, t_slack + 2.0);
+    assert!(flight(lo).length() < length && flight(hi).length() > length);
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if flight(mid).length() < length {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    let t_taut = 0.5 * (lo + hi);
+    // In flight: on the parabola to 1e-6 m, the string slack (no tension).
+    for fraction in [0.1, 0.5, 0.9] {
+        let t = t_slack + fraction * (t_taut - t_slack);
+        let simulation = simulation_at(&scene, t);
+        let miss = simulation.positions()[0].distance(flight(t));
+        assert!(miss < 1e-6, "at t = {t} s, {miss:e} m off the parabola");
+        assert!(simulation.tensions()[0].abs() < 1e-12, "slack in flight");
+    }
+    // Taut at the instant the geometry says, to 1e-9 s: just before, the ball still
+    // flies outward on the parabola; just after, the string has taken its radial speed.
+    let radial = |s: &Simulation| s.velocities()[0].dot(s.positions()[0].normalize());
+    let before = simulation_at(&scene, t_taut - 1e-9);
+    assert!(
+        radial(&before) > 1.0,
+        "still flying outward: {} m/s",
+        radial(&before)
+    );
+    let after = simulation_at(&scene, t_taut + 1e-9);
+    assert!(
+        radial(&after).abs() < 1e-6,
+        "taut: radial speed {} m/s",
+        radial(&after)
+    );
+    assert!(after.tensions()[0] > 0.0, "and pulling");
+}
+
+/// Simpson's rule with `n` (even) intervals.
+fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, n: usize) -> f64 {
+    let h = (b - a) / n as f64;
+    let inner: f64 = (1..n)
+        .map(|i| f(a + h * i as f64) * if i % 2 == 1 { 4.0 } else { 2.0 })
+        .sum();
+    (f(a) + inner + f(b)) * h / 3.0
+}
+
+/// Newton's cradle hanging on strings: five touching equal balls on 4 m strings, the
+/// first struck at 3 m/s at the bottom. The strings are vertical and taut, so the blow
+/// passes along the row as on a table: the last ball leaves at 3 m/s and the others
+/// stay still, to 1e-9 m/s. The last ball then swings up its string, its energy kept.
+#[test]
+fn newtons_cradle_on_strings_passes_the_blow_to_the_last_ball() {
+    let scene = physics::example("newtons-cradle")
+        .expect("the example exists")
+        .scene()
+        .expect("it loads");
+    assert!(
+        scene.springs.is_empty() && scene.ties.len() == 5,
+        "hung on strings"
+    );
+    let simulation = simulation_at(&scene, 0.05);
+    let v = simulation.velocities();
+    for (i, v) in v.iter().enumerate().take(4) {
+        assert!(v.length() < 1e-9, "ball {} moves at {v}", i + 1);
+    }
+    let (x, v) = (simulation.positions()[4], v[4]);
+    let height = x.y + 4.0;
+    let energy = 0.5 * v.length_squared() + G * height;
+    assert!(
+        (energy - 4.5).abs() < 1e-9 * 4.5,
+        "the last ball has {energy} J/kg of 4.5"
+    );
+    assert!(v.x > 2.9, "and swings out: {v}");
+}
+
+/// Constraints do no work: a pendulum's ledger books nothing, and its energy closes to
+/// rk4's error. A string snapping taut inelastically takes ½ m u² of the ball's radial
+/// speed u, booked as an impact: a ball dropped from 0.6 m beside the pivot on a 1 m
+/// string falls 0.8 m, so u = 0.8 √(2 g 0.8) (the radial direction is (0.6, −0.8)).
+#[test]
+fn rods_book_no_work_and_a_snapping_string_books_what_it_takes() {
+    let mut simulation = start(&pendulum(2.0, 120.0));
+    simulation.keep_ledger();
+    let initial = simulation.diagnostics().energy.total();
+    run_to(&mut simulation, 3.0);
+    let ledger = simulation.ledger().expect("kept");
+    assert_eq!(ledger.total().to_bits(), 0.0_f64.to_bits(), "{ledger:?}");
+    let residual = simulation.diagnostics().energy.total() - initial;
+    assert!(residual.abs() < 1e-9, "residual {residual:e} J");
+
+    let scene = Scene::new()
+        .with_world(gravity_only())
+        .with_particle(Particle::new("ball", 2.0).radius(0.05).position([0.6, 0.0]))
+        .with_tie(Tie::string("string", [0.0, 0.0], "ball", 1.0));
+    let mut simulation = start(&scene);
+    simulation.keep_ledger();
+    let initial = simulation.diagnostics().energy.total();
+    run_to(&mut simulation, 1.0);
+    let u = 0.8 * (2.0 * G * 0.8).sqrt();
+    let taken = 0.5 * 2.0 * u * u;
+    let ledger = simulation.ledger().expect("kept");
+    assert!(
+        (ledger.impacts - taken).abs() < 1e-9 * taken,
+        "booked {} J of {taken} J",
+        ledger.impacts
+    );
+    let residual = simulation.diagnostics().energy.total() + ledger.total() - initial;
+    assert!(residual.abs() < 1e-8, "residual {residual:e} J");
+}
+
+/// A file's rods and strings: an unnamed one is named by its kind and number, a left-out
+/// length is the distance at the start, a string snaps inelastically unless told; saving
+/// and loading again gives the same scene.
+#[test]
+fn rods_and_strings_read_write_and_default_as_documented() {
+    let text = r#"
+version = 1
+[[particle]]
+name = "bob"
+mass = 1.0
+position = [3.0, -4.0]
+[[particle]]
+name = "B"
+mass = 1.0
+position = [3.0, -6.0]
+[[rod]]
+from = [0.0, 0.0]
+to = "bob"
+[[string]]
+from = "bob"
+to = "B"
+length = 2.5
+[[graph]]
+y = ["rod1.tension", "string1.tension"]
+"#;
+    let scene = Scene::from_toml(text).expect("valid");
+    assert_eq!(scene.ties.len(), 2);
+    let (rod, string) = (&scene.ties[0], &scene.ties[1]);
+    assert_eq!(
+        (rod.name.as_str(), string.name.as_str()),
+        ("rod1", "string1")
+    );
+    assert_eq!((rod.kind, string.kind), (TieKind::Rod, TieKind::String));
+    assert!(
+        (rod.length - 5.0).abs() < 1e-15,
+        "the distance at the start: {}",
+        rod.length
+    );
+    assert_eq!(string.restitution.to_bits(), 0.0_f64.to_bits());
+    let again = Scene::from_toml(&scene.to_toml()).expect("its own output loads");
+    assert_eq!(again, scene);
+    let json = Scene::parse(&scene.to_json(), SceneFormat::Json).expect("JSON too");
+    assert_eq!(json, scene);
+}
+
+/// Every way a rod or string can be wrong is refused with a message that names it.
+#[test]
+fn bad_rods_and_strings_are_refused_with_reasons() {
+    let base = Scene::new()
+        .with_particle(Particle::new("A", 1.0).position([0.0, -1.0]))
+        .with_particle(Particle::new("P", 1.0).position([5.0, 0.0]).fixed());
+    let cases: Vec<(Tie, &str)> = vec![
+        (
+            Tie::rod("r", [0.0, 0.0], "nobody", 1.0),
+            "there is no particle named 'nobody'",
+        ),
+        (
+            Tie::rod("r", "A", "A", 1.0),
+            "both ends are the particle 'A'",
+        ),
+        (
+            Tie::string("s", [0.0, 0.0], [1.0, 0.0], 1.0),
+            "both ends are fixed points",
+        ),
+        (
+            Tie::rod("r", "P", [0.0, 0.0], 5.0),
+            "needs a moving particle",
+        ),
+        (
+            Tie::rod("r", [0.0, 0.0], "A", -1.0),
+            "length must be greater than 0",
+        ),
+        (
+            Tie::string("s", [0.0, 0.0], "A", 1.0).restitution(2.0),
+            "restitution must be between 0 and 1",
+        ),
+    ];
+    for (tie, expected) in cases {
+        let problems = base.clone().with_tie(tie.clone()).validate();
+        assert!(
+            problems.iter().any(|p| p.message.contains(expected)),
+            "{tie:?}: {problems:?}"
+        );
+    }
+    // Two 1 m rods from points 10 m apart cannot both hold one particle.
+    let stretched = base
+        .clone()
+        .with_tie(Tie::rod("left", [0.0, 0.0], "A", 1.0))
+        .with_tie(Tie::rod("right", [10.0, 0.0], "A", 1.0));
+    let problems = stretched.validate();
+    assert!(
+        problems
+            .iter()
+            .any(|p| p.message.contains("cannot be kept")),
+        "{problems:?}"
+    );
+    // Three rods pinning one particle are redundant, not contradictory: it is held.
+    let pinned = base
+        .with_tie(Tie::rod("a", [-1.0, -1.0], "A", 1.0))
+        .with_tie(Tie::rod("b", [1.0, -1.0], "A", 1.0))
+        .with_tie(Tie::rod("c", [0.0, 0.0], "A", 1.0));
+    assert!(pinned.validate().is_empty(), "{:?}", pinned.validate());
+    let mut simulation = start(&pinned.with_world(gravity_only()));
+    run_to(&mut simulation, 1.0);
+    assert!(
+        simulation.positions()[0].distance(DVec2::new(0.0, -1.0)) < 1e-12,
+        "held"
+    );
+}

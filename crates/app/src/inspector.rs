@@ -311,8 +311,12 @@ pub fn ui(
     action
 }
 
-/// The selected particle as it is now in the run.
+/// The selected particle, rod or string as it is now in the run.
 fn live(ui: &mut Ui, runner: &Runner, selection: Option<Selection>) {
+    if let (Some(simulation), Some(Selection::Tie(k))) = (&runner.simulation, selection) {
+        live_tie(ui, simulation, k);
+        return;
+    }
     let (Some(simulation), Some(Selection::Particle(i))) = (&runner.simulation, selection) else {
         return;
     };
@@ -341,6 +345,28 @@ fn live(ui: &mut Ui, runner: &Runner, selection: Option<Selection>) {
                     ui.monospace(value);
                     ui.end_row();
                 }
+            });
+        });
+}
+
+/// A rod's or string's tension now, and whether a string is slack.
+fn live_tie(ui: &mut Ui, simulation: &physics::Simulation, k: usize) {
+    let Some(name) = simulation.tie_names().get(k) else {
+        return;
+    };
+    let tension = simulation.tensions().get(k).copied().unwrap_or(0.0);
+    egui::CollapsingHeader::new(format!("Live: {name}"))
+        .id_salt("live")
+        .default_open(true)
+        .show(ui, |ui| {
+            egui::Grid::new("live").num_columns(2).show(ui, |ui| {
+                ui.label("tension");
+                ui.monospace(format::with_unit(tension, "N"))
+                    .on_hover_text("The force it carries: pulling is positive; 0 when slack");
+                ui.end_row();
+                ui.label("work done");
+                ui.monospace("0 J (a constraint does no work)");
+                ui.end_row();
             });
         });
 }

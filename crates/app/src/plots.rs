@@ -1,7 +1,8 @@
 //! Readouts and graphs. Energies by kind, what damping, friction and impacts took since
-//! Play, the numerical error (what the books leave unaccounted) as a percentage and
-//! the total momentum; then the scene's graphs (`[[graph]]`): any quantities against time
-//! or against one another (a phase plot such as x against vx), several series each.
+//! Play (rods and strings take nothing: a constraint does no work), the numerical error
+//! (what the books leave unaccounted) as a percentage and the total momentum; then the
+//! scene's graphs (`[[graph]]`): any quantities against time or against one another (a
+//! phase plot such as x against vx), several series each.
 //!
 //! A graph is only a choice of quantities: the values come from the run's
 //! [`Recording`], which holds every quantity of every particle from Play on. So switching
@@ -409,6 +410,14 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
             rows.push(("taken by damping (J)", format::number(ledger.damping)));
             rows.push(("taken by friction (J)", format::number(ledger.friction)));
             rows.push(("taken by impacts (J)", format::number(ledger.impacts)));
+            if runner
+                .simulation
+                .as_ref()
+                .is_some_and(|s| !s.tie_names().is_empty())
+            {
+                // Listed so that nobody looks for them: constraints do no work.
+                rows.push(("work of rods and strings (J)", "0".to_owned()));
+            }
             rows.push(("numerical error", residual));
             rows.push((
                 "momentum (kg·m/s)",

@@ -45,8 +45,8 @@ pub(crate) struct BenchArgs {
     /// from the drop (the whole fall, crash and settling).
     #[arg(long, default_value_t = 3.0)]
     seconds: f64,
-    /// Threads for the contact search (default: every core; 1 for the single-thread
-    /// figure). Results are bit-identical for any number.
+    /// Threads for the contact search and the direct pair sum (default: every core; 1
+    /// for the single-thread figure). Results are bit-identical for any number.
     #[arg(long)]
     threads: Option<usize>,
 }

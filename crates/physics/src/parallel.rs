@@ -99,6 +99,23 @@ impl Workers {
     }
 }
 
+impl Workers {
+    /// `work(0)`, …, `work(pieces − 1)`, on the pool's threads where there are several,
+    /// returned in the order of the pieces: the same list for any number of threads.
+    #[cfg_attr(
+        not(all(feature = "parallel", not(target_arch = "wasm32"))),
+        expect(clippy::unused_self, reason = "the pool exists only where threads do")
+    )]
+    pub fn map<T: Send>(&self, pieces: usize, work: impl Fn(usize) -> T + Sync) -> Vec<T> {
+        #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
+        if let Some(pool) = self.pool.as_ref().filter(|_| pieces > 1) {
+            use rayon::prelude::*;
+            return pool.install(|| (0..pieces).into_par_iter().map(&work).collect());
+        }
+        (0..pieces).map(work).collect()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

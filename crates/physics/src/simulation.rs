@@ -2,14 +2,19 @@
 //!
 //! One step, in order (the whole pipeline is [`Simulation::advance`]):
 //! 1. contacts at the start: impacts happening now are applied, and particles resting on
-//!    ramps and walls are put under their normal force and friction;
-//! 2. the smooth forces (fields, pairs, springs, surfaces) are integrated over a trial
-//!    step of at most the time step;
-//! 3. impacts inside the trial step are located and applied in time order: within the
+//!    ramps and walls are put under their normal force and friction; strings at full
+//!    length whose ends separate snap taut, and each string is chosen taut or slack;
+//! 2. the smooth forces (fields, pairs, springs, surfaces, and the exact forces of rods
+//!    and taut strings) are integrated over a trial step of at most the time step;
+//! 3. a string that snapped taut or went slack inside the trial step shortens it to that
+//!    instant (`simulation/ties.rs`);
+//! 4. impacts inside the (trial) step are located and applied in time order: within the
 //!    step for particles moved only by the field, or, for particles feeling pairwise
-//!    forces or springs, by integrating the system again to exactly that instant;
-//! 4. resting contacts between particles are resolved (no approach, no growing overlap);
-//! 5. the new state is checked for non-finite values, which stop the run with the
+//!    forces, springs, rods or strings, by integrating the system again to exactly that
+//!    instant; then the string's event, unless an impact came first;
+//! 5. resting contacts between particles are resolved (no approach, no growing overlap);
+//! 6. positions and velocities are projected back onto the rods' and strings' lengths;
+//! 7. the new state is checked for non-finite values, which stop the run with the
 //!    particle's name and the time.
 //!
 //! `step_to(t)` shortens the last step so that it lands exactly on `t`: a sample at
@@ -270,11 +275,14 @@ impl Simulation {
         self.profiler.profile
     }
 
-    /// Lets the contact search use `threads` threads (0 or 1: the calling thread only;
-    /// default 1). The results are bit-identical for every thread count. Builds without
-    /// threads (wasm32, or without the `parallel` feature) always use one.
+    /// Lets the contact search and the direct pair sum use `threads` threads (0 or 1:
+    /// the calling thread only; default 1). The results are bit-identical for every
+    /// thread count. Builds without threads (wasm32, or without the `parallel` feature)
+    /// always use one.
     pub fn set_threads(&mut self, threads: usize) {
-        self.contacts.workers = crate::parallel::Workers::new(threads);
+        let workers = crate::parallel::Workers::new(threads);
+        self.forces.workers = workers.clone();
+        self.contacts.workers = workers;
     }
 
     /// The threads the contact search uses.

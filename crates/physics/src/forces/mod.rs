@@ -3,6 +3,7 @@
 //! module owns the per-particle constants they read and sums them into accelerations.
 
 pub(crate) mod coulomb;
+pub(crate) mod direct;
 pub(crate) mod gravitation;
 pub(crate) mod normal;
 pub(crate) mod spring;
@@ -41,6 +42,8 @@ pub(crate) struct ForceModel {
     pub springs: Vec<SpringLink>,
     /// Rods and strings: their forces are added last, answering all the others.
     pub constraints: Constraints,
+    /// The threads the direct pair sum may use.
+    pub workers: crate::parallel::Workers,
     /// Particles resting on or sliding along a ramp or wall during the current step.
     pub surface_contacts: Vec<SurfaceContact>,
 }
@@ -102,6 +105,7 @@ impl ForceModel {
                 })
                 .collect(),
             surface_contacts: Vec::new(),
+            workers: crate::parallel::Workers::default(),
         }
     }
 
@@ -214,25 +218,16 @@ impl ForceModel {
         }
     }
 
-    /// Gravitation (G = `g`) and Coulomb (`k`) between every pair of `ids`.
+    /// Gravitation (G = `g`) and Coulomb (`k`) between every pair of `ids`: the
+    /// symmetric direct sum in SIMD lanes ([`direct`]).
     fn direct(&self, x: &[DVec2], force: &mut [DVec2], g: f64, k: f64, ids: &[usize]) {
-        for (n, &i) in ids.iter().enumerate() {
-            let (xi, mi, qi, fixed_i) = (x[i], self.mass[i], self.charge[i], self.is_fixed(i));
-            let mut fi = DVec2::ZERO;
-            for &j in &ids[n + 1..] {
-                if fixed_i && self.is_fixed(j) {
-                    continue;
-                }
-                // Attraction strength G·mi·mj − k·qi·qj, in N·m².
-                let strength = gravitation::strength(g, mi, self.mass[j])
-                    - coulomb::strength(k, qi, self.charge[j]);
-                let d = x[j] - xi;
-                let r2 = d.length_squared();
-                let f = d * (strength / (r2 * r2.sqrt()));
-                fi += f;
-                force[j] -= f;
-            }
-            force[i] += fi;
-        }
+        direct::add_forces(
+            (g, k),
+            ids,
+            (x, &self.mass, &self.charge),
+            |i| self.is_fixed(i),
+            &self.workers,
+            force,
+        );
     }
 }

@@ -4,7 +4,7 @@
 
 use egui::{Key, KeyboardShortcut, Modifiers};
 
-use crate::canvas::Tool;
+use crate::canvas::{FieldKind, Instrument, Tool};
 use crate::picture::Subject;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -33,6 +33,12 @@ pub enum Action {
     ToggleGraphs,
     /// Full canvas with large text, for a projector.
     ToggleProjector,
+    /// Take up or put away a measuring instrument.
+    Instrument(Instrument),
+    /// Draw a field as arrows, or none.
+    FieldView(Option<FieldKind>),
+    /// Take away the tape and the probe.
+    ClearMeasurements,
 }
 
 const fn command(key: Key) -> KeyboardShortcut {
@@ -67,6 +73,8 @@ pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
     (plain(Key::Num4), Action::Tool(Tool::Ramp)),
     (plain(Key::Num5), Action::Tool(Tool::Rod)),
     (plain(Key::Num6), Action::Tool(Tool::String)),
+    (plain(Key::M), Action::Instrument(Instrument::Tape)),
+    (plain(Key::P), Action::Instrument(Instrument::Probe)),
     (plain(Key::Delete), Action::Delete),
     (plain(Key::Backspace), Action::Delete),
     (plain(Key::F9), Action::ToggleInspector),

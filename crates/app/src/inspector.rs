@@ -16,6 +16,7 @@ use crate::canvas::Selection;
 use crate::document::Document;
 use crate::format;
 use crate::run_loop::Runner;
+use crate::units;
 
 const ERROR: Color32 = Color32::from_rgb(200, 30, 30);
 
@@ -122,12 +123,14 @@ fn number_field(
 ) -> Option<f64> {
     let field = label.to_owned();
     let check = move |text: &str| -> Result<(), String> {
-        let value: f64 = text
-            .parse()
-            .map_err(|_| format!("{field} must be a number, got \"{text}\""))?;
+        let value = units::parse(text, unit).map_err(|reason| format!("{field}: {reason}"))?;
         check_value(rule, &field, value)
     };
-    text_field(ui, id, label, unit, &value.to_string(), hint, &check).and_then(|t| t.parse().ok())
+    let hint = format!(
+        "{hint}. Arithmetic and units are converted: 2*pi, sqrt(2)/2, 30 km/h, 5 cm, 250 g"
+    );
+    text_field(ui, id, label, unit, &value.to_string(), &hint, &check)
+        .and_then(|t| units::parse(&t, unit).ok())
 }
 
 /// A vector field, Cartesian or polar as typed, with a button to switch the form.

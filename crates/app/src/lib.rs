@@ -33,6 +33,7 @@ pub mod recording;
 pub mod run_loop;
 pub mod share;
 pub mod toolbar;
+pub mod units;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
@@ -41,7 +42,7 @@ use physics::{Scene, SceneFormat};
 use web_time::Instant;
 
 pub use action::Action;
-pub use canvas::{Selection, Tool};
+pub use canvas::{FieldKind, Instrument, Selection, Tool};
 pub use document::Document;
 use files::{Choice, Files, Pending, Purpose};
 use plots::Graphs;
@@ -219,6 +220,23 @@ impl App {
             Action::ToggleInspector => self.panels.inspector = !self.panels.inspector,
             Action::ToggleGraphs => self.panels.graphs = !self.panels.graphs,
             Action::ToggleProjector => self.panels.projector = !self.panels.projector,
+            Action::Instrument(instrument) => {
+                let instruments = &mut self.canvas.instruments;
+                if instruments.active == Some(instrument) {
+                    instruments.active = None;
+                } else {
+                    instruments.active = Some(instrument);
+                    // From the keyboard alone the probe starts where the view is.
+                    if instrument == Instrument::Probe && instruments.probe.is_none() {
+                        instruments.probe = Some(self.canvas.view.center);
+                    }
+                }
+            }
+            Action::FieldView(kind) => self.canvas.instruments.field_view = kind,
+            Action::ClearMeasurements => {
+                self.canvas.instruments.tape = None;
+                self.canvas.instruments.probe = None;
+            }
         }
     }
 
@@ -615,6 +633,45 @@ impl App {
             })
             .response
             .on_hover_text("Framing, panels, projector mode");
+            ui.menu_button("Measure", |ui| {
+                let instruments = &self.canvas.instruments;
+                let tick = |on: bool| if on { "• " } else { "" };
+                for instrument in [Instrument::Tape, Instrument::Probe] {
+                    item(
+                        ui,
+                        &format!(
+                            "{}{}",
+                            tick(instruments.active == Some(instrument)),
+                            instrument.label()
+                        ),
+                        instrument.hint(),
+                        Action::Instrument(instrument),
+                        true,
+                    );
+                }
+                for (kind, name) in [
+                    (None, "No field view"),
+                    (Some(FieldKind::Electric), "Electric field view"),
+                    (Some(FieldKind::Gravitational), "Gravitational field view"),
+                ] {
+                    item(
+                        ui,
+                        &format!("{}{name}", tick(instruments.field_view == kind)),
+                        "Arrows of the particles' field across the canvas, stronger where darker",
+                        Action::FieldView(kind),
+                        true,
+                    );
+                }
+                item(
+                    ui,
+                    "Clear measurements",
+                    "Take away the tape and the probe",
+                    Action::ClearMeasurements,
+                    instruments.tape.is_some() || instruments.probe.is_some(),
+                );
+            })
+            .response
+            .on_hover_text("Tape measure, field probe, field view");
         });
         action
     }

@@ -793,3 +793,150 @@ fn the_rod_and_string_tools_tie_a_particle_to_a_point() {
         ("string1", TieKind::String)
     );
 }
+
+/// A value typed with a unit or as arithmetic is converted to SI: 250 g is a mass of
+/// 0.25 kg, 30 km/h a velocity of 8.33 m/s, 2*pi a number; a unit of the wrong kind is
+/// refused with the units that fit.
+#[test]
+fn typed_units_and_arithmetic_become_si_numbers() {
+    let mut harness = harness(App::new(one_ball()));
+    harness.state_mut().selection = Some(Selection::Particle(0));
+    harness.run();
+    let mut type_into = |label: &str, text: &str| {
+        harness.get_by_label(label).focus();
+        harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+        harness.get_by_label(label).type_text(text);
+        harness.key_press(Key::Enter);
+        harness.run();
+    };
+    type_into("mass", "250 g");
+    type_into("velocity x", "30 km/h");
+    type_into("radius", "sqrt(2)/2 m");
+    type_into("charge", "5 kg");
+    let particle = &harness.state().document.scene().particles[0];
+    assert!(
+        (particle.mass - 0.25).abs() < 1e-15,
+        "mass {}",
+        particle.mass
+    );
+    let v = particle.velocity.to_dvec2();
+    assert!((v.x - 30.0 / 3.6).abs() < 1e-12, "velocity {v}");
+    assert!((particle.radius - std::f64::consts::FRAC_1_SQRT_2).abs() < 1e-15);
+    assert_eq!(
+        particle.charge.to_bits(),
+        0.0_f64.to_bits(),
+        "5 kg is no charge"
+    );
+    harness.get_by_label_contains("µC");
+}
+
+/// The tape measure: M takes it up; a drag from empty space to a ball lays it, the end
+/// on the ball holding to it; its reading is the distance and direction between its
+/// ends, and follows the ball when it moves. P takes up the probe, placed at the view's
+/// centre for the keyboard, moved a grid step by an arrow key, and put where clicked.
+#[test]
+fn the_tape_measure_follows_a_ball_and_the_probe_reads_the_field_where_it_is() {
+    use newtonlab_app::canvas::{Instrument, Mark, tape_reading};
+    let small = Scene::new()
+        .with_world(World::weightless())
+        .with_particle(Particle::new("ball", 1.0).radius(0.05).velocity([1.0, 0.0]));
+    let mut harness = harness(App::new(small));
+    harness.key_press(Key::M);
+    harness.run();
+    assert_eq!(
+        harness.state().canvas.instruments.active,
+        Some(Instrument::Tape)
+    );
+    let app = harness.state();
+    let rect = app.canvas.rect;
+    let ball = app.canvas.view.to_screen(rect, DVec2::ZERO);
+    let start = ball + egui::vec2(-150.0, 100.0);
+    let from = app.canvas.view.to_world(rect, start);
+    harness.hover_at(start);
+    harness.run();
+    harness.drag_at(start);
+    harness.run();
+    harness.hover_at(ball);
+    harness.run();
+    harness.drop_at(ball);
+    harness.run();
+    let tape = harness.state().canvas.instruments.tape.expect("laid");
+    assert_eq!(
+        tape.0,
+        Mark::Point(from),
+        "the first end where the drag began"
+    );
+    assert_eq!(tape.1, Mark::Particle(0), "the second end on the ball");
+    let (length, angle) = tape_reading(tape, &[DVec2::ZERO]).expect("a reading");
+    assert!((length - from.length()).abs() < 1e-12, "{length} m");
+    let expected = (-from.y).atan2(-from.x).to_degrees();
+    assert!(
+        (angle - expected).abs() < 1e-9,
+        "{angle}° against {expected}°"
+    );
+    play_frames(&mut harness, 4);
+    let app = harness.state();
+    let moved = app
+        .runner
+        .simulation
+        .as_ref()
+        .expect("running")
+        .positions()
+        .to_vec();
+    let (length, _) = tape_reading(tape, &moved).expect("a reading");
+    assert!(
+        (length - from.distance(moved[0])).abs() < 1e-12,
+        "follows the ball"
+    );
+    assert!(moved[0].x > 0.3, "the ball moved: {}", moved[0]);
+    assert!(tape_reading(tape, &moved).expect("a reading").0 > 0.0);
+
+    harness.key_press(Key::P);
+    harness.run();
+    let instruments = &harness.state().canvas.instruments;
+    assert_eq!(
+        instruments.active,
+        Some(Instrument::Probe),
+        "P takes up the probe"
+    );
+    let centre = harness.state().canvas.view.center;
+    assert_eq!(instruments.probe, Some(centre), "at the view's centre");
+    harness.key_press(Key::ArrowRight);
+    harness.run();
+    let probe = harness.state().canvas.instruments.probe.expect("placed");
+    assert!(
+        probe.x > centre.x && (probe.y - centre.y).abs() < 1e-12,
+        "moved right: {probe}"
+    );
+    let rect = harness.state().canvas.rect;
+    let at = rect.center() + egui::vec2(40.0, 30.0);
+    let world = harness.state().canvas.view.to_world(rect, at);
+    click_canvas(&mut harness, at);
+    assert_eq!(
+        harness.state().canvas.instruments.probe,
+        Some(world),
+        "where clicked"
+    );
+    harness.key_press(Key::P);
+    harness.run();
+    assert_eq!(
+        harness.state().canvas.instruments.active,
+        None,
+        "P again puts it away"
+    );
+}
+
+/// The Measure menu turns the electric field view on, and the canvas draws it.
+#[test]
+fn the_measure_menu_turns_on_the_field_view() {
+    let scene = physics::example("charged-pair").unwrap().scene().unwrap();
+    let mut harness = harness(App::new(scene));
+    harness.get_by_label("Measure").click();
+    harness.run();
+    harness.get_by_label_contains("Electric field view").click();
+    harness.run();
+    assert_eq!(
+        harness.state().canvas.instruments.field_view,
+        Some(newtonlab_app::FieldKind::Electric)
+    );
+}

@@ -112,9 +112,9 @@ fn random_text_typed_into_a_field_is_applied_or_refused() {
             "typed {text:?}: the scene stays valid"
         );
         let mass = scene.particles[0].mass;
-        let accepted = text
-            .trim()
-            .parse::<f64>()
+        // What the field reads the text as (numbers, arithmetic, units: `units.rs`,
+        // tested against its cases there); here, that the field applies exactly that.
+        let accepted = newtonlab_app::units::parse(&text, "kg")
             .ok()
             .filter(|v| physics::check_value(physics::Rule::Positive, "mass", *v).is_ok());
         match accepted {

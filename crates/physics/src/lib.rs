@@ -79,6 +79,7 @@ mod csv;
 pub use csv::csv_field;
 mod diagnostics;
 mod examples;
+mod field;
 mod forces;
 pub mod generated;
 mod integrators;
@@ -90,6 +91,7 @@ mod state;
 
 pub use diagnostics::{Diagnostics, Energy, ParticleReadout};
 pub use examples::{EXAMPLES, Example, example};
+pub use field::{FieldReadout, field_at};
 pub use glam::DVec2;
 pub use integrators::{Integrator, UnknownIntegrator};
 pub use profile::{Clock, Profile, Stage};

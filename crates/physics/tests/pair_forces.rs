@@ -154,3 +154,61 @@ fn the_tree_drifts_momentum_by_its_force_error_and_the_direct_sum_does_not() {
         );
     }
 }
+
+/// The probe's fields against the closed forms: the Earth's surface gravity G M / r² and
+/// potential −G M / r; a charge's E = k q / r² and V = k q / r; between two opposite
+/// charges, E = 2 k q / (d/2)² towards the negative one and V = 0; and the uniform
+/// field with its potential −g·r. Tolerance 1e-12 relative: a handful of roundings.
+#[test]
+fn the_fields_at_a_point_follow_the_inverse_square_laws() {
+    use physics::{DVec2, Particle, Scene, World, field_at};
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * b.abs().max(1e-300);
+    let g = World::DEFAULT_GRAVITATIONAL_CONSTANT;
+    let k = World::DEFAULT_COULOMB_CONSTANT;
+    let (mass, radius) = (5.972e24, 6.371e6);
+    let earth = Scene::new()
+        .with_world(World::weightless())
+        .with_particle(Particle::new("Earth", mass).radius(1.0));
+    let at = field_at(&earth, &[DVec2::ZERO], DVec2::new(0.0, radius));
+    assert!(
+        close(at.gravity.y, -g * mass / (radius * radius)),
+        "{}",
+        at.gravity
+    );
+    assert!(at.gravity.x.abs() < 1e-15, "{}", at.gravity);
+    assert!(close(at.gravitational_potential, -g * mass / radius));
+    assert!(
+        (at.gravity.length() - 9.82).abs() < 0.01,
+        "about 9.82 m/s²: {}",
+        at.gravity.length()
+    );
+
+    let q = 1e-6;
+    let pair = Scene::new()
+        .with_world(World {
+            gravitation: false,
+            ..World::weightless()
+        })
+        .with_particle(Particle::new("plus", 1.0).charge(q).position([-1.0, 0.0]))
+        .with_particle(Particle::new("minus", 1.0).charge(-q).position([1.0, 0.0]));
+    let x = [DVec2::new(-1.0, 0.0), DVec2::new(1.0, 0.0)];
+    let single = field_at(&pair, &x[..1], DVec2::new(2.0, 0.0));
+    assert!(close(single.electric.x, k * q / 9.0) && close(single.electric_potential, k * q / 3.0));
+    let middle = field_at(&pair, &x, DVec2::ZERO);
+    assert!(close(middle.electric.x, 2.0 * k * q), "{}", middle.electric);
+    assert!(
+        middle.electric_potential.abs() < 1e-9,
+        "V = 0 between them: {}",
+        middle.electric_potential
+    );
+    assert_eq!(
+        middle.gravity,
+        DVec2::ZERO,
+        "no gravitation, no uniform field"
+    );
+
+    let falling = Scene::new();
+    let here = field_at(&falling, &[], DVec2::new(3.0, 2.0));
+    assert_eq!(here.gravity, DVec2::new(0.0, -9.81));
+    assert!(close(here.gravitational_potential, 9.81 * 2.0));
+}

@@ -16,6 +16,7 @@
 )]
 
 mod draw;
+mod instruments;
 mod tools;
 mod view;
 
@@ -25,6 +26,7 @@ use physics::{DVec2, Endpoint, Follow, Particle, Scene, Section};
 use crate::document::Document;
 use crate::recording::Recording;
 use crate::run_loop::Runner;
+pub use instruments::{FieldKind, Instrument, Instruments, Mark, probe_lines, tape_reading};
 use tools::Drag;
 pub use tools::keep_form;
 pub use view::{View, nice_length};
@@ -153,6 +155,8 @@ pub struct Canvas {
     framing: Option<Framing>,
     /// The canvas rectangle of the last frame, for fitting from menus.
     pub rect: Rect,
+    /// The tape measure, the probe and the field view.
+    pub instruments: Instruments,
 }
 
 impl Default for Canvas {
@@ -169,6 +173,7 @@ impl Default for Canvas {
             drag: None,
             framing: Some(Framing::Fit),
             rect: Rect::from_min_size(Pos2::ZERO, Vec2::new(800.0, 600.0)),
+            instruments: Instruments::default(),
         }
     }
 }
@@ -289,9 +294,25 @@ impl Canvas {
             *selection,
             hovered,
         );
+        self.instruments.draw(
+            &painter,
+            &self.view,
+            rect,
+            document.scene(),
+            &frame.positions,
+        );
         self.draw_scale_bar(&painter, rect);
 
-        if editable {
+        if self.instruments.active.is_some() {
+            self.measure(
+                ui,
+                &response,
+                rect,
+                document.scene(),
+                &frame.positions,
+                *selection,
+            );
+        } else if editable {
             self.edit(ui, &response, rect, document, &frame, selection);
         } else if response.clicked() {
             let pointer = response.interact_pointer_pos().unwrap_or(rect.center());

@@ -1,0 +1,347 @@
+//! Measuring instruments on the canvas, usable while a run plays as well as while the
+//! scene is edited: a tape measure (the distance and direction between two points; an end
+//! dropped on a particle stays on it as it moves), a probe (the gravitational and
+//! electric field and potential at a point, `physics::field_at`), and the field view (a
+//! grid of arrows of the particles' electric or gravitational field, updated live).
+//!
+//! While an instrument is chosen, a drag on the canvas works it instead of the editing
+//! tool. From the keyboard: **M** and **P** choose the tape and the probe (again to put
+//! it away), the arrow keys move the probe by a grid step (Shift: a tenth), and with the
+//! tape chosen, Enter stretches it from the selected particle to the next one.
+
+use egui::{Align2, Color32, FontId, Pos2, Rect, Stroke, Vec2};
+use physics::{DVec2, Scene, field_at};
+
+use super::View;
+use crate::format;
+
+/// The instruments.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Instrument {
+    /// Distance and direction between two points.
+    Tape,
+    /// The fields at a point.
+    Probe,
+}
+
+impl Instrument {
+    pub fn label(self) -> &'static str {
+        match self {
+            Self::Tape => "Tape measure",
+            Self::Probe => "Field probe",
+        }
+    }
+
+    pub fn hint(self) -> &'static str {
+        match self {
+            Self::Tape => {
+                "Drag between two points to measure the distance and direction; an end on a particle follows it (M)"
+            }
+            Self::Probe => {
+                "Click a point to read the gravitational and electric field and potential there; arrow keys move it (P)"
+            }
+        }
+    }
+}
+
+/// Which field the field view draws.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum FieldKind {
+    /// The particles' electric field.
+    Electric,
+    /// The particles' gravitational attraction (the uniform field left out: it would
+    /// draw every arrow the same).
+    Gravitational,
+}
+
+/// One end of the tape.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Mark {
+    /// A point of the world, metres.
+    Point(DVec2),
+    /// The centre of the particle with this index, wherever it is.
+    Particle(usize),
+}
+
+impl Mark {
+    fn at(self, positions: &[DVec2]) -> Option<DVec2> {
+        match self {
+            Self::Point(p) => Some(p),
+            Self::Particle(i) => positions.get(i).copied(),
+        }
+    }
+}
+
+/// The instruments' state.
+#[derive(Clone, Debug, Default)]
+pub struct Instruments {
+    /// The one that drags on the canvas work, if any.
+    pub active: Option<Instrument>,
+    /// The tape's two ends, once laid.
+    pub tape: Option<(Mark, Mark)>,
+    /// Where the probe is, metres.
+    pub probe: Option<DVec2>,
+    /// The field drawn as arrows, if any.
+    pub field_view: Option<FieldKind>,
+}
+
+/// What the tape reads: its length (m) and its direction (degrees from +x,
+/// counter-clockwise), from its first end to its second.
+pub fn tape_reading(tape: (Mark, Mark), positions: &[DVec2]) -> Option<(f64, f64)> {
+    let (a, b) = (tape.0.at(positions)?, tape.1.at(positions)?);
+    let d = b - a;
+    Some((d.length(), d.y.atan2(d.x).to_degrees()))
+}
+
+/// A number for the probe's box: plain decimals where they read well, else `1.234e-11`
+/// (a field's size spans many decades, and the box is drawn in the canvas's font).
+fn number(value: f64) -> String {
+    let size = value.abs();
+    if size == 0.0 || (1e-4..1e6).contains(&size) || !size.is_finite() {
+        format::number(value)
+    } else {
+        format!("{value:.4e}")
+    }
+}
+
+/// The probe's readout as lines of text.
+pub fn probe_lines(scene: &Scene, positions: &[DVec2], at: DVec2) -> Vec<String> {
+    let f = field_at(scene, positions, at);
+    let vector = |v: DVec2, unit: &str| {
+        format!(
+            "({}, {}) {unit}, size {} {unit}",
+            number(v.x),
+            number(v.y),
+            number(v.length()),
+        )
+    };
+    vec![
+        format!("at ({}, {}) m", number(at.x), number(at.y)),
+        format!("g = {}", vector(f.gravity, "N/kg")),
+        format!("E = {}", vector(f.electric, "N/C")),
+        format!(
+            "gravitational potential {} J/kg",
+            number(f.gravitational_potential)
+        ),
+        format!("electric potential {} V", number(f.electric_potential)),
+    ]
+}
+
+const TAPE: Color32 = Color32::from_rgb(200, 120, 20);
+const PROBE: Color32 = Color32::from_rgb(40, 110, 180);
+
+impl Instruments {
+    /// Draws the tape, the probe and the field view.
+    pub fn draw(
+        &self,
+        painter: &egui::Painter,
+        view: &View,
+        rect: Rect,
+        scene: &Scene,
+        positions: &[DVec2],
+    ) {
+        let screen = |p: DVec2| view.to_screen(rect, p);
+        if let Some(kind) = self.field_view {
+            draw_field(painter, view, rect, scene, positions, kind);
+        }
+        if let Some(tape) = self.tape
+            && let (Some(a), Some(b)) = (tape.0.at(positions), tape.1.at(positions))
+            && let Some((length, angle)) = tape_reading(tape, positions)
+        {
+            let (pa, pb) = (screen(a), screen(b));
+            painter.line_segment([pa, pb], Stroke::new(2.0, TAPE));
+            for end in [pa, pb] {
+                painter.circle_stroke(end, 4.0, Stroke::new(1.5, TAPE));
+            }
+            let text = format!("{} m, {}°", number(length), number(angle));
+            label(
+                painter,
+                pa.lerp(pb, 0.5) + Vec2::new(0.0, -8.0),
+                &text,
+                TAPE,
+            );
+        }
+        if let Some(at) = self.probe {
+            let p = screen(at);
+            let cross = Stroke::new(1.5, PROBE);
+            painter.line_segment([p - Vec2::new(7.0, 0.0), p + Vec2::new(7.0, 0.0)], cross);
+            painter.line_segment([p - Vec2::new(0.0, 7.0), p + Vec2::new(0.0, 7.0)], cross);
+            let lines = probe_lines(scene, positions, at);
+            label(
+                painter,
+                p + Vec2::new(12.0, -10.0),
+                &lines.join("\n"),
+                PROBE,
+            );
+        }
+    }
+}
+
+/// Text on a pale box, so that it reads over the grid and the particles.
+fn label(painter: &egui::Painter, at: Pos2, text: &str, colour: Color32) {
+    let galley = painter.layout_no_wrap(text.to_owned(), FontId::proportional(12.0), colour);
+    let rect = Align2::LEFT_BOTTOM
+        .anchor_size(at, galley.size())
+        .expand(3.0);
+    painter.rect_filled(
+        rect,
+        3.0,
+        Color32::from_rgba_unmultiplied(255, 255, 255, 220),
+    );
+    painter.galley(rect.min + Vec2::splat(3.0), galley, colour);
+}
+
+/// Arrows of the field on a grid across the canvas: each points along the field, its
+/// opacity says how strong it is against the strongest arrow drawn (on a logarithmic
+/// scale over four decades), so weak regions stay visible beside strong ones.
+fn draw_field(
+    painter: &egui::Painter,
+    view: &View,
+    rect: Rect,
+    scene: &Scene,
+    positions: &[DVec2],
+    kind: FieldKind,
+) {
+    const SPACING: f32 = 40.0;
+    let mut world = scene.clone();
+    world.world.gravity = physics::Vector::ZERO;
+    let mut arrows = Vec::new();
+    let columns = (rect.width() / SPACING).floor() as usize;
+    let rows = (rect.height() / SPACING).floor() as usize;
+    for row in 0..rows {
+        for column in 0..columns {
+            let at = rect.min + Vec2::new(column as f32 + 0.5, row as f32 + 0.5) * SPACING;
+            let f = field_at(&world, positions, view.to_world(rect, at));
+            let v = match kind {
+                FieldKind::Electric => f.electric,
+                FieldKind::Gravitational => f.gravity,
+            };
+            if v.length() > 0.0 && v.is_finite() {
+                arrows.push((at, v));
+            }
+        }
+    }
+    let strongest = arrows.iter().map(|(_, v)| v.length()).fold(0.0, f64::max);
+    let colour = match kind {
+        FieldKind::Electric => Color32::from_rgb(170, 60, 60),
+        FieldKind::Gravitational => Color32::from_rgb(60, 90, 170),
+    };
+    for (at, v) in arrows {
+        let strength = (1.0 + (v.length() / strongest).log10() / 4.0).clamp(0.08, 1.0);
+        let direction = v.normalize();
+        // y up in the world, down on the screen.
+        let step = Vec2::new(direction.x as f32, -direction.y as f32) * (SPACING * 0.35);
+        let tint = colour.gamma_multiply(strength as f32);
+        painter.arrow(at - step, step * 2.0, Stroke::new(1.5, tint));
+    }
+}
+
+impl super::Canvas {
+    /// The gestures of the chosen instrument this frame: a drag lays the tape (an end on
+    /// a particle holds to it), a click or drag places the probe; the arrow keys move the
+    /// probe and Enter stretches the tape from the selected particle to the next.
+    pub(super) fn measure(
+        &mut self,
+        ui: &egui::Ui,
+        response: &egui::Response,
+        rect: Rect,
+        scene: &Scene,
+        positions: &[DVec2],
+        selection: Option<super::Selection>,
+    ) {
+        let Some(instrument) = self.instruments.active else {
+            return;
+        };
+        let pointer = response.interact_pointer_pos();
+        let world = pointer.map(|p| self.view.to_world(rect, p));
+        let mark = |canvas: &Self, at: Pos2| match canvas.particle_at(rect, scene, positions, at) {
+            Some(i) => Mark::Particle(i),
+            None => Mark::Point(canvas.view.to_world(rect, at)),
+        };
+        match instrument {
+            Instrument::Tape => {
+                if response.drag_started_by(egui::PointerButton::Primary) {
+                    let start = ui.input(|i| i.pointer.press_origin()).or(pointer);
+                    if let Some(start) = start {
+                        let first = mark(self, start);
+                        self.instruments.tape = Some((first, first));
+                    }
+                }
+                if let (true, Some((first, _)), Some(world)) = (
+                    response.dragged_by(egui::PointerButton::Primary),
+                    self.instruments.tape,
+                    world,
+                ) {
+                    self.instruments.tape = Some((first, Mark::Point(world)));
+                }
+                if response.drag_stopped_by(egui::PointerButton::Primary)
+                    && let (Some((first, _)), Some(end)) = (self.instruments.tape, pointer)
+                {
+                    self.instruments.tape = Some((first, mark(self, end)));
+                }
+                let enter = ui.input(|i| i.key_pressed(egui::Key::Enter));
+                if enter
+                    && !ui.ctx().egui_wants_keyboard_input()
+                    && let Some(super::Selection::Particle(i)) = selection
+                    && positions.len() > 1
+                {
+                    let next = (i + 1) % positions.len();
+                    self.instruments.tape = Some((Mark::Particle(i), Mark::Particle(next)));
+                }
+            }
+            Instrument::Probe => {
+                if (response.clicked() || response.dragged_by(egui::PointerButton::Primary))
+                    && let Some(world) = world
+                {
+                    self.instruments.probe = Some(world);
+                }
+                if !ui.ctx().egui_wants_keyboard_input() {
+                    let step = super::view::nice_length(80.0 / self.view.pixels_per_metre)
+                        / if ui.input(|i| i.modifiers.shift) {
+                            100.0
+                        } else {
+                            10.0
+                        };
+                    let moved = ui.input(|i| {
+                        let mut d = DVec2::ZERO;
+                        for (key, by) in [
+                            (egui::Key::ArrowLeft, DVec2::NEG_X),
+                            (egui::Key::ArrowRight, DVec2::X),
+                            (egui::Key::ArrowUp, DVec2::Y),
+                            (egui::Key::ArrowDown, DVec2::NEG_Y),
+                        ] {
+                            if i.key_pressed(key) {
+                                d += by;
+                            }
+                        }
+                        d
+                    });
+                    if moved != DVec2::ZERO {
+                        let from = self.instruments.probe.unwrap_or(self.view.center);
+                        self.instruments.probe = Some(from + moved * step);
+                    }
+                }
+            }
+        }
+    }
+
+    /// The particle under the screen point `at`, if any.
+    fn particle_at(
+        &self,
+        rect: Rect,
+        scene: &Scene,
+        positions: &[DVec2],
+        at: Pos2,
+    ) -> Option<usize> {
+        let world = self.view.to_world(rect, at);
+        let tolerance = 6.0 / self.view.pixels_per_metre;
+        scene
+            .particles
+            .iter()
+            .zip(positions)
+            .enumerate()
+            .filter(|(_, (p, x))| x.distance(world) <= p.radius + tolerance)
+            .min_by(|(_, (_, a)), (_, (_, b))| a.distance(world).total_cmp(&b.distance(world)))
+            .map(|(i, _)| i)
+    }
+}

@@ -1,0 +1,187 @@
+//! What a number field accepts: a number, arithmetic on numbers (`2*pi`, `sqrt(2)/2`,
+//! `1.5e3`, `3^2`), and after it a unit that converts to the field's SI unit (`30 km/h`,
+//! `5 cm`, `250 g`, `45 deg`). The scene keeps the SI number; the file stores it.
+//!
+//! Arithmetic is `exmex`'s, on f64: + − × ÷ and ^, parentheses, the functions sqrt, cbrt,
+//! sin, cos, tan (radians), asin, acos, atan, exp, ln, log10, abs, and the constants pi
+//! (also π or PI), tau and e. The units are a small table per SI unit, below; a field's
+//! own unit is always accepted.
+
+/// Units that may follow a number for a field in `si` units, with what one of each is
+/// in `si`. Longer names first, so that `km/h` is not read as `h`.
+fn units(si: &str) -> &'static [(&'static str, f64)] {
+    match si {
+        "m" => &[
+            ("km", 1000.0),
+            ("cm", 0.01),
+            ("mm", 0.001),
+            ("ft", 0.3048),
+            ("in", 0.0254),
+            ("m", 1.0),
+        ],
+        "m/s" => &[
+            ("km/h", 1.0 / 3.6),
+            ("cm/s", 0.01),
+            ("mph", 0.447_04),
+            ("m/s", 1.0),
+        ],
+        "m/s²" => &[("cm/s²", 0.01), ("m/s^2", 1.0), ("m/s²", 1.0)],
+        "kg" => &[("kg", 1.0), ("mg", 1e-6), ("g", 1e-3), ("t", 1000.0)],
+        "s" => &[("min", 60.0), ("ms", 1e-3), ("h", 3600.0), ("s", 1.0)],
+        "C" => &[
+            ("mC", 1e-3),
+            ("µC", 1e-6),
+            ("uC", 1e-6),
+            ("nC", 1e-9),
+            ("pC", 1e-12),
+            ("C", 1.0),
+        ],
+        "N/m" => &[("N/cm", 100.0), ("kN/m", 1000.0), ("N/m", 1.0)],
+        "N·s/m" => &[("N·s/m", 1.0), ("Ns/m", 1.0), ("kg/s", 1.0)],
+        "°" => &[
+            ("deg", 1.0),
+            ("rad", 180.0 / std::f64::consts::PI),
+            ("°", 1.0),
+        ],
+        _ => &[],
+    }
+}
+
+/// The value of `text` in `si` units.
+///
+/// # Errors
+/// What was wrong, in words for the inspector: the arithmetic that did not parse, or a
+/// unit that does not fit the field.
+pub fn parse(text: &str, si: &str) -> Result<f64, String> {
+    let text = text.trim();
+    if let Ok(value) = text.parse::<f64>() {
+        return Ok(value);
+    }
+    let (expression, factor) = split_unit(text, si);
+    let value = evaluate(expression).map_err(|reason| {
+        let units: Vec<&str> = units(si).iter().map(|(name, _)| *name).collect();
+        let hint = if units.is_empty() {
+            String::new()
+        } else {
+            format!(", with a unit such as {}", units.join(", "))
+        };
+        format!("\"{text}\" is not a number: {reason}; write a number or arithmetic like 2*pi or sqrt(2)/2{hint}")
+    })?;
+    Ok(value * factor)
+}
+
+/// The expression and the factor of the unit at its end (1 without one).
+fn split_unit<'t>(text: &'t str, si: &str) -> (&'t str, f64) {
+    let own = (si, 1.0);
+    let table = units(si);
+    let candidates = table.iter().copied().chain((!si.is_empty()).then_some(own));
+    for (name, factor) in candidates {
+        if let Some(expression) = text.strip_suffix(name) {
+            let expression = expression.trim_end();
+            // A unit follows a number, a closing bracket or a space: "5 m", "(2+3)m", "5m".
+            let fits = expression
+                .chars()
+                .last()
+                .is_some_and(|c| c.is_ascii_digit() || c == ')' || c == '.' || c.is_alphabetic());
+            if fits && !expression.is_empty() {
+                return (expression, factor);
+            }
+        }
+    }
+    (text, 1.0)
+}
+
+/// An arithmetic expression's value.
+fn evaluate(expression: &str) -> Result<f64, String> {
+    // exmex names π PI, τ TAU and e E; people write pi and tau.
+    let spelled: String = words(expression)
+        .map(|word| match word {
+            "pi" | "Pi" => "PI",
+            "tau" => "TAU",
+            other => other,
+        })
+        .collect();
+    let value = exmex::eval_str::<f64>(&spelled).map_err(|e| e.msg().to_owned())?;
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(format!("it comes to {value}"))
+    }
+}
+
+/// `text` cut into runs of letters and runs of everything else, in order.
+fn words(text: &str) -> impl Iterator<Item = &str> {
+    let mut rest = text;
+    std::iter::from_fn(move || {
+        let first = rest.chars().next()?;
+        let letters = first.is_alphabetic();
+        let end = rest
+            .char_indices()
+            .find(|&(_, c)| c.is_alphabetic() != letters)
+            .map_or(rest.len(), |(i, _)| i);
+        let (word, tail) = rest.split_at(end);
+        rest = tail;
+        Some(word)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn close(a: f64, b: f64) -> bool {
+        (a - b).abs() <= 1e-12 * b.abs().max(1.0)
+    }
+
+    /// The examples, and the units of each kind of field.
+    #[test]
+    fn numbers_arithmetic_and_units_become_si() {
+        let cases = [
+            ("30 km/h", "m/s", 30.0 / 3.6),
+            ("5 cm", "m", 0.05),
+            ("5cm", "m", 0.05),
+            ("250 g", "kg", 0.25),
+            ("2*pi", "", 2.0 * std::f64::consts::PI),
+            ("sqrt(2)/2", "m", std::f64::consts::SQRT_2 / 2.0),
+            ("1.5e3", "kg", 1500.0),
+            ("1/2", "s", 0.5),
+            ("3^2 m", "m", 9.0),
+            ("(1 + 2) km", "m", 3000.0),
+            ("-4.5", "m", -4.5),
+            ("2 µC", "C", 2e-6),
+            ("90 deg", "°", 90.0),
+            ("pi/2 rad", "°", 90.0),
+            ("1 min", "s", 60.0),
+            ("9.81 m/s^2", "m/s²", 9.81),
+            ("12 m/s", "m/s", 12.0),
+        ];
+        for (text, si, expected) in cases {
+            let value = parse(text, si).unwrap_or_else(|e| panic!("{text}: {e}"));
+            assert!(
+                close(value, expected),
+                "{text} in {si}: {value}, expected {expected}"
+            );
+        }
+    }
+
+    /// Text that is not a quantity of the field is refused with a reason.
+    #[test]
+    fn what_does_not_fit_is_refused_with_a_reason() {
+        for (text, si) in [
+            ("abc", "m"),
+            ("5 kg", "m"),
+            ("2*", "s"),
+            ("1/0", "m"),
+            ("", "m"),
+        ] {
+            let error = parse(text, si).expect_err(text);
+            assert!(error.contains("is not a number"), "{text}: {error}");
+        }
+        assert!(
+            parse("5 kg", "m")
+                .expect_err("kg is no length")
+                .contains("km"),
+            "names the units"
+        );
+    }
+}

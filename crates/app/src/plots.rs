@@ -388,11 +388,14 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
         .as_ref()
         .and_then(physics::Simulation::ledger)
         .unwrap_or_default();
-    let residual = energy.total + ledger.total() - start;
+    let residual_joules = energy.total + ledger.total() - start;
     let residual = if start == 0.0 {
-        format::with_unit(residual, "J")
+        format::with_unit(residual_joules, "J")
     } else {
-        format!("{} %", format::number(100.0 * residual / start.abs()))
+        format!(
+            "{} %",
+            format::number(100.0 * residual_joules / start.abs())
+        )
     };
     egui::Grid::new("readouts")
         .num_columns(2)
@@ -433,6 +436,94 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
                 ui.end_row();
             }
         });
+    energy_bars(ui, &books(&energy, ledger, residual_joules, start));
+}
+
+/// The bars of the energy books: kinetic, each potential there is, what dissipation
+/// took, the numerical error and the energy at Play, joules.
+fn books(
+    energy: &Energies,
+    ledger: physics::Ledger,
+    residual: f64,
+    start: f64,
+) -> Vec<(&'static str, f64, egui::Color32)> {
+    let mut bars = vec![("kinetic", energy.kinetic, KINETIC)];
+    bars.extend(
+        energy
+            .potential
+            .iter()
+            .filter(|(_, value)| *value != 0.0)
+            .map(|(name, value)| {
+                let name = name
+                    .trim_start_matches("potential: ")
+                    .trim_end_matches(" (J)");
+                (name, *value, POTENTIAL)
+            }),
+    );
+    bars.extend([
+        ("damping took", ledger.damping, DISSIPATED),
+        ("friction took", ledger.friction, DISSIPATED),
+        ("impacts took", ledger.impacts, DISSIPATED),
+        ("numerical error", residual, ERROR_BAR),
+        ("total at Play", start, TOTAL),
+    ]);
+    bars
+}
+
+const KINETIC: egui::Color32 = egui::Color32::from_rgb(60, 140, 70);
+const POTENTIAL: egui::Color32 = egui::Color32::from_rgb(60, 100, 190);
+const DISSIPATED: egui::Color32 = egui::Color32::from_rgb(200, 110, 40);
+const ERROR_BAR: egui::Color32 = egui::Color32::from_rgb(190, 50, 50);
+const TOTAL: egui::Color32 = egui::Color32::from_rgb(90, 90, 90);
+
+/// The energy books as bars, like `PhET`'s energy charts: each kind's joules to one scale
+/// (the largest of them), from a zero line in the middle, so a negative potential
+/// extends left; kinetic green, potential blue, what dissipation took orange, the
+/// numerical error red, the energy at Play grey. The numbers are in the table above.
+fn energy_bars(ui: &mut Ui, bars: &[(&str, f64, egui::Color32)]) {
+    let scale = bars
+        .iter()
+        .map(|(_, value, _)| value.abs())
+        .filter(|v| v.is_finite())
+        .fold(0.0, f64::max);
+    ui.label(egui::RichText::new("Energy bars").strong())
+        .on_hover_text("Each kind of energy to one scale; the numbers are in the table above");
+    let width = ui.available_width().min(320.0);
+    for &(name, value, colour) in bars {
+        let (rect, response) =
+            ui.allocate_exact_size(egui::vec2(width, 14.0), egui::Sense::hover());
+        let painter = ui.painter_at(rect);
+        let label_width = 110.0;
+        painter.text(
+            rect.left_center(),
+            egui::Align2::LEFT_CENTER,
+            name,
+            egui::FontId::proportional(11.0),
+            ui.visuals().text_color(),
+        );
+        let track = egui::Rect::from_min_max(
+            egui::pos2(rect.left() + label_width, rect.top() + 2.0),
+            egui::pos2(rect.right(), rect.bottom() - 2.0),
+        );
+        let zero = track.center().x;
+        painter.line_segment(
+            [
+                egui::pos2(zero, track.top()),
+                egui::pos2(zero, track.bottom()),
+            ],
+            egui::Stroke::new(1.0, egui::Color32::from_gray(150)),
+        );
+        if scale > 0.0 && value.is_finite() {
+            #[expect(clippy::cast_possible_truncation, reason = "a length on screen")]
+            let length = (value / scale) as f32 * track.width() / 2.0;
+            let bar = egui::Rect::from_x_y_ranges(
+                zero.min(zero + length)..=zero.max(zero + length),
+                track.y_range(),
+            );
+            painter.rect_filled(bar, 1.0, colour);
+        }
+        response.on_hover_text(format!("{name}: {} J", format::number(value)));
+    }
 }
 
 /// The impacts of the run, in time order (as many as the recording keeps): when, what

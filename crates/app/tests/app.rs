@@ -689,6 +689,7 @@ fn the_readouts_show_what_damping_took_and_the_numerical_error() {
         "t = {t}: damping took {} J, theory {lost} J",
         ledger.damping
     );
+    harness.get_by_label("Energy bars");
 }
 
 /// The impact list: after the paper's 4.3 collision (equal 1 kg masses, A at 20 m/s,

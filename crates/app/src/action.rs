@@ -39,6 +39,8 @@ pub enum Action {
     FieldView(Option<FieldKind>),
     /// Take away the tape and the probe.
     ClearMeasurements,
+    /// Show or hide the stopwatch.
+    ToggleStopwatch,
 }
 
 const fn command(key: Key) -> KeyboardShortcut {
@@ -75,6 +77,7 @@ pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
     (plain(Key::Num6), Action::Tool(Tool::String)),
     (plain(Key::M), Action::Instrument(Instrument::Tape)),
     (plain(Key::P), Action::Instrument(Instrument::Probe)),
+    (plain(Key::T), Action::ToggleStopwatch),
     (plain(Key::Delete), Action::Delete),
     (plain(Key::Backspace), Action::Delete),
     (plain(Key::F9), Action::ToggleInspector),

@@ -32,6 +32,7 @@ pub mod plots;
 pub mod recording;
 pub mod run_loop;
 pub mod share;
+pub mod stopwatch;
 pub mod toolbar;
 pub mod units;
 #[cfg(target_arch = "wasm32")]
@@ -89,6 +90,8 @@ pub struct App {
     pub runner: Runner,
     pub canvas: canvas::Canvas,
     pub graphs: Graphs,
+    /// The stopwatch and its window.
+    pub stopwatch: stopwatch::Stopwatch,
     pub files: Files,
     pub selection: Option<Selection>,
     pub panels: Panels,
@@ -134,6 +137,7 @@ impl App {
             runner: Runner::default(),
             canvas,
             graphs: Graphs::default(),
+            stopwatch: stopwatch::Stopwatch::default(),
             files: Files::default(),
             selection: None,
             panels: Panels::default(),
@@ -233,6 +237,7 @@ impl App {
                 }
             }
             Action::FieldView(kind) => self.canvas.instruments.field_view = kind,
+            Action::ToggleStopwatch => self.stopwatch.shown = !self.stopwatch.shown,
             Action::ClearMeasurements => {
                 self.canvas.instruments.tape = None;
                 self.canvas.instruments.probe = None;
@@ -664,6 +669,13 @@ impl App {
                 }
                 item(
                     ui,
+                    &format!("{}Stopwatch", tick(self.stopwatch.shown)),
+                    "Simulated time between two events: by hand, an impact, a particle crossing the tape",
+                    Action::ToggleStopwatch,
+                    true,
+                );
+                item(
+                    ui,
                     "Clear measurements",
                     "Take away the tape and the probe",
                     Action::ClearMeasurements,
@@ -763,6 +775,7 @@ impl App {
         let time_scale = self.document.scene().simulation.time_scale;
         self.runner
             .advance(real_dt, time_scale, self.canvas.overlays.trails);
+        self.time_stopwatch();
         if self.runner.playing {
             ui.ctx().request_repaint();
         }
@@ -839,10 +852,89 @@ impl App {
         for action in actions {
             self.perform(action);
         }
+        self.stopwatch_window(ui);
         self.take_picture(ui);
         #[cfg(not(target_arch = "wasm32"))]
         self.keep_copy();
         self.window(ui);
+    }
+
+    /// Lets the stopwatch see the run's events since the last frame.
+    fn time_stopwatch(&mut self) {
+        let Some(simulation) = &self.runner.simulation else {
+            self.stopwatch.forget_run();
+            return;
+        };
+        let positions = simulation.positions();
+        let gate = self
+            .canvas
+            .instruments
+            .tape
+            .and_then(|tape| canvas::tape_ends(tape, positions));
+        let impacts = self
+            .runner
+            .recording
+            .as_ref()
+            .map_or(&[][..], Recording::impacts);
+        self.stopwatch
+            .update(simulation.time(), positions, impacts, gate);
+    }
+
+    /// The stopwatch's window, when shown: the reading, Start/Stop and Reset, and what
+    /// starts and stops it.
+    fn stopwatch_window(&mut self, ui: &Ui) {
+        use stopwatch::{State, Trigger};
+        let mut shown = self.stopwatch.shown;
+        let now = self.time();
+        egui::Window::new("Stopwatch")
+            .open(&mut shown)
+            .resizable(false)
+            .default_pos(self.canvas.rect.right_top() + egui::vec2(-240.0, 12.0))
+            .show(ui.ctx(), |ui| {
+                let watch = &mut self.stopwatch;
+                ui.label(
+                    egui::RichText::new(format!("{:.4} s", watch.reading))
+                        .monospace()
+                        .size(22.0),
+                );
+                ui.label(match watch.state {
+                    State::Stopped => "stopped",
+                    State::Armed => "waiting to start",
+                    State::Running(_) => "running",
+                });
+                ui.horizontal(|ui| {
+                    let running = matches!(watch.state, State::Running(_) | State::Armed);
+                    if ui.button(if running { "Stop" } else { "Start" }).clicked() {
+                        if running {
+                            watch.stop(now);
+                        } else {
+                            watch.start(now);
+                        }
+                    }
+                    if ui.button("Reset stopwatch").clicked() {
+                        watch.reset();
+                    }
+                });
+                for (label, trigger) in [("start on", &mut watch.start_on), ("stop on", &mut watch.stop_on)] {
+                    ui.horizontal(|ui| {
+                        let text = ui.label(label);
+                        egui::ComboBox::from_id_salt(label)
+                            .selected_text(trigger.label())
+                            .show_ui(ui, |ui| {
+                                for choice in Trigger::ALL {
+                                    ui.selectable_value(trigger, choice, choice.label());
+                                }
+                            })
+                            .response
+                            .labelled_by(text.id);
+                    });
+                }
+                ui.label(
+                    egui::RichText::new("Simulated time. Impacts at their located instants; the tape's line as a light gate, to the frame.")
+                        .small(),
+                );
+            });
+        self.stopwatch.shown = shown;
     }
 
     /// Autosaves unsaved work when due (desktop; the browser keeps its copy in `web.rs`).

@@ -941,3 +941,46 @@ fn the_measure_menu_turns_on_the_field_view() {
         Some(newtonlab_app::FieldKind::Electric)
     );
 }
+
+/// The stopwatch (T), set to start at one impact and stop at the next, times a ball's
+/// bounce on the floor: between two elastic impacts it flies 2 √(2h/g) (0.5997 s for a
+/// drop of h = 0.441 m; impacts are located to 1e-9 s, and 1e-8 s allows the rounding).
+#[test]
+fn the_stopwatch_times_a_bounce_between_two_impacts() {
+    use newtonlab_app::stopwatch::{State, Trigger};
+    let world = World {
+        gravitation: false,
+        electrostatics: false,
+        bounds: Some(physics::Bounds {
+            min: [-5.0, 0.0].into(),
+            max: [5.0, 10.0].into(),
+        }),
+        ..World::default()
+    };
+    let scene = Scene::new().with_world(world).with_particle(
+        Particle::new("ball", 1.0)
+            .radius(0.1)
+            .position([0.0, 0.541]),
+    );
+    let mut harness = harness(App::new(scene));
+    harness.key_press(Key::T);
+    harness.run();
+    assert!(harness.state().stopwatch.shown, "T shows it");
+    {
+        let watch = &mut harness.state_mut().stopwatch;
+        watch.start_on = Trigger::Impact;
+        watch.stop_on = Trigger::Impact;
+    }
+    harness.get_by_label("Start").click();
+    harness.run();
+    assert_eq!(harness.state().stopwatch.state, State::Armed);
+    play_frames(&mut harness, 12);
+    let watch = &harness.state().stopwatch;
+    assert_eq!(watch.state, State::Stopped, "stopped by the second impact");
+    let flight = 2.0 * (2.0 * 0.441 / 9.81_f64).sqrt();
+    assert!(
+        (watch.reading - flight).abs() < 1e-8,
+        "{} s, theory {flight} s",
+        watch.reading
+    );
+}

@@ -85,6 +85,11 @@ pub struct Instruments {
     pub field_view: Option<FieldKind>,
 }
 
+/// Where the tape's two ends are, metres.
+pub fn tape_ends(tape: (Mark, Mark), positions: &[DVec2]) -> Option<(DVec2, DVec2)> {
+    Some((tape.0.at(positions)?, tape.1.at(positions)?))
+}
+
 /// What the tape reads: its length (m) and its direction (degrees from +x,
 /// counter-clockwise), from its first end to its second.
 pub fn tape_reading(tape: (Mark, Mark), positions: &[DVec2]) -> Option<(f64, f64)> {

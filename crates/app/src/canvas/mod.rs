@@ -26,7 +26,9 @@ use physics::{DVec2, Endpoint, Follow, Particle, Scene, Section};
 use crate::document::Document;
 use crate::recording::Recording;
 use crate::run_loop::Runner;
-pub use instruments::{FieldKind, Instrument, Instruments, Mark, probe_lines, tape_reading};
+pub use instruments::{
+    FieldKind, Instrument, Instruments, Mark, probe_lines, tape_ends, tape_reading,
+};
 use tools::Drag;
 pub use tools::keep_form;
 pub use view::{View, nice_length};

@@ -37,7 +37,7 @@ pub enum Action {
     Instrument(Instrument),
     /// Draw a field as arrows, or none.
     FieldView(Option<FieldKind>),
-    /// Take away the tape and the probe.
+    /// Take away the tape, the probe and the protractor.
     ClearMeasurements,
     /// Show or hide the stopwatch.
     ToggleStopwatch,
@@ -78,6 +78,7 @@ pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
     (plain(Key::M), Action::Instrument(Instrument::Tape)),
     (plain(Key::P), Action::Instrument(Instrument::Probe)),
     (plain(Key::T), Action::ToggleStopwatch),
+    (plain(Key::A), Action::Instrument(Instrument::Protractor)),
     (plain(Key::Delete), Action::Delete),
     (plain(Key::Backspace), Action::Delete),
     (plain(Key::F9), Action::ToggleInspector),

@@ -241,6 +241,7 @@ impl App {
             Action::ClearMeasurements => {
                 self.canvas.instruments.tape = None;
                 self.canvas.instruments.probe = None;
+                self.canvas.instruments.protractor = None;
             }
         }
     }
@@ -641,7 +642,7 @@ impl App {
             ui.menu_button("Measure", |ui| {
                 let instruments = &self.canvas.instruments;
                 let tick = |on: bool| if on { "• " } else { "" };
-                for instrument in [Instrument::Tape, Instrument::Probe] {
+                for instrument in [Instrument::Tape, Instrument::Probe, Instrument::Protractor] {
                     item(
                         ui,
                         &format!(
@@ -677,9 +678,11 @@ impl App {
                 item(
                     ui,
                     "Clear measurements",
-                    "Take away the tape and the probe",
+                    "Take away the tape, the probe and the protractor",
                     Action::ClearMeasurements,
-                    instruments.tape.is_some() || instruments.probe.is_some(),
+                    instruments.tape.is_some()
+                        || instruments.probe.is_some()
+                        || instruments.protractor.is_some(),
                 );
             })
             .response

@@ -838,10 +838,7 @@ fn typed_units_and_arithmetic_become_si_numbers() {
 #[test]
 fn the_tape_measure_follows_a_ball_and_the_probe_reads_the_field_where_it_is() {
     use newtonlab_app::canvas::{Instrument, Mark, tape_reading};
-    let small = Scene::new()
-        .with_world(World::weightless())
-        .with_particle(Particle::new("ball", 1.0).radius(0.05).velocity([1.0, 0.0]));
-    let mut harness = harness(App::new(small));
+    let mut harness = harness(App::new(small_ball()));
     harness.key_press(Key::M);
     harness.run();
     assert_eq!(
@@ -983,4 +980,44 @@ fn the_stopwatch_times_a_bounce_between_two_impacts() {
         "{} s, theory {flight} s",
         watch.reading
     );
+}
+
+/// A ball of 5 cm moving at 1 m/s, no field: small on the canvas, so that drags can end
+/// beside it.
+fn small_ball() -> Scene {
+    Scene::new()
+        .with_world(World::weightless())
+        .with_particle(Particle::new("ball", 1.0).radius(0.05).velocity([1.0, 0.0]))
+}
+
+/// The protractor (A): a drag lays the vertex and the first arm, a second drag the
+/// second arm; it reads the angle between them.
+#[test]
+fn the_protractor_reads_the_angle_between_its_arms() {
+    use newtonlab_app::canvas::protractor_reading;
+    let mut harness = harness(App::new(small_ball()));
+    harness.key_press(Key::A);
+    harness.run();
+    let rect = harness.state().canvas.rect;
+    let vertex = rect.center() + egui::vec2(-300.0, 200.0);
+    let (first, second) = (
+        vertex + egui::vec2(200.0, 0.0),
+        vertex + egui::vec2(100.0, -100.0),
+    );
+    let drag = |harness: &mut Harness<'_, App>, from: Pos2, to: Pos2| {
+        harness.hover_at(from);
+        harness.run();
+        harness.drag_at(from);
+        harness.run();
+        harness.hover_at(to);
+        harness.run();
+        harness.drop_at(to);
+        harness.run();
+    };
+    drag(&mut harness, vertex, first);
+    drag(&mut harness, vertex, second);
+    let protractor = harness.state().canvas.instruments.protractor.expect("laid");
+    assert!(protractor.2.is_some(), "both arms");
+    let angle = protractor_reading(protractor, &[DVec2::ZERO]).expect("a reading");
+    assert!((angle - 45.0).abs() < 1e-9, "{angle}°");
 }

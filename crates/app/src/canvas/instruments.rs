@@ -22,6 +22,8 @@ pub enum Instrument {
     Tape,
     /// The fields at a point.
     Probe,
+    /// The angle between two arms from a vertex.
+    Protractor,
 }
 
 impl Instrument {
@@ -29,6 +31,7 @@ impl Instrument {
         match self {
             Self::Tape => "Tape measure",
             Self::Probe => "Field probe",
+            Self::Protractor => "Protractor",
         }
     }
 
@@ -39,6 +42,9 @@ impl Instrument {
             }
             Self::Probe => {
                 "Click a point to read the gravitational and electric field and potential there; arrow keys move it (P)"
+            }
+            Self::Protractor => {
+                "Drag from the vertex along the first arm, then drag again for the second: the angle between them; ends on particles follow them (A)"
             }
         }
     }
@@ -83,6 +89,24 @@ pub struct Instruments {
     pub probe: Option<DVec2>,
     /// The field drawn as arrows, if any.
     pub field_view: Option<FieldKind>,
+    /// The protractor's vertex and arms, once laid (the second arm after a second drag).
+    pub protractor: Option<(Mark, Mark, Option<Mark>)>,
+    /// Whether the drag in progress lays the protractor's second arm.
+    second_arm: bool,
+}
+
+/// The angle between the protractor's arms, degrees in 0..=180, once both are laid.
+pub fn protractor_reading(
+    protractor: (Mark, Mark, Option<Mark>),
+    positions: &[DVec2],
+) -> Option<f64> {
+    let (vertex, a, b) = protractor;
+    let o = vertex.at(positions)?;
+    let (u, v) = (a.at(positions)? - o, b?.at(positions)? - o);
+    if u.length_squared() == 0.0 || v.length_squared() == 0.0 {
+        return None;
+    }
+    Some(u.perp_dot(v).atan2(u.dot(v)).abs().to_degrees())
 }
 
 /// Where the tape's two ends are, metres.
@@ -134,6 +158,7 @@ pub fn probe_lines(scene: &Scene, positions: &[DVec2], at: DVec2) -> Vec<String>
 
 const TAPE: Color32 = Color32::from_rgb(200, 120, 20);
 const PROBE: Color32 = Color32::from_rgb(40, 110, 180);
+const ANGLE: Color32 = Color32::from_rgb(130, 60, 160);
 
 impl Instruments {
     /// Draws the tape, the probe and the field view.
@@ -165,6 +190,19 @@ impl Instruments {
                 &text,
                 TAPE,
             );
+        }
+        if let Some((vertex, a, b)) = self.protractor
+            && let (Some(o), Some(pa)) = (vertex.at(positions), a.at(positions))
+        {
+            let stroke = Stroke::new(2.0, ANGLE);
+            painter.line_segment([screen(o), screen(pa)], stroke);
+            if let Some(pb) = b.and_then(|b| b.at(positions)) {
+                painter.line_segment([screen(o), screen(pb)], stroke);
+                if let Some(angle) = protractor_reading((vertex, a, b), positions) {
+                    let text = format!("{}°", number(angle));
+                    label(painter, screen(o) + Vec2::new(10.0, -10.0), &text, ANGLE);
+                }
+            }
         }
         if let Some(at) = self.probe {
             let p = screen(at);
@@ -294,38 +332,74 @@ impl super::Canvas {
                     self.instruments.tape = Some((Mark::Particle(i), Mark::Particle(next)));
                 }
             }
-            Instrument::Probe => {
-                if (response.clicked() || response.dragged_by(egui::PointerButton::Primary))
-                    && let Some(world) = world
-                {
-                    self.instruments.probe = Some(world);
-                }
-                if !ui.ctx().egui_wants_keyboard_input() {
-                    let step = super::view::nice_length(80.0 / self.view.pixels_per_metre)
-                        / if ui.input(|i| i.modifiers.shift) {
-                            100.0
-                        } else {
-                            10.0
-                        };
-                    let moved = ui.input(|i| {
-                        let mut d = DVec2::ZERO;
-                        for (key, by) in [
-                            (egui::Key::ArrowLeft, DVec2::NEG_X),
-                            (egui::Key::ArrowRight, DVec2::X),
-                            (egui::Key::ArrowUp, DVec2::Y),
-                            (egui::Key::ArrowDown, DVec2::NEG_Y),
-                        ] {
-                            if i.key_pressed(key) {
-                                d += by;
-                            }
-                        }
-                        d
-                    });
-                    if moved != DVec2::ZERO {
-                        let from = self.instruments.probe.unwrap_or(self.view.center);
-                        self.instruments.probe = Some(from + moved * step);
+            Instrument::Protractor => {
+                if response.drag_started_by(egui::PointerButton::Primary) {
+                    let start = ui.input(|i| i.pointer.press_origin()).or(pointer);
+                    let second = matches!(self.instruments.protractor, Some((_, _, None)));
+                    self.instruments.second_arm = second;
+                    if !second && let Some(start) = start {
+                        let vertex = mark(self, start);
+                        self.instruments.protractor = Some((vertex, vertex, None));
                     }
                 }
+                let second = self.instruments.second_arm;
+                let place = |protractor: (Mark, Mark, Option<Mark>), end: Mark| {
+                    let (vertex, a, _) = protractor;
+                    if second {
+                        (vertex, a, Some(end))
+                    } else {
+                        (vertex, end, None)
+                    }
+                };
+                if let (true, Some(protractor), Some(world)) = (
+                    response.dragged_by(egui::PointerButton::Primary),
+                    self.instruments.protractor,
+                    world,
+                ) {
+                    self.instruments.protractor = Some(place(protractor, Mark::Point(world)));
+                }
+                if response.drag_stopped_by(egui::PointerButton::Primary)
+                    && let (Some(protractor), Some(end)) = (self.instruments.protractor, pointer)
+                {
+                    self.instruments.protractor = Some(place(protractor, mark(self, end)));
+                }
+            }
+            Instrument::Probe => self.place_probe(ui, response, world),
+        }
+    }
+
+    /// The probe goes where the canvas is clicked or dragged, and a grid step (Shift: a
+    /// tenth of one) along an arrow key.
+    fn place_probe(&mut self, ui: &egui::Ui, response: &egui::Response, world: Option<DVec2>) {
+        if (response.clicked() || response.dragged_by(egui::PointerButton::Primary))
+            && let Some(world) = world
+        {
+            self.instruments.probe = Some(world);
+        }
+        if !ui.ctx().egui_wants_keyboard_input() {
+            let step = super::view::nice_length(80.0 / self.view.pixels_per_metre)
+                / if ui.input(|i| i.modifiers.shift) {
+                    100.0
+                } else {
+                    10.0
+                };
+            let moved = ui.input(|i| {
+                let mut d = DVec2::ZERO;
+                for (key, by) in [
+                    (egui::Key::ArrowLeft, DVec2::NEG_X),
+                    (egui::Key::ArrowRight, DVec2::X),
+                    (egui::Key::ArrowUp, DVec2::Y),
+                    (egui::Key::ArrowDown, DVec2::NEG_Y),
+                ] {
+                    if i.key_pressed(key) {
+                        d += by;
+                    }
+                }
+                d
+            });
+            if moved != DVec2::ZERO {
+                let from = self.instruments.probe.unwrap_or(self.view.center);
+                self.instruments.probe = Some(from + moved * step);
             }
         }
     }

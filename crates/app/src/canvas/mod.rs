@@ -27,7 +27,8 @@ use crate::document::Document;
 use crate::recording::Recording;
 use crate::run_loop::Runner;
 pub use instruments::{
-    FieldKind, Instrument, Instruments, Mark, probe_lines, tape_ends, tape_reading,
+    FieldKind, Instrument, Instruments, Mark, probe_lines, protractor_reading, tape_ends,
+    tape_reading,
 };
 use tools::Drag;
 pub use tools::keep_form;

@@ -65,6 +65,8 @@ pub struct Launch {
     /// While measuring, also print every this many frames the mean frame time of those
     /// frames and the simulated time (for a soak: growth shows as a trend).
     pub report_every: Option<usize>,
+    /// Draw this field as arrows from the start.
+    pub field_view: Option<FieldKind>,
 }
 
 /// Which side panels show, and projector mode (no panels, large text).
@@ -165,6 +167,7 @@ impl App {
             self.play_pause();
         }
         self.panels.projector = launch.projector;
+        self.canvas.instruments.field_view = launch.field_view;
         self.launch = launch;
         self
     }

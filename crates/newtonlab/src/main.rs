@@ -57,6 +57,16 @@ struct AppArgs {
     /// With --measure-frames, also print the mean frame time of every N frames.
     #[arg(long, value_name = "N")]
     report_every: Option<usize>,
+    /// Draw the particles' electric or gravitational field as arrows (Measure menu).
+    #[arg(long, value_enum, value_name = "FIELD")]
+    field_view: Option<FieldView>,
+}
+
+/// The fields the app can draw.
+#[derive(Clone, Copy, Debug, clap::ValueEnum)]
+enum FieldView {
+    Electric,
+    Gravitational,
 }
 
 /// Why a command failed, and the exit code that says so.
@@ -88,6 +98,7 @@ fn main() -> ExitCode {
             measure_frames: None,
             projector: false,
             report_every: None,
+            field_view: None,
         }),
         Some(Command::App(args)) => open_app(&args),
         Some(Command::Run(args)) => run::run(&args),
@@ -136,6 +147,10 @@ fn open_app(args: &AppArgs) -> Result<(), Failure> {
         measure_frames: args.measure_frames,
         projector: args.projector,
         report_every: args.report_every,
+        field_view: args.field_view.map(|f| match f {
+            FieldView::Electric => newtonlab_app::FieldKind::Electric,
+            FieldView::Gravitational => newtonlab_app::FieldKind::Gravitational,
+        }),
     });
     newtonlab_app::run_native(app).map_err(|e| {
         Failure::Simulation(format!(

@@ -1,13 +1,15 @@
 //! Measuring instruments on the canvas, usable while a run plays as well as while the
 //! scene is edited: a tape measure (the distance and direction between two points; an end
-//! dropped on a particle stays on it as it moves), a probe (the gravitational and
-//! electric field and potential at a point, `physics::field_at`), and the field view (a
-//! grid of arrows of the particles' electric or gravitational field, updated live).
+//! dropped on a particle stays on it as it moves), a protractor (the angle between two
+//! arms from a vertex), a probe (the gravitational and electric field and potential at a
+//! point, `physics::field_at`), and the field view (a grid of arrows of the particles'
+//! electric or gravitational field, updated live). The stopwatch is `stopwatch.rs`.
 //!
 //! While an instrument is chosen, a drag on the canvas works it instead of the editing
-//! tool. From the keyboard: **M** and **P** choose the tape and the probe (again to put
-//! it away), the arrow keys move the probe by a grid step (Shift: a tenth), and with the
-//! tape chosen, Enter stretches it from the selected particle to the next one.
+//! tool. From the keyboard: **M**, **A** and **P** choose the tape, the protractor and
+//! the probe (again to put it away), the arrow keys move the probe by a grid step (Shift: a tenth), and Enter lays
+//! the tape from the selected particle to the next one, or the protractor's vertex on it
+//! and its arms to the next two.
 
 use egui::{Align2, Color32, FontId, Pos2, Rect, Stroke, Vec2};
 use physics::{DVec2, Scene, field_at};
@@ -362,6 +364,20 @@ impl super::Canvas {
                     && let (Some(protractor), Some(end)) = (self.instruments.protractor, pointer)
                 {
                     self.instruments.protractor = Some(place(protractor, mark(self, end)));
+                }
+                // From the keyboard: the vertex on the selected particle, the arms to the
+                // next two.
+                if ui.input(|i| i.key_pressed(egui::Key::Enter))
+                    && !ui.ctx().egui_wants_keyboard_input()
+                    && let Some(super::Selection::Particle(i)) = selection
+                    && positions.len() > 2
+                {
+                    let n = positions.len();
+                    self.instruments.protractor = Some((
+                        Mark::Particle(i),
+                        Mark::Particle((i + 1) % n),
+                        Some(Mark::Particle((i + 2) % n)),
+                    ));
                 }
             }
             Instrument::Probe => self.place_probe(ui, response, world),

@@ -41,6 +41,12 @@ pub enum Action {
     ClearMeasurements,
     /// Show or hide the stopwatch.
     ToggleStopwatch,
+    /// One time step back in the run.
+    StepBack,
+    /// Show this step of the run.
+    GoTo(u64),
+    /// Make the moment shown the scene's start.
+    EditFromHere,
 }
 
 const fn command(key: Key) -> KeyboardShortcut {
@@ -67,6 +73,7 @@ pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
     (command(Key::N), Action::New),
     (plain(Key::Space), Action::PlayPause),
     (plain(Key::Period), Action::Step),
+    (plain(Key::Comma), Action::StepBack),
     (plain(Key::R), Action::Reset),
     (plain(Key::F), Action::Fit),
     (plain(Key::Num1), Action::Tool(Tool::Select)),

@@ -33,6 +33,7 @@ pub mod recording;
 pub mod run_loop;
 pub mod share;
 pub mod stopwatch;
+pub mod timeline;
 pub mod toolbar;
 pub mod units;
 #[cfg(target_arch = "wasm32")]
@@ -241,6 +242,9 @@ impl App {
             }
             Action::FieldView(kind) => self.canvas.instruments.field_view = kind,
             Action::ToggleStopwatch => self.stopwatch.shown = !self.stopwatch.shown,
+            Action::StepBack => self.runner.step_back(),
+            Action::GoTo(step) => self.runner.go_to(step),
+            Action::EditFromHere => self.edit_from_here(),
             Action::ClearMeasurements => {
                 self.canvas.instruments.tape = None;
                 self.canvas.instruments.probe = None;
@@ -802,6 +806,9 @@ impl App {
             ));
         });
         egui::Panel::bottom("status").show(ui, |ui| actions.extend(self.status(ui)));
+        if self.runner.timeline.is_some() {
+            egui::Panel::bottom("timeline").show(ui, |ui| actions.extend(self.timeline_bar(ui)));
+        }
         let side_panels = !self.panels.projector;
         if side_panels && self.panels.inspector {
             // A fixed width: the canvas does not move when the selection changes.
@@ -863,6 +870,73 @@ impl App {
         #[cfg(not(target_arch = "wasm32"))]
         self.keep_copy();
         self.window(ui);
+    }
+
+    /// The time machine's bar while a run exists: a slider over every step of the run,
+    /// Step back, and, at a moment gone back to, the way back to the end and Edit from
+    /// here.
+    fn timeline_bar(&mut self, ui: &mut Ui) -> Option<Action> {
+        let mut action = None;
+        let Some(timeline) = &self.runner.timeline else {
+            return None;
+        };
+        let (end, shown) = (timeline.end, timeline.shown);
+        let step = self
+            .runner
+            .simulation
+            .as_ref()
+            .map_or(0.0, physics::Simulation::time_step);
+        ui.horizontal(|ui| {
+            let back = ui
+                .add_enabled(shown.unwrap_or(end) > 0, egui::Button::new("Step back"))
+                .on_hover_text("One time step back in the run (,)");
+            if back.clicked() {
+                action = Some(Action::StepBack);
+            }
+            let mut at = shown.unwrap_or(end);
+            ui.spacing_mut().slider_width = (ui.available_width() - 420.0).max(120.0);
+            let slider = ui
+                .add(egui::Slider::new(&mut at, 0..=end.max(1)).show_value(false))
+                .on_hover_text("Drag to any moment of the run: it is shown exactly as it was");
+            if slider.changed() {
+                action = Some(Action::GoTo(at));
+            }
+            let start = self.document.scene().simulation.start_time;
+            #[expect(clippy::cast_precision_loss, reason = "a count of steps")]
+            let (now, last) = (start + at as f64 * step, start + end as f64 * step);
+            ui.label(format!("t = {} s of {} s", format::number(now), format::number(last)));
+            if shown.is_some() {
+                if ui
+                    .button("To the end")
+                    .on_hover_text("Back to where the run is")
+                    .clicked()
+                {
+                    action = Some(Action::GoTo(end));
+                }
+                if ui
+                    .button("Edit from here")
+                    .on_hover_text(
+                        "Make this moment the scene's start (positions, velocities and time), to change something and play a new future; undoable",
+                    )
+                    .clicked()
+                {
+                    action = Some(Action::EditFromHere);
+                }
+            }
+        });
+        action
+    }
+
+    /// Turns the moment shown into the scene's initial conditions (undoable).
+    fn edit_from_here(&mut self) {
+        let Some(simulation) = &self.runner.simulation else {
+            return;
+        };
+        let saved = simulation.saved_state(self.document.scene());
+        self.runner.reset();
+        self.document
+            .apply("edit from here", |scene| *scene = saved);
+        self.selection = None;
     }
 
     /// Lets the stopwatch see the run's events since the last frame.

@@ -95,7 +95,14 @@ impl Graphs {
         self.rects.resize(count, egui::Rect::NOTHING);
         for g in 0..count {
             ui.push_id(("graph", g), |ui| {
-                if let Some(a) = self.graph(ui, document, runner.recording.as_ref(), g) {
+                // Gone back in time: a cursor on the graphs at the moment shown.
+                let cursor = runner
+                    .timeline
+                    .as_ref()
+                    .and_then(|t| t.shown)
+                    .and(runner.simulation.as_ref())
+                    .map(physics::Simulation::time);
+                if let Some(a) = self.graph(ui, document, (runner.recording.as_ref(), cursor), g) {
                     action = Some(a);
                 }
             });
@@ -121,7 +128,7 @@ impl Graphs {
         &mut self,
         ui: &mut Ui,
         document: &mut Document,
-        recording: Option<&Recording>,
+        (recording, cursor): (Option<&Recording>, Option<f64>),
         g: usize,
     ) -> Option<Action> {
         // Only what the panel reads, not the whole scene, every frame.
@@ -296,6 +303,13 @@ impl Graphs {
                         .map(|k| [recording.at(k, across), recording.at(k, up)])
                         .collect();
                     plot.line(Line::new(label(q), points));
+                }
+                if let (Quantity::Time, Some(t)) = (&x, cursor) {
+                    plot.vline(
+                        VLine::new("shown", t)
+                            .color(egui::Color32::from_rgb(200, 60, 60))
+                            .width(1.5),
+                    );
                 }
                 if x == Quantity::Time {
                     for t in impact_marks(recording, &series) {

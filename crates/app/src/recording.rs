@@ -152,6 +152,15 @@ impl Recording {
     }
 
     /// The number of samples.
+    /// Forgets the samples and impacts after `time`, seconds: the run branches there.
+    pub fn truncate_after(&mut self, time: f64) {
+        let keep = (0..self.len())
+            .take_while(|&k| self.row(k)[0] <= time)
+            .count();
+        self.data.truncate(keep * self.width);
+        self.impacts.retain(|impact| impact.time <= time);
+    }
+
     pub fn len(&self) -> usize {
         self.data.len() / self.width
     }

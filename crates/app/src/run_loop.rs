@@ -11,6 +11,7 @@ use physics::{DVec2, LoadError, Scene, Simulation};
 use web_time::Instant;
 
 use crate::recording::Recording;
+use crate::timeline::Timeline;
 
 /// The frame time the app keeps to while physics is behind: 30 frames per second.
 /// Physics gets what is left of each frame after drawing and the rest of the app
@@ -50,6 +51,8 @@ pub struct Runner {
     pub start_energy: f64,
     /// Recent positions of each particle, when trails are shown.
     pub trails: Vec<VecDeque<DVec2>>,
+    /// The run's keyframes, to go back to any step of it.
+    pub timeline: Option<Timeline>,
 }
 
 impl Default for Runner {
@@ -67,6 +70,7 @@ impl Default for Runner {
             failure: None,
             start_energy: 0.0,
             trails: Vec::new(),
+            timeline: None,
         }
     }
 }
@@ -85,6 +89,7 @@ impl Runner {
         simulation.keep_ledger();
         self.start_energy = simulation.diagnostics().energy.total();
         self.recording = Some(Recording::start(&simulation));
+        self.timeline = Some(Timeline::start(&simulation));
         self.trails = vec![VecDeque::new(); simulation.len()];
         self.failure = None;
         self.debt = 0.0;
@@ -97,6 +102,7 @@ impl Runner {
     /// The scene's problems, if it is invalid.
     pub fn play(&mut self, scene: &Scene) -> Result<(), LoadError> {
         self.ensure_simulation(scene)?;
+        self.branch();
         if self.failure.is_none() {
             self.playing = true;
         }
@@ -123,12 +129,22 @@ impl Runner {
     pub fn step_once(&mut self, scene: &Scene, trails: bool) -> Result<(), LoadError> {
         self.pause();
         self.ensure_simulation(scene)?;
+        // Gone back in time: Step walks forward through the run as it was.
+        if let Some(timeline) = &self.timeline
+            && let Some(shown) = timeline.shown
+        {
+            self.go_to(shown + 1);
+            return Ok(());
+        }
         if let Some(simulation) = self.simulation.as_mut() {
             match simulation.step() {
                 Ok(()) => {
                     if let Some(recording) = &mut self.recording {
                         recording.note_impacts(simulation.take_impacts());
                         recording.after_step(simulation);
+                    }
+                    if let Some(timeline) = &mut self.timeline {
+                        timeline.after_step(simulation);
                     }
                 }
                 Err(error) => self.failure = Some(error.to_string()),
@@ -170,6 +186,9 @@ impl Runner {
                 recording.note_impacts(simulation.take_impacts());
                 recording.after_step(simulation);
             }
+            if let Some(timeline) = &mut self.timeline {
+                timeline.after_step(simulation);
+            }
             self.debt -= step;
             steps += 1;
             if clock.elapsed().as_secs_f64() > budget {
@@ -196,6 +215,52 @@ impl Runner {
     /// The speed achieved as a fraction of `time_scale`, when it falls short.
     pub fn shortfall(&self, time_scale: f64) -> Option<f64> {
         (self.playing && self.achieved < 0.95 * time_scale).then_some(self.achieved / time_scale)
+    }
+
+    /// Shows step `step` of the run (paused): the run's state there, from its keyframes.
+    /// The newest step is the live end of the run again.
+    pub fn go_to(&mut self, step: u64) {
+        self.pause();
+        let Some(timeline) = &mut self.timeline else {
+            return;
+        };
+        let step = step.min(timeline.end);
+        if timeline.live.is_none() {
+            timeline.live = self.simulation.take();
+        }
+        if step == timeline.end {
+            timeline.shown = None;
+            if let Some(live) = timeline.live.take() {
+                self.simulation = Some(live);
+            }
+        } else if let Some(past) = timeline.state_at(step) {
+            timeline.shown = Some(step);
+            self.simulation = Some(past);
+        }
+        self.trails.iter_mut().for_each(VecDeque::clear);
+    }
+
+    /// One step back in the run.
+    pub fn step_back(&mut self) {
+        if let Some(timeline) = &self.timeline {
+            let now = timeline.shown.unwrap_or(timeline.end);
+            self.go_to(now.saturating_sub(1));
+        }
+    }
+
+    /// Playing from a moment gone back to: the run after it is forgotten (graphs, impacts,
+    /// keyframes) and a new one goes on from there.
+    fn branch(&mut self) {
+        let Some(timeline) = &mut self.timeline else {
+            return;
+        };
+        let Some(step) = timeline.shown else {
+            return;
+        };
+        timeline.truncate(step);
+        if let (Some(recording), Some(simulation)) = (&mut self.recording, &self.simulation) {
+            recording.truncate_after(simulation.time());
+        }
     }
 
     fn record_trails(&mut self) {

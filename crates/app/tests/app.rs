@@ -1021,3 +1021,68 @@ fn the_protractor_reads_the_angle_between_its_arms() {
     let angle = protractor_reading(protractor, &[DVec2::ZERO]).expect("a reading");
     assert!((angle - 45.0).abs() < 1e-9, "{angle}°");
 }
+
+/// The time machine: after a run of the collision, Step back (,) shows the step before
+/// exactly (the same bits as a fresh run stopped there), the slider's far left the
+/// start, Step walks forward through the run as it was; Edit from here makes the moment
+/// shown the scene's start, time included, and Undo takes it back.
+#[test]
+fn the_timeline_goes_back_to_any_step_exactly_and_edits_from_there() {
+    let scene = physics::example("collision").unwrap().scene().unwrap();
+    let bits = |simulation: &physics::Simulation| -> Vec<u64> {
+        simulation
+            .positions()
+            .iter()
+            .chain(simulation.velocities())
+            .flat_map(|v| [v.x.to_bits(), v.y.to_bits()])
+            .collect()
+    };
+    let fresh = |steps: u64| {
+        let mut simulation = physics::Simulation::new(&scene).unwrap();
+        for _ in 0..steps {
+            simulation.step().unwrap();
+        }
+        simulation
+    };
+    let mut harness = harness(App::new(scene.clone()));
+    play_frames(&mut harness, 6);
+    let end = harness.state().runner.timeline.as_ref().expect("kept").end;
+    assert!(end > 100, "{end} steps");
+    harness.key_press(Key::Comma);
+    harness.run();
+    let app = harness.state();
+    let shown = app.runner.simulation.as_ref().expect("shown");
+    assert_eq!(app.runner.timeline.as_ref().unwrap().shown, Some(end - 1));
+    assert!(
+        bits(shown) == bits(&fresh(end - 1)),
+        "the step before, exactly"
+    );
+    harness.state_mut().perform(Action::GoTo(0));
+    harness.run();
+    assert_eq!(harness.state().time(), 0.0, "the start");
+    harness.key_press(Key::Period);
+    harness.run();
+    let walked = harness.state().runner.simulation.as_ref().unwrap();
+    assert!(
+        bits(walked) == bits(&fresh(1)),
+        "Step walks forward through the run"
+    );
+    harness.get_by_label("Edit from here").click();
+    harness.run();
+    let app = harness.state();
+    assert!(app.runner.simulation.is_none(), "back to editing");
+    let edited = app.document.scene();
+    let expected = fresh(1);
+    assert_eq!(
+        edited.simulation.start_time,
+        expected.time(),
+        "the time kept"
+    );
+    for (particle, x) in edited.particles.iter().zip(expected.positions()) {
+        assert_eq!(particle.position.to_dvec2(), *x, "{}", particle.name);
+    }
+    assert_eq!(app.document.undo_label(), Some("edit from here"));
+    harness.state_mut().perform(Action::Undo);
+    harness.run();
+    assert_eq!(harness.state().document.scene(), &scene, "undone");
+}

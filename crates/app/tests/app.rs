@@ -695,7 +695,7 @@ fn the_readouts_show_what_damping_took_and_the_numerical_error() {
 /// The impact list: after the paper's 4.3 collision (equal 1 kg masses, A at 20 m/s,
 /// impact parameter 0.53 × the sum of the radii: approach u = 20 √(1 − 0.53²) along the normal,
 /// impulse μ (1 + e) u = u with μ = ½ kg and e = 1, nothing lost) the list has one row,
-/// which shows that impulse.
+/// which shows that impulse; a click on its time goes back to it.
 #[test]
 fn the_impact_list_shows_each_impact_with_its_impulse() {
     let scene = physics::example("collision")
@@ -718,6 +718,18 @@ fn the_impact_list_shows_each_impact_with_its_impulse() {
     assert!((impacts[0].impulse - impulse).abs() < 1e-9, "{impacts:?}");
     harness.get_by_label(&newtonlab_app::format::number(impacts[0].impulse));
     harness.get_by_label("impulse (N·s)");
+    // A click on its time shows the run at the step the impact ends, its instant within.
+    let time = impacts[0].time;
+    harness
+        .get_by_label(&newtonlab_app::format::number(time))
+        .click();
+    harness.run();
+    let shown = harness.state().time();
+    let step = harness.state().document.scene().simulation.time_step;
+    assert!(
+        shown >= time && shown - time < step,
+        "shown at {shown} s, the impact at {time} s"
+    );
 }
 
 /// The Rod tool makes a pendulum: a drag from a ball to empty space above it ties the

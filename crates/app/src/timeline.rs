@@ -4,7 +4,7 @@
 //! step k is the keyframe at or before k, stepped forward to k.
 //!
 //! Memory is bounded however long the run: at most [`most_keyframes`] copies, fewer for
-//! larger scenes (a budget of [`BUDGET_BYTES`] at an estimated kilobyte per particle).
+//! larger scenes (a budget of `BUDGET_BYTES` at an estimated kilobyte per particle).
 //! When they are all used, every other one is dropped and the interval doubles, so a long
 //! run keeps its whole length at a coarser spacing, and going back to a moment costs at
 //! most one interval of steps.

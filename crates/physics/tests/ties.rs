@@ -558,3 +558,39 @@ fn a_rod_puts_its_ends_at_its_length_at_the_start() {
         "the velocity was all along the rod: {v}"
     );
 }
+
+/// A triple pendulum (three 1 kg bobs on 1 m rods, released level): one island of three
+/// links, so every row of the constraint solve is used. Over 10 s at 0.5 ms its energy
+/// stays within 1e-9 of its scale 6 m g L (measured 4.6e-8 J of 59 J), and every rod
+/// keeps its length to 1e-12. The bobs are 1 mm across so that they never strike each
+/// other: an impact between tied bobs is resolved as between free ones and then put
+/// back onto the rods, which takes energy (2.5 J in these 10 s with 0.1 m bobs; see
+/// `docs/scene-format.md`).
+#[test]
+fn a_triple_pendulum_keeps_its_energy_and_its_lengths() {
+    let scene = Scene::new()
+        .with_world(gravity_only())
+        .with_particle(Particle::new("A", 1.0).radius(0.001).position([1.0, 0.0]))
+        .with_particle(Particle::new("B", 1.0).radius(0.001).position([2.0, 0.0]))
+        .with_particle(Particle::new("C", 1.0).radius(0.001).position([3.0, 0.0]))
+        .with_tie(Tie::rod("top", [0.0, 0.0], "A", 1.0))
+        .with_tie(Tie::rod("middle", "A", "B", 1.0))
+        .with_tie(Tie::rod("bottom", "B", "C", 1.0))
+        .with_integrator(Integrator::Rk4, 5e-4);
+    let mut simulation = start(&scene);
+    let initial = simulation.diagnostics().energy.total();
+    let mut worst = 0.0_f64;
+    for k in 1..=1000 {
+        run_to(&mut simulation, f64::from(k) * 0.01);
+        let x = simulation.positions();
+        for (length, which) in [
+            (x[0].length(), "top"),
+            (x[0].distance(x[1]), "middle"),
+            (x[1].distance(x[2]), "bottom"),
+        ] {
+            assert!((length - 1.0).abs() < 1e-12, "{which} rod {length} m");
+        }
+        worst = worst.max((simulation.diagnostics().energy.total() - initial).abs());
+    }
+    assert!(worst < 1e-9 * 6.0 * G, "energy drifted by {worst:e} J");
+}

@@ -27,7 +27,12 @@ impl Simulation {
     /// modes changed.
     pub(super) fn begin_ties(&mut self, h: f64) -> bool {
         let constraints = &mut self.forces.constraints;
-        if constraints.is_empty() {
+        // Rods are always taut: only strings have modes to choose.
+        if !constraints
+            .links
+            .iter()
+            .any(crate::constraints::Link::is_string)
+        {
             return false;
         }
         let (x, v, w) = (
@@ -53,16 +58,30 @@ impl Simulation {
         constraints.choose_taut(x, v, w, &a, h) || changed
     }
 
-    /// Where string `k`'s event stands at the current state: a taut string's tension
-    /// (N), a slack string's room to its length (m). Positive until the event.
-    fn tie_event_value(&self, k: usize) -> f64 {
+    /// Where each string's event stands at the current state: a taut string's tension
+    /// (N), a slack string's room to its length (m). Positive until the event; a rod's
+    /// entry means nothing. The tensions, when needed, are solved once for all.
+    fn tie_event_values(&self) -> Vec<f64> {
         let constraints = &self.forces.constraints;
-        if constraints.taut[k] {
+        let links = 0..constraints.links.len();
+        let taut_strings = links
+            .clone()
+            .any(|k| constraints.taut[k] && constraints.links[k].is_string());
+        let tensions = if taut_strings {
             self.forces
-                .tensions(&self.state.position, &self.state.velocity)[k]
+                .tensions(&self.state.position, &self.state.velocity)
         } else {
-            constraints.slack(k, &self.state.position)
-        }
+            Vec::new()
+        };
+        links
+            .map(|k| {
+                if constraints.taut[k] {
+                    tensions.get(k).copied().unwrap_or(0.0)
+                } else {
+                    constraints.slack(k, &self.state.position)
+                }
+            })
+            .collect()
     }
 
     /// After a trial step of `taken` seconds: the first string to snap taut or go slack
@@ -75,10 +94,10 @@ impl Simulation {
         if constraints.is_empty() {
             return None;
         }
+        let values = self.tie_event_values();
         let due: Vec<(usize, f64)> = (0..constraints.links.len())
-            .filter(|&k| constraints.links[k].is_string())
-            .map(|k| (k, self.tie_event_value(k)))
-            .filter(|&(_, value)| value <= 0.0)
+            .filter(|&k| constraints.links[k].is_string() && values[k] <= 0.0)
+            .map(|k| (k, values[k]))
             .collect();
         if due.is_empty() {
             return None;
@@ -87,7 +106,7 @@ impl Simulation {
         let mut first: Option<(usize, f64)> = None;
         for (k, at_end) in due {
             self.state.clone_from(&self.start);
-            let at_start = self.tie_event_value(k);
+            let at_start = self.tie_event_values()[k];
             if at_start.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
                 continue; // due since the start: the next step's start deals with it
             }
@@ -119,7 +138,7 @@ impl Simulation {
                 0.5 * (lo + hi)
             };
             self.integrate_from_start(t);
-            let f = self.tie_event_value(k);
+            let f = self.tie_event_values()[k];
             if f > 0.0 {
                 (lo, f_lo) = (t, f);
                 if side == 1 {

@@ -4,6 +4,7 @@
 
 use glam::DVec2;
 
+use crate::forces::{coulomb, gravitation};
 use crate::scene::Scene;
 
 /// The fields at one point.
@@ -49,14 +50,15 @@ pub fn field_at(scene: &Scene, positions: &[DVec2], point: DVec2) -> FieldReadou
         if r == 0.0 {
             continue;
         }
+        // The laws the particles feel, with a unit test mass and a unit test charge.
         let r3 = r * r * r;
         if g != 0.0 {
-            readout.gravity += d * (g * particle.mass / r3);
-            readout.gravitational_potential -= g * particle.mass / r;
+            readout.gravity += d * (gravitation::strength(g, particle.mass, 1.0) / r3);
+            readout.gravitational_potential += gravitation::potential(g, particle.mass, 1.0, r);
         }
         if k != 0.0 && particle.charge != 0.0 {
-            readout.electric -= d * (k * particle.charge / r3);
-            readout.electric_potential += k * particle.charge / r;
+            readout.electric -= d * (coulomb::strength(k, particle.charge, 1.0) / r3);
+            readout.electric_potential += coulomb::potential(k, particle.charge, 1.0, r);
         }
     }
     readout

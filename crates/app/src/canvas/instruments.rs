@@ -248,18 +248,18 @@ fn draw_field(
     kind: FieldKind,
 ) {
     const SPACING: f32 = 40.0;
-    let mut world = scene.clone();
-    world.world.gravity = physics::Vector::ZERO;
+    // The particles' field alone: the uniform field would draw every arrow the same.
+    let uniform = scene.world.gravity.to_dvec2();
     let mut arrows = Vec::new();
     let columns = (rect.width() / SPACING).floor() as usize;
     let rows = (rect.height() / SPACING).floor() as usize;
     for row in 0..rows {
         for column in 0..columns {
             let at = rect.min + Vec2::new(column as f32 + 0.5, row as f32 + 0.5) * SPACING;
-            let f = field_at(&world, positions, view.to_world(rect, at));
+            let f = field_at(scene, positions, view.to_world(rect, at));
             let v = match kind {
                 FieldKind::Electric => f.electric,
-                FieldKind::Gravitational => f.gravity,
+                FieldKind::Gravitational => f.gravity - uniform,
             };
             if v.length() > 0.0 && v.is_finite() {
                 arrows.push((at, v));

@@ -106,6 +106,12 @@ impl Stopwatch {
         impacts: &[ImpactRecord],
         gate: Option<(DVec2, DVec2)>,
     ) {
+        if self.state == State::Stopped {
+            // Nothing to wait for: note what has happened, keep no copy of the positions.
+            self.seen = impacts.len();
+            self.last = None;
+            return;
+        }
         let new_impacts: Vec<f64> = impacts.iter().skip(self.seen).map(|i| i.time).collect();
         self.seen = impacts.len();
         let mut crossings = match (&self.last, gate) {
@@ -115,7 +121,8 @@ impl Stopwatch {
             _ => Vec::new(),
         };
         crossings.sort_by(f64::total_cmp);
-        self.last = Some((now, positions.to_vec()));
+        let gate_used = self.start_on == Trigger::Gate || self.stop_on == Trigger::Gate;
+        self.last = gate_used.then(|| (now, positions.to_vec()));
         let events = |trigger: Trigger| match trigger {
             Trigger::Hand => Vec::new(),
             Trigger::Impact => new_impacts.clone(),

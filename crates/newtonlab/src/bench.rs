@@ -6,6 +6,8 @@
 //!   n(n−1)/2 pairs once per force evaluation; reports pair interactions per second;
 //! - `pit` ([`physics::generated::ball_pit`]): `n` balls dropped into a box at the app's
 //!   time step (1 ms), measured from the drop, through the crash, to rest: contacts;
+//! - `mixed` ([`physics::generated::mixed`]): the pit with charges and springs, the scene
+//!   of `validate`'s processing-time table (the paper's 4.1), measured like the pit;
 //! - `cluster` ([`physics::generated::cluster`]): `n` bodies in orbit in a disc, their
 //!   gravitation summed with the Barnes–Hut tree; reports whole force evaluations per
 //!   second.
@@ -26,6 +28,9 @@ enum BenchScene {
     Cloud,
     /// Balls dropped into a box: impacts and resting contact.
     Pit,
+    /// The pit with every tenth ball charged and every tenth pair joined by a spring:
+    /// the scene of `validate`'s processing-time table (the paper's 4.1).
+    Mixed,
     /// A star cluster summed with the Barnes–Hut tree: gravitation at scale.
     Cluster,
 }
@@ -79,6 +84,9 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
         BenchScene::Pit => {
             physics::generated::ball_pit(args.particles).with_integrator(args.integrator, 1e-3)
         }
+        BenchScene::Mixed => {
+            physics::generated::mixed(args.particles).with_integrator(args.integrator, 1e-3)
+        }
         BenchScene::Cluster => {
             physics::generated::cluster(args.particles).with_integrator(args.integrator, 1e-3)
         }
@@ -101,7 +109,7 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
     // crashes and settles, so it is measured over a fixed simulated interval.
     let running = |simulation: &Simulation| match args.scene {
         BenchScene::Cloud | BenchScene::Cluster => start.elapsed() < budget,
-        BenchScene::Pit => simulation.time() < args.seconds,
+        BenchScene::Pit | BenchScene::Mixed => simulation.time() < args.seconds,
     };
     while running(&simulation) {
         simulation.step().map_err(fail)?;
@@ -144,11 +152,16 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
                 ),
             }
         }
-        BenchScene::Pit => {
+        BenchScene::Pit | BenchScene::Mixed => {
             let simulated = simulation.time();
             let threads = simulation.threads();
+            let what = if matches!(args.scene, BenchScene::Mixed) {
+                "mixed pit (charges, springs)"
+            } else {
+                "pit"
+            };
             println!(
-                "{n}-ball pit, {integrator}, time step 1 ms, {threads} thread(s): {steps} steps in {elapsed:.2} s (simulated 0 to {simulated:.2} s)"
+                "{n}-ball {what}, {integrator}, time step 1 ms, {threads} thread(s): {steps} steps in {elapsed:.2} s (simulated 0 to {simulated:.2} s)"
             );
             // One figure a line, "<number> <unit>", for scripts (docs/cli.md).
             println!("  {steps_per_second:.1} steps per second");

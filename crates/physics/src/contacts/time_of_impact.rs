@@ -136,6 +136,50 @@ impl Region {
     }
 }
 
+impl Region {
+    /// Whether the piece of path with control points `p` starts outside and certainly
+    /// crosses into the region exactly once: the Bernstein coefficients of its gap
+    /// change sign once, from positive to negative (a polynomial has no more roots in
+    /// the piece than its coefficients have sign changes, and an odd number when its
+    /// ends differ in sign). A slab, the largest of three gaps, is left to subdivision.
+    fn crosses_once(&self, p: &[DVec2; 4]) -> bool {
+        match *self {
+            Self::Disc { centre, reach } => {
+                let d = p.map(|q| q - centre);
+                let r2 = reach * reach;
+                let dot = |i: usize, j: usize| d[i].dot(d[j]);
+                // C(6, m) times each coefficient, as in `disc_clear`: the same signs.
+                one_sign_change(&[
+                    d[0].length_squared() - r2,
+                    dot(0, 1) - r2,
+                    6.0 * dot(0, 2) + 9.0 * d[1].length_squared() - 15.0 * r2,
+                    2.0 * dot(0, 3) + 18.0 * dot(1, 2) - 20.0 * r2,
+                    6.0 * dot(1, 3) + 9.0 * d[2].length_squared() - 15.0 * r2,
+                    dot(2, 3) - r2,
+                    d[3].length_squared() - r2,
+                ])
+            }
+            Self::HalfPlane {
+                point,
+                normal,
+                reach,
+            } => one_sign_change(&p.map(|q| (q - point).dot(normal) - reach)),
+            Self::Slab { .. } => false,
+        }
+    }
+}
+
+/// Whether `c` starts positive, ends negative, and changes sign once, with no zero
+/// (a zero coefficient could hide a touching root: left to subdivision).
+fn one_sign_change(c: &[f64]) -> bool {
+    let Some(first_negative) = c.iter().position(|&x| x < 0.0) else {
+        return false;
+    };
+    c[0] > 0.0
+        && c[..first_negative].iter().all(|&x| x > 0.0)
+        && c[first_negative..].iter().all(|&x| x < 0.0)
+}
+
 /// Whether the cubic D with control points `d` stays farther than `reach` from the
 /// origin: every Bernstein coefficient of |D(s)|² − reach² is positive. The product of two
 /// cubics is a sextic with coefficients `c[m] = Σ_{i+j=m} C(3,i) C(3,j) D[i]·D[j] / C(6,m)`;
@@ -183,9 +227,56 @@ fn search(region: &Region, path: &[DVec2; 4], s0: f64, s1: f64, depth: u32) -> O
     if depth == MAX_DEPTH {
         return (region.gap(path[3]) <= 0.0).then_some(s1);
     }
+    if region.crosses_once(path) {
+        return Some(s0 + (s1 - s0) * crossing(region, path, s1 - s0));
+    }
     let (left, right) = split(path);
     let mid = 0.5 * (s0 + s1);
     search(region, &left, s0, mid, depth + 1).or_else(|| search(region, &right, mid, s1, depth + 1))
+}
+
+/// The one crossing into `region` of a piece of path that [`Region::crosses_once`]: a
+/// parameter of the piece at which the centre is inside, within 2⁻⁴⁴ of the step (the
+/// piece spans `width` of it) after the crossing, like the subdivision's. Illinois
+/// regula falsi on the gap along the piece: superlinear, and the bracket never lost.
+fn crossing(region: &Region, piece: &[DVec2; 4], width: f64) -> f64 {
+    let tolerance = (-f64::from(MAX_DEPTH)).exp2() / width;
+    let (mut outside, mut inside) = (0.0, 1.0);
+    let (mut gap_outside, mut gap_inside) = (region.gap(piece[0]), region.gap(piece[3]));
+    // Which end moved last: Illinois halves the other end's gap when one end repeats.
+    let mut last_side = 0_i8;
+    for _ in 0..100 {
+        if inside - outside <= tolerance {
+            break;
+        }
+        let mut s = inside - gap_inside * (inside - outside) / (gap_inside - gap_outside);
+        if !(s > outside && s < inside) {
+            s = 0.5 * (outside + inside);
+        }
+        let gap = region.gap(point_at(piece, s));
+        if gap <= 0.0 {
+            (inside, gap_inside) = (s, gap);
+            if last_side == -1 {
+                gap_outside *= 0.5;
+            }
+            last_side = -1;
+        } else {
+            (outside, gap_outside) = (s, gap);
+            if last_side == 1 {
+                gap_inside *= 0.5;
+            }
+            last_side = 1;
+        }
+    }
+    inside
+}
+
+/// The point at parameter `s` of a cubic Bézier curve (de Casteljau).
+fn point_at(p: &[DVec2; 4], s: f64) -> DVec2 {
+    let q0 = p[0].lerp(p[1], s);
+    let q1 = p[1].lerp(p[2], s);
+    let q2 = p[2].lerp(p[3], s);
+    q0.lerp(q1, s).lerp(q1.lerp(q2, s), s)
 }
 
 #[cfg(test)]
@@ -293,5 +384,50 @@ mod tests {
             (first - (500.0 - 0.055) / 1000.0).abs() < 1e-12,
             "s = {first}"
         );
+    }
+
+    /// A curved path through a disc, entering and leaving within the step: the entry,
+    /// not the exit, to 1e-13 of the step, and a point inside. The path is
+    /// x = 0.3 t, y = 2 − 2.5 t² over 2 s (constant acceleration, so the Hermite path is
+    /// exact); the entry into the unit disc is the first root of
+    /// 0.09 t² + (2 − 2.5 t²)² = 1, found here by bisection on that formula.
+    #[test]
+    fn a_curved_entry_is_the_first_root() {
+        let h = 2.0;
+        let path = control_points(
+            DVec2::new(0.0, 2.0),
+            DVec2::new(0.3, 0.0),
+            DVec2::new(0.3 * h, 2.0 - 2.5 * h * h),
+            DVec2::new(0.3, -5.0 * h),
+            h,
+        );
+        let gap = |t: f64| 0.09 * t * t + (2.0 - 2.5 * t * t).powi(2) - 1.0;
+        let (mut outside, mut inside) = (0.0, 0.8); // gap(0.8) = 0.0576 + 0.16 − 1 < 0
+        for _ in 0..200 {
+            let mid = 0.5 * (outside + inside);
+            if gap(mid) > 0.0 {
+                outside = mid;
+            } else {
+                inside = mid;
+            }
+        }
+        let s = earliest_entry(&disc(1.0), &path).unwrap();
+        assert!(
+            (s * h - inside).abs() < 1e-13 * h,
+            "t = {} against {inside}",
+            s * h
+        );
+        assert!(gap(s * h) <= 1e-12, "inside at the instant returned");
+    }
+
+    /// The crossing's bracket: the sign rule counts changes, not ends.
+    #[test]
+    fn one_sign_change_only() {
+        assert!(one_sign_change(&[1.0, 0.5, -0.1, -2.0]));
+        assert!(!one_sign_change(&[1.0, -0.5, 0.1, -2.0]), "three changes");
+        assert!(!one_sign_change(&[1.0, -0.5, 0.1]), "ends outside");
+        assert!(!one_sign_change(&[-1.0, -0.5]), "starts inside");
+        assert!(!one_sign_change(&[1.0, 0.0, -1.0]), "a zero");
+        assert!(!one_sign_change(&[1.0, 2.0]), "never inside");
     }
 }

@@ -47,6 +47,8 @@ pub enum Action {
     GoTo(u64),
     /// Make the moment shown the scene's start.
     EditFromHere,
+    /// Show or hide the list of keys (F1).
+    ToggleHelp,
 }
 
 const fn command(key: Key) -> KeyboardShortcut {
@@ -91,6 +93,7 @@ pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
     (plain(Key::F9), Action::ToggleInspector),
     (plain(Key::F10), Action::ToggleGraphs),
     (plain(Key::F11), Action::ToggleProjector),
+    (plain(Key::F1), Action::ToggleHelp),
 ];
 
 impl Action {
@@ -104,6 +107,32 @@ impl Action {
         self.shortcut()
             .map(|s| ctx.format_shortcut(&s))
             .unwrap_or_default()
+    }
+
+    /// What a shortcut's action does, for the list of keys (F1).
+    pub fn describe(self) -> &'static str {
+        match self {
+            Self::New => "New scene",
+            Self::Open => "Open a scene file",
+            Self::Save => "Save",
+            Self::SaveAs => "Save as",
+            Self::Undo => "Undo",
+            Self::Redo => "Redo",
+            Self::Delete => "Delete the selected object",
+            Self::PlayPause => "Play or pause",
+            Self::Step => "One step forward",
+            Self::StepBack => "One step back in the run",
+            Self::Reset => "Reset to the scene as built",
+            Self::Fit => "Fit the view to the scene",
+            Self::Tool(tool) => tool.label(),
+            Self::Instrument(instrument) => instrument.label(),
+            Self::ToggleStopwatch => "Stopwatch",
+            Self::ToggleInspector => "Show or hide the inspector",
+            Self::ToggleGraphs => "Show or hide the graphs",
+            Self::ToggleProjector => "Projector mode",
+            Self::ToggleHelp => "This list of keys",
+            _ => "",
+        }
     }
 
     /// Whether the shortcut is a bare key, which a focused text field must keep.

@@ -25,6 +25,7 @@ pub mod canvas;
 pub mod document;
 pub mod files;
 pub mod format;
+pub mod help;
 pub mod inspector;
 pub mod picture;
 pub mod platform;
@@ -70,12 +71,15 @@ pub struct Launch {
     pub field_view: Option<FieldKind>,
 }
 
-/// Which side panels show, and projector mode (no panels, large text).
+/// Which side panels show, projector mode (no panels, large text), and the list of keys
+/// (F1).
 #[derive(Clone, Copy, Debug)]
+#[expect(clippy::struct_excessive_bools, reason = "independent on/off toggles")]
 pub struct Panels {
     pub inspector: bool,
     pub graphs: bool,
     pub projector: bool,
+    pub help: bool,
 }
 
 impl Default for Panels {
@@ -84,6 +88,7 @@ impl Default for Panels {
             inspector: true,
             graphs: true,
             projector: false,
+            help: false,
         }
     }
 }
@@ -242,6 +247,7 @@ impl App {
             }
             Action::FieldView(kind) => self.canvas.instruments.field_view = kind,
             Action::ToggleStopwatch => self.stopwatch.shown = !self.stopwatch.shown,
+            Action::ToggleHelp => self.panels.help = !self.panels.help,
             Action::StepBack => self.runner.step_back(),
             Action::GoTo(step) => self.runner.go_to(step),
             Action::EditFromHere => self.edit_from_here(),
@@ -694,14 +700,30 @@ impl App {
             })
             .response
             .on_hover_text("Tape measure, field probe, field view");
+            ui.menu_button("Help", |ui| {
+                item(
+                    ui,
+                    "Keys",
+                    "Every shortcut, and how to use the canvas from the keyboard",
+                    Action::ToggleHelp,
+                    true,
+                );
+            });
         });
         action
     }
 
     /// The actions whose shortcuts were pressed this frame. Bare keys are left to a
-    /// text field that has the keyboard.
-    fn shortcuts(ui: &Ui) -> Vec<Action> {
-        let typing = ui.ctx().egui_wants_keyboard_input();
+    /// focused control (a text field types them, a button takes Space and Enter), except
+    /// on the canvas, whose own keys are others (`canvas/keyboard.rs`).
+    fn shortcuts(ui: &Ui, canvas: Option<egui::Id>) -> Vec<Action> {
+        // A pass egui discards (to lay out again) sees the same keys once more: Space
+        // would play and pause at once. Shortcuts act in the first pass only.
+        if ui.ctx().current_pass_index() > 0 {
+            return Vec::new();
+        }
+        let focused = ui.ctx().memory(egui::Memory::focused);
+        let typing = focused.is_some() && focused != canvas;
         ui.input_mut(|i| {
             action::SHORTCUTS
                 .iter()
@@ -793,7 +815,7 @@ impl App {
         if (ui.ctx().zoom_factor() - zoom).abs() > 1e-3 {
             ui.ctx().set_zoom_factor(zoom);
         }
-        let mut actions = Self::shortcuts(ui);
+        let mut actions = Self::shortcuts(ui, self.canvas.id);
 
         egui::Panel::top("menu").show(ui, |ui| actions.extend(self.menu(ui)));
         egui::Panel::top("toolbar").show(ui, |ui| {
@@ -866,6 +888,7 @@ impl App {
             self.perform(action);
         }
         self.stopwatch_window(ui);
+        help::window(ui.ctx(), &mut self.panels.help);
         self.take_picture(ui);
         #[cfg(not(target_arch = "wasm32"))]
         self.keep_copy();

@@ -1098,3 +1098,128 @@ fn the_timeline_goes_back_to_any_step_exactly_and_edits_from_there() {
     harness.run();
     assert_eq!(harness.state().document.scene(), &scene, "undone");
 }
+
+/// Whether the canvas has the keyboard focus (its accessible name starts "Canvas:").
+fn canvas_focused(harness: &Harness<'_, App>) -> bool {
+    use egui_kittest::kittest::NodeT as _;
+    harness
+        .get_by_label_contains("Canvas:")
+        .accesskit_node()
+        .is_focused()
+}
+
+/// Presses Tab until `done` holds, at most 300 times: what Tab reaches.
+fn tab_until(harness: &mut Harness<'_, App>, what: &str, done: impl Fn(&Harness<'_, App>) -> bool) {
+    for _ in 0..300 {
+        if done(harness) {
+            return;
+        }
+        harness.key_press(Key::Tab);
+        harness.run();
+    }
+    panic!("Tab never reaches {what}");
+}
+
+/// The walk-through with the keyboard alone: Tab reaches the canvas; 2 and Enter
+/// add a particle at the view's centre; the arrow keys move it a grid step (Shift a
+/// tenth); 3 and Enter hang it on a spring from a fixed point; Tab on the canvas
+/// selects the particle again; Escape, and Tab reaches its mass field, where 2 kg is
+/// typed; Escape, Space plays; the readouts show the energy. The
+/// spring starts at its natural length with the particle at rest, so the particle
+/// falls: its energy stays at the start's (rk4, 1e-6 J), and every control on the way
+/// has a name (the harness checks that after every frame).
+#[test]
+fn a_scene_built_and_run_with_the_keyboard_alone() {
+    let mut harness = harness(App::new(Scene::new()));
+    tab_until(&mut harness, "the canvas", canvas_focused);
+    harness.key_press(Key::Num2);
+    harness.run();
+    harness.key_press(Key::Enter);
+    harness.run();
+    let app = harness.state();
+    assert_eq!(app.document.scene().particles.len(), 1, "Enter added one");
+    assert_eq!(app.selection, Some(Selection::Particle(0)));
+    let start = app.document.scene().particles[0].position.to_dvec2();
+    let step = newtonlab_app::canvas::nice_length(80.0 / app.canvas.view.pixels_per_metre) / 10.0;
+    assert!(
+        start.distance((app.canvas.view.center / step).round() * step) < 1e-12,
+        "at the view's centre, on the grid: {start}"
+    );
+    harness.key_press(Key::ArrowRight);
+    harness.key_press(Key::ArrowUp);
+    harness.run();
+    harness.key_press_modifiers(Modifiers::SHIFT, Key::ArrowLeft);
+    harness.run();
+    let moved = harness.state().document.scene().particles[0]
+        .position
+        .to_dvec2();
+    assert!(
+        moved.distance(start + DVec2::new(0.9 * step, step)) < 1e-12,
+        "moved by (0.9, 1) grid steps: {moved} from {start}"
+    );
+    harness.key_press(Key::Num3);
+    harness.run();
+    harness.key_press(Key::Enter);
+    harness.run();
+    let scene = harness.state().document.scene().clone();
+    assert_eq!(scene.springs.len(), 1, "Enter hung a spring on it");
+    assert!(scene.springs[0].natural_length > 0.0);
+    assert_eq!(harness.state().selection, Some(Selection::Spring(0)));
+    harness.key_press(Key::Tab);
+    harness.run();
+    assert_eq!(
+        harness.state().selection,
+        Some(Selection::Particle(0)),
+        "Tab on the canvas goes round the objects"
+    );
+    harness.key_press(Key::Escape);
+    harness.run();
+    tab_until(&mut harness, "the mass field", |h| {
+        use egui_kittest::kittest::NodeT as _;
+        h.query_by_label("mass")
+            .is_some_and(|n| n.accesskit_node().is_focused())
+    });
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.get_by_label("mass").type_text("2");
+    harness.key_press(Key::Enter);
+    harness.run();
+    harness.key_press(Key::Escape);
+    harness.run();
+    let particle = &harness.state().document.scene().particles[0];
+    assert_eq!(particle.mass, 2.0, "typed");
+    harness.key_press(Key::Space);
+    harness.run_steps(10);
+    harness.key_press(Key::Space);
+    harness.run();
+    let simulation = harness
+        .state()
+        .runner
+        .simulation
+        .as_ref()
+        .expect("it plays");
+    assert!(simulation.time() > 0.0, "Space played it");
+    harness.get_by_label("total (J)");
+    let energy = simulation.diagnostics().energy.total();
+    let start_energy = {
+        let mut at_start = physics::Simulation::new(harness.state().document.scene()).unwrap();
+        at_start.step_to(0.0).unwrap();
+        at_start.diagnostics().energy.total()
+    };
+    assert!(
+        (energy - start_energy).abs() < 1e-6,
+        "energy {energy} J against {start_energy} J at the start"
+    );
+    assert!(harness.unnamed_widgets().is_empty());
+}
+
+/// The list of keys (F1) shows every shortcut and the canvas's keys.
+#[test]
+fn f1_lists_the_keys() {
+    let mut harness = harness(App::new(one_ball()));
+    harness.key_press(Key::F1);
+    harness.run();
+    assert!(harness.state().panels.help);
+    harness.get_by_label("Play or pause");
+    harness.get_by_label("Select the next / previous object");
+    harness.get_by_label("This list of keys");
+}

@@ -387,7 +387,8 @@ impl super::Canvas {
     /// The probe goes where the canvas is clicked or dragged, and a grid step (Shift: a
     /// tenth of one) along an arrow key.
     fn place_probe(&mut self, ui: &egui::Ui, response: &egui::Response, world: Option<DVec2>) {
-        if (response.clicked() || response.dragged_by(egui::PointerButton::Primary))
+        if (response.clicked_by(egui::PointerButton::Primary)
+            || response.dragged_by(egui::PointerButton::Primary))
             && let Some(world) = world
         {
             self.instruments.probe = Some(world);

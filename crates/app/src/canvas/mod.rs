@@ -17,6 +17,7 @@
 
 mod draw;
 mod instruments;
+mod keyboard;
 mod tools;
 mod view;
 
@@ -160,6 +161,8 @@ pub struct Canvas {
     pub rect: Rect,
     /// The tape measure, the probe and the field view.
     pub instruments: Instruments,
+    /// The canvas's widget id, once drawn: the keys it keeps while focused.
+    pub id: Option<egui::Id>,
 }
 
 impl Default for Canvas {
@@ -177,6 +180,7 @@ impl Default for Canvas {
             framing: Some(Framing::Fit),
             rect: Rect::from_min_size(Pos2::ZERO, Vec2::new(800.0, 600.0)),
             instruments: Instruments::default(),
+            id: None,
         }
     }
 }
@@ -258,6 +262,7 @@ impl Canvas {
     ) {
         let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click_and_drag());
         let rect = response.rect;
+        self.id = Some(response.id);
         // A canvas that changes size (a panel hidden, projector mode, a resized window)
         // still shows all it showed: the scale follows the dimension that shrank most.
         if self.rect.area() > 0.0 && (rect.size() - self.rect.size()).length() > 0.5 {
@@ -306,6 +311,16 @@ impl Canvas {
         );
         self.draw_scale_bar(&painter, rect);
 
+        self.keyboard(ui, &response, document, &frame, selection, editable);
+        if response.has_focus() {
+            // Visible focus: the keyboard acts on the canvas (Escape leaves it).
+            painter.rect_stroke(
+                rect.shrink(1.0),
+                0.0,
+                ui.visuals().selection.stroke,
+                egui::StrokeKind::Inside,
+            );
+        }
         if self.instruments.active.is_some() {
             self.measure(
                 ui,
@@ -317,7 +332,7 @@ impl Canvas {
             );
         } else if editable {
             self.edit(ui, &response, rect, document, &frame, selection);
-        } else if response.clicked() {
+        } else if response.clicked_by(egui::PointerButton::Primary) {
             let pointer = response.interact_pointer_pos().unwrap_or(rect.center());
             *selection = self.hit(rect, document.scene(), &frame, pointer);
         } else if response.dragged_by(egui::PointerButton::Primary) {

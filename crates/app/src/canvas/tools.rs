@@ -150,16 +150,12 @@ impl Canvas {
         if response.drag_stopped_by(egui::PointerButton::Primary) {
             self.release(rect, document, frame, selection);
         }
-        if response.clicked() {
+        if response.clicked_by(egui::PointerButton::Primary) {
             let at = response.interact_pointer_pos().unwrap_or(pointer);
             match self.tool {
                 Tool::Particle => {
-                    let name = document.unused_name("p");
                     let position = snap(self.view.to_world(rect, at));
-                    let mut particle = Particle::new(name, 1.0).position(position);
-                    particle.radius = nice_length(12.0 / self.view.pixels_per_metre).min(0.5);
-                    document.apply("add particle", |scene| scene.particles.push(particle));
-                    *selection = Some(Selection::Particle(document.scene().particles.len() - 1));
+                    *selection = Some(self.add_particle(document, position));
                 }
                 _ => *selection = self.hit(rect, document.scene(), frame, at),
             }
@@ -167,7 +163,7 @@ impl Canvas {
     }
 
     /// The snapping grid: a tenth of the drawn grid's spacing.
-    fn snap_step(&self) -> f64 {
+    pub(super) fn snap_step(&self) -> f64 {
         nice_length(80.0 / self.view.pixels_per_metre) / 10.0
     }
 
@@ -311,38 +307,72 @@ impl Canvas {
                         .map_or(1.0, |k| frame.positions[k].distance(frame.positions[from])),
                     Endpoint::Point(p) => p.to_dvec2().distance(frame.positions[from]),
                 };
-                let from = scene.particles[from].name.as_str();
-                if tool == Tool::Spring {
-                    let spring = Spring::new(document.unused_name("s"), from, target, 10.0, length);
-                    document.apply("add spring", |scene| scene.springs.push(spring));
-                    *selection = Some(Selection::Spring(document.scene().springs.len() - 1));
-                } else if length > 0.0 {
-                    // A rod or string as long as the drag: it holds the scene as drawn.
-                    let (tie, label) = if tool == Tool::Rod {
-                        (
-                            Tie::rod(document.unused_name("rod"), from, target, length),
-                            "add rod",
-                        )
-                    } else {
-                        let name = document.unused_name("string");
-                        (Tie::string(name, from, target, length), "add string")
-                    };
-                    document.apply(label, |scene| scene.ties.push(tie));
-                    *selection = Some(Selection::Tie(document.scene().ties.len() - 1));
+                if let Some(added) = add_link(document, tool, from, target, length) {
+                    *selection = Some(added);
                 }
             }
             Some(Drag::NewRamp { from, to }) => {
                 if from.distance(to) > tolerance {
-                    let name = document.unused_name("r");
-                    document.apply("add ramp", |scene| {
-                        scene.ramps.push(Ramp::new(name, from, to));
-                    });
-                    *selection = Some(Selection::Ramp(document.scene().ramps.len() - 1));
+                    *selection = Some(add_ramp(document, from, to));
                 }
             }
             _ => document.end_gesture(),
         }
     }
+}
+
+impl Canvas {
+    /// Adds a particle of 1 kg at `position`, its radius about 12 pixels at this zoom
+    /// (at most 0.5 m).
+    pub(super) fn add_particle(&self, document: &mut Document, position: DVec2) -> Selection {
+        let name = document.unused_name("p");
+        let mut particle = Particle::new(name, 1.0).position(position);
+        particle.radius = nice_length(12.0 / self.view.pixels_per_metre).min(0.5);
+        document.apply("add particle", |scene| scene.particles.push(particle));
+        Selection::Particle(document.scene().particles.len() - 1)
+    }
+}
+
+/// Adds the spring, rod or string of `tool` from particle `from` to `target`, `length`
+/// long (a spring's natural length; a rod or string holds the scene as drawn). A rod or
+/// string of no length is not added.
+pub(super) fn add_link(
+    document: &mut Document,
+    tool: Tool,
+    from: usize,
+    target: Endpoint,
+    length: f64,
+) -> Option<Selection> {
+    let from = document.scene().particles[from].name.clone();
+    let from = from.as_str();
+    if tool == Tool::Spring {
+        let spring = Spring::new(document.unused_name("s"), from, target, 10.0, length);
+        document.apply("add spring", |scene| scene.springs.push(spring));
+        return Some(Selection::Spring(document.scene().springs.len() - 1));
+    }
+    if length <= 0.0 {
+        return None;
+    }
+    let (tie, label) = if tool == Tool::Rod {
+        (
+            Tie::rod(document.unused_name("rod"), from, target, length),
+            "add rod",
+        )
+    } else {
+        let name = document.unused_name("string");
+        (Tie::string(name, from, target, length), "add string")
+    };
+    document.apply(label, |scene| scene.ties.push(tie));
+    Some(Selection::Tie(document.scene().ties.len() - 1))
+}
+
+/// Adds a ramp from `from` to `to`.
+pub(super) fn add_ramp(document: &mut Document, from: DVec2, to: DVec2) -> Selection {
+    let name = document.unused_name("r");
+    document.apply("add ramp", |scene| {
+        scene.ramps.push(Ramp::new(name, from, to));
+    });
+    Selection::Ramp(document.scene().ramps.len() - 1)
 }
 
 impl Drag {

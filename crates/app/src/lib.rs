@@ -567,11 +567,11 @@ impl App {
                     )
                     .clicked()
                 {
-                    web::copy_link(self.document.scene());
-                    self.files.message = Some(
-                        "A link to this scene is in the address bar and on the clipboard."
+                    self.files.message = Some(match web::copy_link(self.document.scene()) {
+                        Ok(_) => "A link to this scene is in the address bar and on the clipboard."
                             .to_owned(),
-                    );
+                        Err(reason) => reason,
+                    });
                 }
             })
             .response

@@ -202,10 +202,21 @@ fn json_string(text: &str) -> String {
 
 /// Puts a link to `scene` in the address bar and on the clipboard; returns it. The link
 /// is remembered as already opened, so reloading the page keeps later edits.
-pub fn copy_link(scene: &Scene) -> String {
+///
+/// # Errors
+/// A scene too large for a link (the 20,000-star cluster) is refused with the reason,
+/// rather than given a link that would not open.
+pub fn copy_link(scene: &Scene) -> Result<String, String> {
     let fragment = share::encode(scene);
+    if fragment.len() > share::MAX_LINK {
+        return Err(format!(
+            "This scene is too large for a link ({} characters; the limit is {}): save it as a file instead.",
+            fragment.len(),
+            share::MAX_LINK
+        ));
+    }
     browser::store(LINK_KEY, &fragment);
     let url = browser::set_fragment(&fragment);
     browser::copy_to_clipboard(&url);
-    url
+    Ok(url)
 }

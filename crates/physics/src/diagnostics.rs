@@ -86,14 +86,22 @@ pub(crate) fn measure(forces: &ForceModel, state: &State) -> Diagnostics {
         .fold(0.0, |sum, e| sum + e);
     let g = forces.gravitational_constant.unwrap_or(0.0);
     let k = forces.coulomb_constant.unwrap_or(0.0);
-    let ids = &forces.interacting;
+    let mut ids = forces.interacting.as_slice();
+    if let Some(theta) = forces.tree {
+        // Gravitation through the tree, as the forces are; then the charged pairs
+        // directly, and less the pairs of two fixed particles the tree counted.
+        energy.gravitation = tree_gravitation(forces, state, g, theta);
+        ids = &forces.charged;
+    }
     for (n, &i) in ids.iter().enumerate() {
         for &j in &ids[n + 1..] {
             if forces.is_fixed(i) && forces.is_fixed(j) {
                 continue;
             }
             let r = state.position[i].distance(state.position[j]);
-            energy.gravitation += gravitation::potential(g, forces.mass[i], forces.mass[j], r);
+            if forces.tree.is_none() {
+                energy.gravitation += gravitation::potential(g, forces.mass[i], forces.mass[j], r);
+            }
             energy.electrostatic += coulomb::potential(k, forces.charge[i], forces.charge[j], r);
         }
     }
@@ -102,6 +110,36 @@ pub(crate) fn measure(forces: &ForceModel, state: &State) -> Diagnostics {
         energy,
         momentum,
     }
+}
+
+/// The gravitational potential energy summed by the Barnes–Hut tree (opening angle
+/// `theta`), without the pairs of two fixed particles, which the direct sum leaves out.
+fn tree_gravitation(forces: &ForceModel, state: &State, g: f64, theta: f64) -> f64 {
+    if g == 0.0 {
+        return 0.0;
+    }
+    let x = &state.position;
+    let all = crate::forces::tree::potential_energy(
+        g,
+        theta,
+        &forces.interacting,
+        (x, &forces.mass),
+        &forces.workers,
+    );
+    let fixed: Vec<usize> = forces
+        .interacting
+        .iter()
+        .copied()
+        .filter(|&i| forces.is_fixed(i))
+        .collect();
+    let mut both_fixed = 0.0;
+    for (n, &i) in fixed.iter().enumerate() {
+        for &j in &fixed[n + 1..] {
+            both_fixed +=
+                gravitation::potential(g, forces.mass[i], forces.mass[j], x[i].distance(x[j]));
+        }
+    }
+    all - both_fixed
 }
 
 pub(crate) fn particle(

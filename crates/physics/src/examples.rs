@@ -1,6 +1,6 @@
 //! The built-in example scenes: one registry that the command line (`example:NAME`), the
 //! tests, the validation report and the app's Examples menu all read. The files live in
-//! `examples/scenes/` and are compiled in; the largest scene is made by code instead
+//! `examples/scenes/` and are compiled in; the largest scenes are made by code instead
 //! ([`crate::generated`]), since ten thousand particles in a file would only weigh down
 //! the program (and the web page) that carries it.
 
@@ -62,6 +62,12 @@ macro_rules! examples {
         }),*, Example {
             name: "ball-pit-10000",
             source: Source::Generated(ball_pit_10000),
+        }, Example {
+            name: "star-cluster",
+            source: Source::Generated(crate::generated::star_cluster),
+        }, Example {
+            name: "colliding-discs",
+            source: Source::Generated(crate::generated::colliding_discs),
         }];
     };
 }

@@ -209,7 +209,14 @@ impl ForceModel {
             None => self.direct(x, force, g, k, &self.interacting),
             Some(theta) => {
                 if g != 0.0 {
-                    tree::gravitation(g, theta, &self.interacting, x, &self.mass, force);
+                    tree::gravitation(
+                        g,
+                        theta,
+                        &self.interacting,
+                        (x, &self.mass),
+                        &self.workers,
+                        force,
+                    );
                 }
                 if k != 0.0 {
                     self.direct(x, force, 0.0, k, &self.charged);

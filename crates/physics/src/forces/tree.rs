@@ -13,6 +13,8 @@
 
 use glam::DVec2;
 
+use crate::parallel::Workers;
+
 /// Bodies per leaf: below this a square is summed directly.
 const LEAF: usize = 16;
 /// Deepest square: bodies closer than 2⁻⁴⁸ of the whole extent share a leaf.
@@ -45,21 +47,69 @@ fn add_quadrupole(q: &mut [f64; 3], m: f64, r: DVec2) {
 
 /// Adds G mᵢ Σ mⱼ (xⱼ − xᵢ)/|xⱼ − xᵢ|³ to `force[i]` for each body i of `bodies`, with
 /// the sum over the other bodies approximated as above.
+///
+/// Each body's sum is its own, so the bodies are shared out among `workers`' threads
+/// with the same bits for any number of them.
 pub(crate) fn gravitation(
     g: f64,
     theta: f64,
     bodies: &[usize],
-    x: &[DVec2],
-    mass: &[f64],
+    (x, mass): (&[DVec2], &[f64]),
+    workers: &Workers,
     force: &mut [DVec2],
 ) {
     if bodies.len() < 2 {
         return;
     }
     let tree = Tree::build(bodies, x, mass);
-    for &i in bodies {
-        force[i] += tree.acceleration(i, theta, x, mass) * (g * mass[i]);
+    let mut accelerations = Vec::with_capacity(bodies.len());
+    workers.collect_into(bodies.len(), &mut accelerations, |range, out| {
+        out.extend(
+            bodies[range]
+                .iter()
+                .map(|&i| tree.acceleration(i, theta, x, mass)),
+        );
+    });
+    for (&i, a) in bodies.iter().zip(accelerations) {
+        force[i] += a * (g * mass[i]);
     }
+}
+
+/// The gravitational potential energy of `bodies`, −G Σ mᵢ mⱼ / rᵢⱼ over their pairs,
+/// with each body's potential summed through the tree as its force is (monopole and
+/// quadrupole of each cell far enough away): the energy to the accuracy of the forces.
+/// The bodies are shared out among `workers`' threads and their terms added in order:
+/// the same bits for any number of threads.
+pub(crate) fn potential_energy(
+    g: f64,
+    theta: f64,
+    bodies: &[usize],
+    (x, mass): (&[DVec2], &[f64]),
+    workers: &Workers,
+) -> f64 {
+    if bodies.len() < 2 {
+        return 0.0;
+    }
+    let tree = Tree::build(bodies, x, mass);
+    let mut terms = Vec::with_capacity(bodies.len());
+    workers.collect_into(bodies.len(), &mut terms, |range, out| {
+        out.extend(
+            bodies[range]
+                .iter()
+                .map(|&i| mass[i] * tree.inverse_distance_sum(i, theta, x, mass)),
+        );
+    });
+    // Each pair is counted from both ends.
+    -0.5 * g * terms.iter().sum::<f64>()
+}
+
+/// What a walk of the tree meets.
+enum Term<'a> {
+    /// A cell far enough away to act as a whole: the cell, D from the body to its
+    /// centre of mass, and |D|².
+    Far(&'a Node, DVec2, f64),
+    /// Another body, one at a time.
+    Near(usize),
 }
 
 struct Tree {
@@ -188,10 +238,11 @@ impl Tree {
         index
     }
 
-    /// Σ mⱼ (xⱼ − xᵢ)/|xⱼ − xᵢ|³ over the other bodies, approximated (per kg and per G).
-    fn acceleration(&self, i: usize, theta: f64, x: &[DVec2], mass: &[f64]) -> DVec2 {
+    /// Walks the tree for body `i`, giving `visit` each cell far enough away (its side
+    /// under `theta` times its distance, and `i` not inside it) and every other body of
+    /// the cells that are not.
+    fn walk(&self, i: usize, theta: f64, x: &[DVec2], mut visit: impl FnMut(Term<'_>)) {
         let xi = x[i];
-        let mut sum = DVec2::ZERO;
         let mut stack = Vec::with_capacity(4 * DEPTH as usize);
         stack.push(0_usize);
         while let Some(n) = stack.pop() {
@@ -203,6 +254,25 @@ impl Tree {
             let r2 = d.length_squared();
             let inside = xi.cmpge(node.corner).all() && xi.cmplt(node.corner + node.side).all();
             if !inside && node.side * node.side < theta * theta * r2 {
+                visit(Term::Far(node, d, r2));
+                continue;
+            }
+            match node.quarters {
+                Some(quarters) => stack.extend(quarters.into_iter().rev()),
+                None => self.order[node.start..node.end]
+                    .iter()
+                    .filter(|&&j| j != i)
+                    .for_each(|&j| visit(Term::Near(j))),
+            }
+        }
+    }
+
+    /// Σ mⱼ (xⱼ − xᵢ)/|xⱼ − xᵢ|³ over the other bodies, approximated (per kg and per G).
+    fn acceleration(&self, i: usize, theta: f64, x: &[DVec2], mass: &[f64]) -> DVec2 {
+        let xi = x[i];
+        let mut sum = DVec2::ZERO;
+        self.walk(i, theta, x, |term| match term {
+            Term::Far(node, d, r2) => {
                 // Monopole and quadrupole: with D from the body to the centre,
                 // M D/|D|³ − Q D/|D|⁵ + (5/2)(DᵀQD) D/|D|⁷.
                 let [xx, xy, yy] = node.quadrupole;
@@ -212,21 +282,31 @@ impl Tree {
                 let inverse_r5 = inverse_r3 * inverse_r2;
                 sum += d * (node.mass * inverse_r3) - qd * inverse_r5
                     + d * (2.5 * d.dot(qd) * inverse_r5 * inverse_r2);
-                continue;
             }
-            match node.quarters {
-                Some(quarters) => stack.extend(quarters.into_iter().rev()),
-                None => {
-                    for &j in &self.order[node.start..node.end] {
-                        if j != i {
-                            let d = x[j] - xi;
-                            let r2 = d.length_squared();
-                            sum += d * (mass[j] / (r2 * r2.sqrt()));
-                        }
-                    }
-                }
+            Term::Near(j) => {
+                let d = x[j] - xi;
+                let r2 = d.length_squared();
+                sum += d * (mass[j] / (r2 * r2.sqrt()));
             }
-        }
+        });
+        sum
+    }
+
+    /// Σ mⱼ / |xⱼ − xᵢ| over the other bodies, approximated like [`Self::acceleration`]:
+    /// a far cell's monopole and quadrupole, M/|D| + (DᵀQD)/(2|D|⁵) (per kg and per G).
+    fn inverse_distance_sum(&self, i: usize, theta: f64, x: &[DVec2], mass: &[f64]) -> f64 {
+        let xi = x[i];
+        let mut sum = 0.0;
+        self.walk(i, theta, x, |term| match term {
+            Term::Far(node, d, r2) => {
+                let [xx, xy, yy] = node.quadrupole;
+                let qd = DVec2::new(xx * d.x + xy * d.y, xy * d.x + yy * d.y);
+                let inverse_r = 1.0 / r2.sqrt();
+                let inverse_r5 = inverse_r * inverse_r * inverse_r * inverse_r * inverse_r;
+                sum += node.mass * inverse_r + 0.5 * d.dot(qd) * inverse_r5;
+            }
+            Term::Near(j) => sum += mass[j] / x[j].distance(xi),
+        });
         sum
     }
 }

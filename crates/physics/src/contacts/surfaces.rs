@@ -1,0 +1,255 @@
+//! The contacts at the start of a step: what touches (pairs of particles, particles on
+//! ramps and walls), the impacts happening right now (a struck row of balls passes its
+//! blow along here), and the normal force and friction of particles resting on surfaces,
+//! which join the smooth forces for the step.
+
+// Particle indices are u32 in the contact lists, as in the module above.
+#![expect(
+    clippy::cast_possible_truncation,
+    reason = "u32 particle indices, see contacts/mod.rs"
+)]
+
+use glam::DVec2;
+
+use super::broad_phase::Aabb;
+use super::{
+    Applied, Contacts, Impact, TOUCHING, apply_impulse, approach_along, fat_margin, half_thickness,
+};
+use crate::forces::{ForceModel, SurfaceContact};
+use crate::profile::{Profiler, Stage};
+use crate::state::State;
+
+/// What touches at the start of the step: the resting solver's rows, and what the
+/// impact search leaves alone.
+#[derive(Clone, Debug, Default)]
+pub(super) struct StartContacts {
+    /// Pairs (i < j) touching, ascending.
+    pub pairs: Vec<(u32, u32)>,
+    /// (particle, obstacle) touching, ascending.
+    pub surfaces: Vec<(u32, u32)>,
+    /// The touching pairs by particle.
+    pub by_particle: Adjacency,
+    /// Scratch: each touching contact and its normal.
+    pub normals: Vec<(Impact, DVec2)>,
+}
+
+impl Contacts {
+    /// Finds what touches at the start of a step of `h`, applies the impacts happening now
+    /// (a struck row of balls passes the blow along here), and puts particles resting on
+    /// surfaces under their normal force. Returns whether velocities or the forces
+    /// changed.
+    pub fn begin_step(
+        &mut self,
+        state: &mut State,
+        forces: &mut ForceModel,
+        h: f64,
+        profiler: &mut Profiler,
+    ) -> bool {
+        let had_surface_contacts = !forces.surface_contacts.is_empty();
+        self.applied.clear();
+        forces.surface_contacts.clear();
+        self.find_touching(state, forces, h, profiler);
+        let resting_speed = self.resting_speed(h);
+        let mut changed = self.impacts_now(state, forces, resting_speed);
+        // Friction needs to know how hard the other forces press and pull.
+        let frictional = self
+            .touching
+            .surfaces
+            .iter()
+            .any(|&(_, k)| self.obstacles[k as usize].friction > 0.0);
+        let mut free = Vec::new();
+        if frictional {
+            free.resize(state.len(), DVec2::ZERO);
+            forces.accelerations(&state.position, &state.velocity, &mut free);
+        }
+        for &(p, k) in &self.touching.surfaces {
+            let (p, obstacle) = (p as usize, &self.obstacles[k as usize]);
+            let (distance, normal) = obstacle.shape.distance(state.position[p]);
+            let approach = -state.velocity[p].dot(normal);
+            if approach < -resting_speed {
+                continue; // leaving the surface
+            }
+            if approach > 0.0 {
+                state.velocity[p] += normal * approach;
+                changed = true;
+            }
+            if distance < self.radius[p] {
+                // Sit exactly on the surface.
+                state.position[p] += normal * (self.radius[p] - distance);
+            }
+            let tangential = state.velocity[p] - normal * state.velocity[p].dot(normal);
+            let sliding = if obstacle.friction > 0.0 {
+                let (pressing, pull) =
+                    (-free[p].dot(normal), free[p] - normal * free[p].dot(normal));
+                let limit = obstacle.friction * pressing.max(0.0);
+                if tangential.length() <= limit * h && pull.length() <= limit {
+                    // Friction stops it within this step and can hold it: static.
+                    state.velocity[p] -= tangential;
+                    changed |= tangential != DVec2::ZERO;
+                    None
+                } else {
+                    // Sliding, or about to start sliding the way it is pulled.
+                    tangential.try_normalize().or_else(|| pull.try_normalize())
+                }
+            } else {
+                None
+            };
+            forces.surface_contacts.push(SurfaceContact {
+                particle: p,
+                normal,
+                friction: obstacle.friction,
+                sliding,
+            });
+        }
+        profiler.lap(Stage::StartContacts);
+        changed || had_surface_contacts || !forces.surface_contacts.is_empty()
+    }
+
+    /// Fills the touching lists from the current positions.
+    fn find_touching(
+        &mut self,
+        state: &State,
+        forces: &ForceModel,
+        h: f64,
+        profiler: &mut Profiler,
+    ) {
+        let n = state.len();
+        profiler.lap(Stage::StartContacts);
+        self.boxes.clear();
+        self.boxes.extend(
+            (0..n).map(|i| Aabb::around(&[state.position[i]], self.radius[i] * (1.0 + TOUCHING))),
+        );
+        let radius = &self.radius;
+        let (position, velocity) = (&state.position, &state.velocity);
+        self.touching.pairs.clear();
+        let candidates = self.proxies.update(
+            &self.boxes,
+            |i| fat_margin(radius[i], velocity[i], h),
+            |i, j| forces.is_fixed(i) && forces.is_fixed(j),
+            &self.workers,
+        );
+        let boxes = &self.boxes;
+        self.touching
+            .pairs
+            .extend(candidates.iter().copied().filter(|&(i, j)| {
+                let (i, j) = (i as usize, j as usize);
+                let reach = radius[i] + radius[j];
+                boxes[i].overlaps(&boxes[j])
+                    && position[i].distance(position[j]) - reach <= TOUCHING * reach
+            }));
+        self.touching.by_particle.fill(n, &self.touching.pairs);
+        profiler.lap(Stage::BroadPhase);
+        self.touching.surfaces.clear();
+        for p in (0..n).filter(|&p| !forces.is_fixed(p)) {
+            for (k, obstacle) in self.obstacles.iter().enumerate() {
+                if obstacle
+                    .shape
+                    .clear_of_box(self.boxes[p].min, self.boxes[p].max)
+                {
+                    continue;
+                }
+                let reach = self.radius[p] + half_thickness(&obstacle.shape);
+                if obstacle.shape.distance(position[p]).0 - self.radius[p] <= TOUCHING * reach {
+                    self.touching.surfaces.push((p as u32, k as u32));
+                }
+            }
+        }
+    }
+
+    /// Applies every impact between touching things that approach faster than
+    /// `resting_speed`, pass after pass until none does. A contact still approaching after
+    /// many passes (a ball squeezed between two others) is made inelastic, which ends it.
+    fn impacts_now(&mut self, state: &mut State, forces: &ForceModel, resting_speed: f64) -> bool {
+        // Only velocities change here, so each contact's normal is found once.
+        let mut contacts = std::mem::take(&mut self.touching.normals);
+        contacts.clear();
+        let pairs = self
+            .touching
+            .pairs
+            .iter()
+            .map(|&(i, j)| Impact::Pair(i as usize, j as usize));
+        let obstacles = self
+            .touching
+            .surfaces
+            .iter()
+            .map(|&(p, k)| Impact::Obstacle(p as usize, k as usize));
+        contacts.extend(
+            pairs
+                .chain(obstacles)
+                .map(|impact| (impact, self.measure(impact, state).1)),
+        );
+        let max_passes = 2 * state.len() + 8;
+        let mut changed = false;
+        for pass in 0..=max_passes {
+            let inelastic = pass == max_passes;
+            let mut any = false;
+            for &(impact, normal) in &contacts {
+                let approach = approach_along(impact, normal, state);
+                if approach <= resting_speed {
+                    continue;
+                }
+                let restitution = if inelastic {
+                    0.0
+                } else {
+                    self.restitution_at(impact, approach, resting_speed)
+                };
+                apply_impulse(
+                    impact,
+                    normal,
+                    approach * (1.0 + restitution),
+                    state,
+                    forces,
+                );
+                self.applied.push(Applied {
+                    time: 0.0,
+                    impact,
+                    approach,
+                    restitution,
+                });
+                any = true;
+            }
+            changed |= any;
+            if !any {
+                break;
+            }
+        }
+        self.touching.normals = contacts;
+        changed
+    }
+}
+
+/// Pairs listed by particle (compressed rows): each pair (i, j) under both i and j.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Adjacency {
+    first: Vec<u32>,
+    partners: Vec<u32>,
+}
+
+impl Adjacency {
+    fn fill(&mut self, n: usize, pairs: &[(u32, u32)]) {
+        self.first.clear();
+        self.first.resize(n + 1, 0);
+        for &(i, j) in pairs {
+            self.first[i as usize + 1] += 1;
+            self.first[j as usize + 1] += 1;
+        }
+        for p in 0..n {
+            self.first[p + 1] += self.first[p];
+        }
+        self.partners.clear();
+        self.partners.resize(2 * pairs.len(), 0);
+        let mut next = self.first.clone();
+        for &(i, j) in pairs {
+            for (a, b) in [(i, j), (j, i)] {
+                let slot = &mut next[a as usize];
+                self.partners[*slot as usize] = b;
+                *slot += 1;
+            }
+        }
+    }
+
+    /// Whether `p` and `q` are a listed pair.
+    pub(super) fn contains(&self, p: usize, q: u32) -> bool {
+        self.partners[self.first[p] as usize..self.first[p + 1] as usize].contains(&q)
+    }
+}

@@ -17,8 +17,7 @@ use glam::DVec2;
 use super::broad_phase::Aabb;
 use super::time_of_impact::{Region, control_points, earliest_entry};
 use super::{
-    Applied, Contacts, Impact, TOUCHING, apply_impulse, fat_margin, half_thickness, particles_of,
-    velocity_changes,
+    Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness, particles_of, velocity_changes,
 };
 use crate::forces::ForceModel;
 use crate::profile::{Profiler, Stage};
@@ -428,18 +427,12 @@ impl Contacts {
             return;
         }
         let restitution = self.restitution_at(impact, approach, self.resting_speed(h));
-        apply_impulse(
-            impact,
-            normal,
-            approach * (1.0 + restitution),
-            state,
-            forces,
-        );
-        self.applied.push(Applied {
+        let applied = Applied {
             time: h,
             impact,
             approach,
             restitution,
-        });
+        };
+        self.strike(applied, normal, state, forces);
     }
 }

@@ -224,6 +224,14 @@ impl Contacts {
         }
     }
 
+    /// Applies an impact's impulse along `normal` to `state` (the paper's 8–10 or
+    /// 17–22: the approach reversed and scaled by the restitution) and records it.
+    fn strike(&mut self, applied: Applied, normal: DVec2, state: &mut State, forces: &ForceModel) {
+        let change = applied.approach * (1.0 + applied.restitution);
+        apply_impulse(applied.impact, normal, change, state, forces);
+        self.applied.push(applied);
+    }
+
     /// The reach of an impact: the distance scale its gap is judged against.
     pub fn reach(&self, impact: Impact) -> f64 {
         match impact {

@@ -12,9 +12,7 @@
 use glam::DVec2;
 
 use super::broad_phase::Aabb;
-use super::{
-    Applied, Contacts, Impact, TOUCHING, apply_impulse, approach_along, fat_margin, half_thickness,
-};
+use super::{Applied, Contacts, Impact, TOUCHING, approach_along, fat_margin, half_thickness};
 use crate::forces::{ForceModel, SurfaceContact};
 use crate::profile::{Profiler, Stage};
 use crate::state::State;
@@ -193,19 +191,13 @@ impl Contacts {
                 } else {
                     self.restitution_at(impact, approach, resting_speed)
                 };
-                apply_impulse(
-                    impact,
-                    normal,
-                    approach * (1.0 + restitution),
-                    state,
-                    forces,
-                );
-                self.applied.push(Applied {
+                let applied = Applied {
                     time: 0.0,
                     impact,
                     approach,
                     restitution,
-                });
+                };
+                self.strike(applied, normal, state, forces);
                 any = true;
             }
             changed |= any;

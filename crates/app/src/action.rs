@@ -109,30 +109,31 @@ impl Action {
             .unwrap_or_default()
     }
 
-    /// What a shortcut's action does, for the list of keys (F1).
-    pub fn describe(self) -> &'static str {
-        match self {
-            Self::New => "New scene",
-            Self::Open => "Open a scene file",
-            Self::Save => "Save",
-            Self::SaveAs => "Save as",
-            Self::Undo => "Undo",
-            Self::Redo => "Redo",
-            Self::Delete => "Delete the selected object",
-            Self::PlayPause => "Play or pause",
-            Self::Step => "One step forward",
-            Self::StepBack => "One step back in the run",
-            Self::Reset => "Reset to the scene as built",
-            Self::Fit => "Fit the view to the scene",
-            Self::Tool(tool) => tool.label(),
-            Self::Instrument(instrument) => instrument.label(),
-            Self::ToggleStopwatch => "Stopwatch",
-            Self::ToggleInspector => "Show or hide the inspector",
-            Self::ToggleGraphs => "Show or hide the graphs",
-            Self::ToggleProjector => "Projector mode",
-            Self::ToggleHelp => "This list of keys",
-            _ => "",
-        }
+    /// What a shortcut's action does, for the list of keys (F1), in the app's language.
+    pub fn describe(self) -> String {
+        let id = match self {
+            Self::New => "key-new",
+            Self::Open => "key-open",
+            Self::Save => "key-save",
+            Self::SaveAs => "key-save-as",
+            Self::Undo => "key-undo",
+            Self::Redo => "key-redo",
+            Self::Delete => "key-delete",
+            Self::PlayPause => "key-play-pause",
+            Self::Step => "key-step",
+            Self::StepBack => "key-step-back",
+            Self::Reset => "key-reset",
+            Self::Fit => "key-fit",
+            Self::Tool(tool) => return tool.label(),
+            Self::Instrument(instrument) => return instrument.label().to_owned(),
+            Self::ToggleStopwatch => "key-stopwatch",
+            Self::ToggleInspector => "key-inspector",
+            Self::ToggleGraphs => "key-graphs",
+            Self::ToggleProjector => "key-projector",
+            Self::ToggleHelp => "key-help",
+            _ => return String::new(),
+        };
+        crate::i18n::tr(id)
     }
 
     /// Whether the shortcut is a bare key, which a focused text field must keep.

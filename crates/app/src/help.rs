@@ -4,34 +4,27 @@
 use egui::{Context, Grid, RichText};
 
 use crate::action::SHORTCUTS;
+use crate::i18n::tr;
 
-/// The canvas's keys while it has the focus, as the list shows them.
+/// The canvas's keys while it has the focus, as the list shows them: the keys, and the
+/// message saying what they do.
 const CANVAS_KEYS: &[(&str, &str)] = &[
-    ("Tab (or a click)", "Give the canvas the keyboard"),
-    ("Tab / Shift+Tab", "Select the next / previous object"),
-    (
-        "Arrow keys",
-        "Move the selected particle or ramp one grid step",
-    ),
-    ("Shift+arrow keys", "Move it a tenth of a grid step"),
-    (
-        "Enter",
-        "Add the current tool's object at the view's centre (a spring, rod or string from the selected particle)",
-    ),
-    (
-        "Escape",
-        "Give the keyboard back; Tab then moves to the next control",
-    ),
+    ("Tab", "canvas-key-focus"),
+    ("Tab / Shift+Tab", "canvas-key-cycle"),
+    ("← ↑ → ↓", "canvas-key-move"),
+    ("Shift+← ↑ → ↓", "canvas-key-fine"),
+    ("Enter", "canvas-key-enter"),
+    ("Escape", "canvas-key-escape"),
 ];
 
 /// Shows the list while `shown`; its close button clears it.
 pub fn window(ctx: &Context, shown: &mut bool) {
-    egui::Window::new("Keys")
+    egui::Window::new(tr("keys-title"))
         .open(shown)
         .resizable(false)
         .collapsible(false)
         .show(ctx, |ui| {
-            ui.label(RichText::new("Everywhere (except while typing in a field)").strong());
+            ui.label(RichText::new(tr("keys-everywhere")).strong());
             Grid::new("shortcuts").striped(true).show(ui, |ui| {
                 for (shortcut, action) in SHORTCUTS {
                     ui.label(RichText::new(ctx.format_shortcut(shortcut)).monospace());
@@ -40,18 +33,15 @@ pub fn window(ctx: &Context, shown: &mut bool) {
                 }
             });
             ui.separator();
-            ui.label(RichText::new("On the canvas").strong());
+            ui.label(RichText::new(tr("keys-canvas")).strong());
             Grid::new("canvas keys").striped(true).show(ui, |ui| {
                 for (keys, what) in CANVAS_KEYS {
                     ui.label(RichText::new(*keys).monospace());
-                    ui.label(*what);
+                    ui.label(tr(what));
                     ui.end_row();
                 }
             });
             ui.separator();
-            ui.label(
-                "Tab and Shift+Tab move between the controls; Enter or Space presses a button; \
-                 the menus open with a click or, once focused, with Enter.",
-            );
+            ui.label(tr("keys-controls"));
         });
 }

@@ -26,6 +26,7 @@ pub mod document;
 pub mod files;
 pub mod format;
 pub mod help;
+pub mod i18n;
 pub mod inspector;
 pub mod picture;
 pub mod platform;
@@ -48,6 +49,7 @@ pub use action::Action;
 pub use canvas::{FieldKind, Instrument, Selection, Tool};
 pub use document::Document;
 use files::{Choice, Files, Pending, Purpose};
+use i18n::{Arg, tr, tr_with};
 use plots::Graphs;
 pub use recording::Recording;
 use run_loop::Runner;
@@ -541,67 +543,74 @@ impl App {
             }
         };
         egui::MenuBar::new().ui(ui, |ui| {
-            ui.menu_button("File", |ui| {
-                item(ui, "New", "An empty scene", Action::New, true);
-                item(ui, "Open…", "Open a scene file", Action::Open, true);
-                item(ui, "Save", "Save the scene", Action::Save, true);
+            ui.menu_button(tr("menu-file"), |ui| {
+                item(ui, &tr("menu-new"), &tr("menu-new-hint"), Action::New, true);
                 item(
                     ui,
-                    "Save the canvas as PNG…",
-                    "A picture of the canvas as it is on screen",
+                    &tr("menu-open"),
+                    &tr("menu-open-hint"),
+                    Action::Open,
+                    true,
+                );
+                item(
+                    ui,
+                    &tr("menu-save"),
+                    &tr("menu-save-hint"),
+                    Action::Save,
+                    true,
+                );
+                item(
+                    ui,
+                    &tr("menu-save-canvas"),
+                    &tr("menu-save-canvas-hint"),
                     Action::ExportPicture(picture::Subject::Canvas),
                     true,
                 );
                 item(
                     ui,
-                    "Save As…",
-                    "Save the scene under another name",
+                    &tr("menu-save-as"),
+                    &tr("menu-save-as-hint"),
                     Action::SaveAs,
                     true,
                 );
                 #[cfg(target_arch = "wasm32")]
                 if ui
-                    .button("Copy link to this scene")
-                    .on_hover_text(
-                        "A link that opens this scene: in the address bar and the clipboard",
-                    )
+                    .button(tr("menu-copy-link"))
+                    .on_hover_text(tr("menu-copy-link-hint"))
                     .clicked()
                 {
                     self.files.message = Some(match web::copy_link(self.document.scene()) {
-                        Ok(_) => "A link to this scene is in the address bar and on the clipboard."
-                            .to_owned(),
+                        Ok(_) => tr("menu-link-copied"),
                         Err(reason) => reason,
                     });
                 }
             })
             .response
-            .on_hover_text("New, open, save, share");
-            ui.menu_button("Edit", |ui| {
+            .on_hover_text(tr("menu-file-hint"));
+            ui.menu_button(tr("menu-edit"), |ui| {
                 let editable = self.runner.simulation.is_none();
-                let undo = self
-                    .document
-                    .undo_label()
-                    .map_or("Undo".to_owned(), |l| format!("Undo {l}"));
+                let undo = self.document.undo_label().map_or(tr("menu-undo"), |l| {
+                    tr_with("menu-undo-what", &[("what", Arg::Text(l))])
+                });
                 let can_undo = editable && self.document.undo_label().is_some();
-                item(ui, &undo, "Undo the last change", Action::Undo, can_undo);
-                let redo = self
-                    .document
-                    .redo_label()
-                    .map_or("Redo".to_owned(), |l| format!("Redo {l}"));
+                item(ui, &undo, &tr("menu-undo-hint"), Action::Undo, can_undo);
+                let redo = self.document.redo_label().map_or(tr("menu-redo"), |l| {
+                    tr_with("menu-redo-what", &[("what", Arg::Text(l))])
+                });
                 let can_redo = editable && self.document.redo_label().is_some();
-                item(ui, &redo, "Redo what was undone", Action::Redo, can_redo);
+                item(ui, &redo, &tr("menu-redo-hint"), Action::Redo, can_redo);
                 let can_delete = editable && self.selection.is_some();
                 item(
                     ui,
-                    "Delete",
-                    "Remove the selected object",
+                    &tr("menu-delete"),
+                    &tr("menu-delete-hint"),
                     Action::Delete,
                     can_delete,
                 );
             })
             .response
-            .on_hover_text("Undo, redo, delete");
-            ui.menu_button("Examples", |ui| {
+            .on_hover_text(tr("menu-edit-hint"));
+            ui.menu_button(tr("menu-examples"), |ui| {
                 for (name, title) in example_titles() {
                     item(
                         ui,
@@ -613,46 +622,50 @@ impl App {
                 }
             })
             .response
-            .on_hover_text("Open a built-in scene (the paper's experiments and more)");
-            ui.menu_button("View", |ui| {
+            .on_hover_text(tr("menu-examples-hint"));
+            ui.menu_button(tr("menu-view"), |ui| {
+                item(ui, &tr("menu-fit"), &tr("menu-fit-hint"), Action::Fit, true);
+                let tick = |on: bool| if on { "• " } else { "" };
                 item(
                     ui,
-                    "Fit",
-                    "Fit the scene and the recent paths in view",
-                    Action::Fit,
-                    true,
-                );
-                let tick = |on: bool| if on { "✔ " } else { "" };
-                item(
-                    ui,
-                    &format!("{}Inspector", tick(self.panels.inspector)),
-                    "Show or hide the inspector",
+                    &format!("{}{}", tick(self.panels.inspector), tr("menu-inspector")),
+                    &tr("menu-inspector-hint"),
                     Action::ToggleInspector,
                     true,
                 );
                 item(
                     ui,
-                    &format!("{}Graphs", tick(self.panels.graphs)),
-                    "Show or hide the graphs and readouts",
+                    &format!("{}{}", tick(self.panels.graphs), tr("menu-graphs")),
+                    &tr("menu-graphs-hint"),
                     Action::ToggleGraphs,
                     true,
                 );
                 item(
                     ui,
-                    &format!("{}Projector mode", tick(self.panels.projector)),
-                    "The canvas alone with large text, for a class",
+                    &format!("{}{}", tick(self.panels.projector), tr("menu-projector")),
+                    &tr("menu-projector-hint"),
                     Action::ToggleProjector,
                     true,
                 );
-                ui.menu_button("Follow", |ui| {
+                ui.menu_button(tr("menu-follow"), |ui| {
                     toolbar::follow_menu(ui, &mut self.canvas, &self.document);
                 })
                 .response
-                .on_hover_text("Keep a particle, or all of them, in view while playing");
+                .on_hover_text(tr("menu-follow-hint"));
+                ui.menu_button(tr("menu-language"), |ui| {
+                    for language in i18n::Language::ALL {
+                        let chosen = i18n::language() == language;
+                        if ui.selectable_label(chosen, language.name()).clicked() {
+                            i18n::set_language(language);
+                        }
+                    }
+                })
+                .response
+                .on_hover_text(tr("menu-language-hint"));
             })
             .response
-            .on_hover_text("Framing, panels, projector mode");
-            ui.menu_button("Measure", |ui| {
+            .on_hover_text(tr("menu-view-hint"));
+            ui.menu_button(tr("menu-measure"), |ui| {
                 let instruments = &self.canvas.instruments;
                 let tick = |on: bool| if on { "• " } else { "" };
                 for instrument in [Instrument::Tape, Instrument::Probe, Instrument::Protractor] {
@@ -669,29 +682,32 @@ impl App {
                     );
                 }
                 for (kind, name) in [
-                    (None, "No field view"),
-                    (Some(FieldKind::Electric), "Electric field view"),
-                    (Some(FieldKind::Gravitational), "Gravitational field view"),
+                    (None, tr("menu-no-field")),
+                    (Some(FieldKind::Electric), tr("menu-electric-field")),
+                    (
+                        Some(FieldKind::Gravitational),
+                        tr("menu-gravitational-field"),
+                    ),
                 ] {
                     item(
                         ui,
                         &format!("{}{name}", tick(instruments.field_view == kind)),
-                        "Arrows of the particles' field across the canvas, stronger where darker",
+                        &tr("menu-field-hint"),
                         Action::FieldView(kind),
                         true,
                     );
                 }
                 item(
                     ui,
-                    &format!("{}Stopwatch", tick(self.stopwatch.shown)),
-                    "Simulated time between two events: by hand, an impact, a particle crossing the tape",
+                    &format!("{}{}", tick(self.stopwatch.shown), tr("menu-stopwatch")),
+                    &tr("menu-stopwatch-hint"),
                     Action::ToggleStopwatch,
                     true,
                 );
                 item(
                     ui,
-                    "Clear measurements",
-                    "Take away the tape, the probe and the protractor",
+                    &tr("menu-clear-measurements"),
+                    &tr("menu-clear-measurements-hint"),
                     Action::ClearMeasurements,
                     instruments.tape.is_some()
                         || instruments.probe.is_some()
@@ -699,12 +715,12 @@ impl App {
                 );
             })
             .response
-            .on_hover_text("Tape measure, field probe, field view");
-            ui.menu_button("Help", |ui| {
+            .on_hover_text(tr("menu-measure-hint"));
+            ui.menu_button(tr("menu-help"), |ui| {
                 item(
                     ui,
-                    "Keys",
-                    "Every shortcut, and how to use the canvas from the keyboard",
+                    &tr("menu-keys"),
+                    &tr("menu-keys-hint"),
                     Action::ToggleHelp,
                     true,
                 );
@@ -756,22 +772,27 @@ impl App {
             let time_scale = self.document.scene().simulation.time_scale;
             match (self.runner.playing, self.runner.shortfall(time_scale)) {
                 (true, Some(fraction)) => {
+                    let (ratio, real) = (
+                        i18n::decimal(fraction, 2),
+                        i18n::decimal(self.runner.achieved, 2),
+                    );
                     ui.colored_label(
                         egui::Color32::from_rgb(190, 110, 0),
-                        format!(
-                            "running at {fraction:.2}× of the requested speed ({:.2}× real time)",
-                            self.runner.achieved
+                        tr_with(
+                            "status-behind",
+                            &[("ratio", Arg::Text(&ratio)), ("real", Arg::Text(&real))],
                         ),
                     );
                 }
                 (true, None) => {
-                    ui.label(format!("{:.2}× real time", self.runner.achieved));
+                    let real = i18n::decimal(self.runner.achieved, 2);
+                    ui.label(tr_with("status-real-time", &[("real", Arg::Text(&real))]));
                 }
                 (false, _) if self.runner.simulation.is_some() => {
-                    ui.label("paused");
+                    ui.label(tr("status-paused"));
                 }
                 (false, _) => {
-                    ui.label("editing");
+                    ui.label(tr("status-editing"));
                 }
             }
             ui.separator();
@@ -1236,6 +1257,8 @@ fn example_titles() -> &'static [(&'static str, String)] {
 /// When no window can be opened (no display, no OpenGL).
 #[cfg(not(target_arch = "wasm32"))]
 pub fn run_native(app: App) -> eframe::Result {
+    // The system's language (LANG on Linux); View → Language switches it live.
+    i18n::set_language(i18n::Language::of_system());
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_inner_size([1280.0, 800.0])

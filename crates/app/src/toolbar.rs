@@ -7,6 +7,7 @@ use physics::{Follow, Integrator, Rule, check_value};
 use crate::action::Action;
 use crate::canvas::{Canvas, Tool};
 use crate::document::Document;
+use crate::i18n::tr;
 use crate::run_loop::Runner;
 
 /// The tool bar, one frame. The integrator, the time step and the time scale are the
@@ -40,23 +41,34 @@ pub fn ui(
             }
         });
         ui.separator();
-        // A fixed width: the row does not re-wrap when Play becomes Pause.
-        let play = if runner.playing { "Pause" } else { "Play" };
+        // One width for the three, the widest label's in this language: the row does not
+        // re-wrap when Play becomes Pause.
+        let labels = [
+            "toolbar-play",
+            "toolbar-pause",
+            "toolbar-step",
+            "toolbar-reset",
+        ]
+        .map(tr);
+        let width = labels
+            .iter()
+            .map(|label| {
+                egui::WidgetText::from(label.as_str())
+                    .into_galley(ui, None, f32::INFINITY, egui::TextStyle::Button)
+                    .size()
+                    .x
+            })
+            .fold(40.0, f32::max)
+            + 12.0;
+        let [play, pause, step, reset] = labels;
+        let play = if runner.playing { pause } else { play };
         for (label, hint, pressed) in [
-            (
-                play,
-                "Run or pause the simulation (Space)",
-                Action::PlayPause,
-            ),
-            ("Step", "Advance by one time step (.)", Action::Step),
-            (
-                "Reset",
-                "Back to the scene as last edited (R)",
-                Action::Reset,
-            ),
+            (play, tr("toolbar-play-hint"), Action::PlayPause),
+            (step, tr("toolbar-step-hint"), Action::Step),
+            (reset, tr("toolbar-reset-hint"), Action::Reset),
         ] {
             if ui
-                .add_sized([52.0, 20.0], egui::Button::new(label))
+                .add_sized([width, 20.0], egui::Button::new(label))
                 .on_hover_text(hint)
                 .clicked()
             {
@@ -71,7 +83,7 @@ pub fn ui(
                     .logarithmic(true)
                     .text("×"),
             )
-            .on_hover_text("Time scale: simulated seconds per real second (0.01× to 100×)");
+            .on_hover_text(tr("toolbar-time-scale-hint"));
         if slider.drag_started() {
             document.begin_gesture("set time scale");
         }
@@ -106,7 +118,7 @@ pub fn ui(
                 })
                 .response
                 .labelled_by(label.id)
-                .on_hover_text("How the motion is integrated in time");
+                .on_hover_text(tr("toolbar-integrator-hint"));
             let id = egui::Id::unique("toolbar-time-step");
             let mut text: String = ui
                 .data(|d| d.get_temp(id))
@@ -115,7 +127,7 @@ pub fn ui(
             let response = ui
                 .add(egui::TextEdit::singleline(&mut text).desired_width(70.0))
                 .labelled_by(label.id)
-                .on_hover_text("Time step, seconds (dopri5: the largest step)");
+                .on_hover_text(tr("toolbar-time-step-hint"));
             ui.label("s");
             let parsed = text
                 .trim()
@@ -143,8 +155,8 @@ pub fn ui(
             overlays_ui(ui, overlays);
         }
         if ui
-            .button("Fit")
-            .on_hover_text("Fit the scene and the recent paths in view (F)")
+            .button(tr("menu-fit"))
+            .on_hover_text(tr("toolbar-fit-hint"))
             .clicked()
         {
             action = Some(Action::Fit);
@@ -155,32 +167,32 @@ pub fn ui(
 
 /// The toggles for what the canvas draws.
 fn overlays_ui(ui: &mut Ui, overlays: &mut crate::canvas::Overlays) {
-    ui.toggle_value(&mut overlays.velocity, "velocity")
-        .on_hover_text("Velocity arrows (tip: where the particle will be in 0.5 s)");
-    ui.toggle_value(&mut overlays.acceleration, "acceleration")
-        .on_hover_text("Acceleration arrows");
-    ui.toggle_value(&mut overlays.force, "force")
-        .on_hover_text("Net force arrows (length grows with the logarithm of the force)");
-    ui.toggle_value(&mut overlays.trails, "trails")
-        .on_hover_text("Recent paths of the particles");
-    ui.toggle_value(&mut overlays.names, "names")
-        .on_hover_text("Object names");
+    for (on, id) in [
+        (&mut overlays.velocity, "toolbar-velocity"),
+        (&mut overlays.acceleration, "toolbar-acceleration"),
+        (&mut overlays.force, "toolbar-force"),
+        (&mut overlays.trails, "toolbar-trails"),
+        (&mut overlays.names, "toolbar-names"),
+    ] {
+        ui.toggle_value(on, tr(id))
+            .on_hover_text(tr(&format!("{id}-hint")));
+    }
 }
 
 /// What the camera follows while playing (View → Follow): nothing, every particle, or
 /// one particle.
 pub fn follow_menu(ui: &mut Ui, canvas: &mut Canvas, document: &Document) {
-    ui.selectable_value(&mut canvas.follow, None, "nothing")
-        .on_hover_text("A still camera");
-    ui.selectable_value(&mut canvas.follow, Some(Follow::All), "all particles")
-        .on_hover_text("Keep every particle in view");
+    ui.selectable_value(&mut canvas.follow, None, tr("follow-nothing"))
+        .on_hover_text(tr("follow-nothing-hint"));
+    ui.selectable_value(&mut canvas.follow, Some(Follow::All), tr("follow-all"))
+        .on_hover_text(tr("follow-all-hint"));
     egui::ScrollArea::vertical()
         .max_height(300.0)
         .show(ui, |ui| {
             for particle in &document.scene().particles {
                 let target = Some(Follow::Particle(particle.name.clone()));
                 ui.selectable_value(&mut canvas.follow, target, &particle.name)
-                    .on_hover_text("Keep this particle at the centre");
+                    .on_hover_text(tr("follow-particle-hint"));
             }
         });
 }

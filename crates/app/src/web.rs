@@ -69,6 +69,8 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
         .dyn_into::<web_sys::HtmlCanvasElement>()
         .map_err(|_| format!("'{canvas_id}' is not a canvas"))?;
     let app = initial_app();
+    // The browser's language; View → Language switches it live.
+    crate::i18n::set_language(crate::i18n::Language::of_system());
     let runner = eframe::WebRunner::new();
     runner
         .start(

@@ -1223,3 +1223,29 @@ fn f1_lists_the_keys() {
     harness.get_by_label("Select the next / previous object");
     harness.get_by_label("This list of keys");
 }
+
+/// View → Language switches live: the menus and the run controls speak German, then
+/// Spanish, the scene is untouched, and English comes back.
+#[test]
+fn the_language_switches_live_and_keeps_the_scene() {
+    let mut harness = harness(App::new(one_ball()));
+    let choose = |harness: &mut Harness<'_, App>, view: &str, language: &str, name: &str| {
+        harness.get_by_label(view).click();
+        harness.run();
+        harness.get_by_label(language).click();
+        harness.run();
+        harness.get_by_label(name).click();
+        harness.run();
+    };
+    choose(&mut harness, "View", "Language", "Deutsch");
+    harness.get_by_label("Datei");
+    harness.get_by_label("Start");
+    assert!(harness.query_by_label("File").is_none(), "no English left");
+    choose(&mut harness, "Ansicht", "Sprache", "Español");
+    harness.get_by_label("Archivo");
+    harness.get_by_label("Reproducir");
+    assert_eq!(harness.state().document.scene().particles.len(), 1);
+    choose(&mut harness, "Ver", "Idioma", "English");
+    harness.get_by_label("File");
+    harness.get_by_label("Play");
+}

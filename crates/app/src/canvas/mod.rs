@@ -56,15 +56,16 @@ impl Tool {
         Self::Ramp,
     ];
 
-    pub fn label(self) -> &'static str {
-        match self {
-            Self::Select => "Select",
-            Self::Particle => "Particle",
-            Self::Spring => "Spring",
-            Self::Rod => "Rod",
-            Self::String => "String",
-            Self::Ramp => "Ramp",
-        }
+    /// The tool's name in the app's language.
+    pub fn label(self) -> String {
+        crate::i18n::tr(match self {
+            Self::Select => "tool-select",
+            Self::Particle => "tool-particle",
+            Self::Spring => "tool-spring",
+            Self::Rod => "tool-rod",
+            Self::String => "tool-string",
+            Self::Ramp => "tool-ramp",
+        })
     }
 
     pub fn hint(self) -> &'static str {

@@ -33,6 +33,7 @@ pub mod platform;
 pub mod plots;
 pub mod recording;
 pub mod run_loop;
+pub mod settings;
 pub mod share;
 pub mod stopwatch;
 pub mod timeline;
@@ -102,6 +103,11 @@ pub struct App {
     pub graphs: Graphs,
     /// The stopwatch and its window.
     pub stopwatch: stopwatch::Stopwatch,
+    /// Text size, high contrast and language, kept from session to session.
+    pub settings: settings::Settings,
+    /// Where the desktop keeps them; none: not kept.
+    #[cfg(not(target_arch = "wasm32"))]
+    settings_file: Option<std::path::PathBuf>,
     pub files: Files,
     pub selection: Option<Selection>,
     pub panels: Panels,
@@ -148,6 +154,9 @@ impl App {
             canvas,
             graphs: Graphs::default(),
             stopwatch: stopwatch::Stopwatch::default(),
+            settings: settings::Settings::default(),
+            #[cfg(not(target_arch = "wasm32"))]
+            settings_file: None,
             files: Files::default(),
             selection: None,
             panels: Panels::default(),
@@ -524,6 +533,57 @@ impl App {
         }
     }
 
+    /// The text size (times projector mode's 1.6) and the theme, as the settings say.
+    fn apply_settings(&self, ui: &Ui) {
+        let projector = if self.panels.projector { 1.6 } else { 1.0 };
+        let zoom = projector * self.settings.text_size;
+        if (ui.ctx().zoom_factor() - zoom).abs() > 1e-3 {
+            ui.ctx().set_zoom_factor(zoom);
+        }
+        let high_contrast = ui.style().visuals.override_text_color.is_some();
+        if high_contrast != self.settings.high_contrast {
+            ui.ctx().set_visuals(if self.settings.high_contrast {
+                settings::high_contrast_visuals()
+            } else {
+                ui.ctx().theme().default_visuals()
+            });
+        }
+    }
+
+    /// Keeps the settings for the next session; says so if they cannot be kept.
+    fn keep_settings(&mut self) {
+        #[cfg(not(target_arch = "wasm32"))]
+        if let Some(path) = &self.settings_file
+            && let Err(reason) = self.settings.save_to(path)
+        {
+            self.notify(format!("The settings could not be kept: {reason}"));
+        }
+        #[cfg(target_arch = "wasm32")]
+        self.settings.save();
+    }
+
+    /// Starts with the settings kept in `path` and keeps later changes there.
+    #[cfg(not(target_arch = "wasm32"))]
+    #[must_use]
+    pub fn with_settings_file(mut self, path: std::path::PathBuf) -> Self {
+        let settings = settings::Settings::load_from(&path);
+        self.settings_file = Some(path);
+        self.with_settings(settings)
+    }
+
+    /// Starts with the settings of the last session: its text size, theme and language
+    /// (or the system's language, if none was chosen).
+    #[must_use]
+    pub fn with_settings(mut self, settings: settings::Settings) -> Self {
+        i18n::set_language(
+            settings
+                .language()
+                .unwrap_or_else(i18n::Language::of_system),
+        );
+        self.settings = settings;
+        self
+    }
+
     #[expect(clippy::too_many_lines, reason = "the four menus, item by item")]
     fn menu(&mut self, ui: &mut Ui) -> Option<Action> {
         let mut action = None;
@@ -657,11 +717,32 @@ impl App {
                         let chosen = i18n::language() == language;
                         if ui.selectable_label(chosen, language.name()).clicked() {
                             i18n::set_language(language);
+                            self.settings.language = Some(language.code().to_owned());
+                            self.keep_settings();
                         }
                     }
                 })
                 .response
                 .on_hover_text(tr("menu-language-hint"));
+                ui.menu_button(tr("menu-text-size"), |ui| {
+                    for size in settings::TEXT_SIZES {
+                        let chosen = (self.settings.text_size - size).abs() < 1e-3;
+                        let label = format!("{:.0} %", size * 100.0);
+                        if ui.selectable_label(chosen, label).clicked() {
+                            self.settings.text_size = size;
+                            self.keep_settings();
+                        }
+                    }
+                })
+                .response
+                .on_hover_text(tr("menu-text-size-hint"));
+                if ui
+                    .checkbox(&mut self.settings.high_contrast, tr("menu-high-contrast"))
+                    .on_hover_text(tr("menu-high-contrast-hint"))
+                    .changed()
+                {
+                    self.keep_settings();
+                }
             })
             .response
             .on_hover_text(tr("menu-view-hint"));
@@ -832,10 +913,7 @@ impl App {
         if self.runner.playing {
             ui.ctx().request_repaint();
         }
-        let zoom = if self.panels.projector { 1.6 } else { 1.0 };
-        if (ui.ctx().zoom_factor() - zoom).abs() > 1e-3 {
-            ui.ctx().set_zoom_factor(zoom);
-        }
+        self.apply_settings(ui);
         let mut actions = Self::shortcuts(ui, self.canvas.id);
 
         egui::Panel::top("menu").show(ui, |ui| actions.extend(self.menu(ui)));
@@ -1257,8 +1335,12 @@ fn example_titles() -> &'static [(&'static str, String)] {
 /// When no window can be opened (no display, no OpenGL).
 #[cfg(not(target_arch = "wasm32"))]
 pub fn run_native(app: App) -> eframe::Result {
-    // The system's language (LANG on Linux); View → Language switches it live.
-    i18n::set_language(i18n::Language::of_system());
+    // The last session's settings; the system's language (LANG on Linux) unless one was
+    // chosen. View → Language switches it live.
+    let app = match settings::default_file() {
+        Some(path) => app.with_settings_file(path),
+        None => app.with_settings(settings::Settings::default()),
+    };
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_inner_size([1280.0, 800.0])

@@ -68,9 +68,8 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
         .ok_or_else(|| format!("no element '{canvas_id}'"))?
         .dyn_into::<web_sys::HtmlCanvasElement>()
         .map_err(|_| format!("'{canvas_id}' is not a canvas"))?;
-    let app = initial_app();
-    // The browser's language; View → Language switches it live.
-    crate::i18n::set_language(crate::i18n::Language::of_system());
+    // The last visit's settings; the browser's language unless one was chosen.
+    let app = initial_app().with_settings(crate::settings::Settings::load());
     let runner = eframe::WebRunner::new();
     runner
         .start(

@@ -1249,3 +1249,35 @@ fn the_language_switches_live_and_keeps_the_scene() {
     harness.get_by_label("File");
     harness.get_by_label("Play");
 }
+
+/// View → Text size and High contrast change the whole app at once: the zoom follows the
+/// size (times projector mode's 1.6), the theme turns black on white, and both are kept
+/// in the settings file the next session starts with (read back here).
+#[test]
+fn text_size_and_high_contrast_apply_and_are_kept() {
+    let dir = std::env::temp_dir().join(format!("newtonlab-settings-{}", std::process::id()));
+    let file = dir.join("settings.toml");
+    let mut harness = harness(App::new(one_ball()).with_settings_file(file.clone()));
+    harness.get_by_label("View").click();
+    harness.run();
+    harness.get_by_label("Text size").click();
+    harness.run();
+    harness.get_by_label("150 %").click();
+    harness.run();
+    harness.run();
+    assert!((harness.ctx.zoom_factor() - 1.5).abs() < 1e-6);
+    harness.get_by_label("View").click();
+    harness.run();
+    harness.get_by_label("High contrast").click();
+    harness.run();
+    harness.run();
+    let text_color = harness.ctx.global_style().visuals.override_text_color;
+    assert_eq!(text_color, Some(egui::Color32::BLACK));
+    let kept =
+        newtonlab_app::settings::Settings::parse(&std::fs::read_to_string(&file).expect("kept"));
+    assert!(
+        kept.high_contrast && (kept.text_size - 1.5).abs() < 1e-6,
+        "{kept:?}"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}

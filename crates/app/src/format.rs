@@ -1,7 +1,8 @@
 //! Numbers for people: plain decimals with about six significant digits and a unit, the
 //! way a teacher writes them on a board (15.7378 J, 0.000123 m), switching to powers of
 //! ten only far from 1 (6.6742 × 10⁻¹¹). Full precision stays in the inspector's fields,
-//! the CSV exports and the command line.
+//! the CSV exports and the command line. In German and Spanish the screen writes a
+//! decimal comma (15,7378 J), and a pair of numbers is split by a semicolon.
 
 /// `value` to about six significant digits.
 pub fn number(value: f64) -> String {
@@ -20,15 +21,34 @@ pub fn number(value: f64) -> String {
         )]
         let decimals = (5.0 - exponent).max(0.0) as usize;
         let text = format!("{value:.decimals$}");
-        trim_zeros(&text)
+        local(trim_zeros(&text))
     } else {
         let mantissa = value / 10_f64.powf(exponent);
         format!(
             "{} × 10{}",
-            trim_zeros(&format!("{mantissa:.4}")),
+            local(trim_zeros(&format!("{mantissa:.4}"))),
             superscript(exponent)
         )
     }
+}
+
+/// `text` with the decimal separator of the app's language.
+fn local(text: String) -> String {
+    if crate::i18n::decimal_comma() {
+        text.replace('.', ",")
+    } else {
+        text
+    }
+}
+
+/// Two numbers as a pair: "(1.5, 2)", or "(1,5; 2)" where the comma is decimal.
+pub fn pair(x: f64, y: f64) -> String {
+    let separator = if crate::i18n::decimal_comma() {
+        ";"
+    } else {
+        ","
+    };
+    format!("({}{separator} {})", number(x), number(y))
 }
 
 /// `value` and its unit: "15.7378 J".
@@ -80,5 +100,15 @@ mod tests {
         assert_eq!(number(8.988e9), "8.988 × 10⁹");
         assert_eq!(number(0.0), "0");
         assert_eq!(with_unit(-1.2e-11, "J"), "-1.2 × 10⁻¹¹ J");
+    }
+
+    #[test]
+    fn german_and_spanish_write_a_decimal_comma() {
+        crate::i18n::set_language(crate::i18n::Language::German);
+        assert_eq!(number(15.7378), "15,7378");
+        assert_eq!(pair(1.5, -2.0), "(1,5; -2)");
+        assert_eq!(number(6.6742e-11), "6,6742 × 10⁻¹¹");
+        crate::i18n::set_language(crate::i18n::Language::English);
+        assert_eq!(pair(1.5, -2.0), "(1.5, -2)");
     }
 }

@@ -332,9 +332,8 @@ fn live(ui: &mut Ui, runner: &Runner, selection: Option<Selection>) {
         .show(ui, |ui| {
             let accelerations = simulation.accelerations();
             let p = simulation.particle(i, &accelerations);
-            let vector = |v: physics::DVec2, unit: &str| {
-                format!("({}, {}) {unit}", format::number(v.x), format::number(v.y))
-            };
+            let vector =
+                |v: physics::DVec2, unit: &str| format!("{} {unit}", format::pair(v.x, v.y));
             egui::Grid::new("live").num_columns(2).show(ui, |ui| {
                 for (name, value) in [
                     ("position", vector(p.position, "m")),

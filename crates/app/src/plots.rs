@@ -17,6 +17,7 @@ use physics::{Graph, Of, Quantity, Total};
 use crate::action::Action;
 use crate::document::Document;
 use crate::format;
+use crate::i18n::{Arg, tr, tr_with};
 use crate::picture::Subject;
 use crate::recording::Recording;
 use crate::run_loop::Runner;
@@ -108,8 +109,8 @@ impl Graphs {
             ui.separator();
         }
         if ui
-            .button("Add a graph")
-            .on_hover_text("A new graph of quantities against time")
+            .button(tr("graph-add"))
+            .on_hover_text(tr("graph-add-hint"))
             .clicked()
         {
             document.apply("add graph", |scene| {
@@ -144,8 +145,8 @@ impl Graphs {
                     .unwrap_or_else(|| format!("Graph {}", g + 1)),
             );
             if ui
-                .small_button("Remove graph")
-                .on_hover_text("Remove this graph (its data stays recorded)")
+                .small_button(tr("graph-remove"))
+                .on_hover_text(tr("graph-remove-hint"))
                 .clicked()
             {
                 change = Some(("remove graph", Box::new(|_| {})));
@@ -181,16 +182,16 @@ impl Graphs {
                 .get(particle)
                 .map(|name| Quantity::Particle(name.clone(), of).to_string());
             if ui
-                .add_enabled(chosen.is_some(), egui::Button::new("Add"))
-                .on_hover_text("Plot this quantity")
+                .add_enabled(chosen.is_some(), egui::Button::new(tr("graph-add-series")))
+                .on_hover_text(tr("graph-add-series-hint"))
                 .clicked()
                 && let Some(text) = chosen.clone()
             {
                 change = Some(("add series", Box::new(move |graph| graph.y.push(text))));
             }
             if ui
-                .add_enabled(chosen.is_some(), egui::Button::new("Use as x axis"))
-                .on_hover_text("Plot everything against this quantity (a phase plot)")
+                .add_enabled(chosen.is_some(), egui::Button::new(tr("graph-x-axis")))
+                .on_hover_text(tr("graph-x-axis-hint"))
                 .clicked()
                 && let Some(text) = chosen
             {
@@ -225,8 +226,8 @@ impl Graphs {
             if x != Quantity::Time {
                 ui.label(format!("x axis: {}", label(&x)));
                 if ui
-                    .small_button("use time")
-                    .on_hover_text("Plot against time again")
+                    .small_button(tr("graph-use-time"))
+                    .on_hover_text(tr("graph-use-time-hint"))
                     .clicked()
                 {
                     change = Some(("set x axis", Box::new(|graph| "t".clone_into(&mut graph.x))));
@@ -259,24 +260,22 @@ impl Graphs {
         let samples = recording.map_or(0, Recording::len);
         ui.horizontal(|ui| {
             if ui
-                .add_enabled(samples > 0, egui::Button::new("Export CSV…"))
-                .on_hover_text(
-                    "Save every recorded sample of this graph's quantities as a CSV file",
-                )
+                .add_enabled(samples > 0, egui::Button::new(tr("graph-export-csv")))
+                .on_hover_text(tr("graph-export-csv-hint"))
                 .clicked()
             {
                 action = Some(Action::ExportGraph(g));
             }
             if ui
-                .add_enabled(samples > 0, egui::Button::new("Save PNG…"))
-                .on_hover_text("Save a picture of this graph as it is on screen")
+                .add_enabled(samples > 0, egui::Button::new(tr("graph-save-png")))
+                .on_hover_text(tr("graph-save-png-hint"))
                 .clicked()
             {
                 action = Some(Action::ExportPicture(Subject::Graph(g)));
             }
         });
         let Some(recording) = recording else {
-            ui.label("Press Play: the graph fills from the start of the run.");
+            ui.label(tr("graph-press-play"));
             return action;
         };
         let every = samples.div_ceil(MAX_POINTS).max(1);
@@ -361,14 +360,14 @@ pub fn impact_marks(recording: &Recording, series: &[Quantity]) -> Vec<f64> {
 /// Energies by kind, the energy ledger, momentum: live while running, the last recorded
 /// values after a failure.
 fn readouts(ui: &mut Ui, runner: &Runner) {
-    ui.heading("Energy and momentum");
+    ui.heading(tr("readout-heading"));
     let energy = match (&runner.simulation, &runner.failure, &runner.recording) {
         (Some(_), Some(_), Some(recording)) => {
-            ui.label("The run failed: the values of its last good sample.");
+            ui.label(tr("readout-failed"));
             let get = |t| recording.last_total(t).unwrap_or(f64::NAN);
             Energies {
                 kinetic: get(Total::KineticEnergy),
-                potential: vec![("potential (J)", get(Total::PotentialEnergy))],
+                potential: vec![(tr("readout-potential"), get(Total::PotentialEnergy))],
                 total: get(Total::TotalEnergy),
                 momentum: [get(Total::MomentumX), get(Total::MomentumY)],
             }
@@ -378,17 +377,20 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
             Energies {
                 kinetic: d.energy.kinetic,
                 potential: vec![
-                    ("potential: field (J)", d.energy.uniform),
-                    ("potential: springs (J)", d.energy.spring),
-                    ("potential: gravitation (J)", d.energy.gravitation),
-                    ("potential: electrostatic (J)", d.energy.electrostatic),
+                    (tr("readout-potential-field"), d.energy.uniform),
+                    (tr("readout-potential-springs"), d.energy.spring),
+                    (tr("readout-potential-gravitation"), d.energy.gravitation),
+                    (
+                        tr("readout-potential-electrostatic"),
+                        d.energy.electrostatic,
+                    ),
                 ],
                 total: d.energy.total(),
                 momentum: [d.momentum.x, d.momentum.y],
             }
         }
         (None, _, _) => {
-            ui.label("Press Play to see the energies and momentum.");
+            ui.label(tr("readout-press-play"));
             return;
         }
     };
@@ -414,34 +416,30 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
         .num_columns(2)
         .striped(true)
         .show(ui, |ui| {
-            let mut rows = vec![("kinetic (J)", format::number(energy.kinetic))];
+            let mut rows = vec![(tr("readout-kinetic"), format::number(energy.kinetic))];
             rows.extend(
                 energy
                     .potential
                     .iter()
-                    .map(|(name, value)| (*name, format::number(*value))),
+                    .map(|(name, value)| (name.clone(), format::number(*value))),
             );
-            rows.push(("total (J)", format::number(energy.total)));
-            rows.push(("total at Play (J)", format::number(start)));
-            rows.push(("taken by damping (J)", format::number(ledger.damping)));
-            rows.push(("taken by friction (J)", format::number(ledger.friction)));
-            rows.push(("taken by impacts (J)", format::number(ledger.impacts)));
+            rows.push((tr("readout-total"), format::number(energy.total)));
+            rows.push((tr("readout-total-at-play"), format::number(start)));
+            rows.push((tr("readout-damping"), format::number(ledger.damping)));
+            rows.push((tr("readout-friction"), format::number(ledger.friction)));
+            rows.push((tr("readout-impacts"), format::number(ledger.impacts)));
             if runner
                 .simulation
                 .as_ref()
                 .is_some_and(|s| !s.tie_names().is_empty())
             {
                 // Listed so that nobody looks for them: constraints do no work.
-                rows.push(("work of rods and strings (J)", "0".to_owned()));
+                rows.push((tr("readout-ties"), "0".to_owned()));
             }
-            rows.push(("numerical error", residual));
+            rows.push((tr("readout-error"), residual));
             rows.push((
-                "momentum (kg·m/s)",
-                format!(
-                    "({}, {})",
-                    format::number(energy.momentum[0]),
-                    format::number(energy.momentum[1])
-                ),
+                tr("readout-momentum"),
+                format::pair(energy.momentum[0], energy.momentum[1]),
             ));
             for (name, value) in rows {
                 ui.label(name);
@@ -459,26 +457,25 @@ fn books(
     ledger: physics::Ledger,
     residual: f64,
     start: f64,
-) -> Vec<(&'static str, f64, egui::Color32)> {
-    let mut bars = vec![("kinetic", energy.kinetic, KINETIC)];
+) -> Vec<(String, f64, egui::Color32)> {
+    let mut bars = vec![(tr("bar-kinetic"), energy.kinetic, KINETIC)];
     bars.extend(
         energy
             .potential
             .iter()
             .filter(|(_, value)| *value != 0.0)
             .map(|(name, value)| {
-                let name = name
-                    .trim_start_matches("potential: ")
-                    .trim_end_matches(" (J)");
-                (name, *value, POTENTIAL)
+                let name = name.trim_end_matches(" (J)");
+                let name = name.split_once(": ").map_or(name, |(_, kind)| kind);
+                (name.to_owned(), *value, POTENTIAL)
             }),
     );
     bars.extend([
-        ("damping took", ledger.damping, DISSIPATED),
-        ("friction took", ledger.friction, DISSIPATED),
-        ("impacts took", ledger.impacts, DISSIPATED),
-        ("numerical error", residual, ERROR_BAR),
-        ("total at Play", start, TOTAL),
+        (tr("bar-damping"), ledger.damping, DISSIPATED),
+        (tr("bar-friction"), ledger.friction, DISSIPATED),
+        (tr("bar-impacts"), ledger.impacts, DISSIPATED),
+        (tr("readout-error"), residual, ERROR_BAR),
+        (tr("bar-total-at-play"), start, TOTAL),
     ]);
     bars
 }
@@ -493,16 +490,17 @@ const TOTAL: egui::Color32 = egui::Color32::from_rgb(90, 90, 90);
 /// (the largest of them), from a zero line in the middle, so a negative potential
 /// extends left; kinetic green, potential blue, what dissipation took orange, the
 /// numerical error red, the energy at Play grey. The numbers are in the table above.
-fn energy_bars(ui: &mut Ui, bars: &[(&str, f64, egui::Color32)]) {
+fn energy_bars(ui: &mut Ui, bars: &[(String, f64, egui::Color32)]) {
     let scale = bars
         .iter()
         .map(|(_, value, _)| value.abs())
         .filter(|v| v.is_finite())
         .fold(0.0, f64::max);
-    ui.label(egui::RichText::new("Energy bars").strong())
-        .on_hover_text("Each kind of energy to one scale; the numbers are in the table above");
+    ui.label(egui::RichText::new(tr("bars-title")).strong())
+        .on_hover_text(tr("bars-hint"));
     let width = ui.available_width().min(320.0);
-    for &(name, value, colour) in bars {
+    for (name, value, colour) in bars {
+        let (name, value, colour) = (name.as_str(), *value, *colour);
         let (rect, response) =
             ui.allocate_exact_size(egui::vec2(width, 14.0), egui::Sense::hover());
         let painter = ui.painter_at(rect);
@@ -560,66 +558,69 @@ fn impact_list(ui: &mut Ui, runner: &Runner, scene: &physics::Scene) -> Option<A
     let can_go = runner.timeline.is_some();
     let mut action = None;
     let impacts = recording.impacts();
-    egui::CollapsingHeader::new(format!("Impacts ({})", impacts.len()))
-        .id_salt("impacts")
-        .show(ui, |ui| {
-            if impacts.is_empty() {
-                ui.label("No impacts yet.");
-                return;
-            }
-            let names = recording.names();
-            let name = |i: usize| names.get(i).map_or("?", String::as_str);
-            let row_height = ui.text_style_height(&egui::TextStyle::Body) + 4.0;
-            egui::ScrollArea::vertical()
-                .max_height(180.0)
-                .auto_shrink([false, true])
-                .show_rows(ui, row_height, impacts.len(), |ui, rows| {
-                    egui::Grid::new("impact rows")
-                        .num_columns(5)
-                        .striped(true)
-                        .show(ui, |ui| {
-                            for label in ["t (s)", "particle", "hit", "impulse (N·s)", "lost (J)"]
-                            {
-                                ui.strong(label);
-                            }
-                            ui.end_row();
-                            for impact in &impacts[rows] {
-                                let other = match impact.other {
-                                    physics::ImpactTarget::Particle(j) => name(j).to_owned(),
-                                    physics::ImpactTarget::Ramp(k) => scene
-                                        .ramps
-                                        .get(k)
-                                        .map_or_else(|| "a ramp".to_owned(), |r| r.name.clone()),
-                                    physics::ImpactTarget::Wall => "wall".to_owned(),
-                                };
-                                let time = ui
-                                    .add_enabled(
-                                        can_go,
-                                        egui::Button::new(
-                                            egui::RichText::new(format::number(impact.time))
-                                                .monospace(),
-                                        )
-                                        .small(),
+    egui::CollapsingHeader::new(tr_with(
+        "impacts-title",
+        &[("count", Arg::Number(impacts.len() as f64))],
+    ))
+    .id_salt("impacts")
+    .show(ui, |ui| {
+        if impacts.is_empty() {
+            ui.label(tr("impacts-none"));
+            return;
+        }
+        let names = recording.names();
+        let name = |i: usize| names.get(i).map_or("?", String::as_str);
+        let row_height = ui.text_style_height(&egui::TextStyle::Body) + 4.0;
+        egui::ScrollArea::vertical()
+            .max_height(180.0)
+            .auto_shrink([false, true])
+            .show_rows(ui, row_height, impacts.len(), |ui, rows| {
+                egui::Grid::new("impact rows")
+                    .num_columns(5)
+                    .striped(true)
+                    .show(ui, |ui| {
+                        for label in ["t (s)", "particle", "hit", "impulse (N·s)", "lost (J)"] {
+                            ui.strong(label);
+                        }
+                        ui.end_row();
+                        for impact in &impacts[rows] {
+                            let other = match impact.other {
+                                physics::ImpactTarget::Particle(j) => name(j).to_owned(),
+                                physics::ImpactTarget::Ramp(k) => scene
+                                    .ramps
+                                    .get(k)
+                                    .map_or_else(|| "a ramp".to_owned(), |r| r.name.clone()),
+                                physics::ImpactTarget::Wall => "wall".to_owned(),
+                            };
+                            let time = ui
+                                .add_enabled(
+                                    can_go,
+                                    egui::Button::new(
+                                        egui::RichText::new(format::number(impact.time))
+                                            .monospace(),
                                     )
-                                    .on_hover_text("Show the run at this impact");
-                                if time.clicked() {
-                                    action = Some(Action::GoTo(step_of(impact.time)));
-                                }
-                                ui.label(name(impact.particle));
-                                ui.label(other);
-                                ui.monospace(format::number(impact.impulse));
-                                ui.monospace(format::number(impact.kinetic_energy_lost));
-                                ui.end_row();
+                                    .small(),
+                                )
+                                .on_hover_text("Show the run at this impact");
+                            if time.clicked() {
+                                action = Some(Action::GoTo(step_of(impact.time)));
                             }
-                        });
-                });
-        });
+                            ui.label(name(impact.particle));
+                            ui.label(other);
+                            ui.monospace(format::number(impact.impulse));
+                            ui.monospace(format::number(impact.kinetic_energy_lost));
+                            ui.end_row();
+                        }
+                    });
+            });
+    });
     action
 }
 
 struct Energies {
     kinetic: f64,
-    potential: Vec<(&'static str, f64)>,
+    /// Each kind's name (in the app's language, with its unit) and joules.
+    potential: Vec<(String, f64)>,
     total: f64,
     momentum: [f64; 2],
 }

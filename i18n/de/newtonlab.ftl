@@ -173,3 +173,11 @@ graph-export-csv-hint = Alle aufgezeichneten Proben der Größen dieses Diagramm
 graph-save-png = PNG speichern…
 graph-save-png-hint = Ein Bild dieses Diagramms speichern, wie es zu sehen ist
 graph-press-play = Start drücken: das Diagramm füllt sich vom Beginn des Laufs an.
+
+## Announcements for screen readers
+announce-impact = Bei { $time } s stieß { $particle } an { $other }.{ $more ->
+    [0] {""}
+    [one] {" "}Dazu 1 weiterer Stoß seit der letzten Meldung.
+   *[other] {" "}Dazu { $more } weitere Stöße seit der letzten Meldung.
+}
+announce-wall = die Wand

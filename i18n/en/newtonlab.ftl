@@ -174,3 +174,11 @@ graph-export-csv-hint = Save every recorded sample of this graph's quantities as
 graph-save-png = Save PNG…
 graph-save-png-hint = Save a picture of this graph as it is on screen
 graph-press-play = Press Play: the graph fills from the start of the run.
+
+## Announcements for screen readers
+announce-impact = At { $time } s, { $particle } hit { $other }.{ $more ->
+    [0] {""}
+    [one] {" "}And 1 more impact since the last message.
+   *[other] {" "}And { $more } more impacts since the last message.
+}
+announce-wall = the wall

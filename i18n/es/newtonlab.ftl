@@ -173,3 +173,11 @@ graph-export-csv-hint = Guardar todas las muestras grabadas de las magnitudes de
 graph-save-png = Guardar PNG…
 graph-save-png-hint = Guardar una imagen de esta gráfica tal como se ve
 graph-press-play = Pulse Reproducir: la gráfica se llena desde el inicio de la ejecución.
+
+## Announcements for screen readers
+announce-impact = A los { $time } s, { $particle } chocó con { $other }.{ $more ->
+    [0] {""}
+    [one] {" "}Y 1 choque más desde el último mensaje.
+   *[other] {" "}Y { $more } choques más desde el último mensaje.
+}
+announce-wall = la pared

@@ -19,6 +19,7 @@
 #![expect(missing_docs, reason = "an application crate; see above")]
 
 pub mod action;
+pub mod announcer;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod autosave;
 pub mod canvas;
@@ -105,6 +106,8 @@ pub struct App {
     pub stopwatch: stopwatch::Stopwatch,
     /// Text size, high contrast and language, kept from session to session.
     pub settings: settings::Settings,
+    /// The latest impact as a sentence for screen readers, rate-limited.
+    pub announcer: announcer::Announcer,
     /// Where the desktop keeps them; none: not kept.
     #[cfg(not(target_arch = "wasm32"))]
     settings_file: Option<std::path::PathBuf>,
@@ -155,6 +158,7 @@ impl App {
             graphs: Graphs::default(),
             stopwatch: stopwatch::Stopwatch::default(),
             settings: settings::Settings::default(),
+            announcer: announcer::Announcer::default(),
             #[cfg(not(target_arch = "wasm32"))]
             settings_file: None,
             files: Files::default(),
@@ -894,6 +898,14 @@ impl App {
                 scene.ties.len(),
                 scene.ramps.len()
             ));
+            if !self.announcer.text.is_empty() {
+                ui.separator();
+                let said = ui.label(&self.announcer.text);
+                // A polite live region: read when it changes, the focus left where it is.
+                ui.ctx().accesskit_node_builder(said.id, |node| {
+                    node.set_live(egui::accesskit::Live::Polite);
+                });
+            }
         });
         action
     }
@@ -910,6 +922,10 @@ impl App {
         self.runner
             .advance(real_dt, time_scale, self.canvas.overlays.trails);
         self.time_stopwatch();
+        if let Some(recording) = &self.runner.recording {
+            let now = ui.input(|i| i.time);
+            self.announcer.update(recording, self.document.scene(), now);
+        }
         if self.runner.playing {
             ui.ctx().request_repaint();
         }

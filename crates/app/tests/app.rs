@@ -1281,3 +1281,36 @@ fn text_size_and_high_contrast_apply_and_are_kept() {
     );
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// While a run plays, the latest impact is said in a polite live region of the status
+/// line, where a screen reader reads it without moving the focus: after the paper's 4.3
+/// collision, "At t s, A hit B." with t the impact's located instant.
+#[test]
+fn an_impact_is_announced_in_a_live_region() {
+    use egui_kittest::kittest::NodeT as _;
+    let scene = physics::example("collision")
+        .expect("the example")
+        .scene()
+        .expect("it loads");
+    let mut harness = harness(App::new(scene));
+    play_frames(&mut harness, 4);
+    let impacts = harness
+        .state()
+        .runner
+        .recording
+        .as_ref()
+        .expect("recorded")
+        .impacts()
+        .to_vec();
+    assert_eq!(impacts.len(), 1);
+    let sentence = format!(
+        "At {} s, A hit B.",
+        newtonlab_app::format::number(impacts[0].time)
+    );
+    let node = harness.get_by_label(&sentence);
+    assert_eq!(
+        node.accesskit_node().live(),
+        egui::accesskit::Live::Polite,
+        "a live region"
+    );
+}

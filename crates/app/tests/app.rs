@@ -22,6 +22,14 @@ fn harness(app: App) -> Harness<'static, App> {
     harness
 }
 
+/// A built-in scene.
+fn example_scene(name: &str) -> Scene {
+    physics::example(name)
+        .expect("the example")
+        .scene()
+        .expect("it loads")
+}
+
 /// A small scene: one ball at the origin, no field.
 fn one_ball() -> Scene {
     Scene::new()
@@ -199,7 +207,7 @@ fn save_then_open_round_trips_a_scene() {
     let folder = std::env::temp_dir().join(format!("newtonlab-app-{}", std::process::id()));
     std::fs::create_dir_all(&folder).unwrap();
     let folder_text = folder.to_string_lossy().into_owned();
-    let mut scene = physics::example("newtons-cradle").unwrap().scene().unwrap();
+    let mut scene = example_scene("newtons-cradle");
     scene.particles[2].charge = 1.25e-7;
     let mut harness = harness(App::new(scene.clone()));
 
@@ -667,10 +675,7 @@ fn a_file_changed_on_disk_is_not_silently_overwritten() {
 /// ω² = 1 − γ²), to 1e-9 J, and the panel shows it beside the numerical error.
 #[test]
 fn the_readouts_show_what_damping_took_and_the_numerical_error() {
-    let scene = physics::example("spring-damped-light")
-        .expect("the example")
-        .scene()
-        .expect("it loads");
+    let scene = example_scene("spring-damped-light");
     let mut harness = harness(App::new(scene));
     play_frames(&mut harness, 8);
     harness.get_by_label("taken by damping (J)");
@@ -698,10 +703,7 @@ fn the_readouts_show_what_damping_took_and_the_numerical_error() {
 /// which shows that impulse; a click on its time goes back to it.
 #[test]
 fn the_impact_list_shows_each_impact_with_its_impulse() {
-    let scene = physics::example("collision")
-        .expect("the example")
-        .scene()
-        .expect("it loads");
+    let scene = example_scene("collision");
     let mut harness = harness(App::new(scene));
     play_frames(&mut harness, 4);
     harness.get_by_label("Impacts (1)").click();
@@ -939,7 +941,7 @@ fn the_tape_measure_follows_a_ball_and_the_probe_reads_the_field_where_it_is() {
 /// The Measure menu turns the electric field view on, and the canvas draws it.
 #[test]
 fn the_measure_menu_turns_on_the_field_view() {
-    let scene = physics::example("charged-pair").unwrap().scene().unwrap();
+    let scene = example_scene("charged-pair");
     let mut harness = harness(App::new(scene));
     harness.get_by_label("Measure").click();
     harness.run();
@@ -1040,7 +1042,7 @@ fn the_protractor_reads_the_angle_between_its_arms() {
 /// shown the scene's start, time included, and Undo takes it back.
 #[test]
 fn the_timeline_goes_back_to_any_step_exactly_and_edits_from_there() {
-    let scene = physics::example("collision").unwrap().scene().unwrap();
+    let scene = example_scene("collision");
     let bits = |simulation: &physics::Simulation| -> Vec<u64> {
         simulation
             .positions()
@@ -1288,10 +1290,7 @@ fn text_size_and_high_contrast_apply_and_are_kept() {
 #[test]
 fn an_impact_is_announced_in_a_live_region() {
     use egui_kittest::kittest::NodeT as _;
-    let scene = physics::example("collision")
-        .expect("the example")
-        .scene()
-        .expect("it loads");
+    let scene = example_scene("collision");
     let mut harness = harness(App::new(scene));
     play_frames(&mut harness, 4);
     let impacts = harness

@@ -1,32 +1,31 @@
-//! The time machine: every run is kept as keyframes, whole copies of the simulation taken
-//! every so many steps, so that any step of it can be shown again exactly. The simulation
-//! is deterministic — a copy stepped again gives the bits the run had — so the state at
+//! The time machine: every run is kept as keyframes, copies of the simulation taken every
+//! so many steps, so that any step of it can be shown again exactly. The simulation is
+//! deterministic — a copy stepped again gives the bits the run had — so the state at
 //! step k is the keyframe at or before k, stepped forward to k.
 //!
-//! Memory is bounded however long the run: at most [`most_keyframes`] copies, fewer for
-//! larger scenes (a budget of `BUDGET_BYTES` at an estimated kilobyte per particle).
-//! When they are all used, every other one is dropped and the interval doubles, so a long
-//! run keeps its whole length at a coarser spacing, and going back to a moment costs at
-//! most one interval of steps.
+//! A keyframe is [`Simulation::keyframe`]: a copy without the buffers each step fills
+//! again (about 160 bytes per ball of a resting pile, against some 900 for a whole
+//! copy). Memory is bounded however long the run: the keyframes together stay within
+//! `BUDGET_BYTES` (as [`Simulation::keyframe_bytes`] counts them), and at most
+//! [`MOST_KEYFRAMES`]. When the budget is used, every other one is dropped and the
+//! interval doubles, so a long run keeps its whole length at a coarser spacing, and
+//! going back to a moment costs at most one interval of steps.
 
 use physics::Simulation;
 
-/// What all keyframes together may take, bytes (estimated); a browser tab gets less.
+/// What all keyframes together may take, bytes; a browser tab gets less.
 #[cfg(not(target_arch = "wasm32"))]
 const BUDGET_BYTES: usize = 256 << 20;
 #[cfg(target_arch = "wasm32")]
 const BUDGET_BYTES: usize = 64 << 20;
-/// What a keyframe takes per particle, bytes: its positions and velocities several times
-/// over (the state, the step's start, the integrator's stages) and the contact solver's
-/// lists; counting the arrays a simulation holds gives somewhat under a kilobyte per
-/// particle of a resting pile (an estimate, not a measurement).
-const BYTES_PER_PARTICLE: usize = 1024;
+/// The most keyframes, however small the scene.
+pub const MOST_KEYFRAMES: usize = 4096;
 /// The first interval between keyframes, steps.
 const FIRST_INTERVAL: u64 = 50;
 
-/// The most keyframes kept for a scene of `particles`.
-pub fn most_keyframes(particles: usize) -> usize {
-    (BUDGET_BYTES / (BYTES_PER_PARTICLE * particles.max(1))).clamp(8, 256)
+/// The most keyframes kept for a scene whose keyframes take `bytes` each.
+pub fn most_keyframes(bytes: usize) -> usize {
+    (BUDGET_BYTES / bytes.max(1)).clamp(8, MOST_KEYFRAMES)
 }
 
 /// The keyframes of one run.
@@ -47,7 +46,7 @@ impl Timeline {
     /// A timeline for a run starting at `simulation`.
     pub fn start(simulation: &Simulation) -> Self {
         Self {
-            keyframes: vec![(0, simulation.clone())],
+            keyframes: vec![(0, simulation.keyframe())],
             interval: FIRST_INTERVAL,
             end: 0,
             live: None,
@@ -59,12 +58,12 @@ impl Timeline {
     pub fn after_step(&mut self, simulation: &Simulation) {
         self.end += 1;
         if self.end.is_multiple_of(self.interval) {
-            let most = most_keyframes(simulation.len());
+            let most = most_keyframes(simulation.keyframe_bytes());
             if self.keyframes.len() >= most {
                 self.thin();
             }
             if self.end.is_multiple_of(self.interval) {
-                self.keyframes.push((self.end, simulation.clone()));
+                self.keyframes.push((self.end, simulation.keyframe()));
             }
         }
     }
@@ -74,6 +73,20 @@ impl Timeline {
         self.interval *= 2;
         let interval = self.interval;
         self.keyframes.retain(|(step, _)| step % interval == 0);
+    }
+
+    /// Steps between keyframes now.
+    pub fn interval(&self) -> u64 {
+        self.interval
+    }
+
+    /// What the keyframes hold together, bytes (as [`Simulation::keyframe_bytes`]
+    /// counts).
+    pub fn bytes(&self) -> usize {
+        self.keyframes
+            .iter()
+            .map(|(_, keyframe)| keyframe.keyframe_bytes())
+            .sum()
     }
 
     /// How many keyframes are kept.
@@ -152,7 +165,7 @@ mod tests {
         let scene = physics::example("collision").unwrap().scene().unwrap();
         let mut simulation = Simulation::new(&scene).unwrap();
         let mut timeline = Timeline::start(&simulation);
-        let most = most_keyframes(simulation.len());
+        let most = most_keyframes(simulation.keyframe_bytes());
         for _ in 0..FIRST_INTERVAL * most as u64 * 3 {
             simulation.step().unwrap();
             timeline.after_step(&simulation);

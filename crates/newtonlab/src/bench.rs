@@ -8,6 +8,10 @@
 //!   time step (1 ms), measured from the drop, through the crash, to rest: contacts;
 //! - `mixed` ([`physics::generated::mixed`]): the pit with charges and springs, the scene
 //!   of `validate`'s processing-time table (the paper's 4.1), measured like the pit;
+//! - `scrub`: the ball pit recorded by the app's time machine
+//!   ([`newtonlab_app::timeline`]) for a simulated interval, then gone back to 20 moments
+//!   spread over it: the keyframes' count, interval and memory, and the time to show a
+//!   moment again;
 //! - `cluster` ([`physics::generated::cluster`]): `n` bodies in orbit in a disc, their
 //!   gravitation summed with the Barnes–Hut tree; reports whole force evaluations per
 //!   second.
@@ -33,6 +37,9 @@ enum BenchScene {
     Mixed,
     /// A star cluster summed with the Barnes–Hut tree: gravitation at scale.
     Cluster,
+    /// The app's time machine: the pit recorded for `--seconds` simulated seconds as the
+    /// app records a run, then gone back to moments spread over it.
+    Scrub,
 }
 
 #[derive(Debug, clap::Args)]
@@ -77,11 +84,14 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
             args.seconds
         )));
     }
+    if matches!(args.scene, BenchScene::Scrub) {
+        return scrub(args);
+    }
     let scene = match args.scene {
         BenchScene::Cloud => {
             physics::generated::charged_cloud(args.particles).with_integrator(args.integrator, 1e-4)
         }
-        BenchScene::Pit => {
+        BenchScene::Pit | BenchScene::Scrub => {
             physics::generated::ball_pit(args.particles).with_integrator(args.integrator, 1e-3)
         }
         BenchScene::Mixed => {
@@ -109,7 +119,7 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
     // crashes and settles, so it is measured over a fixed simulated interval.
     let running = |simulation: &Simulation| match args.scene {
         BenchScene::Cloud | BenchScene::Cluster => start.elapsed() < budget,
-        BenchScene::Pit | BenchScene::Mixed => simulation.time() < args.seconds,
+        BenchScene::Pit | BenchScene::Mixed | BenchScene::Scrub => simulation.time() < args.seconds,
     };
     while running(&simulation) {
         simulation.step().map_err(fail)?;
@@ -152,7 +162,7 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
                 ),
             }
         }
-        BenchScene::Pit | BenchScene::Mixed => {
+        BenchScene::Pit | BenchScene::Mixed | BenchScene::Scrub => {
             let simulated = simulation.time();
             let threads = simulation.threads();
             let what = if matches!(args.scene, BenchScene::Mixed) {
@@ -169,6 +179,58 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
         }
     }
     print_profile(&simulation.profile(), steps);
+    Ok(())
+}
+
+/// `bench --scene scrub`: the pit recorded as the app records a run, then shown again
+/// at 20 moments spread over it (each the step just before a keyframe, the farthest
+/// from the keyframe before it: the worst case), timed.
+fn scrub(args: &BenchArgs) -> Result<(), Failure> {
+    use newtonlab_app::timeline::Timeline;
+    let scene = physics::generated::ball_pit(args.particles).with_integrator(args.integrator, 1e-3);
+    let mut simulation = Simulation::new(&scene).map_err(|e| Failure::Input(e.to_string()))?;
+    let fail = |e: physics::SimulationError| Failure::Simulation(e.to_string());
+    let mut timeline = Timeline::start(&simulation);
+    let start = Instant::now();
+    while simulation.time() < args.seconds {
+        simulation.step().map_err(fail)?;
+        timeline.after_step(&simulation);
+    }
+    let recording = start.elapsed().as_secs_f64();
+    let interval = timeline.interval();
+    let mut latencies: Vec<f64> = (1..=20)
+        .map(|k| {
+            let step = (timeline.end * k / 20).saturating_sub(1);
+            // The last step of an interval is the farthest from its keyframe.
+            let step = step - step % interval + interval - 1;
+            let clock = Instant::now();
+            let shown = timeline.state_at(step.min(timeline.end));
+            let seconds = clock.elapsed().as_secs_f64();
+            shown.map(|_| seconds)
+        })
+        .collect::<Option<Vec<_>>>()
+        .ok_or_else(|| Failure::Simulation("a step could not be shown again".to_owned()))?;
+    latencies.sort_by(f64::total_cmp);
+    let n = args.particles;
+    #[expect(clippy::print_stdout, reason = "the command's report")]
+    {
+        println!(
+            "{n}-ball pit recorded for {:.0} s ({} steps) in {recording:.1} s",
+            simulation.time(),
+            timeline.end
+        );
+        println!(
+            "  {} keyframes every {interval} steps, {:.1} MiB",
+            timeline.len(),
+            timeline.bytes() as f64 / f64::from(1 << 20)
+        );
+        println!(
+            "  going back to a moment: {:.1} ms median, {:.1} ms worst (20 moments, each {} steps past its keyframe)",
+            latencies[latencies.len() / 2] * 1e3,
+            latencies[latencies.len() - 1] * 1e3,
+            interval - 1
+        );
+    }
     Ok(())
 }
 

@@ -231,7 +231,7 @@ impl Contacts {
             self.search
                 .controls
                 .iter()
-                .zip(&self.radius)
+                .zip(self.radius.iter())
                 .map(|(controls, r)| Aabb::around(controls, *r)),
         );
     }

@@ -99,7 +99,7 @@ impl Impact {
 #[derive(Clone, Debug)]
 pub(crate) struct Contacts {
     obstacles: Vec<Obstacle>,
-    radius: Vec<f64>,
+    radius: std::sync::Arc<[f64]>,
     /// Particle–particle restitution.
     restitution: f64,
     /// The largest acceleration seen in the last step, m/s².
@@ -161,6 +161,25 @@ impl Contacts {
                 .collect(),
             applied: Vec::new(),
         }
+    }
+
+    /// Frees what each step builds again before it reads it: the broad phase's carried
+    /// boxes and grid (rebuilt from scratch when missing; the pairs it finds are those
+    /// whose boxes overlap, whatever boxes it carried), the boxes, the touching lists,
+    /// the impact search's lists and the resting solver's rows. The resting solver's
+    /// memory of the last impulses, which the next step starts from, stays.
+    pub fn drop_scratch(&mut self) {
+        self.proxies = Proxies::default();
+        self.boxes = Vec::new();
+        self.touching = StartContacts::default();
+        self.search = ImpactSearch::default();
+        self.resting.drop_scratch();
+        self.applied = Vec::new();
+    }
+
+    /// The bytes of what [`Self::drop_scratch`] keeps, by length.
+    pub fn memory_bytes(&self) -> usize {
+        self.obstacles.len() * size_of::<Obstacle>() + self.resting.memory_bytes()
     }
 
     /// How many of the obstacles are ramps (the walls come after them).

@@ -225,6 +225,17 @@ pub(crate) struct RestingSolver {
 }
 
 impl RestingSolver {
+    /// Frees the rows, which every solve builds again; the last impulses stay.
+    pub fn drop_scratch(&mut self) {
+        self.pairs = Vec::new();
+        self.surfaces = Vec::new();
+    }
+
+    /// The bytes of the last impulses, by length.
+    pub fn memory_bytes(&self) -> usize {
+        (self.last_pairs.len() + self.last_surfaces.len()) * size_of::<((u32, u32), f64)>()
+    }
+
     /// Solves the resting contacts after a step of `h`. A fast approach of a particle for
     /// which `is_struck` holds (an impact struck it in this step) is a blow being passed
     /// on (a row of touching balls), left to the impacts at the start of the next step,

@@ -10,6 +10,8 @@ pub(crate) mod spring;
 pub(crate) mod tree;
 pub(crate) mod uniform;
 
+use std::sync::Arc;
+
 use glam::DVec2;
 
 use crate::constraints::Constraints;
@@ -21,14 +23,14 @@ pub(crate) use spring::SpringLink;
 #[derive(Clone, Debug)]
 pub(crate) struct ForceModel {
     /// Kilograms.
-    pub mass: Vec<f64>,
+    pub mass: Arc<[f64]>,
     /// 1/kg; zero for fixed particles, which is what keeps them still.
-    pub inverse_mass: Vec<f64>,
+    pub inverse_mass: Arc<[f64]>,
     /// Coulombs.
-    pub charge: Vec<f64>,
+    pub charge: Arc<[f64]>,
     /// The uniform field plus the particle's own applied acceleration, m/s²; zero for
     /// fixed particles.
-    pub uniform: Vec<DVec2>,
+    pub uniform: Arc<[DVec2]>,
     /// G when gravitation is on.
     pub gravitational_constant: Option<f64>,
     /// k when electrostatics is on.
@@ -75,7 +77,7 @@ impl ForceModel {
         Self {
             mass: particles.iter().map(|p| p.mass).collect(),
             constraints: Constraints::new(scene, &inverse_mass),
-            inverse_mass,
+            inverse_mass: inverse_mass.into(),
             charge: particles.iter().map(|p| p.charge).collect(),
             uniform: particles
                 .iter()
@@ -182,6 +184,15 @@ impl ForceModel {
         (damping, friction)
     }
 
+    /// The bytes of the springs, rods and strings and the surfaces' contacts, by length
+    /// (for [`crate::Simulation::keyframe_bytes`]).
+    pub fn links_bytes(&self) -> usize {
+        self.springs.len() * size_of::<SpringLink>()
+            + self.constraints.links.len() * (size_of::<crate::constraints::Link>() + 1)
+            + self.surface_contacts.len() * size_of::<SurfaceContact>()
+            + (self.interacting.len() + self.charged.len()) * size_of::<usize>()
+    }
+
     /// Whether any force dissipates smoothly now: a damped spring, or friction on a
     /// surface a particle rests on.
     pub fn dissipates(&self) -> bool {
@@ -192,8 +203,8 @@ impl ForceModel {
     /// Σ ½ m v² over the moving particles, joules.
     pub fn kinetic_energy(&self, v: &[DVec2]) -> f64 {
         v.iter()
-            .zip(&self.mass)
-            .zip(&self.inverse_mass)
+            .zip(self.mass.iter())
+            .zip(self.inverse_mass.iter())
             .filter(|&(_, &w)| w > 0.0)
             .map(|((v, m), _)| 0.5 * m * v.length_squared())
             .sum()

@@ -126,6 +126,15 @@ pub(crate) struct Workspace {
 }
 
 impl Workspace {
+    /// Frees the stages, which every step writes before it reads them (see
+    /// [`crate::Simulation::keyframe`]); the kept acceleration and the step-size memory
+    /// stay.
+    pub fn drop_scratch(&mut self) {
+        self.accelerations = Vec::new();
+        self.velocities = Vec::new();
+        self.stage = State::default();
+    }
+
     /// Makes room for `stages` stages of `n` particles.
     pub fn prepare(&mut self, stages: usize, n: usize) {
         for list in [&mut self.accelerations, &mut self.velocities] {

@@ -38,7 +38,7 @@ impl Simulation {
         let (x, v, w) = (
             &self.state.position,
             &mut self.state.velocity,
-            &self.forces.inverse_mass,
+            &self.forces.inverse_mass[..],
         );
         let mut changed = false;
         for k in 0..constraints.links.len() {

@@ -7,7 +7,7 @@
 
 use physics::{ImpactTarget, Scene};
 
-use crate::i18n::{Arg, tr_with};
+use crate::i18n::{Arg, tr, tr_with};
 use crate::recording::Recording;
 
 /// Seconds of real time between two sentences.
@@ -46,7 +46,7 @@ impl Announcer {
                 .ramps
                 .get(k)
                 .map_or_else(|| "?".to_owned(), |r| r.name.clone()),
-            ImpactTarget::Wall => tr_with("announce-wall", &[]),
+            ImpactTarget::Wall => tr("announce-wall"),
         };
         let time = crate::format::number(latest.time);
         let more = impacts.len() - self.told - 1;

@@ -178,21 +178,21 @@ fn tr_args(id: &str, args: Option<&FluentArgs<'_>>) -> String {
         .unwrap_or_else(|| id.to_owned())
 }
 
-/// The message ids of a file, in order.
-pub fn ids(source: &str) -> Vec<String> {
-    source
-        .lines()
-        .filter_map(|line| {
-            let (id, _) = line.split_once(" =")?;
-            let first = id.chars().next()?;
-            (first.is_ascii_alphabetic() && !id.contains(' ')).then(|| id.to_owned())
-        })
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The message ids of a file, in order.
+    fn ids(source: &str) -> Vec<String> {
+        source
+            .lines()
+            .filter_map(|line| {
+                let (id, _) = line.split_once(" =")?;
+                let first = id.chars().next()?;
+                (first.is_ascii_alphabetic() && !id.contains(' ')).then(|| id.to_owned())
+            })
+            .collect()
+    }
 
     #[test]
     fn every_file_parses() {

@@ -22,6 +22,13 @@ fn harness(app: App) -> Harness<'static, App> {
     harness
 }
 
+/// The app on a built-in scene, played for `frames` frames and paused.
+fn played(name: &str, frames: usize) -> Harness<'static, App> {
+    let mut harness = harness(App::new(example_scene(name)));
+    play_frames(&mut harness, frames);
+    harness
+}
+
 /// A built-in scene.
 fn example_scene(name: &str) -> Scene {
     physics::example(name)
@@ -675,9 +682,7 @@ fn a_file_changed_on_disk_is_not_silently_overwritten() {
 /// ω² = 1 − γ²), to 1e-9 J, and the panel shows it beside the numerical error.
 #[test]
 fn the_readouts_show_what_damping_took_and_the_numerical_error() {
-    let scene = example_scene("spring-damped-light");
-    let mut harness = harness(App::new(scene));
-    play_frames(&mut harness, 8);
+    let harness = played("spring-damped-light", 8);
     harness.get_by_label("taken by damping (J)");
     harness.get_by_label("numerical error");
     let simulation = harness.state().runner.simulation.as_ref().expect("playing");
@@ -703,9 +708,7 @@ fn the_readouts_show_what_damping_took_and_the_numerical_error() {
 /// which shows that impulse; a click on its time goes back to it.
 #[test]
 fn the_impact_list_shows_each_impact_with_its_impulse() {
-    let scene = example_scene("collision");
-    let mut harness = harness(App::new(scene));
-    play_frames(&mut harness, 4);
+    let mut harness = played("collision", 4);
     harness.get_by_label("Impacts (1)").click();
     harness.run();
     let impulse = 20.0 * (1.0_f64 - 0.53 * 0.53).sqrt();
@@ -1290,9 +1293,7 @@ fn text_size_and_high_contrast_apply_and_are_kept() {
 #[test]
 fn an_impact_is_announced_in_a_live_region() {
     use egui_kittest::kittest::NodeT as _;
-    let scene = example_scene("collision");
-    let mut harness = harness(App::new(scene));
-    play_frames(&mut harness, 4);
+    let harness = played("collision", 4);
     let impacts = harness
         .state()
         .runner

@@ -14,6 +14,16 @@ fn fingerprint(simulation: &Simulation) -> Vec<u64> {
         .collect()
 }
 
+/// `scene` after 20 steps on `threads` threads.
+fn twenty_steps(scene: &physics::Scene, threads: usize) -> Simulation {
+    let mut simulation = Simulation::new(scene).expect("a valid scene");
+    simulation.set_threads(threads);
+    for _ in 0..20 {
+        simulation.step().expect("it steps");
+    }
+    simulation
+}
+
 /// A 5,000-ball pit (large enough that the contact search is split across threads) run
 /// through its first impacts on the floor and on each other: the state after 0.6 s is
 /// bit-identical on 1, 2 and 3 threads.
@@ -44,14 +54,7 @@ fn the_pit_gives_the_same_bits_on_any_number_of_threads() {
 #[test]
 fn the_pair_sum_gives_the_same_bits_on_any_number_of_threads() {
     let scene = generated::charged_cloud(1500).with_integrator(physics::Integrator::Rk4, 1e-4);
-    let run = |threads: usize| {
-        let mut simulation = Simulation::new(&scene).unwrap();
-        simulation.set_threads(threads);
-        for _ in 0..20 {
-            simulation.step().unwrap();
-        }
-        fingerprint(&simulation)
-    };
+    let run = |threads: usize| fingerprint(&twenty_steps(&scene, threads));
     let one = run(1);
     for threads in [2, 3] {
         assert!(
@@ -68,11 +71,7 @@ fn the_pair_sum_gives_the_same_bits_on_any_number_of_threads() {
 fn the_tree_gives_the_same_bits_on_any_number_of_threads() {
     let scene = generated::cluster(5000);
     let run = |threads: usize| {
-        let mut simulation = Simulation::new(&scene).unwrap();
-        simulation.set_threads(threads);
-        for _ in 0..20 {
-            simulation.step().unwrap();
-        }
+        let simulation = twenty_steps(&scene, threads);
         let energy = simulation.diagnostics().energy.gravitation.to_bits();
         (fingerprint(&simulation), energy)
     };

@@ -71,9 +71,10 @@ impl Canvas {
         if response.clicked_by(egui::PointerButton::Primary) || response.drag_started() {
             response.request_focus();
         }
-        let description = describe(document.scene(), frame, *selection);
+        // Made only when asked for (a screen reader listening, or the focus moving here).
+        let (scene, selected) = (document.scene(), *selection);
         response.widget_info(|| {
-            egui::WidgetInfo::labeled(egui::Role::Canvas, true, description.clone())
+            egui::WidgetInfo::labeled(egui::Role::Canvas, true, describe(scene, frame, selected))
         });
         if !response.has_focus() || self.instruments.active.is_some() {
             return;

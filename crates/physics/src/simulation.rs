@@ -126,17 +126,19 @@ pub struct ImpactRecord {
 
 /// The energy the dissipative parts of the physics took out of the motion since the
 /// ledger was started, joules. With the kinetic and potential energy it closes: kinetic +
-/// potential + the three − the starting energy is what is left, the residual (the
-/// integrator's error, and the
-/// potential energy the position correction of overlapping piles moves).
+/// potential + the three − the starting energy is what is left, the residual: the
+/// integrator's error.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Ledger {
     /// Spring damping: ∫ b (closing speed)² dt, by Simpson's rule over each step.
     pub damping: f64,
     /// Surface friction: ∫ −F·v dt of the surfaces' tangential force, the same way.
     pub friction: f64,
-    /// Impacts and resting contact: ½ μ (1 − e²) u² per impact, and the kinetic energy
-    /// the resting contacts' inelastic impulses remove.
+    /// Impacts and resting contact: ½ μ (1 − e²) u² per impact, the kinetic energy the
+    /// resting contacts' inelastic impulses remove, less the potential energy their
+    /// position correction adds (a pile at rest sinks by ½ g h² a step under gravity and is
+    /// lifted back: each step the impulses take ½ m (g h)² and the lift gives it back, so
+    /// a pile at rest dissipates nothing, as it should).
     pub impacts: f64,
 }
 
@@ -438,30 +440,8 @@ impl Simulation {
     /// taken.
     fn advance(&mut self, max_step: f64) -> Result<f64, SimulationError> {
         self.profiler.start();
-        let kinetic = self
-            .ledger
-            .map(|_| self.forces.kinetic_energy(&self.state.velocity));
-        if self.contacts.begin_step(
-            &mut self.state,
-            &mut self.forces,
-            max_step,
-            &mut self.profiler,
-        ) {
-            self.work.start_acceleration = None;
-        }
-        if self.begin_ties(max_step) {
-            self.work.start_acceleration = None;
-        }
-        // What impacts at the step's start, strings snapping taut and the surfaces'
-        // catching took.
+        let begun_with = self.begin(max_step);
         let begun = self.contacts.applied.len();
-        let power_at_start = kinetic.map(|before| {
-            let caught = before - self.forces.kinetic_energy(&self.state.velocity);
-            let power = self
-                .forces
-                .dissipation(&self.state.position, &self.state.velocity);
-            (caught, power)
-        });
         self.start.clone_from(&self.state);
         let mut taken = integrators::advance(
             self.integrator,
@@ -512,20 +492,25 @@ impl Simulation {
         self.log_impacts();
         let before_settling = self.ledger.map(|_| {
             let end = power_at_end.unwrap_or_else(|| self.power_over_step(taken));
-            (end, self.forces.kinetic_energy(&self.state.velocity))
+            let supported = self.forces.surface_normal_work(
+                &self.start.position,
+                &self.state.position,
+                &self.state.velocity,
+                &self.radius,
+            );
+            (
+                end,
+                self.forces.kinetic_energy(&self.state.velocity),
+                supported,
+            )
         });
         if let Some((k, _)) = tie_event {
             self.apply_tie_event(k);
             self.work.start_acceleration = None;
         }
-        if self
-            .contacts
-            .settle(&mut self.state, &self.forces, taken, struck)
-        {
-            self.work.start_acceleration = None;
-        }
-        if let (Some(start), Some(end)) = (power_at_start, before_settling) {
-            self.book(start, end, begun, taken);
+        let lifted = self.settle(taken, struck);
+        if let (Some(start), Some((power, kinetic, supported))) = (begun_with, before_settling) {
+            self.book(start, (power, kinetic), begun, taken, supported + lifted);
         }
         self.profiler.lap(Stage::RestingSolver);
         if !self.forces.constraints.is_empty() {
@@ -535,6 +520,50 @@ impl Simulation {
         self.steps += 1;
         self.check_finite()?;
         Ok(taken)
+    }
+
+    /// The step's start: impacts due now, strings snapping taut, surfaces catching
+    /// particles. With a ledger, returns the energy they took (the kinetic energy, less
+    /// the potential energy a catch's lift onto its surface gave) and the dissipated power
+    /// then.
+    fn begin(&mut self, max_step: f64) -> Option<(f64, Power)> {
+        let before = self.ledger.map(|_| {
+            let kinetic = self.forces.kinetic_energy(&self.state.velocity);
+            (kinetic, self.state.position.clone())
+        });
+        if self.contacts.begin_step(
+            &mut self.state,
+            &mut self.forces,
+            max_step,
+            &mut self.profiler,
+        ) {
+            self.work.start_acceleration = None;
+        }
+        if self.begin_ties(max_step) {
+            self.work.start_acceleration = None;
+        }
+        before.map(|(kinetic, position)| {
+            let (x, v) = (&self.state.position, &self.state.velocity);
+            let lifted = diagnostics::potential_change(&self.forces, &position, x);
+            let caught = kinetic - self.forces.kinetic_energy(v) - lifted;
+            (caught, self.forces.dissipation(x, v))
+        })
+    }
+
+    /// Resting contact after a step of `taken` ([`Contacts::settle`]). With a ledger,
+    /// returns the potential energy its position correction gave (a pile at rest sinks
+    /// ½ g h² a step under gravity, and the correction lifts it back), or 0.
+    fn settle(&mut self, taken: f64, struck: Option<Impact>) -> f64 {
+        let before = self.ledger.map(|_| self.state.position.clone());
+        if self
+            .contacts
+            .settle(&mut self.state, &self.forces, taken, struck)
+        {
+            self.work.start_acceleration = None;
+        }
+        before.map_or(0.0, |position| {
+            diagnostics::potential_change(&self.forces, &position, &self.state.position)
+        })
     }
 
     fn check_finite(&self) -> Result<(), SimulationError> {
@@ -601,8 +630,18 @@ impl Simulation {
     /// Adds a step of `taken` seconds to the ledger: `start` is what the step's start
     /// took impulsively and the dissipated power there; `end`, the power at its end and
     /// the kinetic energy before the resting solver; impacts inside the step are those
-    /// applied from `begun` on.
-    fn book(&mut self, start: (f64, Power), end: ((Power, Power), f64), begun: usize, taken: f64) {
+    /// applied from `begun` on; `moved` is the energy the contacts gave the motion
+    /// otherwise: the potential energy of particles they moved (a correction lifting a
+    /// sunken pile) and the work of surfaces' normal forces on particles moving along
+    /// their normals.
+    fn book(
+        &mut self,
+        start: (f64, Power),
+        end: ((Power, Power), f64),
+        begun: usize,
+        taken: f64,
+        moved: f64,
+    ) {
         let Some(ledger) = &mut self.ledger else {
             return;
         };
@@ -619,7 +658,7 @@ impl Simulation {
             .map(|applied| impact_energy_lost(applied, w))
             .sum();
         let settled = kinetic - self.forces.kinetic_energy(&self.state.velocity);
-        ledger.impacts += caught + in_step + settled;
+        ledger.impacts += caught + in_step + settled - moved;
     }
 
     /// Integrates from the step's start to the instant of `impact`, first estimated at

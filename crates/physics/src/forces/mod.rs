@@ -184,6 +184,44 @@ impl ForceModel {
         (damping, friction)
     }
 
+    /// The work the surfaces' normal forces did on particles that moved into or off
+    /// them over a step from `start` to `end` (positions; `v` the velocities at the
+    /// end), joules: the normal force at the end times the displacement along the
+    /// normal, exact when the force is constant over the step, as a uniform field's
+    /// support is. A particle resting or sliding on a surface does not move along its
+    /// normal, and its surface does no work; one struck inside the step does: pushed
+    /// into its floor, it sinks until the resting contacts stop it, and the floor's
+    /// support takes m g × the depth from the motion. Particles that stayed on their
+    /// surface (to 1e-12 of their radius) cost nothing to check: the forces are
+    /// evaluated only when one moved along its normal.
+    pub fn surface_normal_work(
+        &self,
+        start: &[DVec2],
+        end: &[DVec2],
+        v: &[DVec2],
+        radius: &[f64],
+    ) -> f64 {
+        let depth = |c: &SurfaceContact| (end[c.particle] - start[c.particle]).dot(c.normal);
+        if self
+            .surface_contacts
+            .iter()
+            .all(|c| depth(c).abs() <= 1e-12 * radius[c.particle])
+        {
+            return 0.0;
+        }
+        let mut a = vec![DVec2::ZERO; end.len()];
+        self.accelerations_off_surfaces(end, v, &mut a);
+        let mut work = 0.0;
+        for contact in &self.surface_contacts {
+            let p = contact.particle;
+            let before = a[p];
+            contact.apply(&mut a[p]);
+            let pressing = (a[p] - before).dot(contact.normal);
+            work += self.mass[p] * pressing * depth(contact);
+        }
+        work
+    }
+
     /// The bytes of the springs, rods and strings and the surfaces' contacts, by length
     /// (for [`crate::Simulation::keyframe_bytes`]).
     pub fn links_bytes(&self) -> usize {

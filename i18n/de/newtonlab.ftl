@@ -130,6 +130,9 @@ canvas-key-move = Das ausgewählte Teilchen oder die Rampe um einen Rasterschrit
 canvas-key-fine = Um ein Zehntel eines Rasterschritts verschieben
 canvas-key-enter = Ein Objekt des aktuellen Werkzeugs in der Mitte der Ansicht hinzufügen (eine Feder, Stange oder einen Faden vom ausgewählten Teilchen aus)
 canvas-key-escape = Die Tastatur zurückgeben; Tab geht dann zum nächsten Bedienelement
+canvas-key-instrument-enter = Mit dem Maßband (M) oder dem Winkelmesser (A): vom ausgewählten Teilchen zu den nächsten legen, oder in die Mitte der Ansicht
+canvas-key-instrument-tab = Mit dem Maßband oder dem Winkelmesser: das Ende oder den Punkt wählen, den die Pfeiltasten bewegen
+canvas-key-instrument-move = Mit der Sonde, dem Maßband oder dem Winkelmesser: (den gewählten Punkt) um ein Zehntel eines Rasterschritts verschieben; Umschalt ein Hundertstel
 
 ## Readouts and graphs
 readout-heading = Energie und Impuls

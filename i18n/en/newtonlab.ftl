@@ -131,6 +131,9 @@ canvas-key-move = Move the selected particle or ramp one grid step
 canvas-key-fine = Move it a tenth of a grid step
 canvas-key-enter = Add the current tool's object at the view's centre (a spring, rod or string from the selected particle)
 canvas-key-escape = Give the keyboard back; Tab then moves to the next control
+canvas-key-instrument-enter = With the tape (M) or the protractor (A): lay it from the selected particle to the next ones, or at the view's centre
+canvas-key-instrument-tab = With the tape or the protractor: pick the end or point the arrow keys move
+canvas-key-instrument-move = With the probe, tape or protractor: move it (its chosen point) a tenth of a grid step; Shift a hundredth
 
 ## Readouts and graphs
 readout-heading = Energy and momentum

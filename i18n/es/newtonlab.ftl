@@ -130,6 +130,9 @@ canvas-key-move = Mover la partícula o la rampa seleccionada un paso de la cuad
 canvas-key-fine = Moverla una décima de paso
 canvas-key-enter = Añadir un objeto de la herramienta actual en el centro de la vista (un resorte, una varilla o una cuerda desde la partícula seleccionada)
 canvas-key-escape = Devolver el teclado; Tab pasa entonces al control siguiente
+canvas-key-instrument-enter = Con la cinta (M) o el transportador (A): tenderlo desde la partícula seleccionada hasta las siguientes, o en el centro de la vista
+canvas-key-instrument-tab = Con la cinta o el transportador: elegir el extremo o el punto que mueven las flechas
+canvas-key-instrument-move = Con la sonda, la cinta o el transportador: moverlo (su punto elegido) una décima de paso; Mayús una centésima
 
 ## Readouts and graphs
 readout-heading = Energía y momento

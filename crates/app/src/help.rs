@@ -15,6 +15,9 @@ const CANVAS_KEYS: &[(&str, &str)] = &[
     ("Shift+← ↑ → ↓", "canvas-key-fine"),
     ("Enter", "canvas-key-enter"),
     ("Escape", "canvas-key-escape"),
+    ("M / A + Enter", "canvas-key-instrument-enter"),
+    ("M / A + Tab", "canvas-key-instrument-tab"),
+    ("P / M / A + ← ↑ → ↓", "canvas-key-instrument-move"),
 ];
 
 /// Shows the list while `shown`; its close button clears it.

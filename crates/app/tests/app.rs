@@ -1125,6 +1125,54 @@ fn tab_until(harness: &mut Harness<'_, App>, what: &str, done: impl Fn(&Harness<
     panic!("Tab never reaches {what}");
 }
 
+/// The tape and the protractor with the keyboard alone: on the focused canvas, M and
+/// Enter lay the tape at the view's centre, a grid step long; the arrows move its far
+/// end, and after Tab its near end, a tenth of a grid step a press, so the tape reads
+/// (1 + 0.3) grid steps less the near end's 0.2 along x, and 0.1 up. A and Enter lay
+/// the protractor's arms right and up (90°); Tab picks the vertex (after the second arm),
+/// and moving it a grid step left and down closes the angle: seen from there the arms
+/// point at (2, 1) and (1, 2) grid steps, cos θ = 4/5 (36.87°).
+#[test]
+fn the_tape_and_the_protractor_work_from_the_keyboard() {
+    use newtonlab_app::canvas::{protractor_reading, tape_reading};
+    let mut harness = harness(App::new(small_ball()));
+    tab_until(&mut harness, "the canvas", canvas_focused);
+    let grid =
+        newtonlab_app::canvas::nice_length(80.0 / harness.state().canvas.view.pixels_per_metre);
+    let press = |harness: &mut Harness<'_, App>, key: Key, times: usize| {
+        for _ in 0..times {
+            harness.key_press(key);
+            harness.run();
+        }
+    };
+    press(&mut harness, Key::M, 1);
+    press(&mut harness, Key::Enter, 1);
+    press(&mut harness, Key::ArrowRight, 3);
+    press(&mut harness, Key::ArrowUp, 1);
+    press(&mut harness, Key::Tab, 1);
+    press(&mut harness, Key::ArrowRight, 2);
+    assert!(canvas_focused(&harness), "Tab stays on the canvas");
+    let tape = harness.state().canvas.instruments.tape.expect("laid");
+    let (length, _) = tape_reading(tape, &[]).expect("a reading");
+    let expected = DVec2::new(1.1 * grid, 0.1 * grid).length();
+    assert!(
+        (length - expected).abs() < 1e-12 * grid,
+        "{length} m, not {expected}"
+    );
+    press(&mut harness, Key::A, 1);
+    press(&mut harness, Key::Enter, 1);
+    let protractor = harness.state().canvas.instruments.protractor.expect("laid");
+    let angle = protractor_reading(protractor, &[]).expect("a reading");
+    assert!((angle - 90.0).abs() < 1e-9, "{angle}°");
+    press(&mut harness, Key::Tab, 1);
+    press(&mut harness, Key::ArrowLeft, 10);
+    press(&mut harness, Key::ArrowDown, 10);
+    let protractor = harness.state().canvas.instruments.protractor.expect("laid");
+    let angle = protractor_reading(protractor, &[]).expect("a reading");
+    let expected = (0.8_f64).acos().to_degrees();
+    assert!((angle - expected).abs() < 1e-9, "{angle}°, not {expected}°");
+}
+
 /// The walk-through with the keyboard alone: Tab reaches the canvas; 2 and Enter
 /// add a particle at the view's centre; the arrow keys move it a grid step (Shift a
 /// tenth); 3 and Enter hang it on a spring from a fixed point; Tab on the canvas

@@ -7,9 +7,11 @@
 //!
 //! While an instrument is chosen, a drag on the canvas works it instead of the editing
 //! tool. From the keyboard: **M**, **A** and **P** choose the tape, the protractor and
-//! the probe (again to put it away), the arrow keys move the probe by a grid step (Shift: a tenth), and Enter lays
-//! the tape from the selected particle to the next one, or the protractor's vertex on it
-//! and its arms to the next two.
+//! the probe (again to put it away); Enter lays the tape from the selected particle to
+//! the next one, or the protractor's vertex on it and its arms to the next two (with
+//! nothing selected, at the view's centre); Tab picks which of the tape's ends or the
+//! protractor's points the arrow keys move, and the arrows move it, or the probe, by a
+//! tenth of a grid step (Shift: a hundredth).
 
 use egui::{Align2, Color32, FontId, Pos2, Rect, Stroke, Vec2};
 use physics::{DVec2, Scene, field_at};
@@ -78,6 +80,12 @@ impl Mark {
             Self::Particle(i) => positions.get(i).copied(),
         }
     }
+
+    /// This mark moved by `by` metres: a point of the world where it now is (an end
+    /// moved off its particle lets go of it).
+    fn moved(self, by: DVec2, positions: &[DVec2]) -> Self {
+        Self::Point(self.at(positions).unwrap_or_default() + by)
+    }
 }
 
 /// The instruments' state.
@@ -95,6 +103,9 @@ pub struct Instruments {
     pub protractor: Option<(Mark, Mark, Option<Mark>)>,
     /// Whether the drag in progress lays the protractor's second arm.
     second_arm: bool,
+    /// The point of the tape or protractor the arrow keys move (Tab picks the next):
+    /// 0 the tape's first end or the protractor's vertex, 1 and 2 the others.
+    pub handle: usize,
 }
 
 /// The angle between the protractor's arms, degrees in 0..=180, once both are laid.
@@ -281,6 +292,11 @@ fn draw_field(
     }
 }
 
+/// Whether the keys are the instruments': the canvas has the focus, or nothing has.
+fn keys_are_free(ui: &egui::Ui, canvas_focused: bool) -> bool {
+    canvas_focused || !ui.ctx().egui_wants_keyboard_input()
+}
+
 impl super::Canvas {
     /// The gestures of the chosen instrument this frame: a drag lays the tape (an end on
     /// a particle holds to it), a click or drag places the probe; the arrow keys move the
@@ -324,15 +340,6 @@ impl super::Canvas {
                 {
                     self.instruments.tape = Some((first, mark(self, end)));
                 }
-                let enter = ui.input(|i| i.key_pressed(egui::Key::Enter));
-                if enter
-                    && !ui.ctx().egui_wants_keyboard_input()
-                    && let Some(super::Selection::Particle(i)) = selection
-                    && positions.len() > 1
-                {
-                    let next = (i + 1) % positions.len();
-                    self.instruments.tape = Some((Mark::Particle(i), Mark::Particle(next)));
-                }
             }
             Instrument::Protractor => {
                 if response.drag_started_by(egui::PointerButton::Primary) {
@@ -365,58 +372,128 @@ impl super::Canvas {
                 {
                     self.instruments.protractor = Some(place(protractor, mark(self, end)));
                 }
-                // From the keyboard: the vertex on the selected particle, the arms to the
-                // next two.
-                if ui.input(|i| i.key_pressed(egui::Key::Enter))
-                    && !ui.ctx().egui_wants_keyboard_input()
-                    && let Some(super::Selection::Particle(i)) = selection
-                    && positions.len() > 2
-                {
-                    let n = positions.len();
-                    self.instruments.protractor = Some((
-                        Mark::Particle(i),
-                        Mark::Particle((i + 1) % n),
-                        Some(Mark::Particle((i + 2) % n)),
-                    ));
-                }
             }
             Instrument::Probe => self.place_probe(ui, response, world),
         }
+        // The keyboard, where no other widget has the focus, in the first pass only (a
+        // pass egui discards sees the same keys again).
+        let focused = response.has_focus();
+        if keys_are_free(ui, focused) && ui.ctx().current_pass_index() == 0 {
+            self.instrument_keys(ui, (instrument, focused), positions, selection);
+        }
+    }
+
+    /// The tape and the protractor from the keyboard. Enter lays the tape from the
+    /// selected particle to the next (the protractor's vertex on it and its arms to the
+    /// next two), or with no particle selected at the view's centre (the tape a grid step
+    /// long; the protractor's arms a grid step right and up). Tab picks the point the
+    /// arrow keys move (the tape's ends; the vertex and the arms) while the canvas has the
+    /// focus; the arrows move it a tenth of a grid step
+    /// a press (Shift: a hundredth); an end moved off a particle lets go of it.
+    fn instrument_keys(
+        &mut self,
+        ui: &egui::Ui,
+        (instrument, focused): (Instrument, bool),
+        positions: &[DVec2],
+        selection: Option<super::Selection>,
+    ) {
+        let points = match instrument {
+            Instrument::Tape => 2,
+            Instrument::Protractor => 3,
+            Instrument::Probe => return,
+        };
+        let (enter, tab) = ui.input(|i| {
+            (
+                i.key_pressed(egui::Key::Enter),
+                i.key_pressed(egui::Key::Tab),
+            )
+        });
+        if enter {
+            let grid = super::view::nice_length(80.0 / self.view.pixels_per_metre);
+            let n = positions.len();
+            let on = |k: usize| match selection {
+                Some(super::Selection::Particle(i)) if n >= points => Mark::Particle((i + k) % n),
+                _ => Mark::Point(self.view.center + [DVec2::ZERO, DVec2::X, DVec2::Y][k] * grid),
+            };
+            match instrument {
+                Instrument::Tape => self.instruments.tape = Some((on(0), on(1))),
+                _ => self.instruments.protractor = Some((on(0), on(1), Some(on(2)))),
+            }
+            self.instruments.handle = points - 1;
+        }
+        // Tab while the canvas has the focus (elsewhere it moves the focus).
+        if tab && focused {
+            self.instruments.handle = (self.instruments.handle + 1) % points;
+        }
+        let by = self.arrow_move(ui);
+        if by == DVec2::ZERO {
+            return;
+        }
+        let handle = self.instruments.handle;
+        match instrument {
+            Instrument::Tape => {
+                if let Some((a, b)) = &mut self.instruments.tape {
+                    let end = if handle == 0 { a } else { b };
+                    *end = end.moved(by, positions);
+                }
+            }
+            _ => {
+                if let Some((vertex, a, b)) = &mut self.instruments.protractor {
+                    match handle {
+                        0 => *vertex = vertex.moved(by, positions),
+                        1 => *a = a.moved(by, positions),
+                        _ => {
+                            if let Some(b) = b {
+                                *b = b.moved(by, positions);
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+
+    /// Where the arrow keys pressed this frame move a point, metres: a tenth of a grid
+    /// step a press (Shift: a hundredth), x right and y up.
+    fn arrow_move(&self, ui: &egui::Ui) -> DVec2 {
+        let step = super::view::nice_length(80.0 / self.view.pixels_per_metre)
+            / if ui.input(|i| i.modifiers.shift) {
+                100.0
+            } else {
+                10.0
+            };
+        let moved = ui.input(|i| {
+            let mut d = DVec2::ZERO;
+            for (key, by) in [
+                (egui::Key::ArrowLeft, DVec2::NEG_X),
+                (egui::Key::ArrowRight, DVec2::X),
+                (egui::Key::ArrowUp, DVec2::Y),
+                (egui::Key::ArrowDown, DVec2::NEG_Y),
+            ] {
+                if i.key_pressed(key) {
+                    d += by;
+                }
+            }
+            d
+        });
+        moved * step
     }
 
     /// The probe goes where the canvas is clicked or dragged, and a grid step (Shift: a
     /// tenth of one) along an arrow key.
     fn place_probe(&mut self, ui: &egui::Ui, response: &egui::Response, world: Option<DVec2>) {
+        let keys_free = keys_are_free(ui, response.has_focus());
         if (response.clicked_by(egui::PointerButton::Primary)
             || response.dragged_by(egui::PointerButton::Primary))
             && let Some(world) = world
         {
             self.instruments.probe = Some(world);
         }
-        if !ui.ctx().egui_wants_keyboard_input() {
-            let step = super::view::nice_length(80.0 / self.view.pixels_per_metre)
-                / if ui.input(|i| i.modifiers.shift) {
-                    100.0
-                } else {
-                    10.0
-                };
-            let moved = ui.input(|i| {
-                let mut d = DVec2::ZERO;
-                for (key, by) in [
-                    (egui::Key::ArrowLeft, DVec2::NEG_X),
-                    (egui::Key::ArrowRight, DVec2::X),
-                    (egui::Key::ArrowUp, DVec2::Y),
-                    (egui::Key::ArrowDown, DVec2::NEG_Y),
-                ] {
-                    if i.key_pressed(key) {
-                        d += by;
-                    }
-                }
-                d
-            });
+        if keys_free {
+            let moved = self.arrow_move(ui);
             if moved != DVec2::ZERO {
                 let from = self.instruments.probe.unwrap_or(self.view.center);
-                self.instruments.probe = Some(from + moved * step);
+                self.instruments.probe = Some(from + moved);
             }
         }
     }

@@ -76,7 +76,7 @@ impl Canvas {
         response.widget_info(|| {
             egui::WidgetInfo::labeled(egui::Role::Canvas, true, describe(scene, frame, selected))
         });
-        if !response.has_focus() || self.instruments.active.is_some() {
+        if !response.has_focus() {
             return;
         }
         ui.memory_mut(|m| {
@@ -92,7 +92,8 @@ impl Canvas {
         });
         // A pass egui discards (to lay out again) sees the same keys once more: they
         // act in the first pass only.
-        if ui.ctx().current_pass_index() > 0 {
+        // An instrument takes the keys while it is chosen (`instruments.rs`).
+        if ui.ctx().current_pass_index() > 0 || self.instruments.active.is_some() {
             return;
         }
         let keys = Keys::read(ui);

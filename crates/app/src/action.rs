@@ -125,7 +125,7 @@ impl Action {
             Self::Reset => "key-reset",
             Self::Fit => "key-fit",
             Self::Tool(tool) => return tool.label(),
-            Self::Instrument(instrument) => return instrument.label().to_owned(),
+            Self::Instrument(instrument) => return instrument.label(),
             Self::ToggleStopwatch => "key-stopwatch",
             Self::ToggleInspector => "key-inspector",
             Self::ToggleGraphs => "key-graphs",

@@ -5,6 +5,8 @@
 
 use egui::{Id, Modal, RichText, Ui};
 
+use crate::i18n::{Arg, tr, tr_with};
+
 /// What the file dialog is for.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Purpose {
@@ -116,7 +118,7 @@ impl Files {
                 egui::ScrollArea::vertical()
                     .max_height(height)
                     .show(ui, |ui| ui.label(RichText::new(message).monospace()));
-                let ok = ui.button("OK").on_hover_text("Close this message (Enter)");
+                let ok = ui.button(tr("file-ok")).on_hover_text(tr("file-ok-hint"));
                 ok.clicked() || ui.input(|i| i.key_pressed(egui::Key::Enter))
             });
             if modal.inner || modal.should_close() {
@@ -126,13 +128,10 @@ impl Files {
         if let Some(path) = self.overwrite.clone() {
             let answer = two_buttons(
                 ui,
-                "Changed on disk",
-                &format!("“{path}” has changed on disk since it was opened. Overwrite it?"),
-                ("Overwrite", "Replace the file on disk with this scene"),
-                (
-                    "Cancel",
-                    "Keep the file on disk; save under another name instead",
-                ),
+                &tr("file-changed-title"),
+                &tr_with("file-changed-body", &[("path", Arg::Text(&path))]),
+                (&tr("file-overwrite"), &tr("file-overwrite-hint")),
+                (&tr("file-cancel"), &tr("file-keep-hint")),
             );
             if let Some(overwrite) = answer {
                 self.overwrite = None;
@@ -143,18 +142,16 @@ impl Files {
         }
         #[cfg(not(target_arch = "wasm32"))]
         if let Some(recovered) = self.recover.clone() {
-            let belonged = recovered
-                .path
-                .as_deref()
-                .map_or_else(String::new, |p| format!(" to “{p}”"));
+            let body = recovered.path.as_deref().map_or_else(
+                || tr("file-recover-body"),
+                |p| tr_with("file-recover-body-path", &[("path", Arg::Text(p))]),
+            );
             let answer = two_buttons(
                 ui,
-                "Recover unsaved work",
-                &format!(
-                    "NewtonLab closed last time with changes{belonged} that were not saved. Recover them?"
-                ),
-                ("Recover", "Open the unsaved work"),
-                ("Discard", "Throw the unsaved work away"),
+                &tr("file-recover-title"),
+                &body,
+                (&tr("file-recover"), &tr("file-recover-hint")),
+                (&tr("file-discard"), &tr("file-discard-hint")),
             );
             if let Some(recover) = answer {
                 self.recover = None;
@@ -167,19 +164,21 @@ impl Files {
         }
         if let Some(pending) = self.confirm.clone() {
             let modal = Modal::new(Id::unique("confirm-discard")).show(ui.ctx(), |ui| {
-                ui.heading("Unsaved changes");
-                ui.label(format!(
-                    "“{title}” has changes that are not saved. Discard them?"
-                ));
+                ui.heading(tr("file-unsaved-title"));
+                ui.label(tr_with("file-unsaved-body", &[("title", Arg::Text(title))]));
                 ui.horizontal(|ui| {
                     if ui
-                        .button("Discard changes")
-                        .on_hover_text("Lose the unsaved changes")
+                        .button(tr("file-discard-changes"))
+                        .on_hover_text(tr("file-discard-changes-hint"))
                         .clicked()
                     {
                         return Some(true);
                     }
-                    if ui.button("Cancel").on_hover_text("Keep editing").clicked() {
+                    if ui
+                        .button(tr("file-cancel"))
+                        .on_hover_text(tr("file-keep-editing-hint"))
+                        .clicked()
+                    {
                         return Some(false);
                     }
                     None
@@ -198,33 +197,33 @@ impl Files {
         }
         if let Some(dialog) = &mut self.dialog {
             let mut close = false;
-            let verb = match dialog.purpose {
-                Purpose::Open => "Open",
-                Purpose::Save => "Save",
-                Purpose::ExportCsv(_) | Purpose::ExportPng => "Export",
-            };
+            let verb = tr(match dialog.purpose {
+                Purpose::Open => "file-verb-open",
+                Purpose::Save => "file-verb-save",
+                Purpose::ExportCsv(_) | Purpose::ExportPng => "file-verb-export",
+            });
             let extensions = dialog.purpose.extensions();
             Modal::new(Id::unique("file-dialog")).show(ui.ctx(), |ui| {
                 ui.set_min_width(460.0);
-                ui.heading(match dialog.purpose {
-                    Purpose::Open => "Open a scene",
-                    Purpose::Save => "Save the scene",
-                    Purpose::ExportCsv(_) => "Export the graph as CSV",
-                    Purpose::ExportPng => "Save the picture as PNG",
-                });
+                ui.heading(tr(match dialog.purpose {
+                    Purpose::Open => "file-title-open",
+                    Purpose::Save => "file-title-save",
+                    Purpose::ExportCsv(_) => "file-title-csv",
+                    Purpose::ExportPng => "file-title-png",
+                }));
                 ui.horizontal(|ui| {
-                    let label = ui.label("folder");
+                    let label = ui.label(tr("file-folder"));
                     ui.add(egui::TextEdit::singleline(&mut dialog.folder).desired_width(360.0))
                         .labelled_by(label.id)
-                        .on_hover_text("The folder");
+                        .on_hover_text(tr("file-folder-hint"));
                 });
                 #[cfg(not(target_arch = "wasm32"))]
                 egui::ScrollArea::vertical()
                     .max_height(220.0)
                     .show(ui, |ui| {
                         if ui
-                            .small_button(".. (parent folder)")
-                            .on_hover_text("The parent folder")
+                            .small_button(tr("file-parent"))
+                            .on_hover_text(tr("file-parent-hint"))
                             .clicked()
                             && let Some(parent) = std::path::Path::new(&dialog.folder).parent()
                         {
@@ -258,17 +257,20 @@ impl Files {
                     });
                 let mut submit = false;
                 ui.horizontal(|ui| {
-                    let label = ui.label("file name");
+                    let label = ui.label(tr("file-name"));
                     let field = ui
                         .add(egui::TextEdit::singleline(&mut dialog.name).desired_width(300.0))
                         .labelled_by(label.id)
-                        .on_hover_text(format!("The file's name ({})", extensions.join(", ")));
+                        .on_hover_text(tr_with(
+                            "file-name-hint",
+                            &[("extensions", Arg::Text(&extensions.join(", ")))],
+                        ));
                     submit = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
                 });
                 ui.horizontal(|ui| {
                     submit |= ui
-                        .button(verb)
-                        .on_hover_text(format!("{verb} this file (Enter)"))
+                        .button(&verb)
+                        .on_hover_text(tr_with("file-submit-hint", &[("verb", Arg::Text(&verb))]))
                         .clicked();
                     if submit && !dialog.name.trim().is_empty() {
                         let path = if dialog.folder.is_empty() {
@@ -283,8 +285,8 @@ impl Files {
                         close = true;
                     }
                     if ui
-                        .button("Cancel")
-                        .on_hover_text("Close without doing anything")
+                        .button(tr("file-cancel"))
+                        .on_hover_text(tr("file-close-hint"))
                         .clicked()
                     {
                         close = true;

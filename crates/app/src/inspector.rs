@@ -15,6 +15,7 @@ use crate::action::Action;
 use crate::canvas::Selection;
 use crate::document::Document;
 use crate::format;
+use crate::i18n::{Arg, tr, tr_with};
 use crate::run_loop::Runner;
 use crate::units;
 
@@ -146,10 +147,14 @@ fn vector_field(
     ui.horizontal(|ui| {
         ui.label(RichText::new(label).strong());
         let polar = matches!(value, Vector::Polar { .. });
-        let switch = if polar { "use x, y" } else { "use polar" };
+        let switch = tr(if polar {
+            "inspector-use-cartesian"
+        } else {
+            "inspector-use-polar"
+        });
         if ui
             .small_button(switch)
-            .on_hover_text("Show this vector in the other form (the value is kept)")
+            .on_hover_text(tr("inspector-switch-hint"))
             .clicked()
         {
             result = Some(if polar {
@@ -245,7 +250,7 @@ pub fn ui(
     let editable = runner.simulation.is_none();
     if !editable {
         live(ui, runner, *selection);
-        ui.label(RichText::new("Running: Reset (R) to edit the scene.").italics());
+        ui.label(RichText::new(tr("inspector-running")).italics());
     }
     if let Some(message) = ui.data(|d| d.get_temp::<String>(Id::unique("inspector-problem"))) {
         ui.label(RichText::new(message).color(ERROR));
@@ -253,24 +258,25 @@ pub fn ui(
     let mut problem = None;
     let mut action = None;
     ui.add_enabled_ui(editable, |ui| {
-        let heading = if editable {
-            "Selected"
+        let heading = tr(if editable {
+            "inspector-selected"
         } else {
-            "Selected: as the scene starts"
-        };
+            "inspector-selected-at-start"
+        });
         egui::CollapsingHeader::new(heading)
             .id_salt("selected")
             .default_open(true)
             .show(ui, |ui| problem = selected(ui, document, selection));
         if selection.is_some()
             && ui
-                .button("Delete")
-                .on_hover_text("Remove the selected object (Delete)")
+                .button(tr("inspector-delete"))
+                .on_hover_text(tr("inspector-delete-hint"))
                 .clicked()
         {
             action = Some(Action::Delete);
         }
-        egui::CollapsingHeader::new("World")
+        egui::CollapsingHeader::new(tr("inspector-world"))
+            .id_salt("world")
             .default_open(false)
             .show(ui, |ui| {
                 let id = Id::unique("world");
@@ -286,7 +292,8 @@ pub fn ui(
                     )
                 });
             });
-        egui::CollapsingHeader::new("Simulation")
+        egui::CollapsingHeader::new(tr("inspector-simulation"))
+            .id_salt("simulation")
             .default_open(false)
             .show(ui, |ui| {
                 // The integrator and the time step are in the tool bar.
@@ -326,29 +333,31 @@ fn live(ui: &mut Ui, runner: &Runner, selection: Option<Selection>) {
     if i >= simulation.len() {
         return;
     }
-    egui::CollapsingHeader::new(format!("Live: {}", simulation.names()[i]))
-        .id_salt("live")
-        .default_open(true)
-        .show(ui, |ui| {
-            let accelerations = simulation.accelerations();
-            let p = simulation.particle(i, &accelerations);
-            let vector =
-                |v: physics::DVec2, unit: &str| format!("{} {unit}", format::pair(v.x, v.y));
-            egui::Grid::new("live").num_columns(2).show(ui, |ui| {
-                for (name, value) in [
-                    ("position", vector(p.position, "m")),
-                    ("velocity", vector(p.velocity, "m/s")),
-                    ("acceleration", vector(p.acceleration, "m/s²")),
-                    ("speed", format::with_unit(p.speed, "m/s")),
-                    ("kinetic energy", format::with_unit(p.kinetic_energy, "J")),
-                    ("momentum", vector(p.momentum, "kg·m/s")),
-                ] {
-                    ui.label(name);
-                    ui.monospace(value);
-                    ui.end_row();
-                }
-            });
+    egui::CollapsingHeader::new(tr_with(
+        "inspector-live",
+        &[("name", Arg::Text(&simulation.names()[i]))],
+    ))
+    .id_salt("live")
+    .default_open(true)
+    .show(ui, |ui| {
+        let accelerations = simulation.accelerations();
+        let p = simulation.particle(i, &accelerations);
+        let vector = |v: physics::DVec2, unit: &str| format!("{} {unit}", format::pair(v.x, v.y));
+        egui::Grid::new("live").num_columns(2).show(ui, |ui| {
+            for (name, value) in [
+                ("position", vector(p.position, "m")),
+                ("velocity", vector(p.velocity, "m/s")),
+                ("acceleration", vector(p.acceleration, "m/s²")),
+                ("speed", format::with_unit(p.speed, "m/s")),
+                ("kinetic energy", format::with_unit(p.kinetic_energy, "J")),
+                ("momentum", vector(p.momentum, "kg·m/s")),
+            ] {
+                ui.label(name);
+                ui.monospace(value);
+                ui.end_row();
+            }
         });
+    });
 }
 
 /// A rod's or string's tension now, and whether a string is slack.
@@ -357,17 +366,17 @@ fn live_tie(ui: &mut Ui, simulation: &physics::Simulation, k: usize) {
         return;
     };
     let tension = simulation.tensions().get(k).copied().unwrap_or(0.0);
-    egui::CollapsingHeader::new(format!("Live: {name}"))
+    egui::CollapsingHeader::new(tr_with("inspector-live", &[("name", Arg::Text(name))]))
         .id_salt("live")
         .default_open(true)
         .show(ui, |ui| {
             egui::Grid::new("live").num_columns(2).show(ui, |ui| {
-                ui.label("tension");
+                ui.label(tr("inspector-tension"));
                 ui.monospace(format::with_unit(tension, "N"))
-                    .on_hover_text("The force it carries: pulling is positive; 0 when slack");
+                    .on_hover_text(tr("inspector-tension-hint"));
                 ui.end_row();
-                ui.label("work done");
-                ui.monospace("0 J (a constraint does no work)");
+                ui.label(tr("inspector-work-done"));
+                ui.monospace(tr("inspector-no-work"));
                 ui.end_row();
             });
         });
@@ -465,7 +474,7 @@ fn selected(
     let mut problem = None;
     match *selection {
         None => {
-            ui.label("Nothing selected: click an object on the canvas.");
+            ui.label(tr("inspector-nothing-selected"));
         }
         Some(Selection::Particle(i)) if i < document.scene().particles.len() => {
             problem = object(

@@ -294,8 +294,9 @@ impl App {
             return false;
         }
         let reasons = self.invalid.join("\n");
-        self.notify(format!(
-            "Not running: some typed values are invalid (shown in red in the inspector). Correct them first:\n{reasons}"
+        self.notify(tr_with(
+            "notice-invalid-values",
+            &[("reasons", Arg::Text(&reasons))],
         ));
         true
     }
@@ -522,7 +523,7 @@ impl App {
             self.runner.recording.as_ref(),
             self.document.scene().graphs.get(graph),
         ) else {
-            self.notify("Nothing to export yet: press Play first.");
+            self.notify(tr("notice-nothing-to-export"));
             return;
         };
         let csv = plots::to_csv(recording, setup);
@@ -532,7 +533,13 @@ impl App {
         #[cfg(target_arch = "wasm32")]
         let written = platform::web::download(path, &csv, "text/csv");
         match written {
-            Ok(()) => self.notify(format!("Exported {rows} samples to {path}.")),
+            Ok(()) => self.notify(tr_with(
+                "notice-exported",
+                &[
+                    ("rows", Arg::Number(rows as f64)),
+                    ("path", Arg::Text(path)),
+                ],
+            )),
             Err(message) => self.notify(message),
         }
     }
@@ -560,7 +567,10 @@ impl App {
         if let Some(path) = &self.settings_file
             && let Err(reason) = self.settings.save_to(path)
         {
-            self.notify(format!("The settings could not be kept: {reason}"));
+            self.notify(tr_with(
+                "notice-settings-not-kept",
+                &[("reason", Arg::Text(&reason))],
+            ));
         }
         #[cfg(target_arch = "wasm32")]
         self.settings.save();
@@ -761,7 +771,7 @@ impl App {
                             tick(instruments.active == Some(instrument)),
                             instrument.label()
                         ),
-                        instrument.hint(),
+                        &instrument.hint(),
                         Action::Instrument(instrument),
                         true,
                     );
@@ -842,8 +852,8 @@ impl App {
             ui.separator();
             if let Some(failure) = &self.runner.failure {
                 if ui
-                    .button("Reset the scene")
-                    .on_hover_text("Back to the scene as last edited (R)")
+                    .button(tr("failure-reset"))
+                    .on_hover_text(tr("toolbar-reset-hint"))
                     .clicked()
                 {
                     action = Some(Action::Reset);
@@ -881,11 +891,14 @@ impl App {
                 }
             }
             ui.separator();
-            ui.label(format!(
-                "physics {:.1} ms per frame",
-                self.runner.physics_per_frame * 1000.0
+            ui.label(tr_with(
+                "status-physics-time",
+                &[(
+                    "ms",
+                    Arg::Text(&i18n::decimal(self.runner.physics_per_frame * 1000.0, 1)),
+                )],
             ))
-            .on_hover_text("Computing time spent on the simulation in each frame");
+            .on_hover_text(tr("status-physics-time-hint"));
             ui.separator();
             let frame = ui.input(|i| i.stable_dt);
             ui.label(format!("frame {:.1} ms", frame * 1000.0));
@@ -955,7 +968,7 @@ impl App {
                 .show(ui, |ui| {
                     egui::ScrollArea::vertical().show(ui, |ui| {
                         ui.set_width(ui.available_width());
-                        ui.heading("Inspector");
+                        ui.heading(tr("inspector-title"));
                         actions.extend(inspector::ui(
                             ui,
                             &mut self.document,
@@ -1026,8 +1039,11 @@ impl App {
             .map_or(0.0, physics::Simulation::time_step);
         ui.horizontal(|ui| {
             let back = ui
-                .add_enabled(shown.unwrap_or(end) > 0, egui::Button::new("Step back"))
-                .on_hover_text("One time step back in the run (,)");
+                .add_enabled(
+                    shown.unwrap_or(end) > 0,
+                    egui::Button::new(tr("timeline-step-back")),
+                )
+                .on_hover_text(tr("timeline-step-back-hint"));
             if back.clicked() {
                 action = Some(Action::StepBack);
             }
@@ -1035,27 +1051,31 @@ impl App {
             ui.spacing_mut().slider_width = (ui.available_width() - 420.0).max(120.0);
             let slider = ui
                 .add(egui::Slider::new(&mut at, 0..=end.max(1)).show_value(false))
-                .on_hover_text("Drag to any moment of the run: it is shown exactly as it was");
+                .on_hover_text(tr("timeline-slider-hint"));
             if slider.changed() {
                 action = Some(Action::GoTo(at));
             }
             let start = self.document.scene().simulation.start_time;
             #[expect(clippy::cast_precision_loss, reason = "a count of steps")]
             let (now, last) = (start + at as f64 * step, start + end as f64 * step);
-            ui.label(format!("t = {} s of {} s", format::number(now), format::number(last)));
+            ui.label(tr_with(
+                "timeline-time",
+                &[
+                    ("now", Arg::Text(&format::number(now))),
+                    ("last", Arg::Text(&format::number(last))),
+                ],
+            ));
             if shown.is_some() {
                 if ui
-                    .button("To the end")
-                    .on_hover_text("Back to where the run is")
+                    .button(tr("timeline-to-end"))
+                    .on_hover_text(tr("timeline-to-end-hint"))
                     .clicked()
                 {
                     action = Some(Action::GoTo(end));
                 }
                 if ui
-                    .button("Edit from here")
-                    .on_hover_text(
-                        "Make this moment the scene's start (positions, velocities and time), to change something and play a new future; undoable",
-                    )
+                    .button(tr("timeline-edit-from-here"))
+                    .on_hover_text(tr("timeline-edit-from-here-hint"))
                     .clicked()
                 {
                     action = Some(Action::EditFromHere);
@@ -1104,7 +1124,7 @@ impl App {
         use stopwatch::{State, Trigger};
         let mut shown = self.stopwatch.shown;
         let now = self.time();
-        egui::Window::new("Stopwatch")
+        egui::Window::new(tr("stopwatch-title"))
             .open(&mut shown)
             .resizable(false)
             .default_pos(self.canvas.rect.right_top() + egui::vec2(-240.0, 12.0))
@@ -1115,28 +1135,36 @@ impl App {
                         .monospace()
                         .size(22.0),
                 );
-                ui.label(match watch.state {
-                    State::Stopped => "stopped",
-                    State::Armed => "waiting to start",
-                    State::Running(_) => "running",
-                });
+                ui.label(tr(match watch.state {
+                    State::Stopped => "stopwatch-stopped",
+                    State::Armed => "stopwatch-armed",
+                    State::Running(_) => "stopwatch-running",
+                }));
                 ui.horizontal(|ui| {
                     let running = matches!(watch.state, State::Running(_) | State::Armed);
-                    if ui.button(if running { "Stop" } else { "Start" }).clicked() {
+                    let label = tr(if running {
+                        "stopwatch-stop"
+                    } else {
+                        "stopwatch-start"
+                    });
+                    if ui.button(label).clicked() {
                         if running {
                             watch.stop(now);
                         } else {
                             watch.start(now);
                         }
                     }
-                    if ui.button("Reset stopwatch").clicked() {
+                    if ui.button(tr("stopwatch-reset")).clicked() {
                         watch.reset();
                     }
                 });
-                for (label, trigger) in [("start on", &mut watch.start_on), ("stop on", &mut watch.stop_on)] {
+                for (salt, trigger) in [
+                    ("stopwatch-start-on", &mut watch.start_on),
+                    ("stopwatch-stop-on", &mut watch.stop_on),
+                ] {
                     ui.horizontal(|ui| {
-                        let text = ui.label(label);
-                        egui::ComboBox::from_id_salt(label)
+                        let text = ui.label(tr(salt));
+                        egui::ComboBox::from_id_salt(salt)
                             .selected_text(trigger.label())
                             .show_ui(ui, |ui| {
                                 for choice in Trigger::ALL {
@@ -1147,10 +1175,7 @@ impl App {
                             .labelled_by(text.id);
                     });
                 }
-                ui.label(
-                    egui::RichText::new("Simulated time. Impacts at their located instants; the tape's line as a light gate, to the frame.")
-                        .small(),
-                );
+                ui.label(egui::RichText::new(tr("stopwatch-note")).small());
             });
         self.stopwatch.shown = shown;
     }
@@ -1228,7 +1253,10 @@ impl App {
         #[cfg(target_arch = "wasm32")]
         let written = platform::web::download_bytes(path, &bytes, "image/png");
         match written {
-            Ok(()) => self.notify(format!("Saved the picture to {path}.")),
+            Ok(()) => self.notify(tr_with(
+                "notice-picture-saved",
+                &[("path", Arg::Text(path))],
+            )),
             Err(message) => self.notify(message),
         }
     }

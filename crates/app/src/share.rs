@@ -8,6 +8,8 @@ use base64::Engine as _;
 use base64::engine::general_purpose::URL_SAFE_NO_PAD;
 use physics::{Scene, SceneFormat};
 
+use crate::i18n::{Arg, tr, tr_with};
+
 /// The longest fragment accepted, characters.
 pub const MAX_LINK: usize = 512 * 1024;
 /// The largest scene file a link may inflate to, bytes.
@@ -27,15 +29,18 @@ pub fn encode(scene: &Scene) -> String {
 pub fn decode(fragment: &str) -> Result<Option<Scene>, String> {
     let fragment = fragment.trim_start_matches('#');
     if fragment.len() > MAX_LINK {
-        return Err(format!(
-            "This link is too long to be a NewtonLab scene ({} characters; the limit is {MAX_LINK}).",
-            fragment.len()
+        #[expect(clippy::cast_precision_loss, reason = "a count of characters")]
+        return Err(tr_with(
+            "link-too-long",
+            &[
+                ("length", Arg::Number(fragment.len() as f64)),
+                ("limit", Arg::Number(MAX_LINK as f64)),
+            ],
         ));
     }
     if let Some(name) = fragment.strip_prefix("example=") {
-        let example = physics::example(name).ok_or_else(|| {
-            format!("This link names a built-in scene that does not exist: '{name}'.")
-        })?;
+        let example = physics::example(name)
+            .ok_or_else(|| tr_with("link-no-example", &[("name", Arg::Text(name))]))?;
         return example
             .scene()
             .map(Some)
@@ -44,19 +49,20 @@ pub fn decode(fragment: &str) -> Result<Option<Scene>, String> {
     let Some(data) = fragment.strip_prefix("scene=") else {
         return Ok(None);
     };
-    let compressed = URL_SAFE_NO_PAD.decode(data).map_err(|_| {
-        "This link is damaged: its scene is not valid base64 (was it cut short or edited?)."
-            .to_owned()
-    })?;
-    let bytes = miniz_oxide::inflate::decompress_to_vec_with_limit(&compressed, MAX_SCENE).map_err(|e| {
-        if matches!(e.status, miniz_oxide::inflate::TINFLStatus::HasMoreOutput) {
-            format!("This link's scene is larger than {} MB once unpacked; it was not opened.", MAX_SCENE / (1024 * 1024))
-        } else {
-            "This link is damaged: its scene could not be unpacked (was it cut short or edited?).".to_owned()
-        }
-    })?;
-    let text = String::from_utf8(bytes)
-        .map_err(|_| "This link is damaged: its scene is not text.".to_owned())?;
+    let compressed = URL_SAFE_NO_PAD
+        .decode(data)
+        .map_err(|_| tr("link-not-base64"))?;
+    let bytes = miniz_oxide::inflate::decompress_to_vec_with_limit(&compressed, MAX_SCENE)
+        .map_err(|e| {
+            if matches!(e.status, miniz_oxide::inflate::TINFLStatus::HasMoreOutput) {
+                #[expect(clippy::cast_precision_loss, reason = "a few megabytes")]
+                let megabytes = (MAX_SCENE / (1024 * 1024)) as f64;
+                tr_with("link-too-large", &[("megabytes", Arg::Number(megabytes))])
+            } else {
+                tr("link-not-unpacked")
+            }
+        })?;
+    let text = String::from_utf8(bytes).map_err(|_| tr("link-not-text"))?;
     Scene::parse(&text, SceneFormat::Toml)
         .map(Some)
         .map_err(|e| e.report("the linked scene"))

@@ -22,12 +22,12 @@ pub enum Trigger {
 impl Trigger {
     pub const ALL: [Self; 3] = [Self::Hand, Self::Impact, Self::Gate];
 
-    pub fn label(self) -> &'static str {
-        match self {
-            Self::Hand => "by hand",
-            Self::Impact => "the next impact",
-            Self::Gate => "crossing the tape",
-        }
+    pub fn label(self) -> String {
+        crate::i18n::tr(match self {
+            Self::Hand => "stopwatch-by-hand",
+            Self::Impact => "stopwatch-next-impact",
+            Self::Gate => "stopwatch-gate",
+        })
     }
 }
 

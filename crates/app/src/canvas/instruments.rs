@@ -31,26 +31,20 @@ pub enum Instrument {
 }
 
 impl Instrument {
-    pub fn label(self) -> &'static str {
-        match self {
-            Self::Tape => "Tape measure",
-            Self::Probe => "Field probe",
-            Self::Protractor => "Protractor",
-        }
+    pub fn label(self) -> String {
+        crate::i18n::tr(match self {
+            Self::Tape => "instrument-tape",
+            Self::Probe => "instrument-probe",
+            Self::Protractor => "instrument-protractor",
+        })
     }
 
-    pub fn hint(self) -> &'static str {
-        match self {
-            Self::Tape => {
-                "Drag between two points to measure the distance and direction; an end on a particle follows it (M)"
-            }
-            Self::Probe => {
-                "Click a point to read the gravitational and electric field and potential there; arrow keys move it (P)"
-            }
-            Self::Protractor => {
-                "Drag from the vertex along the first arm, then drag again for the second: the angle between them; ends on particles follow them (A)"
-            }
-        }
+    pub fn hint(self) -> String {
+        crate::i18n::tr(match self {
+            Self::Tape => "instrument-tape-hint",
+            Self::Probe => "instrument-probe-hint",
+            Self::Protractor => "instrument-protractor-hint",
+        })
     }
 }
 

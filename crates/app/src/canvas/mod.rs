@@ -68,23 +68,15 @@ impl Tool {
         })
     }
 
-    pub fn hint(self) -> &'static str {
-        match self {
-            Self::Select => {
-                "Select and move objects; drag a velocity arrow's tip to set the velocity; drag empty space to pan (1)"
-            }
-            Self::Particle => "Click the canvas to place a particle (2)",
-            Self::Spring => {
-                "Drag from a particle to another particle, or to empty space for a fixed point (3)"
-            }
-            Self::Rod => {
-                "A rigid rod: drag from a particle to another particle, or to empty space for a fixed point (5)"
-            }
-            Self::String => {
-                "A string (slack when shorter): drag from a particle to another particle, or to empty space for a fixed point (6)"
-            }
-            Self::Ramp => "Drag to draw a ramp (4)",
-        }
+    pub fn hint(self) -> String {
+        crate::i18n::tr(match self {
+            Self::Select => "tool-select-hint",
+            Self::Particle => "tool-particle-hint",
+            Self::Spring => "tool-spring-hint",
+            Self::Rod => "tool-rod-hint",
+            Self::String => "tool-string-hint",
+            Self::Ramp => "tool-ramp-hint",
+        })
     }
 }
 

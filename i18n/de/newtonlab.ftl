@@ -286,3 +286,119 @@ link-not-base64 = Dieser Link ist beschädigt: seine Szene ist kein gültiges Ba
 link-too-large = Die Szene dieses Links ist entpackt größer als { $megabytes } MB; sie wurde nicht geöffnet.
 link-not-unpacked = Dieser Link ist beschädigt: seine Szene ließ sich nicht entpacken (wurde er gekürzt oder bearbeitet?).
 link-not-text = Dieser Link ist beschädigt: seine Szene ist kein Text.
+
+## The scene checker (the physics crate): problems in a scene file or a typed value
+scene-the-scene = Szene
+scene-named = { $kind ->
+        [particle] Teilchen
+        [spring] Feder
+        [rod] Stange
+        [string] Faden
+        [ramp] Rampe
+       *[graph] Graph
+    } '{ $name }'
+scene-numbered = { $kind ->
+        [particle] Teilchen
+        [spring] Feder
+        [rod] Stange
+        [string] Faden
+        [ramp] Rampe
+       *[graph] Graph
+    } #{ $number }
+scene-not-finite = { $field } muss eine endliche Zahl sein, nicht { $value }
+scene-not-positive = { $field } muss größer als 0 sein, nicht { $value }
+scene-negative = { $field } muss 0 oder mehr sein, nicht { $value }
+scene-not-fraction = { $field } muss zwischen 0 und 1 liegen, nicht { $value }
+scene-too-large = { $field } { $value } ist zu groß für eine verlässliche Simulation: Zahlen in einer Szene sind 0 oder zwischen 1e-100 und 1e100 groß, damit Kräfte und Energien im Bereich von f64 bleiben
+scene-too-small = { $field } { $value } ist zu klein für eine verlässliche Simulation: Zahlen in einer Szene sind 0 oder zwischen 1e-100 und 1e100 groß, damit Kräfte und Energien im Bereich von f64 bleiben
+scene-vector-not-finite = { $field } muss endliche Komponenten haben
+scene-bounds-order = bounds: min muss links unterhalb von max liegen, nicht min [{ $a }, { $b }] und max [{ $c }, { $d }]
+scene-name-empty = name darf nicht leer sein
+scene-name-taken = der Name '{ $name }' ist schon vergeben an { $earlier }; Namen müssen eindeutig sein
+scene-outside-bounds = position [{ $a }, { $b }] setzt das Teilchen (Radius { $c }) außerhalb der Weltgrenzen
+scene-ends-fixed = { $kind ->
+        [spring] eine Feder
+        [rod] eine Stange
+       *[string] ein Faden
+    } braucht an mindestens einem Ende ein bewegliches Teilchen; beide Enden sind fest
+scene-no-particle = { $field }: es gibt kein Teilchen namens '{ $name }'
+scene-ends-points = { $kind ->
+        [spring] eine Feder
+        [rod] eine Stange
+       *[string] ein Faden
+    } braucht an mindestens einem Ende ein Teilchen; beide Enden sind feste Punkte
+scene-same-particle = beide Enden sind das Teilchen '{ $name }'; { $kind ->
+        [spring] eine Feder
+        [rod] eine Stange
+       *[string] ein Faden
+    } verbindet zwei verschiedene Dinge
+scene-graph-no-particle = { $field }: '{ $text }' nennt kein Teilchen; es gibt kein Teilchen '{ $name }'
+scene-graph-no-tie = { $field }: '{ $text }' nennt keine Stange und keinen Faden; es gibt keine(n) namens '{ $name }'
+scene-graph-time-on-y = y: die Zeit gehört auf die x-Achse (x = "t")
+scene-follow-unknown = follow: es gibt kein Teilchen '{ $name }'; einem Teilchennamen folgen, oder "all"
+scene-quantity-of-particle = '{ $text }': eine Größe eines Teilchens ist eine von { $keys }; die einer Stange oder eines Fadens ist tension
+scene-not-a-quantity = '{ $text }' ist keine Größe: t, NAME.x (oder .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy), STANGE.tension oder eine von { $keys } schreiben
+scene-unsatisfiable = die Länge { $length } m lässt sich zusammen mit den anderen Stangen und Fäden an ihren Enden nicht einhalten (die nächste Anordnung verfehlt sie um { $miss } m); eine Länge oder ein Ende ändern
+scene-at-line-column = Zeile { $line }, Spalte { $column }
+scene-at-line = Zeile { $line }
+scene-problems-found = { $source }: { $count ->
+        [1] 1 Problem
+       *[other] { $count } Probleme
+    } gefunden:
+scene-got-bool = wahr oder falsch
+scene-got-number = eine Zahl
+scene-got-text = Text
+scene-got-list = eine Liste
+scene-got-table = eine Tabelle
+scene-got-date = ein Datum
+scene-bad-toml = das ist kein gültiges TOML: { $error }
+scene-bad-json = das ist kein gültiges JSON: { $error }
+scene-not-a-table = { $label } muss eine Tabelle sein, nicht { $got }
+scene-keys-here = die Schlüssel hier sind { $keys }
+scene-did-you-mean = war '{ $key }' gemeint?
+scene-unknown-key = { $label }: unbekannter Schlüssel '{ $key }'; { $hint }
+scene-required = { $label }: { $key } ist erforderlich
+scene-the-whole = die Szene
+scene-version-unsupported = Szene: Version { $version } wird nicht unterstützt; dieses NewtonLab liest Version { $supported }
+scene-version-required = Szene: version ist erforderlich; `version = 1` an den Anfang der Datei schreiben
+scene-not-a-list = Szene: '{ $key }' muss eine Liste von [[{ $key }]]-Tabellen sein, nicht { $got }
+scene-must-be-finite = muss eine endliche Zahl sein, nicht { $got }
+scene-must-be-number = muss eine Zahl sein, nicht { $got }
+scene-must-be-bool = muss true oder false sein, nicht { $got }
+scene-must-be-text = muss Text in Anführungszeichen sein, nicht { $got }
+scene-must-be-quantities = muss eine Liste von Größen in Anführungszeichen sein, wie ["A.x", "total_energy"], nicht { $got }
+scene-vector-length = muss { $cartesian } oder { $polar } sein, nicht eine Liste von { $count } Zahlen
+scene-vector-extra = muss { $cartesian } oder { $polar } sein; '{ $key }' gehört nicht zu einem Vektor
+scene-vector-polar = muss { $cartesian } oder { $polar } sein; ein polarer Vektor braucht magnitude und angle
+scene-vector-got = muss { $cartesian } oder { $polar } sein, nicht { $got }
+scene-bounds-got = muss { $form } sein, nicht { $got }
+scene-bounds-extra = muss { $form } sein; '{ $key }' gehört nicht zu bounds
+scene-bounds-both = muss { $form } sein; min und max werden beide gebraucht
+scene-endpoint-point = muss der Name eines Teilchens oder ein Punkt sein; als Punkt { $reason }
+scene-endpoint-got = muss der Name eines Teilchens oder ein Punkt [x, y] sein, nicht { $got }
+scene-not-integrator = '{ $name }' ist kein Integrator; einen von { $names } wählen
+scene-not-pair-forces = '{ $name }' ist keine Art, Paarkräfte zu summieren; direct oder tree wählen
+scene-not-colour = muss eine Farbe wie "#d94f4f" sein, nicht "{ $text }"
+
+## The command line
+run-non-finite = bei t = { $time } s erreichte das Teilchen '{ $particle }' einen nicht endlichen Ort oder eine nicht endliche Geschwindigkeit (zwei Körper kamen sich zu nahe, oder der Zeitschritt ist für die Kräfte zu groß)
+run-step-too-small = bei t = { $time } s brauchte der adaptive Integrator einen zu kleinen Schritt, um mit der Toleranz { $tolerance } voranzukommen; die Toleranz lockern oder prüfen, ob Körper einander durchdringen
+run-too-many-steps = bei t = { $time } s brauchte es mehr als { $limit } adaptive Schritte bis { $target } s (der Zeitschritt von { $step } s ist für die Bewegung dieser Szene viel zu lang); einen kleineren time_step wählen
+cli-no-window = die App konnte kein Fenster öffnen: { $error }
+    (die Befehle ohne Fenster gehen auch so: siehe `newtonlab --help`)
+cli-check-ok = { $source }: in Ordnung ({ $particles } Teilchen, { $springs } Federn, { $ramps } Rampen, Integrator { $integrator }, Zeitschritt { $step } s)
+cli-check-tree = Hinweis: die Gravitation wird mit dem Barnes–Hut-Baum summiert (Öffnungswinkel { $angle })
+cli-check-tree-and-charges = Hinweis: die Gravitation wird mit dem Barnes–Hut-Baum summiert (Öffnungswinkel { $angle }); die Coulombkräfte zwischen ihren { $charged } geladenen Teilchen werden direkt summiert, Paar für Paar
+cli-until-not-finite = --until muss eine endliche Zahl von Sekunden sein, nicht { $until }
+cli-every-invalid = --every muss eine endliche Zahl von Sekunden größer als 0 sein, nicht { $every }
+cli-until-negative = --until muss 0 oder mehr Sekunden sein, nicht { $until }
+cli-until-before-start = --until { $until } liegt vor der start_time { $start } s der Szene; ein Lauf geht von seinem Anfang vorwärts
+cli-too-many-rows = --until { $until } mit --every { $every } würde mehr als { $rows } Zeilen schreiben; ein größeres --every wählen
+cli-too-many-steps = --until { $until } bei einem Zeitschritt von { $step } s bräuchte { $steps } Schritte, mehr als NewtonLab rechnet ({ $most }); einen größeren time_step oder ein kürzeres --until wählen
+cli-cannot-create = die Ausgabedatei '{ $path }' lässt sich nicht anlegen: { $error }
+cli-cannot-write-csv = das CSV lässt sich nicht schreiben: { $error }
+cli-cannot-save-state = der Zustand lässt sich nicht nach '{ $path }' schreiben: { $error }
+cli-sampling-note = Hinweis: --every { $every } s ist kein ganzzahliges Vielfaches des Zeitschritts ({ $step } s): jeder Messpunkt verkürzt einen Schritt, um genau auf ihm zu landen, also rechnet dieser Lauf mit einem kleineren wirksamen Schritt als die Szene, und seine Zahlen weichen leicht von einem Lauf ab, der bei einem Vielfachen von { $step } s misst
+cli-cannot-create-log = das Stoßprotokoll '{ $path }' lässt sich nicht anlegen: { $error }
+cli-no-example = es gibt keine eingebaute Szene '{ $name }'; die Beispiele sind: { $names }
+cli-cannot-read = die Szenendatei '{ $source }' lässt sich nicht lesen: { $error }

@@ -287,3 +287,119 @@ link-not-base64 = This link is damaged: its scene is not valid base64 (was it cu
 link-too-large = This link's scene is larger than { $megabytes } MB once unpacked; it was not opened.
 link-not-unpacked = This link is damaged: its scene could not be unpacked (was it cut short or edited?).
 link-not-text = This link is damaged: its scene is not text.
+
+## The scene checker (the physics crate): problems in a scene file or a typed value
+scene-the-scene = scene
+scene-named = { $kind ->
+        [particle] particle
+        [spring] spring
+        [rod] rod
+        [string] string
+        [ramp] ramp
+       *[graph] graph
+    } '{ $name }'
+scene-numbered = { $kind ->
+        [particle] particle
+        [spring] spring
+        [rod] rod
+        [string] string
+        [ramp] ramp
+       *[graph] graph
+    } #{ $number }
+scene-not-finite = { $field } must be a finite number, got { $value }
+scene-not-positive = { $field } must be greater than 0, got { $value }
+scene-negative = { $field } must be 0 or more, got { $value }
+scene-not-fraction = { $field } must be between 0 and 1, got { $value }
+scene-too-large = { $field } { $value } is too large to simulate reliably: numbers in a scene are 0 or between 1e-100 and 1e100 in size, so that forces and energies stay within the range of f64
+scene-too-small = { $field } { $value } is too small to simulate reliably: numbers in a scene are 0 or between 1e-100 and 1e100 in size, so that forces and energies stay within the range of f64
+scene-vector-not-finite = { $field } must have finite components
+scene-bounds-order = bounds: min must be below and left of max, got min [{ $a }, { $b }] and max [{ $c }, { $d }]
+scene-name-empty = name must not be empty
+scene-name-taken = the name '{ $name }' is already used by { $earlier }; names must be unique
+scene-outside-bounds = position [{ $a }, { $b }] puts the particle (radius { $c }) outside the world bounds
+scene-ends-fixed = { $kind ->
+        [spring] a spring
+        [rod] a rod
+       *[string] a string
+    } needs a moving particle at one end at least; both ends are fixed
+scene-no-particle = { $field }: there is no particle named '{ $name }'
+scene-ends-points = { $kind ->
+        [spring] a spring
+        [rod] a rod
+       *[string] a string
+    } needs a particle at one end at least; both ends are fixed points
+scene-same-particle = both ends are the particle '{ $name }'; { $kind ->
+        [spring] a spring
+        [rod] a rod
+       *[string] a string
+    } joins two different things
+scene-graph-no-particle = { $field }: '{ $text }' names no particle; there is no particle '{ $name }'
+scene-graph-no-tie = { $field }: '{ $text }' names no rod or string; there is none named '{ $name }'
+scene-graph-time-on-y = y: time goes on the x axis (x = "t")
+scene-follow-unknown = follow: there is no particle '{ $name }'; follow a particle's name, or "all"
+scene-quantity-of-particle = '{ $text }': a particle's quantity is one of { $keys }; a rod's or string's is tension
+scene-not-a-quantity = '{ $text }' is not a quantity: write t, NAME.x (or .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy), ROD.tension, or one of { $keys }
+scene-unsatisfiable = length { $length } m cannot be kept together with the other rods and strings joined to its ends (the nearest arrangement misses it by { $miss } m); change a length or an end
+scene-at-line-column = line { $line }, column { $column }
+scene-at-line = line { $line }
+scene-problems-found = { $source }: { $count ->
+        [1] 1 problem
+       *[other] { $count } problems
+    } found:
+scene-got-bool = true or false
+scene-got-number = a number
+scene-got-text = text
+scene-got-list = a list
+scene-got-table = a table
+scene-got-date = a date
+scene-bad-toml = this is not valid TOML: { $error }
+scene-bad-json = this is not valid JSON: { $error }
+scene-not-a-table = { $label } must be a table, got { $got }
+scene-keys-here = the keys here are { $keys }
+scene-did-you-mean = did you mean '{ $key }'?
+scene-unknown-key = { $label }: unknown key '{ $key }'; { $hint }
+scene-required = { $label }: { $key } is required
+scene-the-whole = the scene
+scene-version-unsupported = scene: version { $version } is not supported; this NewtonLab reads version { $supported }
+scene-version-required = scene: version is required; write `version = 1` at the top of the file
+scene-not-a-list = scene: '{ $key }' must be a list of [[{ $key }]] tables, got { $got }
+scene-must-be-finite = must be a finite number, got { $got }
+scene-must-be-number = must be a number, got { $got }
+scene-must-be-bool = must be true or false, got { $got }
+scene-must-be-text = must be text in quotes, got { $got }
+scene-must-be-quantities = must be a list of quantities in quotes, like ["A.x", "total_energy"], got { $got }
+scene-vector-length = must be { $cartesian } or { $polar }, got a list of { $count } numbers
+scene-vector-extra = must be { $cartesian } or { $polar }; '{ $key }' is not a part of a vector
+scene-vector-polar = must be { $cartesian } or { $polar }; a polar vector needs both magnitude and angle
+scene-vector-got = must be { $cartesian } or { $polar }, got { $got }
+scene-bounds-got = must be { $form }, got { $got }
+scene-bounds-extra = must be { $form }; '{ $key }' is not a part of bounds
+scene-bounds-both = must be { $form }; both min and max are needed
+scene-endpoint-point = must be a particle's name or a point; as a point it { $reason }
+scene-endpoint-got = must be a particle's name or a point [x, y], got { $got }
+scene-not-integrator = '{ $name }' is not an integrator; choose one of { $names }
+scene-not-pair-forces = '{ $name }' is not a way to sum pair forces; choose direct or tree
+scene-not-colour = must be a colour like "#d94f4f", got "{ $text }"
+
+## The command line
+run-non-finite = at t = { $time } s particle '{ $particle }' reached a non-finite position or velocity (two bodies came too close, or the time step is too large for the forces)
+run-step-too-small = at t = { $time } s the adaptive integrator needed a step too small to make progress with tolerance { $tolerance }; loosen the tolerance or check for bodies passing through each other
+run-too-many-steps = at t = { $time } s reaching { $target } s took more than { $limit } adaptive steps (the time step of { $step } s is far too long for this scene's motion); choose a smaller time_step
+cli-no-window = the app could not open a window: { $error }
+    (the headless commands work without one: see `newtonlab --help`)
+cli-check-ok = { $source }: ok ({ $particles } particles, { $springs } springs, { $ramps } ramps, integrator { $integrator }, time step { $step } s)
+cli-check-tree = note: gravitation is summed with the Barnes–Hut tree (opening angle { $angle })
+cli-check-tree-and-charges = note: gravitation is summed with the Barnes–Hut tree (opening angle { $angle }); Coulomb forces between its { $charged } charged particle(s) are summed directly, pair by pair
+cli-until-not-finite = --until must be a finite number of seconds; got { $until }
+cli-every-invalid = --every must be a finite number of seconds greater than 0; got { $every }
+cli-until-negative = --until must be 0 or more seconds; got { $until }
+cli-until-before-start = --until { $until } is before the scene's start_time { $start } s; a run goes forward from its start
+cli-too-many-rows = --until { $until } with --every { $every } would write more than { $rows } rows; choose a larger --every
+cli-too-many-steps = --until { $until } at a time step of { $step } s would take { $steps } steps, more than NewtonLab runs ({ $most }); choose a larger time_step or a shorter --until
+cli-cannot-create = cannot create the output file '{ $path }': { $error }
+cli-cannot-write-csv = cannot write the CSV: { $error }
+cli-cannot-save-state = cannot write the state to '{ $path }': { $error }
+cli-sampling-note = note: --every { $every } s is not a whole number of time steps ({ $step } s): each sample shortens a step to land on it, so this run integrates with a smaller effective step than the scene's and its numbers differ slightly from a run sampled at a multiple of { $step } s
+cli-cannot-create-log = cannot create the impact log '{ $path }': { $error }
+cli-no-example = there is no built-in scene '{ $name }'; the examples are: { $names }
+cli-cannot-read = cannot read the scene file '{ $source }': { $error }

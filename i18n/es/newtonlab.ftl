@@ -286,3 +286,119 @@ link-not-base64 = Este enlace está dañado: su escena no es base64 válido (¿s
 link-too-large = La escena de este enlace ocupa más de { $megabytes } MB descomprimida; no se abrió.
 link-not-unpacked = Este enlace está dañado: su escena no se pudo descomprimir (¿se cortó o se editó?).
 link-not-text = Este enlace está dañado: su escena no es texto.
+
+## The scene checker (the physics crate): problems in a scene file or a typed value
+scene-the-scene = escena
+scene-named = { $kind ->
+        [particle] partícula
+        [spring] resorte
+        [rod] varilla
+        [string] cuerda
+        [ramp] rampa
+       *[graph] gráfica
+    } '{ $name }'
+scene-numbered = { $kind ->
+        [particle] partícula
+        [spring] resorte
+        [rod] varilla
+        [string] cuerda
+        [ramp] rampa
+       *[graph] gráfica
+    } #{ $number }
+scene-not-finite = { $field } debe ser un número finito, no { $value }
+scene-not-positive = { $field } debe ser mayor que 0, no { $value }
+scene-negative = { $field } debe ser 0 o más, no { $value }
+scene-not-fraction = { $field } debe estar entre 0 y 1, no { $value }
+scene-too-large = { $field } { $value } es demasiado grande para simular con fiabilidad: los números de una escena son 0 o de tamaño entre 1e-100 y 1e100, para que fuerzas y energías queden dentro del rango de f64
+scene-too-small = { $field } { $value } es demasiado pequeño para simular con fiabilidad: los números de una escena son 0 o de tamaño entre 1e-100 y 1e100, para que fuerzas y energías queden dentro del rango de f64
+scene-vector-not-finite = { $field } debe tener componentes finitas
+scene-bounds-order = bounds: min debe estar abajo a la izquierda de max, no min [{ $a }, { $b }] y max [{ $c }, { $d }]
+scene-name-empty = name no debe estar vacío
+scene-name-taken = el nombre '{ $name }' ya lo usa { $earlier }; los nombres deben ser únicos
+scene-outside-bounds = position [{ $a }, { $b }] deja la partícula (radio { $c }) fuera de los límites del mundo
+scene-ends-fixed = { $kind ->
+        [spring] un resorte
+        [rod] una varilla
+       *[string] una cuerda
+    } necesita una partícula móvil al menos en un extremo; ambos extremos son fijos
+scene-no-particle = { $field }: no hay ninguna partícula llamada '{ $name }'
+scene-ends-points = { $kind ->
+        [spring] un resorte
+        [rod] una varilla
+       *[string] una cuerda
+    } necesita una partícula al menos en un extremo; ambos extremos son puntos fijos
+scene-same-particle = ambos extremos son la partícula '{ $name }'; { $kind ->
+        [spring] un resorte
+        [rod] una varilla
+       *[string] una cuerda
+    } une dos cosas distintas
+scene-graph-no-particle = { $field }: '{ $text }' no nombra ninguna partícula; no hay partícula '{ $name }'
+scene-graph-no-tie = { $field }: '{ $text }' no nombra ninguna varilla ni cuerda; no hay ninguna llamada '{ $name }'
+scene-graph-time-on-y = y: el tiempo va en el eje x (x = "t")
+scene-follow-unknown = follow: no hay ninguna partícula '{ $name }'; seguir el nombre de una partícula, o "all"
+scene-quantity-of-particle = '{ $text }': una magnitud de una partícula es una de { $keys }; la de una varilla o cuerda es tension
+scene-not-a-quantity = '{ $text }' no es una magnitud: escriba t, NOMBRE.x (o .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy), VARILLA.tension, o una de { $keys }
+scene-unsatisfiable = la longitud { $length } m no se puede mantener junto con las demás varillas y cuerdas unidas a sus extremos (la disposición más cercana falla por { $miss } m); cambie una longitud o un extremo
+scene-at-line-column = línea { $line }, columna { $column }
+scene-at-line = línea { $line }
+scene-problems-found = { $source }: { $count ->
+        [1] 1 problema encontrado
+       *[other] { $count } problemas encontrados
+    }:
+scene-got-bool = verdadero o falso
+scene-got-number = un número
+scene-got-text = texto
+scene-got-list = una lista
+scene-got-table = una tabla
+scene-got-date = una fecha
+scene-bad-toml = esto no es TOML válido: { $error }
+scene-bad-json = esto no es JSON válido: { $error }
+scene-not-a-table = { $label } debe ser una tabla, no { $got }
+scene-keys-here = las claves aquí son { $keys }
+scene-did-you-mean = ¿quería decir '{ $key }'?
+scene-unknown-key = { $label }: clave desconocida '{ $key }'; { $hint }
+scene-required = { $label }: { $key } es obligatorio
+scene-the-whole = la escena
+scene-version-unsupported = escena: la versión { $version } no es compatible; este NewtonLab lee la versión { $supported }
+scene-version-required = escena: version es obligatorio; escriba `version = 1` al principio del archivo
+scene-not-a-list = escena: '{ $key }' debe ser una lista de tablas [[{ $key }]], no { $got }
+scene-must-be-finite = debe ser un número finito, no { $got }
+scene-must-be-number = debe ser un número, no { $got }
+scene-must-be-bool = debe ser true o false, no { $got }
+scene-must-be-text = debe ser texto entre comillas, no { $got }
+scene-must-be-quantities = debe ser una lista de magnitudes entre comillas, como ["A.x", "total_energy"], no { $got }
+scene-vector-length = debe ser { $cartesian } o { $polar }, no una lista de { $count } números
+scene-vector-extra = debe ser { $cartesian } o { $polar }; '{ $key }' no es parte de un vector
+scene-vector-polar = debe ser { $cartesian } o { $polar }; un vector polar necesita magnitude y angle
+scene-vector-got = debe ser { $cartesian } o { $polar }, no { $got }
+scene-bounds-got = debe ser { $form }, no { $got }
+scene-bounds-extra = debe ser { $form }; '{ $key }' no es parte de bounds
+scene-bounds-both = debe ser { $form }; se necesitan min y max
+scene-endpoint-point = debe ser el nombre de una partícula o un punto; como punto { $reason }
+scene-endpoint-got = debe ser el nombre de una partícula o un punto [x, y], no { $got }
+scene-not-integrator = '{ $name }' no es un integrador; elija uno de { $names }
+scene-not-pair-forces = '{ $name }' no es una forma de sumar fuerzas entre pares; elija direct o tree
+scene-not-colour = debe ser un color como "#d94f4f", no "{ $text }"
+
+## The command line
+run-non-finite = en t = { $time } s la partícula '{ $particle }' alcanzó una posición o velocidad no finita (dos cuerpos se acercaron demasiado, o el paso de tiempo es demasiado grande para las fuerzas)
+run-step-too-small = en t = { $time } s el integrador adaptativo necesitó un paso demasiado pequeño para avanzar con la tolerancia { $tolerance }; afloje la tolerancia o compruebe si hay cuerpos que se atraviesan
+run-too-many-steps = en t = { $time } s llegar a { $target } s llevó más de { $limit } pasos adaptativos (el paso de tiempo de { $step } s es demasiado largo para el movimiento de esta escena); elija un time_step menor
+cli-no-window = la app no pudo abrir una ventana: { $error }
+    (los comandos sin ventana funcionan igual: vea `newtonlab --help`)
+cli-check-ok = { $source }: correcto ({ $particles } partículas, { $springs } resortes, { $ramps } rampas, integrador { $integrator }, paso de tiempo { $step } s)
+cli-check-tree = nota: la gravitación se suma con el árbol de Barnes–Hut (ángulo de apertura { $angle })
+cli-check-tree-and-charges = nota: la gravitación se suma con el árbol de Barnes–Hut (ángulo de apertura { $angle }); las fuerzas de Coulomb entre sus { $charged } partículas cargadas se suman directamente, par a par
+cli-until-not-finite = --until debe ser un número finito de segundos, no { $until }
+cli-every-invalid = --every debe ser un número finito de segundos mayor que 0, no { $every }
+cli-until-negative = --until debe ser 0 o más segundos, no { $until }
+cli-until-before-start = --until { $until } es anterior al start_time { $start } s de la escena; una ejecución avanza desde su inicio
+cli-too-many-rows = --until { $until } con --every { $every } escribiría más de { $rows } filas; elija un --every mayor
+cli-too-many-steps = --until { $until } con un paso de tiempo de { $step } s llevaría { $steps } pasos, más de los que NewtonLab ejecuta ({ $most }); elija un time_step mayor o un --until más corto
+cli-cannot-create = no se puede crear el archivo de salida '{ $path }': { $error }
+cli-cannot-write-csv = no se puede escribir el CSV: { $error }
+cli-cannot-save-state = no se puede escribir el estado en '{ $path }': { $error }
+cli-sampling-note = nota: --every { $every } s no es un número entero de pasos de tiempo ({ $step } s): cada muestra acorta un paso para caer sobre ella, así que esta ejecución integra con un paso efectivo menor que el de la escena y sus números difieren un poco de una ejecución muestreada en un múltiplo de { $step } s
+cli-cannot-create-log = no se puede crear el registro de choques '{ $path }': { $error }
+cli-no-example = no hay ninguna escena incorporada '{ $name }'; los ejemplos son: { $names }
+cli-cannot-read = no se puede leer el archivo de escena '{ $source }': { $error }

@@ -112,7 +112,7 @@ impl Files {
             // However long the message (a CSV opened as a scene gives one line per line),
             // the box fits the window and its OK button stays on screen.
             let height = (ui.ctx().content_rect().height() * 0.6).max(120.0);
-            let modal = Modal::new(Id::unique("file-message")).show(ui.ctx(), |ui| {
+            let modal = Modal::new(Id::unique("file message")).show(ui.ctx(), |ui| {
                 ui.set_max_width(640.0);
                 ui.heading("NewtonLab");
                 egui::ScrollArea::vertical()
@@ -203,7 +203,7 @@ impl Files {
                 Purpose::ExportCsv(_) | Purpose::ExportPng => "file-verb-export",
             });
             let extensions = dialog.purpose.extensions();
-            Modal::new(Id::unique("file-dialog")).show(ui.ctx(), |ui| {
+            Modal::new(Id::unique("file dialog")).show(ui.ctx(), |ui| {
                 ui.set_min_width(460.0);
                 ui.heading(tr(match dialog.purpose {
                     Purpose::Open => "file-title-open",

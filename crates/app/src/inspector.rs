@@ -252,7 +252,7 @@ pub fn ui(
         live(ui, runner, *selection);
         ui.label(RichText::new(tr("inspector-running")).italics());
     }
-    if let Some(message) = ui.data(|d| d.get_temp::<String>(Id::unique("inspector-problem"))) {
+    if let Some(message) = ui.data(|d| d.get_temp::<String>(Id::unique("inspector problem"))) {
         ui.label(RichText::new(message).color(ERROR));
     }
     let mut problem = None;
@@ -313,9 +313,9 @@ pub fn ui(
     });
     ui.data_mut(|d| {
         if let Some(message) = problem {
-            d.insert_temp(Id::unique("inspector-problem"), message);
+            d.insert_temp(Id::unique("inspector problem"), message);
         } else {
-            d.remove::<String>(Id::unique("inspector-problem"));
+            d.remove::<String>(Id::unique("inspector problem"));
         }
     });
     action

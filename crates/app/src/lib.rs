@@ -27,7 +27,7 @@ pub mod document;
 pub mod files;
 pub mod format;
 pub mod help;
-pub mod i18n;
+pub use newtonlab_i18n as i18n;
 pub mod inspector;
 pub mod picture;
 pub mod platform;
@@ -73,6 +73,8 @@ pub struct Launch {
     pub report_every: Option<usize>,
     /// Draw this field as arrows from the start.
     pub field_view: Option<FieldKind>,
+    /// Speak this language (the command line's `--lang`), whatever was chosen last time.
+    pub language: Option<i18n::Language>,
 }
 
 /// Which side panels show, projector mode (no panels, large text), and the list of keys
@@ -1385,6 +1387,9 @@ pub fn run_native(app: App) -> eframe::Result {
         Some(path) => app.with_settings_file(path),
         None => app.with_settings(settings::Settings::default()),
     };
+    if let Some(language) = app.launch.language {
+        i18n::set_language(language);
+    }
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_inner_size([1280.0, 800.0])

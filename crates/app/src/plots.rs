@@ -156,7 +156,7 @@ impl Graphs {
             let (mut particle, mut of) = self.choice[g];
             particle = particle.min(names.len().saturating_sub(1));
             let label = ui.label("particle");
-            egui::ComboBox::from_id_salt("graph-particle")
+            egui::ComboBox::from_id_salt("graph particle")
                 .selected_text(names.get(particle).map_or("—", String::as_str))
                 .show_ui(ui, |ui| {
                     for (i, name) in names.iter().enumerate() {
@@ -167,7 +167,7 @@ impl Graphs {
                 .labelled_by(label.id)
                 .on_hover_text("The particle whose quantity to add");
             let label = ui.label("quantity");
-            egui::ComboBox::from_id_salt("graph-quantity")
+            egui::ComboBox::from_id_salt("graph quantity")
                 .selected_text(of.key())
                 .show_ui(ui, |ui| {
                     for q in Of::ALL {

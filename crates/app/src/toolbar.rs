@@ -101,7 +101,7 @@ pub fn ui(
                 return;
             }
             let label = ui.label("integrator");
-            egui::ComboBox::from_id_salt("toolbar-integrator")
+            egui::ComboBox::from_id_salt("toolbar integrator")
                 .selected_text(settings.integrator.as_str())
                 .show_ui(ui, |ui| {
                     for method in Integrator::ALL {
@@ -119,7 +119,7 @@ pub fn ui(
                 .response
                 .labelled_by(label.id)
                 .on_hover_text(tr("toolbar-integrator-hint"));
-            let id = egui::Id::unique("toolbar-time-step");
+            let id = egui::Id::unique("toolbar time step");
             let mut text: String = ui
                 .data(|d| d.get_temp(id))
                 .unwrap_or_else(|| settings.time_step.to_string());

@@ -13,6 +13,7 @@ mod validate;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
+use newtonlab_i18n::{Language, tr_text as say};
 
 /// `NewtonLab`: a 2D physics sandbox. Without a subcommand, opens the app.
 #[derive(Debug, Parser)]
@@ -20,6 +21,21 @@ use clap::{Parser, Subcommand};
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
+    /// The language of the messages (and of the app): en, de or es. Without it, the
+    /// system's (LANG), or English.
+    #[arg(long, global = true, value_name = "LANG", value_parser = parse_language)]
+    lang: Option<Language>,
+}
+
+/// `--lang`: a language NewtonLab speaks, by its code (`de`, or a locale like `de_AT`).
+fn parse_language(code: &str) -> Result<Language, String> {
+    Language::from_locale(code).ok_or_else(|| {
+        let codes: Vec<&str> = Language::ALL.iter().map(|l| l.code()).collect();
+        format!(
+            "'{code}' is not a language NewtonLab speaks; choose {}",
+            codes.join(", ")
+        )
+    })
 }
 
 #[derive(Debug, Subcommand)]
@@ -91,16 +107,21 @@ impl Failure {
 
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    let language = cli.lang.unwrap_or_else(Language::of_system);
+    newtonlab_i18n::set_language(language);
     let result = match cli.command {
-        None => open_app(&AppArgs {
-            scene: None,
-            play: false,
-            measure_frames: None,
-            projector: false,
-            report_every: None,
-            field_view: None,
-        }),
-        Some(Command::App(args)) => open_app(&args),
+        None => open_app(
+            &AppArgs {
+                scene: None,
+                play: false,
+                measure_frames: None,
+                projector: false,
+                report_every: None,
+                field_view: None,
+            },
+            cli.lang,
+        ),
+        Some(Command::App(args)) => open_app(&args, cli.lang),
         Some(Command::Run(args)) => run::run(&args),
         Some(Command::Check { scene }) => check(&scene),
         Some(Command::Examples) => {
@@ -116,7 +137,9 @@ fn main() -> ExitCode {
     }
 }
 
-fn open_app(args: &AppArgs) -> Result<(), Failure> {
+/// Opens the app; `language`, when given on the command line, is the one it speaks
+/// (otherwise the one chosen in it last time, or the system's).
+fn open_app(args: &AppArgs, language: Option<Language>) -> Result<(), Failure> {
     let mut app = match &args.scene {
         None => newtonlab_app::App::default(),
         Some(source) => {
@@ -151,12 +174,10 @@ fn open_app(args: &AppArgs) -> Result<(), Failure> {
             FieldView::Electric => newtonlab_app::FieldKind::Electric,
             FieldView::Gravitational => newtonlab_app::FieldKind::Gravitational,
         }),
+        language,
     });
-    newtonlab_app::run_native(app).map_err(|e| {
-        Failure::Simulation(format!(
-            "the app could not open a window: {e}\n(the headless commands work without one: see `newtonlab --help`)"
-        ))
-    })
+    newtonlab_app::run_native(app)
+        .map_err(|e| Failure::Simulation(say("cli-no-window", &[("error", &e.to_string())])))
 }
 
 fn check(source: &str) -> Result<(), Failure> {
@@ -164,25 +185,30 @@ fn check(source: &str) -> Result<(), Failure> {
     #[expect(clippy::print_stdout, reason = "the command's report")]
     {
         println!(
-            "{source}: ok ({} particles, {} springs, {} ramps, integrator {}, time step {} s)",
-            scene.particles.len(),
-            scene.springs.len(),
-            scene.ramps.len(),
-            scene.simulation.integrator,
-            scene.simulation.time_step,
+            "{}",
+            say(
+                "cli-check-ok",
+                &[
+                    ("source", source),
+                    ("particles", &scene.particles.len().to_string()),
+                    ("springs", &scene.springs.len().to_string()),
+                    ("ramps", &scene.ramps.len().to_string()),
+                    ("integrator", scene.simulation.integrator.as_str()),
+                    ("step", &scene.simulation.time_step.to_string()),
+                ],
+            )
         );
         if scene.simulation.pair_forces == physics::PairForces::Tree {
             let charged = scene.particles.iter().filter(|p| p.charge != 0.0).count();
+            let angle = scene.simulation.opening_angle.to_string();
+            let id = if charged > 0 && scene.world.electrostatics {
+                "cli-check-tree-and-charges"
+            } else {
+                "cli-check-tree"
+            };
             println!(
-                "note: gravitation is summed with the Barnes–Hut tree (opening angle {}){}",
-                scene.simulation.opening_angle,
-                if charged > 0 && scene.world.electrostatics {
-                    format!(
-                        "; Coulomb forces between its {charged} charged particle(s) are summed directly, pair by pair"
-                    )
-                } else {
-                    String::new()
-                }
+                "{}",
+                say(id, &[("angle", &angle), ("charged", &charged.to_string())])
             );
         }
     }

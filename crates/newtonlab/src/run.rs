@@ -2,6 +2,7 @@
 
 use std::io::{self, BufWriter, IsTerminal, Write};
 
+use newtonlab_i18n::tr_text as say;
 use physics::Simulation;
 
 use crate::{Failure, scene_source};
@@ -49,41 +50,52 @@ pub(crate) struct RunArgs {
 
 pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
     if !args.until.is_finite() {
-        return Err(Failure::Input(format!(
-            "--until must be a finite number of seconds; got {}",
-            args.until
+        return Err(Failure::Input(say(
+            "cli-until-not-finite",
+            &[("until", &args.until.to_string())],
         )));
     }
     if !(args.every.is_finite() && args.every > 0.0) {
-        return Err(Failure::Input(format!(
-            "--every must be a finite number of seconds greater than 0; got {}",
-            args.every
+        return Err(Failure::Input(say(
+            "cli-every-invalid",
+            &[("every", &args.every.to_string())],
         )));
     }
     let scene = scene_source::load(&args.scene)?;
     let start = scene.simulation.start_time;
     if args.until < start {
-        return Err(Failure::Input(if start == 0.0 {
-            format!("--until must be 0 or more seconds; got {}", args.until)
+        let (until, start) = (args.until.to_string(), start.to_string());
+        let id = if scene.simulation.start_time == 0.0 {
+            "cli-until-negative"
         } else {
-            format!(
-                "--until {} is before the scene's start_time {start} s; a run goes forward from its start",
-                args.until
-            )
-        }));
+            "cli-until-before-start"
+        };
+        return Err(Failure::Input(say(
+            id,
+            &[("until", &until), ("start", &start)],
+        )));
     }
     let span = args.until - start;
     if span / args.every > MAX_ROWS {
-        return Err(Failure::Input(format!(
-            "--until {} with --every {} would write more than {MAX_ROWS} rows; choose a larger --every",
-            args.until, args.every
+        return Err(Failure::Input(say(
+            "cli-too-many-rows",
+            &[
+                ("until", &args.until.to_string()),
+                ("every", &args.every.to_string()),
+                ("rows", &MAX_ROWS.to_string()),
+            ],
         )));
     }
     let steps = span / scene.simulation.time_step;
     if steps > MAX_STEPS {
-        return Err(Failure::Input(format!(
-            "--until {} at a time step of {:e} s would take {steps:.1e} steps, more than NewtonLab runs ({MAX_STEPS:e}); choose a larger time_step or a shorter --until",
-            args.until, scene.simulation.time_step
+        return Err(Failure::Input(say(
+            "cli-too-many-steps",
+            &[
+                ("until", &args.until.to_string()),
+                ("step", &format!("{:e}", scene.simulation.time_step)),
+                ("steps", &format!("{steps:.1e}")),
+                ("most", &format!("{MAX_STEPS:e}")),
+            ],
         )));
     }
     let mut simulation = Simulation::new(&scene).map_err(|e| Failure::Input(e.to_string()))?;
@@ -98,13 +110,16 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         None => None,
     };
     if let Some(note) = sampling_note(&scene.simulation, args.every) {
-        eprintln!("note: {note}");
+        eprintln!("{note}");
     }
     let times = sample_times(start, args.until, args.every);
     let sink: Box<dyn Write> = match args.out.as_deref() {
         None | Some("-") => Box::new(io::stdout().lock()),
         Some(path) => Box::new(std::fs::File::create(path).map_err(|error| {
-            Failure::Input(format!("cannot create the output file '{path}': {error}"))
+            Failure::Input(say(
+                "cli-cannot-create",
+                &[("path", path), ("error", &error.to_string())],
+            ))
         })?),
     };
     let mut out = BufWriter::new(sink);
@@ -117,7 +132,10 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         Ok(outcome) => outcome,
         // A reader that stops early (`| head`) is not an error of ours.
         Err(error) if error.kind() == io::ErrorKind::BrokenPipe => Ok(()),
-        Err(error) => Err(Failure::Input(format!("cannot write the CSV: {error}"))),
+        Err(error) => Err(Failure::Input(say(
+            "cli-cannot-write-csv",
+            &[("error", &error.to_string())],
+        ))),
     };
     if let (Ok(()), Some(path)) = (&outcome, args.save_state.as_deref()) {
         save_state(&simulation, &scene, path)?;
@@ -132,8 +150,12 @@ fn save_state(simulation: &Simulation, scene: &physics::Scene, path: &str) -> Re
         physics::SceneFormat::Json => saved.to_json(),
         physics::SceneFormat::Toml => saved.to_toml(),
     };
-    std::fs::write(path, text)
-        .map_err(|error| Failure::Input(format!("cannot write the state to '{path}': {error}")))
+    std::fs::write(path, text).map_err(|error| {
+        Failure::Input(say(
+            "cli-cannot-save-state",
+            &[("path", path), ("error", &error.to_string())],
+        ))
+    })
 }
 
 /// A fixed-step method lands exactly on every sample, so when --every is not a whole
@@ -148,11 +170,12 @@ fn sampling_note(settings: &physics::Settings, every: f64) -> Option<String> {
     if (steps - steps.round()).abs() <= 1e-9 * steps.max(1.0) {
         return None;
     }
-    Some(format!(
-        "--every {every} s is not a whole number of time steps ({} s): each sample shortens a \
-         step to land on it, so this run integrates with a smaller effective step than the scene's \
-         and its numbers differ slightly from a run sampled at a multiple of {} s",
-        settings.time_step, settings.time_step
+    Some(say(
+        "cli-sampling-note",
+        &[
+            ("every", &every.to_string()),
+            ("step", &settings.time_step.to_string()),
+        ],
     ))
 }
 
@@ -255,7 +278,10 @@ struct ImpactLog {
 impl ImpactLog {
     fn create(path: &str, scene: &physics::Scene) -> Result<Self, Failure> {
         let file = std::fs::File::create(path).map_err(|error| {
-            Failure::Input(format!("cannot create the impact log '{path}': {error}"))
+            Failure::Input(say(
+                "cli-cannot-create-log",
+                &[("path", path), ("error", &error.to_string())],
+            ))
         })?;
         let mut log = Self {
             path: path.to_owned(),

@@ -2,9 +2,12 @@
 
 use std::process::{Command, Output};
 
+/// The binary, speaking English whatever the machine's locale (the messages follow
+/// `LC_ALL`, `LC_MESSAGES` and `LANG`; "C" names no language, so English).
 fn newtonlab(args: &[&str]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_newtonlab"))
         .args(args)
+        .env("LC_ALL", "C")
         .output()
         .expect("the binary runs")
 }
@@ -191,6 +194,52 @@ fn a_bad_scene_exits_2_listing_every_problem_with_its_position() {
         );
         assert!(!message.contains("panicked"), "{message}");
     }
+}
+
+/// The same problems in German with `--lang de`, in Spanish from the locale alone
+/// (`LC_ALL=es_ES.UTF-8`), with the same places and exit code; an unknown language is
+/// refused by name.
+#[test]
+fn messages_follow_lang_and_the_locale() {
+    let (_dir, path) = scene_file(
+        "bad.toml",
+        "version = 1\n[[particle]]\nname = \"B\"\nmass = -2\nposition = [0, 0]\n",
+    );
+    let german = newtonlab(&["check", &path, "--lang", "de"]);
+    assert_eq!(german.status.code(), Some(2));
+    let message = stderr(&german);
+    assert!(
+        message.contains(&format!(
+            "{path}:4:8: Teilchen 'B': mass muss größer als 0 sein, nicht -2"
+        )) && message.contains("1 Problem gefunden"),
+        "{message}"
+    );
+    let spanish = Command::new(env!("CARGO_BIN_EXE_newtonlab"))
+        .args(["check", &path])
+        .env("LC_ALL", "es_ES.UTF-8")
+        .output()
+        .expect("the binary runs");
+    assert_eq!(spanish.status.code(), Some(2));
+    let message = stderr(&spanish);
+    assert!(
+        message.contains(&format!(
+            "{path}:4:8: partícula 'B': mass debe ser mayor que 0, no -2"
+        )),
+        "{message}"
+    );
+    let ok = newtonlab(&["check", "example:collision", "--lang", "es"]);
+    assert!(
+        stdout(&ok).contains("correcto (2 partículas"),
+        "{}",
+        stdout(&ok)
+    );
+    let unknown = newtonlab(&["check", "example:collision", "--lang", "fr"]);
+    assert_eq!(unknown.status.code(), Some(2));
+    assert!(
+        stderr(&unknown).contains("choose en, de, es"),
+        "{}",
+        stderr(&unknown)
+    );
 }
 
 #[test]

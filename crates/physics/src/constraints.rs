@@ -494,10 +494,12 @@ pub(crate) fn unsatisfiable(scene: &Scene) -> Option<(Section, String)> {
     let tie = &scene.ties[k];
     Some((
         Section::Tie(k),
-        format!(
-            "length {} m cannot be kept together with the other rods and strings joined to its ends (the nearest arrangement misses it by {:.3e} m); change a length or an end",
-            tie.length,
-            miss(k) * tie.length
+        crate::scene::say(
+            "scene-unsatisfiable",
+            &[
+                ("length", &tie.length.to_string()),
+                ("miss", &format!("{:.3e}", miss(k) * tie.length)),
+            ],
         ),
     ))
 }

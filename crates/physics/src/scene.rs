@@ -12,6 +12,7 @@ mod presentation;
 mod validate;
 
 use glam::DVec2;
+use newtonlab_i18n::tr_text;
 
 pub use presentation::{Follow, Graph, Of, Quantity, Total, View};
 pub use validate::{FieldRef, Rule, Section, check_value};
@@ -640,4 +641,21 @@ impl Scene {
     pub fn particle_names(&self) -> Vec<String> {
         self.particles.iter().map(|p| p.name.clone()).collect()
     }
+}
+
+/// The checker's message `id` in the thread's language (`newtonlab_i18n`), its
+/// arguments given as text: numbers are written by the caller as files write them.
+pub(crate) fn say(id: &str, args: &[(&str, &str)]) -> String {
+    tr_text(id, args)
+}
+
+/// [`say`] with numbers for `$a`, `$b`, `$c`, `$d`, written as Rust writes them.
+pub(crate) fn say_numbers(id: &str, numbers: &[f64]) -> String {
+    let written: Vec<String> = numbers.iter().map(ToString::to_string).collect();
+    let args: Vec<(&str, &str)> = ["a", "b", "c", "d"]
+        .into_iter()
+        .zip(&written)
+        .map(|(name, text)| (name, text.as_str()))
+        .collect();
+    say(id, &args)
 }

@@ -37,10 +37,7 @@ use crate::state::State;
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum SimulationError {
     /// A position or velocity became infinite or NaN, or ran away beyond 1e150.
-    #[error(
-        "at t = {time} s particle '{particle}' reached a non-finite position or velocity \
-         (two bodies came too close, or the time step is too large for the forces)"
-    )]
+    #[error("{}", crate::scene::say("run-non-finite", &[("time", &time.to_string()), ("particle", particle)]))]
     NonFinite {
         /// The first particle, in scene order, with a non-finite value.
         particle: String,
@@ -48,10 +45,7 @@ pub enum SimulationError {
         time: f64,
     },
     /// The adaptive integrator could not meet its tolerance with any step f64 can take.
-    #[error(
-        "at t = {time} s the adaptive integrator needed a step too small to make progress \
-         with tolerance {tolerance}; loosen the tolerance or check for bodies passing through each other"
-    )]
+    #[error("{}", crate::scene::say("run-step-too-small", &[("time", &time.to_string()), ("tolerance", &tolerance.to_string())]))]
     StepTooSmall {
         /// Seconds.
         time: f64,
@@ -60,11 +54,12 @@ pub enum SimulationError {
     },
     /// Reaching the requested instant took far more adaptive steps than the time step
     /// implies: the time step is far too long for the motion.
-    #[error(
-        "at t = {time} s reaching {target:e} s took more than {limit} adaptive steps \
-         (the time step of {time_step:e} s is far too long for this scene's motion); \
-         choose a smaller time_step"
-    )]
+    #[error("{}", crate::scene::say("run-too-many-steps", &[
+        ("time", &time.to_string()),
+        ("target", &format!("{target:e}")),
+        ("limit", &limit.to_string()),
+        ("step", &format!("{time_step:e}")),
+    ]))]
     TooManySteps {
         /// Seconds, where it stopped.
         time: f64,

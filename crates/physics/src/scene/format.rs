@@ -13,6 +13,7 @@ use std::fmt::{self, Write as _};
 use std::ops::Range;
 
 use super::fields::{self, Field, Kind, Value as FieldValue};
+use super::say;
 use super::validate::{FieldRef, Section};
 use super::{
     Bounds, Color, Endpoint, Follow, Graph, Particle, Ramp, Scene, Settings, Spring, Tie, TieKind,
@@ -62,9 +63,17 @@ impl fmt::Display for Problem {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match (self.line, self.column) {
             (Some(line), Some(column)) => {
-                write!(f, "line {line}, column {column}: {}", self.message)
+                let (line, column) = (line.to_string(), column.to_string());
+                let place = say(
+                    "scene-at-line-column",
+                    &[("line", &line), ("column", &column)],
+                );
+                write!(f, "{place}: {}", self.message)
             }
-            (Some(line), None) => write!(f, "line {line}: {}", self.message),
+            (Some(line), None) => {
+                let place = say("scene-at-line", &[("line", &line.to_string())]);
+                write!(f, "{place}: {}", self.message)
+            }
             _ => f.write_str(&self.message),
         }
     }
@@ -82,9 +91,13 @@ impl LoadError {
     /// one line per problem, `source:line:column: message`.
     pub fn report(&self, source: &str) -> String {
         let count = self.problems.len();
-        let mut out = format!(
-            "{source}: {count} problem{} found:",
-            if count == 1 { "" } else { "s" }
+        #[expect(clippy::cast_precision_loss, reason = "a count of problems")]
+        let mut out = newtonlab_i18n::tr_with(
+            "scene-problems-found",
+            &[
+                ("source", newtonlab_i18n::Arg::Text(source)),
+                ("count", newtonlab_i18n::Arg::Number(count as f64)),
+            ],
         );
         for problem in &self.problems {
             let place = match (problem.line, problem.column) {
@@ -424,15 +437,19 @@ struct Entry {
 }
 
 impl Value {
-    fn kind(&self) -> &'static str {
-        match self {
-            Self::Bool(_) => "true or false",
-            Self::Number(_) => "a number",
-            Self::Text(_) => "text",
-            Self::Array(_) => "a list",
-            Self::Table(_) => "a table",
-            Self::Datetime => "a date",
-        }
+    /// What the value is, as a message says it: "a number".
+    fn kind(&self) -> String {
+        say(
+            match self {
+                Self::Bool(_) => "scene-got-bool",
+                Self::Number(_) => "scene-got-number",
+                Self::Text(_) => "scene-got-text",
+                Self::Array(_) => "scene-got-list",
+                Self::Table(_) => "scene-got-table",
+                Self::Datetime => "scene-got-date",
+            },
+            &[],
+        )
     }
 }
 
@@ -447,7 +464,7 @@ fn parse_toml(text: &str) -> Result<Node, LoadError> {
                     (Some(line), Some(column))
                 });
                 Problem {
-                    message: format!("this is not valid TOML: {}", error.message().trim()),
+                    message: say("scene-bad-toml", &[("error", error.message().trim())]),
                     line,
                     column,
                     field: None,
@@ -509,7 +526,7 @@ fn parse_json(text: &str) -> Result<Node, LoadError> {
         Ok(value) => Ok(json_node(value)),
         Err(error) => Err(LoadError {
             problems: vec![Problem {
-                message: format!("this is not valid JSON: {error}"),
+                message: say("scene-bad-json", &[("error", &error.to_string())]),
                 line: Some(error.line()),
                 column: Some(error.column()),
                 field: None,
@@ -642,7 +659,7 @@ impl<'t> Reader<'t> {
             self.problem(
                 node.span.clone(),
                 None,
-                format!("{label} must be a table, got {kind}"),
+                say("scene-not-a-table", &[("label", &label), ("got", &kind)]),
             );
             None
         }
@@ -653,10 +670,17 @@ impl<'t> Reader<'t> {
         for (entry, used) in table.entries.iter().zip(&table.used) {
             if !used {
                 let hint = closest(&entry.key, known).map_or_else(
-                    || format!("; the keys here are {}", known.join(", ")),
-                    |k| format!("; did you mean '{k}'?"),
+                    || say("scene-keys-here", &[("keys", &known.join(", "))]),
+                    |k| say("scene-did-you-mean", &[("key", k)]),
                 );
-                let message = format!("{}: unknown key '{}'{hint}", table.label, entry.key);
+                let message = say(
+                    "scene-unknown-key",
+                    &[
+                        ("label", &table.label),
+                        ("key", &entry.key),
+                        ("hint", &hint),
+                    ],
+                );
                 self.problem(entry.key_span.clone(), None, message);
             }
         }
@@ -701,17 +725,17 @@ impl<'t> Reader<'t> {
             section: table.section,
             field: key,
         };
-        let message = format!("{}: {key} is required", table.label);
+        let message = say("scene-required", &[("label", &table.label), ("key", key)]);
         self.problem(table.span.clone(), Some(field), message);
         placeholder
     }
 
     fn scene(&mut self, root: &Node) -> Scene {
         let mut scene = Scene::default();
-        let Some(mut top) = self.table(root, Section::Root, "the scene".to_owned()) else {
+        let Some(mut top) = self.table(root, Section::Root, say("scene-the-whole", &[])) else {
             return scene;
         };
-        "scene".clone_into(&mut top.label);
+        top.label = say("scene-the-scene", &[]);
         if top.entries.iter().any(|e| e.key == "version") {
             let version = self.field(&mut top, "version", read_number);
             #[expect(
@@ -728,15 +752,17 @@ impl<'t> Reader<'t> {
                 self.problem(
                     span,
                     None,
-                    format!("scene: version {version} is not supported; this NewtonLab reads version {VERSION}"),
+                    say(
+                        "scene-version-unsupported",
+                        &[
+                            ("version", &version.to_string()),
+                            ("supported", &VERSION.to_string()),
+                        ],
+                    ),
                 );
             }
         } else {
-            self.problem(
-                None,
-                None,
-                "scene: version is required; write `version = 1` at the top of the file".to_owned(),
-            );
+            self.problem(None, None, say("scene-version-required", &[]));
         }
         scene.name = self.field(&mut top, "name", read_text);
         scene.description = self.field(&mut top, "description", read_text);
@@ -787,9 +813,9 @@ impl<'t> Reader<'t> {
                 self.problem(
                     node.span.clone(),
                     None,
-                    format!(
-                        "scene: '{key}' must be a list of [[{key}]] tables, got {}",
-                        node.value.kind()
+                    say(
+                        "scene-not-a-list",
+                        &[("key", key), ("got", &node.value.kind())],
                     ),
                 );
                 &[]
@@ -845,12 +871,12 @@ impl<'t> Reader<'t> {
             "rod" | "string" => format!("{kind}{}", index + 1),
             _ => format!("{}{}", &kind[..1], index + 1),
         };
-        let mut t = self.table(node, section, format!("{kind} #{}", index + 1))?;
+        let mut t = self.table(node, section, super::validate::numbered(kind, index))?;
         let name = self
             .field(&mut t, "name", read_text)
             .unwrap_or(default_name);
         if !name.is_empty() {
-            t.label = format!("{kind} '{name}'");
+            t.label = say("scene-named", &[("kind", kind), ("name", &name)]);
         }
         Some((t, name))
     }
@@ -916,13 +942,16 @@ impl<'t> Reader<'t> {
 
     fn graph(&mut self, node: &Node, index: usize) -> Graph {
         let mut graph = Graph::against_time(Vec::<String>::new());
-        let Some(mut t) = self.table(node, Section::Graph(index), format!("graph #{}", index + 1))
-        else {
+        let Some(mut t) = self.table(
+            node,
+            Section::Graph(index),
+            super::validate::numbered("graph", index),
+        ) else {
             return graph;
         };
         graph.title = self.field(&mut t, "title", read_text);
         if let Some(title) = &graph.title {
-            t.label = format!("graph '{title}'");
+            t.label = say("scene-named", &[("kind", "graph"), ("name", title)]);
         }
         if let Some(x) = self.field(&mut t, "x", read_text) {
             graph.x = x;
@@ -979,22 +1008,22 @@ impl<'t> Reader<'t> {
 fn read_number(node: &Node) -> Result<f64, String> {
     match node.value {
         Value::Number(x) if x.is_finite() => Ok(x),
-        Value::Number(x) => Err(format!("must be a finite number, got {x}")),
-        ref other => Err(format!("must be a number, got {}", other.kind())),
+        Value::Number(x) => Err(say("scene-must-be-finite", &[("got", &x.to_string())])),
+        ref other => Err(say("scene-must-be-number", &[("got", &other.kind())])),
     }
 }
 
 fn read_bool(node: &Node) -> Result<bool, String> {
     match node.value {
         Value::Bool(b) => Ok(b),
-        ref other => Err(format!("must be true or false, got {}", other.kind())),
+        ref other => Err(say("scene-must-be-bool", &[("got", &other.kind())])),
     }
 }
 
 fn read_text(node: &Node) -> Result<String, String> {
     match &node.value {
         Value::Text(text) => Ok(text.clone()),
-        other => Err(format!("must be text in quotes, got {}", other.kind())),
+        other => Err(say("scene-must-be-text", &[("got", &other.kind())])),
     }
 }
 
@@ -1013,22 +1042,31 @@ fn read_value(kind: Kind, node: &Node) -> Result<FieldValue, String> {
 }
 
 fn read_text_list(node: &Node) -> Result<Vec<String>, String> {
-    const FORM: &str = "must be a list of quantities in quotes, like [\"A.x\", \"total_energy\"]";
+    let wrong = |got: String| say("scene-must-be-quantities", &[("got", &got)]);
     match &node.value {
         Value::Array(items) => items
             .iter()
-            .map(|item| read_text(item).map_err(|_| format!("{FORM}, got {}", item.value.kind())))
+            .map(|item| read_text(item).map_err(|_| wrong(item.value.kind())))
             .collect(),
-        other => Err(format!("{FORM}, got {}", other.kind())),
+        other => Err(wrong(other.kind())),
     }
 }
 
+/// The two ways to write a vector, as messages show them (the file's own syntax).
+const VECTOR_FORMS: [(&str, &str); 2] = [
+    ("cartesian", "[x, y]"),
+    ("polar", "{ magnitude = m, angle = degrees }"),
+];
+
 fn read_vector(node: &Node) -> Result<Vector, String> {
-    const FORMS: &str = "must be [x, y] or { magnitude = m, angle = degrees }";
+    let wrong = |id, arg: (&str, &str)| say(id, &[VECTOR_FORMS[0], VECTOR_FORMS[1], arg]);
     match &node.value {
         Value::Array(items) => match items.as_slice() {
             [x, y] => Ok(Vector::cartesian(read_number(x)?, read_number(y)?)),
-            _ => Err(format!("{FORMS}, got a list of {} numbers", items.len())),
+            _ => Err(wrong(
+                "scene-vector-length",
+                ("count", &items.len().to_string()),
+            )),
         },
         Value::Table(entries) => {
             let get = |key: &str| entries.iter().find(|e| e.key == key).map(|e| &e.node);
@@ -1036,32 +1074,27 @@ fn read_vector(node: &Node) -> Result<Vector, String> {
                 .iter()
                 .find(|e| e.key != "magnitude" && e.key != "angle")
             {
-                return Err(format!(
-                    "{FORMS}; '{}' is not a part of a vector",
-                    extra.key
-                ));
+                return Err(wrong("scene-vector-extra", ("key", &extra.key)));
             }
             match (get("magnitude"), get("angle")) {
                 (Some(m), Some(a)) => Ok(Vector::polar(
                     read_number(m).map_err(|e| format!("magnitude {e}"))?,
                     read_number(a).map_err(|e| format!("angle {e}"))?,
                 )),
-                _ => Err(format!(
-                    "{FORMS}; a polar vector needs both magnitude and angle"
-                )),
+                _ => Err(wrong("scene-vector-polar", ("got", ""))),
             }
         }
-        other => Err(format!("{FORMS}, got {}", other.kind())),
+        other => Err(wrong("scene-vector-got", ("got", &other.kind()))),
     }
 }
 
 fn read_bounds(node: &Node) -> Result<Bounds, String> {
-    const FORM: &str = "must be { min = [x, y], max = [x, y] }";
+    let wrong = |id, arg: (&str, &str)| say(id, &[("form", "{ min = [x, y], max = [x, y] }"), arg]);
     let Value::Table(entries) = &node.value else {
-        return Err(format!("{FORM}, got {}", node.value.kind()));
+        return Err(wrong("scene-bounds-got", ("got", &node.value.kind())));
     };
     if let Some(extra) = entries.iter().find(|e| e.key != "min" && e.key != "max") {
-        return Err(format!("{FORM}; '{}' is not a part of bounds", extra.key));
+        return Err(wrong("scene-bounds-extra", ("key", &extra.key)));
     }
     let get = |key: &str| entries.iter().find(|e| e.key == key).map(|e| &e.node);
     match (get("min"), get("max")) {
@@ -1069,7 +1102,7 @@ fn read_bounds(node: &Node) -> Result<Bounds, String> {
             min: read_vector(min).map_err(|e| format!("min {e}"))?,
             max: read_vector(max).map_err(|e| format!("max {e}"))?,
         }),
-        _ => Err(format!("{FORM}; both min and max are needed")),
+        _ => Err(wrong("scene-bounds-both", ("got", ""))),
     }
 }
 
@@ -1078,11 +1111,8 @@ fn read_endpoint(node: &Node) -> Result<Endpoint, String> {
         Value::Text(name) => Ok(Endpoint::Particle(name.clone())),
         Value::Array(_) | Value::Table(_) => read_vector(node)
             .map(Endpoint::Point)
-            .map_err(|e| e.replace("must be", "must be a particle's name or a point")),
-        other => Err(format!(
-            "must be a particle's name or a point [x, y], got {}",
-            other.kind()
-        )),
+            .map_err(|e| say("scene-endpoint-point", &[("reason", &e)])),
+        other => Err(say("scene-endpoint-got", &[("got", &other.kind())])),
     }
 }
 
@@ -1090,9 +1120,9 @@ fn read_integrator(node: &Node) -> Result<Integrator, String> {
     let name = read_text(node)?;
     name.parse().map_err(|_| {
         let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.as_str()).collect();
-        format!(
-            "'{name}' is not an integrator; choose one of {}",
-            names.join(", ")
+        say(
+            "scene-not-integrator",
+            &[("name", &name), ("names", &names.join(", "))],
         )
     })
 }
@@ -1102,13 +1132,12 @@ fn read_pair_forces(node: &Node) -> Result<PairForces, String> {
     PairForces::ALL
         .into_iter()
         .find(|mode| mode.as_str() == name)
-        .ok_or_else(|| format!("'{name}' is not a way to sum pair forces; choose direct or tree"))
+        .ok_or_else(|| say("scene-not-pair-forces", &[("name", &name)]))
 }
 
 fn read_color(node: &Node) -> Result<Color, String> {
     let text = read_text(node)?;
-    Color::parse_hex(&text)
-        .ok_or_else(|| format!("must be a colour like \"#d94f4f\", got \"{text}\""))
+    Color::parse_hex(&text).ok_or_else(|| say("scene-not-colour", &[("text", &text)]))
 }
 
 /// The known key closest to a misspelt one, if it is close enough to be a typo.

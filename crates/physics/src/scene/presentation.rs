@@ -210,15 +210,18 @@ impl Quantity {
             }
             return match Of::ALL.into_iter().find(|of| of.key() == key) {
                 Some(of) => Ok(Self::Particle(name.to_owned(), of)),
-                None => Err(format!(
-                    "'{text}': a particle's quantity is one of {}; a rod's or string's is tension",
-                    Of::ALL.map(Of::key).join(", ")
+                None => Err(crate::scene::say(
+                    "scene-quantity-of-particle",
+                    &[("text", text), ("keys", &Of::ALL.map(Of::key).join(", "))],
                 )),
             };
         }
-        Err(format!(
-            "'{text}' is not a quantity: write t, NAME.x (or .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy), ROD.tension, or one of {}",
-            Total::ALL.map(Total::key).join(", ")
+        Err(crate::scene::say(
+            "scene-not-a-quantity",
+            &[
+                ("text", text),
+                ("keys", &Total::ALL.map(Total::key).join(", ")),
+            ],
         ))
     }
 

@@ -7,7 +7,7 @@ use std::collections::HashMap;
 
 use super::fields::{self, Field, Kind, Value};
 use super::format::Problem;
-use super::{Color, Endpoint, Follow, Quantity, Scene, Vector};
+use super::{Color, Endpoint, Follow, Quantity, Scene, Vector, say, say_numbers};
 
 /// A part of the scene that a problem belongs to.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -66,12 +66,14 @@ impl Scene {
     pub fn describe(&self, section: Section) -> String {
         fn named(kind: &str, name: Option<&str>, index: usize) -> String {
             match name {
-                Some(name) if !name.is_empty() => format!("{kind} '{name}'"),
-                _ => format!("{kind} #{}", index + 1),
+                Some(name) if !name.is_empty() => {
+                    say("scene-named", &[("kind", kind), ("name", name)])
+                }
+                _ => numbered(kind, index),
             }
         }
         match section {
-            Section::Root => "scene".to_owned(),
+            Section::Root => say("scene-the-scene", &[]),
             Section::World => "[world]".to_owned(),
             Section::Simulation => "[simulation]".to_owned(),
             Section::Particle(i) => named(
@@ -95,23 +97,28 @@ impl Scene {
     }
 }
 
+/// `kind #n` (1-based): an object without a name.
+pub(crate) fn numbered(kind: &str, index: usize) -> String {
+    say(
+        "scene-numbered",
+        &[("kind", kind), ("number", &(index + 1).to_string())],
+    )
+}
+
 /// Checks a single typed value, as the app's inspector does before applying it.
 ///
 /// # Errors
 /// The reason, in the words of a full validation message without the object's name.
 pub fn check_value(rule: Rule, field: &str, value: f64) -> Result<(), String> {
+    let broken = |id| Err(say(id, &[("field", field), ("value", &value.to_string())]));
     if !value.is_finite() {
-        return Err(format!("{field} must be a finite number, got {value}"));
+        return broken("scene-not-finite");
     }
     check_magnitude(field, value)?;
     match rule {
-        Rule::Positive if value <= 0.0 => {
-            Err(format!("{field} must be greater than 0, got {value}"))
-        }
-        Rule::NonNegative if value < 0.0 => Err(format!("{field} must be 0 or more, got {value}")),
-        Rule::Fraction if !(0.0..=1.0).contains(&value) => {
-            Err(format!("{field} must be between 0 and 1, got {value}"))
-        }
+        Rule::Positive if value <= 0.0 => broken("scene-not-positive"),
+        Rule::NonNegative if value < 0.0 => broken("scene-negative"),
+        Rule::Fraction if !(0.0..=1.0).contains(&value) => broken("scene-not-fraction"),
         _ => Ok(()),
     }
 }
@@ -130,13 +137,14 @@ fn check_magnitude(field: &str, value: f64) -> Result<(), String> {
     if size == 0.0 || (SMALLEST_MAGNITUDE..=LARGEST_MAGNITUDE).contains(&size) {
         return Ok(());
     }
-    let which = if size > LARGEST_MAGNITUDE {
-        "large"
+    let id = if size > LARGEST_MAGNITUDE {
+        "scene-too-large"
     } else {
-        "small"
+        "scene-too-small"
     };
-    Err(format!(
-        "{field} {value:e} is too {which} to simulate reliably: numbers in a scene are 0 or between 1e-100 and 1e100 in size, so that forces and energies stay within the range of f64"
+    Err(say(
+        id,
+        &[("field", field), ("value", &format!("{value:e}"))],
     ))
 }
 
@@ -180,7 +188,7 @@ impl Checker<'_> {
             self.report(
                 section,
                 field,
-                &format!("{field} must have finite components"),
+                &say("scene-vector-not-finite", &[("field", field)]),
             );
             return;
         }
@@ -222,10 +230,7 @@ impl Checker<'_> {
                 self.report(
                     s,
                     "bounds",
-                    &format!(
-                        "bounds: min must be below and left of max, got min [{}, {}] and max [{}, {}]",
-                        min.x, min.y, max.x, max.y
-                    ),
+                    &say_numbers("scene-bounds-order", &[min.x, min.y, max.x, max.y]),
                 );
             }
         }
@@ -251,21 +256,22 @@ impl Checker<'_> {
         let mut first_use: HashMap<&str, Section> = HashMap::new();
         for (section, name) in sections {
             if name.trim().is_empty() {
-                self.report(section, "name", "name must not be empty");
+                self.report(section, "name", &say("scene-name-empty", &[]));
             } else if let Some(&earlier) = first_use.get(name) {
                 let earlier = match earlier {
-                    Section::Particle(i) => format!("particle #{}", i + 1),
-                    Section::Spring(i) => format!("spring #{}", i + 1),
-                    Section::Ramp(i) => format!("ramp #{}", i + 1),
-                    Section::Tie(i) => format!("{} '{name}'", scene.ties[i].kind.as_str()),
+                    Section::Particle(i) => numbered("particle", i),
+                    Section::Spring(i) => numbered("spring", i),
+                    Section::Ramp(i) => numbered("ramp", i),
+                    Section::Tie(i) => say(
+                        "scene-named",
+                        &[("kind", scene.ties[i].kind.as_str()), ("name", name)],
+                    ),
                     other => scene.describe(other),
                 };
                 self.report(
                     section,
                     "name",
-                    &format!(
-                        "the name '{name}' is already used by {earlier}; names must be unique"
-                    ),
+                    &say("scene-name-taken", &[("name", name), ("earlier", &earlier)]),
                 );
             } else {
                 first_use.insert(name, section);
@@ -293,9 +299,9 @@ impl Checker<'_> {
                 self.report(
                     s,
                     "position",
-                    &format!(
-                        "position [{}, {}] puts the particle (radius {}) outside the world bounds",
-                        position.x, position.y, particle.radius
+                    &say_numbers(
+                        "scene-outside-bounds",
+                        &[position.x, position.y, particle.radius],
                     ),
                 );
             }
@@ -334,10 +340,7 @@ impl Checker<'_> {
                 self.report(
                     s,
                     "to",
-                    &format!(
-                        "a {} needs a moving particle at one end at least; both ends are fixed",
-                        tie.kind.as_str()
-                    ),
+                    &say("scene-ends-fixed", &[("kind", tie.kind.as_str())]),
                 );
             }
         }
@@ -358,22 +361,18 @@ impl Checker<'_> {
                 self.report(
                     s,
                     field,
-                    &format!("{field}: there is no particle named '{name}'"),
+                    &say("scene-no-particle", &[("field", field), ("name", name)]),
                 );
             }
         }
         match (from, to) {
-            (Endpoint::Point(_), Endpoint::Point(_)) => self.report(
-                s,
-                "to",
-                &format!(
-                    "a {kind} needs a particle at one end at least; both ends are fixed points"
-                ),
-            ),
+            (Endpoint::Point(_), Endpoint::Point(_)) => {
+                self.report(s, "to", &say("scene-ends-points", &[("kind", kind)]));
+            }
             (Endpoint::Particle(a), Endpoint::Particle(b)) if a == b => self.report(
                 s,
                 "to",
-                &format!("both ends are the particle '{a}'; a {kind} joins two different things"),
+                &say("scene-same-particle", &[("name", a), ("kind", kind)]),
             ),
             _ => {}
         }
@@ -399,8 +398,9 @@ impl Checker<'_> {
                         self.report(
                             s,
                             field,
-                            &format!(
-                                "{field}: '{text}' names no particle; there is no particle '{name}'"
+                            &say(
+                                "scene-graph-no-particle",
+                                &[("field", field), ("text", text), ("name", &name)],
                             ),
                         );
                     }
@@ -410,13 +410,14 @@ impl Checker<'_> {
                         self.report(
                             s,
                             field,
-                            &format!(
-                                "{field}: '{text}' names no rod or string; there is none named '{name}'"
+                            &say(
+                                "scene-graph-no-tie",
+                                &[("field", field), ("text", text), ("name", &name)],
                             ),
                         );
                     }
                     Ok(Quantity::Time) if field == "y" => {
-                        self.report(s, field, "y: time goes on the x axis (x = \"t\")");
+                        self.report(s, field, &say("scene-graph-time-on-y", &[]));
                     }
                     Ok(_) => {}
                 }
@@ -432,7 +433,11 @@ impl Checker<'_> {
         if let Some(center) = view.center
             && !center.is_finite()
         {
-            self.report(s, "center", "center must have finite components");
+            self.report(
+                s,
+                "center",
+                &say("scene-vector-not-finite", &[("field", "center")]),
+            );
         }
         if let Some(width) = view.width {
             self.number(s, "width", Rule::Positive, width);
@@ -440,13 +445,7 @@ impl Checker<'_> {
         if let Some(Follow::Particle(name)) = &view.follow
             && self.scene.particle_index(name).is_none()
         {
-            self.report(
-                s,
-                "follow",
-                &format!(
-                    "follow: there is no particle '{name}'; follow a particle's name, or \"all\""
-                ),
-            );
+            self.report(s, "follow", &say("scene-follow-unknown", &[("name", name)]));
         }
     }
 }

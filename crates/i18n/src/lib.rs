@@ -1,4 +1,5 @@
-//! Every word the app shows, in the user's language: English, German and Spanish, with
+//! Every word `NewtonLab` says to its user — the app's, the command line's and the scene
+//! checker's — in the user's language: English, German and Spanish, with
 //! [Project Fluent](https://projectfluent.org) (`fluent-bundle`). The messages live in
 //! `i18n/<language>/newtonlab.ftl` at the top of the repository, compiled in.
 //!
@@ -7,7 +8,7 @@
 //! missing from English shows as itself, so nothing the app shows is ever blank. The
 //! language is per thread (the app's is the UI thread's), so tests on parallel threads
 //! each keep their own; the app starts in the system's language and switches live from
-//! the View menu.
+//! the View menu; the command line takes `--lang` or the system's.
 //!
 //! Numbers in files and CSV keep a decimal point in every language; only the screen
 //! follows the language's convention ([`decimal_comma`]).
@@ -25,12 +26,16 @@ use fluent_bundle::{FluentArgs, FluentResource, FluentValue};
 /// A language of the app.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Language {
+    /// `en`, the language every message is written in first.
     English,
+    /// `de`.
     German,
+    /// `es`.
     Spanish,
 }
 
 impl Language {
+    /// Every language, in the menu's order.
     pub const ALL: [Self; 3] = [Self::English, Self::German, Self::Spanish];
 
     /// The language's code: `en`, `de`, `es`.
@@ -165,10 +170,22 @@ pub fn tr_with(id: &str, args: &[(&str, Arg<'_>)]) -> String {
     tr_args(id, Some(&fluent))
 }
 
+/// [`tr_with`] with every argument given as text: numbers written by the caller, as
+/// the files and the command line write them.
+pub fn tr_text(id: &str, args: &[(&str, &str)]) -> String {
+    let args: Vec<(&str, Arg<'_>)> = args
+        .iter()
+        .map(|&(name, text)| (name, Arg::Text(text)))
+        .collect();
+    tr_with(id, &args)
+}
+
 /// A message argument.
 #[derive(Clone, Copy, Debug)]
 pub enum Arg<'a> {
+    /// A number, written as Fluent writes numbers.
     Number(f64),
+    /// Text, as it is.
     Text(&'a str),
 }
 

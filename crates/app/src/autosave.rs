@@ -96,8 +96,15 @@ impl Autosave {
     /// # Errors
     /// Why the copy could not be written.
     pub fn write(&mut self, document: &Document) -> Result<(), String> {
-        std::fs::create_dir_all(&self.dir)
-            .map_err(|e| format!("cannot autosave in '{}': {e}", self.dir.display()))?;
+        std::fs::create_dir_all(&self.dir).map_err(|e| {
+            crate::i18n::tr_text(
+                "file-cannot-autosave",
+                &[
+                    ("path", &self.dir.display().to_string()),
+                    ("error", &e.to_string()),
+                ],
+            )
+        })?;
         let path = document.path.clone().unwrap_or_default();
         platform::write_atomically(&self.file(PATH_FILE), path.as_bytes())?;
         platform::write_atomically(

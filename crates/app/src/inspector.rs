@@ -392,13 +392,13 @@ fn name_field(
     let new = text_field(
         ui,
         id,
-        "name",
+        &tr("inspector-name"),
         "",
         current,
-        "Unique among all objects",
+        &tr("inspector-name-hint"),
         &|text: &str| {
             if text.is_empty() {
-                Err("name must not be empty".to_owned())
+                Err(tr("scene-name-empty"))
             } else {
                 Ok(())
             }
@@ -439,7 +439,10 @@ fn endpoint_field(
                     }
                 }
                 if ui
-                    .selectable_label(matches!(end, Endpoint::Point(_)), "fixed point")
+                    .selectable_label(
+                        matches!(end, Endpoint::Point(_)),
+                        tr("inspector-fixed-point"),
+                    )
                     .clicked()
                     && !matches!(end, Endpoint::Point(_))
                 {
@@ -448,16 +451,16 @@ fn endpoint_field(
             })
             .response
             .labelled_by(label.id)
-            .on_hover_text("A particle, or a fixed point in the world");
+            .on_hover_text(tr("inspector-end-hint"));
     });
     if let Endpoint::Point(point) = end
         && let Some(v) = vector_field(
             ui,
             id.with("point"),
-            &format!("{label} point"),
+            &tr_with("inspector-end-point", &[("end", Arg::Text(label))]),
             "m",
             *point,
-            "The fixed point, metres",
+            &tr("inspector-end-point-hint"),
         )
     {
         result = Some(Endpoint::Point(v));
@@ -557,10 +560,14 @@ fn table<T: Clone + 'static>(
     // Only the section is copied, not the scene, every frame.
     let target = read(document.scene()).clone();
     let names = document.scene().particle_names();
+    let kind = section_kind(document.scene(), section);
     let mut problem = None;
     for f in fields.iter().filter(|f| f.place == Place::Inspector) {
         let field_id = id.with(f.key);
-        let Some(value) = field_ui(ui, field_id, f, (f.get)(&target), &names, palette) else {
+        let message = field_message(kind, f.key);
+        let words = (tr(&message), tr(&format!("{message}-help")));
+        let shown = (f.get)(&target);
+        let Some(value) = field_ui(ui, (field_id, &words), f, shown, &names, palette) else {
             continue;
         };
         let result = try_apply(
@@ -579,53 +586,76 @@ fn table<T: Clone + 'static>(
     problem
 }
 
-/// One field's widget; returns a new value the user committed.
+/// The message of a field's label in the inspector (`field-particle-mass`); its help is
+/// the same with `-help`. English says what the field table says (a test holds them
+/// equal), German and Spanish translate it; the scene file's key stays the same.
+pub fn field_message(section: &str, key: &str) -> String {
+    format!("field-{section}-{}", key.replace('_', "-"))
+}
+
+/// The scene file's name of a section's kind: `world`, `particle`, `rod`, …
+fn section_kind(scene: &Scene, section: Section) -> &'static str {
+    match section {
+        Section::World => "world",
+        Section::Simulation => "simulation",
+        Section::Particle(_) => "particle",
+        Section::Spring(_) => "spring",
+        Section::Tie(i) => scene.ties.get(i).map_or("rod", |tie| tie.kind.as_str()),
+        Section::Ramp(_) => "ramp",
+        Section::Graph(_) => "graph",
+        Section::Root | Section::View => "scene",
+    }
+}
+
+/// One field's widget, with its label and help in the user's language; returns a new
+/// value the user committed.
 fn field_ui<T>(
     ui: &mut Ui,
-    id: Id,
+    (id, (label, help)): (Id, &(String, String)),
     f: &Field<T>,
     value: Value,
     names: &[String],
     palette: usize,
 ) -> Option<Value> {
+    let (label, help) = (label.as_str(), help.as_str());
     match (f.kind, value) {
         (Kind::Number(rule), Value::Number(v)) => {
-            number_field(ui, id, f.label, f.unit, v, rule, f.help).map(Value::Number)
+            number_field(ui, id, label, f.unit, v, rule, help).map(Value::Number)
         }
         (Kind::Vector, Value::Vector(v)) => {
-            vector_field(ui, id, f.label, f.unit, v, f.help).map(Value::Vector)
+            vector_field(ui, id, label, f.unit, v, help).map(Value::Vector)
         }
         (Kind::Bool, Value::Bool(mut on)) => ui
-            .checkbox(&mut on, f.label)
-            .on_hover_text(f.help)
+            .checkbox(&mut on, label)
+            .on_hover_text(help)
             .changed()
             .then_some(Value::Bool(on)),
         (Kind::Endpoint, Value::Endpoint(end)) => {
-            endpoint_field(ui, id, f.label, &end, names).map(Value::Endpoint)
+            endpoint_field(ui, id, label, &end, names).map(Value::Endpoint)
         }
         (Kind::Color, Value::Color(color)) => {
             let mut rgb = color.unwrap_or_else(|| physics::Color::palette(palette)).0;
             ui.horizontal(|ui| {
-                ui.label(f.label);
+                ui.label(label);
                 ui.color_edit_button_srgb(&mut rgb)
-                    .on_hover_text(f.help)
+                    .on_hover_text(help)
                     .changed()
                     .then_some(Value::Color(Some(physics::Color(rgb))))
             })
             .inner
         }
-        (Kind::Bounds, Value::Bounds(bounds)) => bounds_field(ui, id, f, bounds),
+        (Kind::Bounds, Value::Bounds(bounds)) => bounds_field(ui, id, (label, help), f, bounds),
         (Kind::PairForces, Value::PairForces(mut mode)) => {
             let before = mode;
             egui::ComboBox::from_id_salt(id)
-                .selected_text(format!("{}: {}", f.label, mode.as_str()))
+                .selected_text(format!("{label}: {}", mode.as_str()))
                 .show_ui(ui, |ui| {
                     for choice in physics::PairForces::ALL {
                         ui.selectable_value(&mut mode, choice, choice.as_str());
                     }
                 })
                 .response
-                .on_hover_text(f.help);
+                .on_hover_text(help);
             (mode != before).then_some(Value::PairForces(mode))
         }
         _ => None,
@@ -636,15 +666,12 @@ fn field_ui<T>(
 fn bounds_field<T>(
     ui: &mut Ui,
     id: Id,
+    (label, help): (&str, &str),
     f: &Field<T>,
     bounds: Option<physics::Bounds>,
 ) -> Option<Value> {
     let mut boxed = bounds.is_some();
-    if ui
-        .checkbox(&mut boxed, f.label)
-        .on_hover_text(f.help)
-        .changed()
-    {
+    if ui.checkbox(&mut boxed, label).on_hover_text(help).changed() {
         return Some(Value::Bounds(boxed.then(|| physics::Bounds {
             min: Vector::cartesian(-20.0, -20.0),
             max: Vector::cartesian(20.0, 20.0),
@@ -657,7 +684,7 @@ fn bounds_field<T>(
         "min",
         f.unit,
         bounds.min,
-        "The box's lower-left corner",
+        &tr("inspector-bounds-min-hint"),
     ) {
         return Some(Value::Bounds(Some(physics::Bounds { min, ..bounds })));
     }
@@ -667,7 +694,7 @@ fn bounds_field<T>(
         "max",
         f.unit,
         bounds.max,
-        "The box's upper-right corner",
+        &tr("inspector-bounds-max-hint"),
     )
     .map(|max| Value::Bounds(Some(physics::Bounds { max, ..bounds })))
 }

@@ -371,7 +371,10 @@ impl App {
         #[cfg(not(target_arch = "wasm32"))]
         let text = platform::read_text(path);
         #[cfg(target_arch = "wasm32")]
-        let text: Result<String, String> = Err(format!("cannot read '{path}' in the browser"));
+        let text: Result<String, String> = Err(tr_with(
+            "notice-cannot-read-in-browser",
+            &[("path", Arg::Text(path))],
+        ));
         match text {
             Ok(text) => {
                 if self.open_text(path, &text) {
@@ -444,7 +447,7 @@ impl App {
                 self.replace(scene, None, Some(title));
             }
             Some(Err(error)) => self.notify(error.report(&format!("example:{name}"))),
-            None => self.notify(format!("there is no example '{name}'")),
+            None => self.notify(tr_with("notice-no-example", &[("name", Arg::Text(name))])),
         }
     }
 
@@ -666,12 +669,12 @@ impl App {
             ui.menu_button(tr("menu-edit"), |ui| {
                 let editable = self.runner.simulation.is_none();
                 let undo = self.document.undo_label().map_or(tr("menu-undo"), |l| {
-                    tr_with("menu-undo-what", &[("what", Arg::Text(l))])
+                    tr_with("menu-undo-what", &[("what", Arg::Text(&edit_words(l)))])
                 });
                 let can_undo = editable && self.document.undo_label().is_some();
                 item(ui, &undo, &tr("menu-undo-hint"), Action::Undo, can_undo);
                 let redo = self.document.redo_label().map_or(tr("menu-redo"), |l| {
-                    tr_with("menu-redo-what", &[("what", Arg::Text(l))])
+                    tr_with("menu-redo-what", &[("what", Arg::Text(&edit_words(l)))])
                 });
                 let can_redo = editable && self.document.redo_label().is_some();
                 item(ui, &redo, &tr("menu-redo-hint"), Action::Redo, can_redo);
@@ -903,15 +906,25 @@ impl App {
             .on_hover_text(tr("status-physics-time-hint"));
             ui.separator();
             let frame = ui.input(|i| i.stable_dt);
-            ui.label(format!("frame {:.1} ms", frame * 1000.0));
+            ui.label(tr_with(
+                "status-frame-time",
+                &[(
+                    "ms",
+                    Arg::Text(&i18n::decimal(f64::from(frame) * 1000.0, 1)),
+                )],
+            ));
             ui.separator();
             let scene = self.document.scene();
-            ui.label(format!(
-                "{} particles, {} springs, {} rods and strings, {} ramps",
-                scene.particles.len(),
-                scene.springs.len(),
-                scene.ties.len(),
-                scene.ramps.len()
+            #[expect(clippy::cast_precision_loss, reason = "counts of objects")]
+            let count = |n: usize| Arg::Number(n as f64);
+            ui.label(tr_with(
+                "status-objects",
+                &[
+                    ("particles", count(scene.particles.len())),
+                    ("springs", count(scene.springs.len())),
+                    ("ties", count(scene.ties.len())),
+                    ("ramps", count(scene.ramps.len())),
+                ],
             ));
             if !self.announcer.text.is_empty() {
                 ui.separator();
@@ -1373,6 +1386,20 @@ fn example_titles() -> &'static [(&'static str, String)] {
             })
             .collect()
     })
+}
+
+/// An edit's label (`add particle`, `set mass`) in the user's language, for Undo and
+/// Redo: its message `edit-add-particle`, or for a field `set KEY` with the key as the
+/// file writes it; an edit without a message keeps its English label.
+fn edit_words(label: &str) -> String {
+    let id = format!("edit-{}", label.replace(' ', "-"));
+    if i18n::has(&id) {
+        return tr(&id);
+    }
+    match label.strip_prefix("set ") {
+        Some(key) => tr_with("edit-set", &[("what", Arg::Text(key))]),
+        None => label.to_owned(),
+    }
 }
 
 /// Opens the desktop app on `app`.

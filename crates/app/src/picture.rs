@@ -69,7 +69,9 @@ pub fn png_of(image: &ColorImage, rect: Rect, pixels_per_point: f32) -> Result<V
         }
     }
     let mut out = Vec::new();
-    let fail = |e: png::EncodingError| format!("the picture could not be encoded: {e}");
+    let fail = |e: png::EncodingError| {
+        crate::i18n::tr_text("file-cannot-encode", &[("error", &e.to_string())])
+    };
     let size = |v: usize| u32::try_from(v).map_err(|_| "the picture is too large".to_owned());
     let mut encoder = png::Encoder::new(&mut out, size(x1 - x0)?, size(y1 - y0)?);
     encoder.set_color(png::ColorType::Rgba);

@@ -8,7 +8,12 @@
 /// The operating system's reason, in words.
 #[cfg(not(target_arch = "wasm32"))]
 pub fn read_text(path: &str) -> Result<String, String> {
-    std::fs::read_to_string(path).map_err(|e| format!("cannot read '{path}': {e}"))
+    std::fs::read_to_string(path).map_err(|e| {
+        crate::i18n::tr_text(
+            "file-cannot-read",
+            &[("path", path), ("error", &e.to_string())],
+        )
+    })
 }
 
 /// Writes a text file.
@@ -38,7 +43,15 @@ pub fn write_bytes(path: &str, bytes: &[u8]) -> Result<(), String> {
 #[cfg(not(target_arch = "wasm32"))]
 pub fn write_atomically(path: &std::path::Path, bytes: &[u8]) -> Result<(), String> {
     use std::io::Write as _;
-    let fail = |e: std::io::Error| format!("cannot write '{}': {e}", path.display());
+    let fail = |e: std::io::Error| {
+        crate::i18n::tr_text(
+            "file-cannot-write",
+            &[
+                ("path", &path.display().to_string()),
+                ("error", &e.to_string()),
+            ],
+        )
+    };
     let name = path
         .file_name()
         .map_or_else(|| "file".to_owned(), |n| n.to_string_lossy().into_owned());
@@ -132,7 +145,9 @@ pub mod web {
                     .ok()
                     .and_then(|t| t.as_string())
                     .map(|text| (name.clone(), text))
-                    .ok_or_else(|| format!("cannot read '{name}'"));
+                    .ok_or_else(|| {
+                        crate::i18n::tr_text("file-cannot-read-file", &[("path", &name)])
+                    });
                 INBOX.with(|inbox| *inbox.borrow_mut() = Some(result));
             });
         });
@@ -159,7 +174,7 @@ pub mod web {
     /// # Errors
     /// When the browser refuses.
     pub fn download_bytes(name: &str, bytes: &[u8], mime: &str) -> Result<(), String> {
-        let fail = |_| format!("the browser could not download '{name}'");
+        let fail = |_| crate::i18n::tr_text("file-cannot-download", &[("path", name)]);
         let document = window().and_then(|w| w.document()).ok_or("no document")?;
         let parts = js_sys::Array::of1(&js_sys::Uint8Array::from(bytes));
         let options = web_sys::BlobPropertyBag::new();

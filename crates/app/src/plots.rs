@@ -138,12 +138,12 @@ impl Graphs {
         let mut action = None;
         let mut change: Option<Edit> = None;
         ui.horizontal(|ui| {
-            ui.heading(
-                graph
-                    .title
-                    .clone()
-                    .unwrap_or_else(|| format!("Graph {}", g + 1)),
-            );
+            ui.heading(graph.title.clone().unwrap_or_else(|| {
+                tr_with(
+                    "graph-untitled",
+                    &[("number", Arg::Text(&(g + 1).to_string()))],
+                )
+            }));
             if ui
                 .small_button(tr("graph-remove"))
                 .on_hover_text(tr("graph-remove-hint"))
@@ -155,7 +155,7 @@ impl Graphs {
         ui.horizontal_wrapped(|ui| {
             let (mut particle, mut of) = self.choice[g];
             particle = particle.min(names.len().saturating_sub(1));
-            let label = ui.label("particle");
+            let label = ui.label(tr("graph-particle"));
             egui::ComboBox::from_id_salt("graph particle")
                 .selected_text(names.get(particle).map_or("—", String::as_str))
                 .show_ui(ui, |ui| {
@@ -165,8 +165,8 @@ impl Graphs {
                 })
                 .response
                 .labelled_by(label.id)
-                .on_hover_text("The particle whose quantity to add");
-            let label = ui.label("quantity");
+                .on_hover_text(tr("graph-particle-hint"));
+            let label = ui.label(tr("graph-quantity"));
             egui::ComboBox::from_id_salt("graph quantity")
                 .selected_text(of.key())
                 .show_ui(ui, |ui| {
@@ -176,7 +176,7 @@ impl Graphs {
                 })
                 .response
                 .labelled_by(label.id)
-                .on_hover_text("The quantity to add");
+                .on_hover_text(tr("graph-quantity-hint"));
             self.choice[g] = (particle, of);
             let chosen = names
                 .get(particle)
@@ -207,11 +207,11 @@ impl Graphs {
         ui.horizontal_wrapped(|ui| {
             let totals = Total::ALL.into_iter().map(Quantity::Total);
             for quantity in totals.chain(ties) {
-                let hint = if matches!(quantity, Quantity::Tension(_)) {
-                    "Plot the force this rod or string carries (pulling is positive)"
+                let hint = tr(if matches!(quantity, Quantity::Tension(_)) {
+                    "graph-tension-hint"
                 } else {
-                    "Plot this system quantity"
-                };
+                    "graph-total-hint"
+                });
                 if ui
                     .small_button(label(&quantity))
                     .on_hover_text(hint)
@@ -224,7 +224,10 @@ impl Graphs {
         });
         ui.horizontal_wrapped(|ui| {
             if x != Quantity::Time {
-                ui.label(format!("x axis: {}", label(&x)));
+                ui.label(tr_with(
+                    "graph-x-axis-now",
+                    &[("quantity", Arg::Text(&label(&x)))],
+                ));
                 if ui
                     .small_button(tr("graph-use-time"))
                     .on_hover_text(tr("graph-use-time-hint"))
@@ -236,7 +239,7 @@ impl Graphs {
             for (k, q) in series.iter().enumerate() {
                 if ui
                     .small_button(format!("× {}", label(q)))
-                    .on_hover_text("Remove this series")
+                    .on_hover_text(tr("graph-remove-series-hint"))
                     .clicked()
                 {
                     change = Some((
@@ -601,7 +604,7 @@ fn impact_list(ui: &mut Ui, runner: &Runner, scene: &physics::Scene) -> Option<A
                                     )
                                     .small(),
                                 )
-                                .on_hover_text("Show the run at this impact");
+                                .on_hover_text(tr("impacts-go-to-hint"));
                             if time.clicked() {
                                 action = Some(Action::GoTo(step_of(impact.time)));
                             }

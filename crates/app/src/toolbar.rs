@@ -100,7 +100,7 @@ pub fn ui(
             if compact {
                 return;
             }
-            let label = ui.label("integrator");
+            let label = ui.label(tr("field-simulation-integrator"));
             egui::ComboBox::from_id_salt("toolbar integrator")
                 .selected_text(settings.integrator.as_str())
                 .show_ui(ui, |ui| {
@@ -133,7 +133,9 @@ pub fn ui(
                 .trim()
                 .parse::<f64>()
                 .map_err(|_| "not a number".to_owned())
-                .and_then(|v| check_value(Rule::Positive, "time step", v).map(|()| v));
+                .and_then(|v| {
+                    check_value(Rule::Positive, &tr("field-simulation-time-step"), v).map(|()| v)
+                });
             if response.has_focus() || parsed.is_err() {
                 ui.data_mut(|d| d.insert_temp(id, text.clone()));
             } else {

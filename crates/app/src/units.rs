@@ -105,7 +105,10 @@ fn evaluate(expression: &str) -> Result<f64, String> {
     if value.is_finite() {
         Ok(value)
     } else {
-        Err(format!("it comes to {value}"))
+        Err(crate::i18n::tr_text(
+            "units-comes-to",
+            &[("value", &value.to_string())],
+        ))
     }
 }
 

@@ -170,6 +170,12 @@ pub fn tr_with(id: &str, args: &[(&str, Arg<'_>)]) -> String {
     tr_args(id, Some(&fluent))
 }
 
+/// Whether English has the message `id` (every language then has it: a test holds
+/// them equal).
+pub fn has(id: &str) -> bool {
+    bundles()[Language::English.index()].has_message(id)
+}
+
 /// [`tr_with`] with every argument given as text: numbers written by the caller, as
 /// the files and the command line write them.
 pub fn tr_text(id: &str, args: &[(&str, &str)]) -> String {

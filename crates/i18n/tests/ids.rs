@@ -30,6 +30,9 @@ const FAMILIES: &[&str] = &[
     "inspector-",
     "link-",
     "failure-",
+    "edit-",
+    "units-",
+    "field-",
 ];
 
 fn sources(dir: &Path, out: &mut Vec<(String, String)>) {

@@ -1416,7 +1416,8 @@ fn nothing_on_screen_stays_english_after_a_switch() {
 }
 
 /// View → Text size and High contrast change the whole app at once: the zoom follows the
-/// size (times projector mode's 1.6), the theme turns black on white, and both are kept
+/// size (times projector mode's 1.6), the theme turns black on white and the canvas
+/// draws with its high-contrast palette, and both are kept
 /// in the settings file the next session starts with (read back here).
 #[test]
 fn text_size_and_high_contrast_apply_and_are_kept() {
@@ -1438,6 +1439,11 @@ fn text_size_and_high_contrast_apply_and_are_kept() {
     harness.run();
     let text_color = harness.ctx.global_style().visuals.override_text_color;
     assert_eq!(text_color, Some(egui::Color32::BLACK));
+    assert_eq!(
+        harness.state().canvas.palette,
+        newtonlab_app::canvas::Palette::HIGH_CONTRAST,
+        "the canvas follows the theme"
+    );
     let kept =
         newtonlab_app::settings::Settings::parse(&std::fs::read_to_string(&file).expect("kept"));
     assert!(

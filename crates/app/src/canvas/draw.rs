@@ -17,10 +17,11 @@ impl Canvas {
             self.view.to_world(rect, rect.left_bottom()),
             self.view.to_world(rect, rect.right_top()),
         );
-        let line = Stroke::new(1.0, Color32::from_gray(228));
-        let axis = Stroke::new(1.2, Color32::from_gray(170));
+        let p = &self.palette;
+        let line = Stroke::new(p.width, p.grid);
+        let axis = Stroke::new(1.2 * p.width, p.axis);
         let font = FontId::proportional(11.0);
-        let text = Color32::from_gray(120);
+        let text = p.grid_text;
         let count = ((hi.x - lo.x) / spacing).ceil() + ((hi.y - lo.y) / spacing).ceil();
         if !(count.is_finite() && count < 400.0) {
             return;
@@ -71,12 +72,13 @@ impl Canvas {
         let length = (metres * self.view.pixels_per_metre) as f32;
         let start = Pos2::new(rect.right() - length - 20.0, rect.bottom() - 22.0);
         let end = start + Vec2::new(length, 0.0);
-        let stroke = Stroke::new(2.0, Color32::from_gray(60));
+        let ink = self.palette.ink;
+        let stroke = Stroke::new(2.0 * self.palette.width, ink);
         // On a backing, so that it reads over whatever is under it.
         painter.rect_filled(
             Rect::from_min_max(start - Vec2::new(8.0, 24.0), end + Vec2::new(8.0, 10.0)),
             4.0,
-            Color32::from_rgba_unmultiplied(250, 250, 247, 220),
+            self.palette.background.gamma_multiply(0.86),
         );
         painter.line_segment([start, end], stroke);
         painter.line_segment(
@@ -92,7 +94,7 @@ impl Canvas {
             Align2::CENTER_BOTTOM,
             format_metres(metres, metres),
             FontId::proportional(12.0),
-            Color32::from_gray(60),
+            ink,
         );
     }
 
@@ -120,21 +122,22 @@ impl Canvas {
         let mut labels: Vec<(bool, Pos2, &str)> = Vec::new();
         let screen = |p: DVec2| view.to_screen(rect, p);
         let scale = view.pixels_per_metre as f32;
-        let highlight = Color32::from_rgb(255, 196, 0);
+        let p = &self.palette;
+        let (highlight, w) = (p.highlight, p.width);
         if let Some(bounds) = scene.world.bounds {
             let box_rect =
                 Rect::from_two_pos(screen(bounds.min.to_dvec2()), screen(bounds.max.to_dvec2()));
             painter.rect_stroke(
                 box_rect,
                 0.0,
-                Stroke::new(2.0, Color32::from_gray(90)),
+                Stroke::new(2.0 * w, p.ink),
                 egui::StrokeKind::Outside,
             );
         }
         for (i, ramp) in scene.ramps.iter().enumerate() {
             let (a, b) = (screen(ramp.from.to_dvec2()), screen(ramp.to.to_dvec2()));
             let width = (ramp.thickness as f32 * scale).max(2.0);
-            let colour = Color32::from_rgb(150, 120, 90);
+            let colour = p.ramp;
             if selection == Some(Selection::Ramp(i)) {
                 painter.line_segment([a, b], Stroke::new(width + 6.0, highlight));
             }
@@ -165,17 +168,13 @@ impl Canvas {
             };
             let selected = selection == Some(Selection::Spring(i));
             let stroke = Stroke::new(
-                if selected { 3.0 } else { 1.6 },
-                if selected {
-                    highlight
-                } else {
-                    Color32::from_rgb(70, 70, 90)
-                },
+                w * if selected { 3.0 } else { 1.6 },
+                if selected { highlight } else { p.spring },
             );
             painter.add(Shape::line(coil(screen(a), screen(b)), stroke));
             for (e, p) in [(&spring.from, a), (&spring.to, b)] {
                 if matches!(e, Endpoint::Point(_)) {
-                    anchor(painter, screen(p));
+                    anchor(painter, screen(p), self.palette.ink);
                 }
             }
         }
@@ -184,16 +183,12 @@ impl Canvas {
                 continue;
             };
             let selected = selection == Some(Selection::Tie(i));
-            let colour = if selected {
-                highlight
-            } else {
-                Color32::from_rgb(90, 75, 60)
-            };
+            let colour = if selected { highlight } else { p.tie };
             match tie.kind {
                 TieKind::Rod => {
                     painter.line_segment(
                         [screen(a), screen(b)],
-                        Stroke::new(if selected { 5.0 } else { 3.5 }, colour),
+                        Stroke::new(w * if selected { 5.0 } else { 3.5 }, colour),
                     );
                 }
                 TieKind::String => {
@@ -203,13 +198,13 @@ impl Canvas {
                         .collect();
                     painter.add(Shape::line(
                         points,
-                        Stroke::new(if selected { 2.5 } else { 1.2 }, colour),
+                        Stroke::new(w * if selected { 2.5 } else { 1.2 }, colour),
                     ));
                 }
             }
             for (e, p) in [(&tie.from, a), (&tie.to, b)] {
                 if matches!(e, Endpoint::Point(_)) {
-                    anchor(painter, screen(p));
+                    anchor(painter, screen(p), self.palette.ink);
                 }
             }
         }
@@ -238,11 +233,11 @@ impl Canvas {
                     centre,
                     radius,
                     colour,
-                    Stroke::new(1.0, colour.gamma_multiply(0.6)),
+                    Stroke::new(w, p.outline.unwrap_or(colour.gamma_multiply(0.6))),
                 );
             }
             if particle.fixed {
-                anchor(painter, centre);
+                anchor(painter, centre, p.ink);
             }
             let pointed = [selection, hovered].contains(&Some(Selection::Particle(i)));
             if (self.overlays.names && !many) || pointed {
@@ -259,7 +254,8 @@ impl Canvas {
                         painter,
                         centre,
                         screen(position + v * VELOCITY_ARROW_SECONDS),
-                        Color32::from_rgb(40, 150, 70),
+                        p.velocity,
+                        w,
                     );
                 }
             }
@@ -268,12 +264,7 @@ impl Canvas {
                 if self.overlays.acceleration && a.length() > 0.0 {
                     let tip =
                         position + a * (0.5 * VELOCITY_ARROW_SECONDS * VELOCITY_ARROW_SECONDS);
-                    arrow(
-                        painter,
-                        centre,
-                        screen(tip),
-                        Color32::from_rgb(230, 130, 30),
-                    );
+                    arrow(painter, centre, screen(tip), p.acceleration, w);
                 }
                 if self.overlays.force && a.length() > 0.0 && !particle.fixed {
                     let force = a * particle.mass;
@@ -281,12 +272,12 @@ impl Canvas {
                     let direction = force.normalize();
                     let tip =
                         centre + Vec2::new(direction.x as f32, -direction.y as f32) * pixels as f32;
-                    arrow(painter, centre, tip, Color32::from_rgb(200, 40, 40));
+                    arrow(painter, centre, tip, p.force, w);
                 }
             }
         }
         painter.set(crowd_slot, Shape::mesh(crowd));
-        place_labels(painter, labels);
+        place_labels(painter, labels, p.ink);
     }
 
     pub(super) fn draw_drag_preview(&self, painter: &egui::Painter, rect: Rect, frame: &Frame) {
@@ -319,15 +310,11 @@ impl Canvas {
 /// Draws each name centred above its point, the pointed-at ones first, skipping any
 /// that would overlap a name already drawn: a crowded scene shows some names, never a
 /// smear of them (the rest appear on hover).
-fn place_labels(painter: &egui::Painter, mut labels: Vec<(bool, Pos2, &str)>) {
+fn place_labels(painter: &egui::Painter, mut labels: Vec<(bool, Pos2, &str)>, ink: Color32) {
     labels.sort_by_key(|(pointed, _, _)| !pointed);
     let mut placed: Vec<Rect> = Vec::new();
     for (pointed, at, name) in labels {
-        let colour = if pointed {
-            Color32::from_gray(10)
-        } else {
-            Color32::from_gray(60)
-        };
+        let colour = if pointed { Color32::from_gray(10) } else { ink };
         let galley = painter.layout_no_wrap(name.to_owned(), FontId::proportional(12.0), colour);
         let rect = Align2::CENTER_BOTTOM.anchor_size(at, galley.size());
         if placed.iter().any(|r| r.intersects(rect)) {
@@ -430,8 +417,8 @@ fn coil(a: Pos2, b: Pos2) -> Vec<Pos2> {
 }
 
 /// A fixed point's mark: a small hatched triangle.
-fn anchor(painter: &egui::Painter, at: Pos2) {
-    let stroke = Stroke::new(1.5, Color32::from_gray(50));
+fn anchor(painter: &egui::Painter, at: Pos2, ink: Color32) {
+    let stroke = Stroke::new(1.5, ink);
     let (left, right) = (at + Vec2::new(-7.0, 10.0), at + Vec2::new(7.0, 10.0));
     painter.add(Shape::closed_line(vec![at, left, right], stroke));
     for k in 0..4 {
@@ -443,10 +430,10 @@ fn anchor(painter: &egui::Painter, at: Pos2) {
     }
 }
 
-fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, colour: Color32) {
+fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, colour: Color32, width: f32) {
     let d = to - from;
     if d.length() < 2.0 {
         return;
     }
-    painter.arrow(from, d, Stroke::new(2.0, colour));
+    painter.arrow(from, d, Stroke::new(2.0 * width, colour));
 }

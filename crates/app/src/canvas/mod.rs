@@ -18,10 +18,11 @@
 mod draw;
 mod instruments;
 mod keyboard;
+mod palette;
 mod tools;
 mod view;
 
-use egui::{Color32, Pos2, Rect, Sense, Ui, Vec2};
+use egui::{Pos2, Rect, Sense, Ui, Vec2};
 use physics::{DVec2, Endpoint, Follow, Particle, Scene, Section};
 
 use crate::document::Document;
@@ -31,6 +32,7 @@ pub use instruments::{
     FieldKind, Instrument, Instruments, Mark, probe_lines, protractor_reading, tape_ends,
     tape_reading,
 };
+pub use palette::{Palette, contrast};
 use tools::Drag;
 pub use tools::keep_form;
 pub use view::{View, nice_length};
@@ -156,6 +158,8 @@ pub struct Canvas {
     pub instruments: Instruments,
     /// The canvas's widget id, once drawn: the keys it keeps while focused.
     pub id: Option<egui::Id>,
+    /// The colours of this frame (the usual ones or high contrast, as the theme is).
+    pub palette: Palette,
 }
 
 impl Default for Canvas {
@@ -174,6 +178,7 @@ impl Default for Canvas {
             rect: Rect::from_min_size(Pos2::ZERO, Vec2::new(800.0, 600.0)),
             instruments: Instruments::default(),
             id: None,
+            palette: Palette::USUAL,
         }
     }
 }
@@ -256,6 +261,7 @@ impl Canvas {
         let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click_and_drag());
         let rect = response.rect;
         self.id = Some(response.id);
+        self.palette = Palette::of(ui);
         // A canvas that changes size (a panel hidden, projector mode, a resized window)
         // still shows all it showed: the scale follows the dimension that shrank most.
         if self.rect.area() > 0.0 && (rect.size() - self.rect.size()).length() > 0.5 {
@@ -281,7 +287,7 @@ impl Canvas {
             self.pan(response.drag_delta());
         }
 
-        painter.rect_filled(rect, 0.0, Color32::from_rgb(250, 250, 247));
+        painter.rect_filled(rect, 0.0, self.palette.background);
         self.draw_grid(&painter, rect);
         let hovered = response
             .hover_pos()

@@ -184,6 +184,7 @@ announce-impact = Bei { $time } s stieß { $particle } an { $other }.{ $more ->
    *[other] {" "}Dazu { $more } weitere Stöße seit der letzten Meldung.
 }
 announce-wall = die Wand
+announce-stretch = Bei { $time } s ist die Feder { $spring } voll gedehnt, { $length } m.
 
 ## Instruments, tools, the timeline, the stopwatch, files, the inspector, links
 instrument-tape = Maßband

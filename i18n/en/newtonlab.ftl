@@ -185,6 +185,7 @@ announce-impact = At { $time } s, { $particle } hit { $other }.{ $more ->
    *[other] {" "}And { $more } more impacts since the last message.
 }
 announce-wall = the wall
+announce-stretch = At { $time } s, spring { $spring } is at full stretch, { $length } m.
 
 ## Instruments, tools, the timeline, the stopwatch, files, the inspector, links
 instrument-tape = Tape measure

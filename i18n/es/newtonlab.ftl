@@ -184,6 +184,7 @@ announce-impact = A los { $time } s, { $particle } chocó con { $other }.{ $more
    *[other] {" "}Y { $more } choques más desde el último mensaje.
 }
 announce-wall = la pared
+announce-stretch = En { $time } s, el resorte { $spring } está en su máxima extensión, { $length } m.
 
 ## Instruments, tools, the timeline, the stopwatch, files, the inspector, links
 instrument-tape = Cinta métrica

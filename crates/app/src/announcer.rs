@@ -3,12 +3,14 @@
 //! real time however many impacts there are, with how many came since the last sentence.
 //! The status line shows the sentence in a polite live region, which screen readers read
 //! when it changes without moving the focus (the issue on accessibility: events while
-//! playing, rate-limited).
+//! playing, rate-limited). A spring at full stretch (its length at a maximum between the
+//! recording's samples) is an event too: "At 0.785 s, spring s1 is at full stretch,
+//! 1.5 m." Whichever came last is said.
 
-use physics::{ImpactTarget, Scene};
+use physics::{DVec2, Endpoint, ImpactTarget, Of, Quantity, Scene};
 
 use crate::i18n::{Arg, tr, tr_with};
-use crate::recording::Recording;
+use crate::recording::{Column, Recording};
 
 /// Seconds of real time between two sentences.
 pub const INTERVAL: f64 = 2.0;
@@ -21,6 +23,10 @@ pub struct Announcer {
     last: Option<f64>,
     /// The sentence, empty until the first impact.
     pub text: String,
+    /// The time of the last sample judged for springs' full stretch.
+    scanned: Option<f64>,
+    /// The latest full stretch not yet said: (time, spring, length).
+    stretch: Option<(f64, usize, f64)>,
 }
 
 impl Announcer {
@@ -32,10 +38,34 @@ impl Announcer {
             // A new run, or the run cut back: start over.
             self.told = 0;
         }
-        if impacts.len() == self.told || self.last.is_some_and(|t| now - t < INTERVAL) {
+        if recording.last_time() < self.scanned {
+            self.scanned = None;
+            self.stretch = None;
+        }
+        self.find_full_stretch(recording, scene);
+        let fresh = impacts.len() > self.told || self.stretch.is_some();
+        if !fresh || self.last.is_some_and(|t| now - t < INTERVAL) {
             return;
         }
-        let Some(latest) = impacts.last() else {
+        let latest = impacts.get(self.told..).and_then(<[_]>::last);
+        if let Some((time, k, length)) = self.stretch
+            && latest.is_none_or(|impact| impact.time < time)
+        {
+            self.text = tr_with(
+                "announce-stretch",
+                &[
+                    ("time", Arg::Text(&crate::format::number(time))),
+                    ("spring", Arg::Text(&scene.springs[k].name)),
+                    ("length", Arg::Text(&crate::format::number(length))),
+                ],
+            );
+            self.stretch = None;
+            self.told = impacts.len();
+            self.last = Some(now);
+            return;
+        }
+        self.stretch = None;
+        let Some(latest) = latest else {
             return;
         };
         let names = recording.names();
@@ -63,6 +93,64 @@ impl Announcer {
         );
         self.told = impacts.len();
         self.last = Some(now);
+    }
+}
+
+impl Announcer {
+    /// Looks through the samples not yet judged for a spring whose length stopped
+    /// growing (longer than the sample before, no shorter than the one after), and keeps
+    /// the latest as the news.
+    fn find_full_stretch(&mut self, recording: &Recording, scene: &Scene) {
+        let n = recording.len();
+        if n < 3 {
+            return;
+        }
+        let time = |k: usize| recording.at(k, Column::Plain(0));
+        // The first centre not judged yet: the sample after the last one judged.
+        let first = self
+            .scanned
+            .map_or(1, |t| (0..n).take_while(|&k| time(k) <= t).count())
+            .max(1);
+        for (s, spring) in scene.springs.iter().enumerate() {
+            let end = |e: &Endpoint| match e {
+                Endpoint::Point(p) => Some(End::Fixed(p.to_dvec2())),
+                Endpoint::Particle(name) => {
+                    let x = Quantity::Particle(name.clone(), Of::X);
+                    let y = Quantity::Particle(name.clone(), Of::Y);
+                    Some(End::Moving(recording.column(&x)?, recording.column(&y)?))
+                }
+            };
+            let (Some(a), Some(b)) = (end(&spring.from), end(&spring.to)) else {
+                continue;
+            };
+            let length = |k: usize| a.at(recording, k).distance(b.at(recording, k));
+            for k in first..n - 1 {
+                let here = length(k);
+                if here > length(k - 1) && here >= length(k + 1) {
+                    let t = time(k);
+                    if self.stretch.is_none_or(|(latest, _, _)| latest < t) {
+                        self.stretch = Some((t, s, here));
+                    }
+                }
+            }
+        }
+        self.scanned = Some(time(n - 2));
+    }
+}
+
+/// One end of a spring in the recording.
+#[derive(Clone, Copy)]
+enum End {
+    Fixed(DVec2),
+    Moving(Column, Column),
+}
+
+impl End {
+    fn at(self, recording: &Recording, k: usize) -> DVec2 {
+        match self {
+            Self::Fixed(p) => p,
+            Self::Moving(x, y) => DVec2::new(recording.at(k, x), recording.at(k, y)),
+        }
     }
 }
 
@@ -106,5 +194,49 @@ mod tests {
         assert!(announcer.text.starts_with("At 0.5 s"), "too soon to tell");
         announcer.update(&recording, &scene, 2.2);
         assert_eq!(announcer.text, "At 0.75 s, ball hit the wall.");
+    }
+
+    /// A mass on a spring from a fixed point, starting at the natural length L0 = 1 m
+    /// with v0 = 2 m/s outward (k = 4 N/m, m = 1 kg, no gravity): its length is
+    /// L0 + (v0/ω) sin ωt with ω = 2/s, so the first full stretch is 2 m at t = π/4 s.
+    /// Said at the recording's sample nearest the maximum (5 ms apart): within 5 ms and
+    /// 1 mm (the length is flat there: within (ω·0.005)²/2 of its maximum).
+    #[test]
+    fn a_spring_at_full_stretch_is_told() {
+        use physics::Spring;
+        let scene = Scene::new()
+            .with_world(World::weightless())
+            .with_particle(
+                Particle::new("ball", 1.0)
+                    .position([1.0, 0.0])
+                    .velocity([2.0, 0.0]),
+            )
+            .with_spring(Spring::new(
+                "s1",
+                Endpoint::Point(physics::Vector::cartesian(0.0, 0.0)),
+                Endpoint::Particle("ball".into()),
+                4.0,
+                1.0,
+            ));
+        let mut simulation = Simulation::new(&scene).unwrap();
+        let mut recording = Recording::start(&simulation);
+        let mut announcer = Announcer::default();
+        while simulation.time() < 1.2 {
+            simulation.step().unwrap();
+            recording.after_step(&simulation);
+        }
+        announcer.update(&recording, &scene, 10.0);
+        let text = announcer.text.clone();
+        let rest = text.strip_prefix("At ").expect("a sentence");
+        let (time, rest) = rest
+            .split_once(" s, spring s1 is at full stretch, ")
+            .expect(&text);
+        let length: f64 = rest.strip_suffix(" m.").expect(&text).parse().expect(&text);
+        let time: f64 = time.parse().expect(&text);
+        assert!(
+            (time - std::f64::consts::FRAC_PI_4).abs() <= 0.005,
+            "{text}"
+        );
+        assert!((length - 2.0).abs() < 1e-3, "{text}");
     }
 }

@@ -171,3 +171,82 @@ fn sliding_friction_is_the_same_free_or_coupled() {
         );
     }
 }
+
+/// A ball of radius r on a straight line hits a still ramp (a segment a–b thickened to
+/// a capsule of half-thickness h) with restitution 1, no gravity: the impact is where the
+/// centre first comes within r + h of the segment, and the velocity reflects about the
+/// surface's normal there, v' = v − 2 (v·n) n. Returns (the impact's time, the velocity
+/// after it).
+fn bounce_off_ramp(start: DVec2, velocity: DVec2) -> (f64, DVec2) {
+    bounce_off(Ramp::new("ramp", [0.0, 0.0], [2.0, 0.0]), start, velocity)
+}
+
+/// [`bounce_off_ramp`] off any ramp of thickness 0.2 m.
+fn bounce_off(ramp: Ramp, start: DVec2, velocity: DVec2) -> (f64, DVec2) {
+    let scene = Scene::new()
+        .with_world(World {
+            gravitation: false,
+            electrostatics: false,
+            ..World::weightless()
+        })
+        .with_ramp(ramp.thickness(0.2).restitution(1.0))
+        .with_particle(
+            Particle::new("ball", 1.0)
+                .radius(0.1)
+                .position(start.to_array())
+                .velocity(velocity.to_array()),
+        );
+    let mut simulation = Simulation::new(&scene).expect("a valid scene");
+    simulation.record_impacts();
+    simulation.step_to(2.0).expect("steps");
+    let impacts = simulation.take_impacts();
+    assert_eq!(impacts.len(), 1, "one impact: {impacts:?}");
+    (impacts[0].time, simulation.velocities()[0])
+}
+
+/// The ramp's other faces: from below, the normal points down (the ball comes back
+/// down); at a rounded end, the normal points from the end's centre through the
+/// contact, so a ball along the ramp's axis comes straight back and one offset by
+/// (r + h)/√2 meets the end at 45° and leaves at right angles, v' = (0, v). Each against
+/// the closed-form contact instant (distance to go / speed) to 1e-9 s and the reflected
+/// velocity to 1e-9 m/s. The other ramp tests strike the top face; this one holds the
+/// underside and the ends to the impulse formula. It kills a mutant the mutation run
+/// found alive: the ramp's bounding box shrunk on its low side (`a.min(b) − r → + r`),
+/// which let a ball from below pass straight through the ramp; a normal flipped under
+/// the ramp fails it too.
+#[test]
+fn a_ball_bounces_off_a_ramps_underside_and_its_rounded_ends() {
+    let reach = 0.1 + 0.1; // r + h
+    let (t, v) = bounce_off_ramp(DVec2::new(1.0, -1.0), DVec2::new(0.0, 2.0));
+    assert!((t - (1.0 - reach) / 2.0).abs() < 1e-9, "underside at {t}");
+    assert!(v.distance(DVec2::new(0.0, -2.0)) < 1e-9, "underside: {v}");
+    let (t, v) = bounce_off_ramp(DVec2::new(-1.0, 0.0), DVec2::new(2.0, 0.0));
+    assert!((t - (1.0 - reach) / 2.0).abs() < 1e-9, "end on axis at {t}");
+    assert!(v.distance(DVec2::new(-2.0, 0.0)) < 1e-9, "end on axis: {v}");
+    let offset = reach / 2.0_f64.sqrt();
+    let (t, v) = bounce_off_ramp(DVec2::new(3.0, offset), DVec2::new(-2.0, 0.0));
+    assert!(
+        (t - (3.0 - 2.0 - offset) / 2.0).abs() < 1e-9,
+        "end at 45° at {t}"
+    );
+    assert!(v.distance(DVec2::new(0.0, 2.0)) < 1e-9, "end at 45°: {v}");
+}
+
+/// A ramp of zero length is a round post (a disc of radius h, which the scene allows):
+/// a ball meets it where the centres are r + h apart and reflects about the line of
+/// centres, head-on straight back, and at 45° off it leaving at right angles, to 1e-9.
+/// A degenerate segment has no direction: the distance must not divide by its zero
+/// length (with `length² ≥ 0` in place of `> 0` it gives NaN, a mutant the mutation run
+/// left alive).
+#[test]
+fn a_ball_bounces_off_a_round_post() {
+    let post = || Ramp::new("post", [0.0, 0.0], [0.0, 0.0]);
+    let reach: f64 = 0.1 + 0.1;
+    let (t, v) = bounce_off(post(), DVec2::new(-1.0, 0.0), DVec2::new(2.0, 0.0));
+    assert!((t - (1.0 - reach) / 2.0).abs() < 1e-9, "head-on at {t}");
+    assert!(v.distance(DVec2::new(-2.0, 0.0)) < 1e-9, "head-on: {v}");
+    let offset = reach / 2.0_f64.sqrt();
+    let (t, v) = bounce_off(post(), DVec2::new(1.0, offset), DVec2::new(-2.0, 0.0));
+    assert!((t - (1.0 - offset) / 2.0).abs() < 1e-9, "at 45° at {t}");
+    assert!(v.distance(DVec2::new(0.0, 2.0)) < 1e-9, "at 45°: {v}");
+}

@@ -163,21 +163,19 @@ pub fn probe_lines(scene: &Scene, positions: &[DVec2], at: DVec2) -> Vec<String>
     ]
 }
 
-const TAPE: Color32 = Color32::from_rgb(200, 120, 20);
-const PROBE: Color32 = Color32::from_rgb(40, 110, 180);
-const ANGLE: Color32 = Color32::from_rgb(130, 60, 160);
-
 impl Instruments {
-    /// Draws the tape, the probe and the field view.
+    /// Draws the tape, the probe and the field view, in the colours of `palette`.
     pub fn draw(
         &self,
         painter: &egui::Painter,
-        view: &View,
+        (view, palette): (&View, &super::Palette),
         rect: Rect,
         scene: &Scene,
         positions: &[DVec2],
     ) {
         let screen = |p: DVec2| view.to_screen(rect, p);
+        let (tape_colour, probe_colour, angle_colour) =
+            (palette.tape, palette.probe, palette.angle);
         if let Some(kind) = self.field_view {
             draw_field(painter, view, rect, scene, positions, kind);
         }
@@ -186,34 +184,39 @@ impl Instruments {
             && let Some((length, angle)) = tape_reading(tape, positions)
         {
             let (pa, pb) = (screen(a), screen(b));
-            painter.line_segment([pa, pb], Stroke::new(2.0, TAPE));
+            painter.line_segment([pa, pb], Stroke::new(2.0, tape_colour));
             for end in [pa, pb] {
-                painter.circle_stroke(end, 4.0, Stroke::new(1.5, TAPE));
+                painter.circle_stroke(end, 4.0, Stroke::new(1.5, tape_colour));
             }
             let text = format!("{} m, {}°", number(length), number(angle));
             label(
                 painter,
                 pa.lerp(pb, 0.5) + Vec2::new(0.0, -8.0),
                 &text,
-                TAPE,
+                tape_colour,
             );
         }
         if let Some((vertex, a, b)) = self.protractor
             && let (Some(o), Some(pa)) = (vertex.at(positions), a.at(positions))
         {
-            let stroke = Stroke::new(2.0, ANGLE);
+            let stroke = Stroke::new(2.0, angle_colour);
             painter.line_segment([screen(o), screen(pa)], stroke);
             if let Some(pb) = b.and_then(|b| b.at(positions)) {
                 painter.line_segment([screen(o), screen(pb)], stroke);
                 if let Some(angle) = protractor_reading((vertex, a, b), positions) {
                     let text = format!("{}°", number(angle));
-                    label(painter, screen(o) + Vec2::new(10.0, -10.0), &text, ANGLE);
+                    label(
+                        painter,
+                        screen(o) + Vec2::new(10.0, -10.0),
+                        &text,
+                        angle_colour,
+                    );
                 }
             }
         }
         if let Some(at) = self.probe {
             let p = screen(at);
-            let cross = Stroke::new(1.5, PROBE);
+            let cross = Stroke::new(1.5, probe_colour);
             painter.line_segment([p - Vec2::new(7.0, 0.0), p + Vec2::new(7.0, 0.0)], cross);
             painter.line_segment([p - Vec2::new(0.0, 7.0), p + Vec2::new(0.0, 7.0)], cross);
             let lines = probe_lines(scene, positions, at);
@@ -221,7 +224,7 @@ impl Instruments {
                 painter,
                 p + Vec2::new(12.0, -10.0),
                 &lines.join("\n"),
-                PROBE,
+                probe_colour,
             );
         }
     }

@@ -303,7 +303,7 @@ impl Canvas {
         );
         self.instruments.draw(
             &painter,
-            &self.view,
+            (&self.view, &self.palette),
             rect,
             document.scene(),
             &frame.positions,

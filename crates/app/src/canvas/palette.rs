@@ -1,6 +1,6 @@
-//! The canvas's colours and line widths: the usual ones, and the high-contrast ones that
-//! View → High contrast chooses with the panels' black-on-white theme (the canvas reads
-//! the theme each frame, so both switch together). In high contrast every colour drawn
+//! The canvas's colours and line widths (its instruments' too): the usual ones, and the
+//! high-contrast ones that View → High contrast chooses with the panels' black-on-white
+//! theme (the canvas reads the theme each frame, so both switch together). In high contrast every colour drawn
 //! on the canvas's white stands out from it by at least WCAG's 4.5:1 (a test computes
 //! the ratios), and lines are half as wide again.
 
@@ -33,6 +33,12 @@ pub struct Palette {
     pub acceleration: Color32,
     /// See `velocity`.
     pub force: Color32,
+    /// The instruments: the tape measure, the field probe, the protractor.
+    pub tape: Color32,
+    /// See `tape`.
+    pub probe: Color32,
+    /// See `tape`.
+    pub angle: Color32,
     /// Particles' outlines: `None` is a darker shade of the particle's own colour.
     pub outline: Option<Color32>,
     /// Every line's width is multiplied by this.
@@ -54,6 +60,9 @@ impl Palette {
         velocity: Color32::from_rgb(40, 150, 70),
         acceleration: Color32::from_rgb(230, 130, 30),
         force: Color32::from_rgb(200, 40, 40),
+        tape: Color32::from_rgb(200, 120, 20),
+        probe: Color32::from_rgb(40, 110, 180),
+        angle: Color32::from_rgb(130, 60, 160),
         outline: None,
         width: 1.0,
     };
@@ -72,6 +81,9 @@ impl Palette {
         velocity: Color32::from_rgb(0, 110, 40),
         acceleration: Color32::from_rgb(160, 70, 0),
         force: Color32::from_rgb(180, 0, 0),
+        tape: Color32::from_rgb(140, 60, 0),
+        probe: Color32::from_rgb(0, 70, 150),
+        angle: Color32::from_rgb(90, 20, 120),
         outline: Some(Color32::BLACK),
         width: 1.5,
     };
@@ -126,6 +138,9 @@ mod tests {
             ("velocity", p.velocity),
             ("acceleration", p.acceleration),
             ("force", p.force),
+            ("tape", p.tape),
+            ("probe", p.probe),
+            ("protractor", p.angle),
         ] {
             let ratio = contrast(colour, p.background);
             assert!(ratio >= 4.5, "{name}: {ratio:.2}:1");

@@ -193,8 +193,9 @@ pub(crate) fn potential_change(forces: &ForceModel, before: &[DVec2], after: &[D
             continue; // no pairwise forces on it
         }
         for &j in &forces.interacting {
-            // A pair of two moved particles is counted once, from its lower index.
-            if j == i || (is_moved(j) && j < i) || (forces.is_fixed(i) && forces.is_fixed(j)) {
+            // A pair of two moved particles is counted once, from its lower index (a moved
+            // particle is never fixed, so no pair here is of two fixed ones).
+            if j == i || (is_moved(j) && j < i) {
                 continue;
             }
             let pair = |x: &[DVec2]| {

@@ -12,7 +12,9 @@ mod presentation;
 mod validate;
 
 use glam::DVec2;
-use newtonlab_i18n::tr_text;
+/// The checker's message `id` in the thread's language, its arguments given as text:
+/// numbers are written by the caller as files write them.
+pub(crate) use newtonlab_i18n::tr_text as say;
 
 pub use presentation::{Follow, Graph, Of, Quantity, Total, View};
 pub use validate::{FieldRef, Rule, Section, check_value};
@@ -641,12 +643,6 @@ impl Scene {
     pub fn particle_names(&self) -> Vec<String> {
         self.particles.iter().map(|p| p.name.clone()).collect()
     }
-}
-
-/// The checker's message `id` in the thread's language (`newtonlab_i18n`), its
-/// arguments given as text: numbers are written by the caller as files write them.
-pub(crate) fn say(id: &str, args: &[(&str, &str)]) -> String {
-    tr_text(id, args)
 }
 
 /// [`say`] with numbers for `$a`, `$b`, `$c`, `$d`, written as Rust writes them.

@@ -102,15 +102,24 @@ impl Announcer {
     /// the latest as the news.
     fn find_full_stretch(&mut self, recording: &Recording, scene: &Scene) {
         let n = recording.len();
-        if n < 3 {
+        if n < 3 || scene.springs.is_empty() {
             return;
         }
         let time = |k: usize| recording.at(k, Column::Plain(0));
-        // The first centre not judged yet: the sample after the last one judged.
-        let first = self
-            .scanned
-            .map_or(1, |t| (0..n).take_while(|&k| time(k) <= t).count())
-            .max(1);
+        // The first centre not judged yet: the sample after the last one judged, found
+        // by bisection (the samples are in time order; this runs every frame).
+        let first = self.scanned.map_or(1, |t| {
+            let (mut lo, mut hi) = (0, n);
+            while lo < hi {
+                let mid = lo + (hi - lo) / 2;
+                if time(mid) <= t {
+                    lo = mid + 1;
+                } else {
+                    hi = mid;
+                }
+            }
+            lo.max(1)
+        });
         for (s, spring) in scene.springs.iter().enumerate() {
             let end = |e: &Endpoint| match e {
                 Endpoint::Point(p) => Some(End::Fixed(p.to_dvec2())),

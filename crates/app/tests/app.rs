@@ -360,6 +360,12 @@ fn play_frames(harness: &mut Harness<'_, App>, frames: usize) {
     harness.run();
 }
 
+/// The impacts the run's recording holds.
+fn impacts_of(harness: &Harness<'_, App>) -> Vec<physics::ImpactRecord> {
+    let recording = harness.state().runner.recording.as_ref();
+    recording.expect("recorded").impacts().to_vec()
+}
+
 /// The rows of a graph's CSV export as numbers, after its header.
 fn csv_rows(app: &App, graph: usize) -> (String, Vec<Vec<f64>>) {
     let recording = app.runner.recording.as_ref().expect("a recording");
@@ -712,13 +718,7 @@ fn the_impact_list_shows_each_impact_with_its_impulse() {
     harness.get_by_label("Impacts (1)").click();
     harness.run();
     let impulse = 20.0 * (1.0_f64 - 0.53 * 0.53).sqrt();
-    let impacts = harness
-        .state()
-        .runner
-        .recording
-        .as_ref()
-        .expect("recorded")
-        .impacts();
+    let impacts = impacts_of(&harness);
     assert_eq!(impacts.len(), 1);
     assert!((impacts[0].impulse - impulse).abs() < 1e-9, "{impacts:?}");
     harness.get_by_label(&newtonlab_app::format::number(impacts[0].impulse));
@@ -1460,14 +1460,7 @@ fn text_size_and_high_contrast_apply_and_are_kept() {
 fn an_impact_is_announced_in_a_live_region() {
     use egui_kittest::kittest::NodeT as _;
     let harness = played("collision", 4);
-    let impacts = harness
-        .state()
-        .runner
-        .recording
-        .as_ref()
-        .expect("recorded")
-        .impacts()
-        .to_vec();
+    let impacts = impacts_of(&harness);
     assert_eq!(impacts.len(), 1);
     let sentence = format!(
         "At {} s, A hit B.",

@@ -248,3 +248,78 @@ fn an_impact_between_unequally_accelerated_balls_is_exact_free_or_coupled() {
         );
     }
 }
+
+/// A ball pulled onto a wall by a spring (k = 100 N/m, m = 1 kg: ω = 10 /s; released
+/// 1.1 m from the spring's equilibrium, which lies 0.1 m behind the wall's contact
+/// position c) bounces with e = ½ and comes to rest against the wall.
+/// Its motion between bounces is simple harmonic about the equilibrium, so each return
+/// to the wall is at the speed it left: the approach speeds are v₁ eᵏ with
+/// v₁ = ω √(A² − c²) — to 1e-9 relative (impacts located to 1e-9 s) while they are
+/// well above a resting contact's. Left alone those bounces would go on for ever in a
+/// finite time (the arcs shrink with the speed); the contact code ends them where the
+/// approach is no faster than a resting contact's, of order 2 a h (a = k c / m, the
+/// spring's pull at the wall): no impact slower than a tenth of that is logged, and the
+/// ball then rests on the wall.
+#[test]
+fn a_ball_pulled_onto_a_wall_by_a_spring_bounces_then_rests() {
+    let (k, m, radius, e, h) = (100.0, 1.0, 0.1, 0.5, 1e-3);
+    let world = World {
+        gravitation: false,
+        electrostatics: false,
+        restitution: e,
+        bounds: Some(Bounds {
+            min: [0.0, -5.0].into(),
+            max: [10.0, 5.0].into(),
+        }),
+        ..World::weightless()
+    };
+    let scene = Scene::new()
+        .with_world(world)
+        .with_particle(
+            Particle::new("anchor", 1.0)
+                .radius(radius)
+                .position([3.0, 0.0])
+                .fixed(),
+        )
+        .with_particle(Particle::new("ball", m).radius(radius).position([1.1, 0.0]))
+        .with_spring(physics::Spring::new("spring", "anchor", "ball", k, 3.0));
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.record_impacts();
+    simulation.step_to(3.0).unwrap();
+    let impacts = simulation.take_impacts();
+    // About the equilibrium (the ball's centre at x = 0): amplitude 1.1, wall at 0.1.
+    let (amplitude, contact) = (1.1_f64, radius);
+    let first = (k / m).sqrt() * (amplitude * amplitude - contact * contact).sqrt();
+    let resting_speed = 2.0 * (k * contact / m) * h;
+    let bounces = (0..64)
+        .take_while(|&n| first * e.powi(n) > 2.0 * resting_speed)
+        .count();
+    assert!(bounces >= 8 && impacts.len() > bounces, "{impacts:?}");
+    for (n, impact) in impacts.iter().enumerate().take(bounces) {
+        let expected = first * e.powi(i32::try_from(n).unwrap());
+        let error = (impact.normal_speed_before - expected).abs() / expected;
+        assert!(
+            error < 1e-9,
+            "bounce {n}: {} m/s against {expected} ({error:e})",
+            impact.normal_speed_before
+        );
+        let separation = e * impact.normal_speed_before;
+        assert!((impact.normal_speed_after - separation).abs() < 1e-12 * expected);
+    }
+    let slowest = impacts
+        .iter()
+        .map(|i| i.normal_speed_before)
+        .fold(f64::INFINITY, f64::min);
+    assert!(
+        slowest > 0.1 * resting_speed,
+        "an impact at {slowest} m/s: slower ones are resting contact"
+    );
+    let (x, v) = (
+        simulation.positions()[1].x,
+        simulation.velocities()[1].length(),
+    );
+    assert!(
+        (x - contact).abs() < 1e-2 * radius && v < 1e-6,
+        "at rest against the wall: at {x} m, moving at {v} m/s"
+    );
+}

@@ -272,13 +272,13 @@ type Body<V> = (V, V, V, V, V);
 
 /// The [`LANES`] values from `j` on, as vectors.
 #[inline(always)]
-fn lanes<S: Simd>(values: &[f64], j: usize) -> &[S::f64s] {
+pub(super) fn lanes<S: Simd>(values: &[f64], j: usize) -> &[S::f64s] {
     S::as_simd_f64s(&values[j..j + LANES]).0
 }
 
 /// The lanes' sum in a fixed order: pairs, then pairs of pairs.
 #[inline]
-fn sum_lanes(a: &[f64; LANES]) -> f64 {
+pub(super) fn sum_lanes(a: &[f64; LANES]) -> f64 {
     ((a[0] + a[1]) + (a[2] + a[3])) + ((a[4] + a[5]) + (a[6] + a[7]))
 }
 

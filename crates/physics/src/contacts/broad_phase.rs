@@ -212,26 +212,21 @@ impl BroadPhase {
             .fold(typical, f64::max);
         self.grid.cell = cell.max(1e-9);
         self.grid.fill(boxes, &mut self.oversized);
-        let (grid, oversized) = (&self.grid, &self.oversized);
-        // Each particle's partners are found on their own, so ranges of particles can be
-        // searched on different threads and joined in order.
+        let grid = &self.grid;
+        // Each particle's partners in the grid are found on their own, so ranges of
+        // particles can be searched on different threads and joined in order.
         workers.collect_into(boxes.len(), &mut self.pairs, |range, pairs| {
             let mut partners = Vec::new();
             for i in range {
+                let Some(c) = grid.cell_of[i] else {
+                    continue; // oversized: below
+                };
                 partners.clear();
-                match grid.cell_of[i] {
-                    Some(c) => {
-                        let (column, row) = (c as usize % grid.columns, c as usize / grid.columns);
-                        for y in row.saturating_sub(1)..=(row + 1).min(grid.rows - 1) {
-                            for x in column.saturating_sub(1)..=(column + 1).min(grid.columns - 1) {
-                                partners
-                                    .extend(grid.members(x, y).iter().filter(|&&j| j as usize > i));
-                            }
-                        }
-                        partners.extend(oversized.iter().filter(|&&j| j as usize > i));
+                let (column, row) = (c as usize % grid.columns, c as usize / grid.columns);
+                for y in row.saturating_sub(1)..=(row + 1).min(grid.rows - 1) {
+                    for x in column.saturating_sub(1)..=(column + 1).min(grid.columns - 1) {
+                        partners.extend(grid.members(x, y).iter().filter(|&&j| j as usize > i));
                     }
-                    // An oversized box against every other box.
-                    None => partners.extend(i as u32 + 1..boxes.len() as u32),
                 }
                 partners.sort_unstable();
                 let bi = &boxes[i];
@@ -242,7 +237,40 @@ impl BroadPhase {
                 }
             }
         });
+        self.pair_oversized(boxes, &skip);
         &self.pairs
+    }
+
+    /// Adds the pairs of the oversized boxes (a star flung out of a cluster sweeps a box
+    /// hundreds of cells wide), each found by a query over the cells it covers rather
+    /// than against every box, and sorts the pairs again.
+    fn pair_oversized(&mut self, boxes: &[Aabb], skip: &impl Fn(usize, usize) -> bool) {
+        if self.oversized.is_empty() {
+            return;
+        }
+        let is_oversized = |j: usize| self.grid.cell_of[j].is_none();
+        let mut found = Vec::new();
+        let mut candidates = Vec::new();
+        for &o in &self.oversized {
+            let o = o as usize;
+            candidates.clear();
+            self.query(&boxes[o], &mut candidates);
+            candidates.sort_unstable();
+            candidates.dedup();
+            for &j in &candidates {
+                let j = j as usize;
+                // Two oversized boxes are paired from the first.
+                if j == o || (j < o && is_oversized(j)) {
+                    continue;
+                }
+                let (a, b) = (o.min(j), o.max(j));
+                if boxes[o].overlaps(&boxes[j]) && !skip(a, b) {
+                    found.push((a as u32, b as u32));
+                }
+            }
+        }
+        self.pairs.extend(found);
+        self.pairs.sort_unstable();
     }
 
     /// Every particle entered by the last [`Self::pairs`] whose box could overlap

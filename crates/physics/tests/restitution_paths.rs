@@ -323,3 +323,76 @@ fn a_ball_pulled_onto_a_wall_by_a_spring_bounces_then_rests() {
         "at rest against the wall: at {x} m, moving at {v} m/s"
     );
 }
+
+/// The impact log names what each particle struck: one ball dropped onto the second of
+/// two ramps, one onto the floor of the world's box, one onto another ball resting on
+/// the floor. Each meets its target at the free-fall time √(2 h / g) (h the drop to
+/// contact), to 1e-9 s.
+#[test]
+fn the_impact_log_names_the_ramp_the_wall_or_the_particle_struck() {
+    use physics::ImpactTarget;
+    let world = World {
+        gravity: physics::Vector::cartesian(0.0, -G),
+        gravitation: false,
+        electrostatics: false,
+        restitution: 0.5,
+        bounds: Some(Bounds {
+            min: [-10.0, 0.0].into(),
+            max: [10.0, 10.0].into(),
+        }),
+        ..World::weightless()
+    };
+    let (radius, h) = (0.1, 1.5);
+    let scene = Scene::new()
+        .with_world(world)
+        .with_ramp(Ramp::new("left", [-8.0, 1.0], [-6.0, 1.0]).thickness(0.1))
+        .with_ramp(Ramp::new("right", [6.0, 1.0], [8.0, 1.0]).thickness(0.1))
+        .with_particle(
+            Particle::new("onto ramp", 1.0)
+                .radius(radius)
+                .position([7.0, 1.0 + 0.05 + radius + h]),
+        )
+        .with_particle(
+            Particle::new("onto floor", 1.0)
+                .radius(radius)
+                .position([0.0, radius + h]),
+        )
+        .with_particle(
+            Particle::new("resting", 1.0)
+                .radius(radius)
+                .position([3.0, radius]),
+        )
+        .with_particle(
+            Particle::new("onto ball", 1.0)
+                .radius(radius)
+                .position([3.0, 3.0 * radius + h]),
+        );
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.record_impacts();
+    simulation.step_to(0.6).unwrap();
+    let impacts = simulation.take_impacts();
+    let first = |p: usize| {
+        impacts
+            .iter()
+            .find(|i| i.particle == p || i.other == ImpactTarget::Particle(p))
+            .unwrap_or_else(|| panic!("no impact of particle {p}: {impacts:?}"))
+    };
+    let fall = (2.0 * h / G).sqrt();
+    for (p, expected) in [
+        (0, ImpactTarget::Ramp(1)),
+        (1, ImpactTarget::Wall),
+        (3, ImpactTarget::Particle(2)),
+    ] {
+        let impact = first(p);
+        let struck = if impact.particle == p {
+            impact.other
+        } else {
+            ImpactTarget::Particle(impact.particle)
+        };
+        assert_eq!(struck, expected, "particle {p}: {impact:?}");
+        assert!(
+            (impact.time - fall).abs() < 1e-9,
+            "particle {p}: {impact:?}, theory {fall} s"
+        );
+    }
+}

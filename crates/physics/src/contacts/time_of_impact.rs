@@ -420,6 +420,44 @@ mod tests {
         assert!(gap(s * h) <= 1e-12, "inside at the instant returned");
     }
 
+    /// A parabola that crosses the unit circle four times, ending inside after the
+    /// third: x = −0.9 + 1.4 s, y = 3x² − 1.02 (constant acceleration, so the path is
+    /// exact). It enters near x = −0.6, leaves and enters again either side of x = 0:
+    /// the entry is the first root of x² + y² = 1, found here by scanning and bisection
+    /// on that formula, to 1e-12 of the step. A piece judged to cross once when it
+    /// crosses three times would give a later root.
+    #[test]
+    fn a_path_that_enters_leaves_and_enters_again_is_found_at_its_first_entry() {
+        let point = |s: f64| {
+            let x = -0.9 + 1.4 * s;
+            DVec2::new(x, 3.0 * x * x - 1.02)
+        };
+        let velocity = |s: f64| DVec2::new(1.4, 6.0 * (-0.9 + 1.4 * s) * 1.4);
+        let path = control_points(point(0.0), velocity(0.0), point(1.0), velocity(1.0), 1.0);
+        let gap = |s: f64| point(s).length_squared() - 1.0;
+        let crossings = (1..=1000)
+            .filter(|&k| {
+                (gap(f64::from(k - 1) / 1000.0) > 0.0) != (gap(f64::from(k) / 1000.0) > 0.0)
+            })
+            .count();
+        assert_eq!(crossings, 3, "the path crosses three times in the step");
+        let first_inside = (1..=1000)
+            .map(|k| f64::from(k) / 1000.0)
+            .find(|&s| gap(s) <= 0.0)
+            .unwrap();
+        let (mut outside, mut inside) = (first_inside - 1e-3, first_inside);
+        for _ in 0..200 {
+            let mid = 0.5 * (outside + inside);
+            if gap(mid) > 0.0 {
+                outside = mid;
+            } else {
+                inside = mid;
+            }
+        }
+        let s = earliest_entry(&disc(1.0), &path).unwrap();
+        assert!((s - inside).abs() < 1e-12, "s = {s} against {inside}");
+    }
+
     /// The crossing's bracket: the sign rule counts changes, not ends.
     #[test]
     fn one_sign_change_only() {

@@ -458,6 +458,58 @@ mod tests {
         assert!((s - inside).abs() < 1e-12, "s = {s} against {inside}");
     }
 
+    /// Against brute force: 20,000 random cubic paths starting outside the unit disc
+    /// (many only grazing it, dipping in early, late or in the middle of the step). Where
+    /// 4,001 samples of the path find a point inside by more than 1e-9, the search must
+    /// find an entry, no later than that first sample and not before the last sample
+    /// outside ahead of it; where every sample is outside by 1e-9, it must find none.
+    /// Any early-out that calls a dipping piece clear, or a shortcut that takes a later
+    /// crossing, fails here.
+    #[test]
+    fn every_entry_sampling_sees_is_found_and_no_other() {
+        let mut seed = 2_024_u64;
+        let mut random = move || {
+            seed = seed
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (seed >> 11) as f64 / (1_u64 << 53) as f64
+        };
+        let region = disc(1.0);
+        let (mut entries, mut misses) = (0, 0);
+        for _ in 0..20_000 {
+            let mut point = || DVec2::new(4.0 * random() - 2.0, 4.0 * random() - 2.0);
+            let path = [point(), point(), point(), point()];
+            if path[0].length() <= 1.0 + 1e-9 {
+                continue;
+            }
+            let samples: Vec<f64> = (0..=4000)
+                .map(|k| point_at(&path, f64::from(k) / 4000.0).length() - 1.0)
+                .collect();
+            let found = earliest_entry(&region, &path);
+            match samples.iter().position(|&gap| gap < -1e-9) {
+                Some(k) => {
+                    entries += 1;
+                    let s = found.unwrap_or_else(|| panic!("{path:?}: missed an entry"));
+                    let before = (0..k).rev().find(|&m| samples[m] > 1e-9).unwrap();
+                    assert!(
+                        s <= f64::from(u32::try_from(k).unwrap()) / 4000.0
+                            && s >= f64::from(u32::try_from(before).unwrap()) / 4000.0,
+                        "{path:?}: entry at {s}, samples say between {before} and {k} / 4000"
+                    );
+                }
+                None if samples.iter().all(|&gap| gap > 1e-9) => {
+                    misses += 1;
+                    assert_eq!(found, None, "{path:?}: an entry that is not there");
+                }
+                None => {}
+            }
+        }
+        assert!(
+            entries > 1000 && misses > 1000,
+            "{entries} entries, {misses} misses"
+        );
+    }
+
     /// The crossing's bracket: the sign rule counts changes, not ends.
     #[test]
     fn one_sign_change_only() {

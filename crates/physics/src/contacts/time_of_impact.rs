@@ -510,6 +510,50 @@ mod tests {
         );
     }
 
+    /// `crosses_once` is a promise that lets regula falsi replace the halving: on
+    /// 20,000 random pieces of path, wherever it says a piece crosses into the disc (or
+    /// a half-plane) exactly once, 4,001 samples find the piece starting outside, ending
+    /// inside and crossing once. (Saying "no" wrongly costs only time: the piece is
+    /// halved.)
+    #[test]
+    fn crosses_once_is_said_only_of_a_single_crossing() {
+        let mut seed = 77_u64;
+        let mut random = move || {
+            seed = seed
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (seed >> 11) as f64 / (1_u64 << 53) as f64
+        };
+        let regions = [
+            disc(1.0),
+            Region::HalfPlane {
+                point: DVec2::ZERO,
+                normal: DVec2::Y,
+                reach: 0.5,
+            },
+        ];
+        let mut promised = [0, 0];
+        for _ in 0..20_000 {
+            let mut point = || DVec2::new(4.0 * random() - 2.0, 4.0 * random() - 2.0);
+            let path = [point(), point(), point(), point()];
+            for (k, region) in regions.iter().enumerate() {
+                if !region.crosses_once(&path) {
+                    continue;
+                }
+                promised[k] += 1;
+                let inside: Vec<bool> = (0..=4000)
+                    .map(|m| region.gap(point_at(&path, f64::from(m) / 4000.0)) <= 0.0)
+                    .collect();
+                let changes = inside.windows(2).filter(|w| w[0] != w[1]).count();
+                assert!(
+                    !inside[0] && inside[4000] && changes == 1,
+                    "{path:?}: said to cross once, sampled {changes} crossings"
+                );
+            }
+        }
+        assert!(promised.iter().all(|&n| n > 500), "{promised:?}");
+    }
+
     /// The crossing's bracket: the sign rule counts changes, not ends.
     #[test]
     fn one_sign_change_only() {

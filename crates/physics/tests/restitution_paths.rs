@@ -264,25 +264,13 @@ fn an_impact_between_unequally_accelerated_balls_is_exact_free_or_coupled() {
 fn a_ball_pulled_onto_a_wall_by_a_spring_bounces_then_rests() {
     let (k, m, radius, e, h) = (100.0, 1.0, 0.1, 0.5, 1e-3);
     let world = World {
-        gravitation: false,
-        electrostatics: false,
-        restitution: e,
         bounds: Some(Bounds {
             min: [0.0, -5.0].into(),
             max: [10.0, 5.0].into(),
         }),
-        ..World::weightless()
+        ..world(false, e)
     };
-    let scene = Scene::new()
-        .with_world(world)
-        .with_particle(
-            Particle::new("anchor", 1.0)
-                .radius(radius)
-                .position([3.0, 0.0])
-                .fixed(),
-        )
-        .with_particle(Particle::new("ball", m).radius(radius).position([1.1, 0.0]))
-        .with_spring(physics::Spring::new("spring", "anchor", "ball", k, 3.0));
+    let scene = ball_on_a_spring(world, (k, m, radius));
     let mut simulation = Simulation::new(&scene).unwrap();
     simulation.record_impacts();
     simulation.step_to(3.0).unwrap();
@@ -333,14 +321,11 @@ fn the_impact_log_names_the_ramp_the_wall_or_the_particle_struck() {
     use physics::ImpactTarget;
     let world = World {
         gravity: physics::Vector::cartesian(0.0, -G),
-        gravitation: false,
-        electrostatics: false,
-        restitution: 0.5,
         bounds: Some(Bounds {
             min: [-10.0, 0.0].into(),
             max: [10.0, 10.0].into(),
         }),
-        ..World::weightless()
+        ..world(false, 0.5)
     };
     let (radius, h) = (0.1, 1.5);
     let scene = Scene::new()
@@ -406,32 +391,12 @@ fn the_impact_log_names_the_ramp_the_wall_or_the_particle_struck() {
 #[test]
 fn a_coupled_impact_is_located_where_the_balls_touch() {
     let radius = 0.1;
-    let world = World {
-        gravitation: false,
-        electrostatics: false,
-        restitution: 1.0,
-        ..World::weightless()
-    };
-    let scene = Scene::new()
-        .with_world(world)
-        .with_particle(
-            Particle::new("anchor", 1.0)
-                .radius(radius)
-                .position([3.0, 0.0])
-                .fixed(),
-        )
-        .with_particle(
-            Particle::new("ball", 1.0)
-                .radius(radius)
-                .position([1.1, 0.0]),
-        )
-        .with_particle(
-            Particle::new("target", 1.0)
-                .radius(radius)
-                .position([-0.1, 0.0])
-                .fixed(),
-        )
-        .with_spring(physics::Spring::new("spring", "anchor", "ball", 1e4, 3.0));
+    let scene = ball_on_a_spring(world(false, 1.0), (1e4, 1.0, radius)).with_particle(
+        Particle::new("target", 1.0)
+            .radius(radius)
+            .position([-0.1, 0.0])
+            .fixed(),
+    );
     let mut simulation = Simulation::new(&scene).unwrap();
     simulation.record_impacts();
     simulation.step_to(0.05).unwrap();
@@ -445,4 +410,26 @@ fn a_coupled_impact_is_located_where_the_balls_touch() {
         gap.abs() < 1e-12 * 2.0 * radius,
         "a gap of {gap:e} m at the impact, {contact} s"
     );
+}
+
+/// A ball (index 1) of `mass` and `radius` 1.1 m right of the origin, on a spring of
+/// `stiffness` and natural length 3 m from a fixed anchor (index 0) at x = 3 m: the
+/// spring's equilibrium puts the ball's centre at the origin.
+fn ball_on_a_spring(world: World, (stiffness, mass, radius): (f64, f64, f64)) -> Scene {
+    Scene::new()
+        .with_world(world)
+        .with_particle(
+            Particle::new("anchor", 1.0)
+                .radius(radius)
+                .position([3.0, 0.0])
+                .fixed(),
+        )
+        .with_particle(
+            Particle::new("ball", mass)
+                .radius(radius)
+                .position([1.1, 0.0]),
+        )
+        .with_spring(physics::Spring::new(
+            "spring", "anchor", "ball", stiffness, 3.0,
+        ))
 }

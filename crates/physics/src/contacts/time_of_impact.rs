@@ -283,6 +283,33 @@ fn point_at(p: &[DVec2; 4], s: f64) -> DVec2 {
 mod tests {
     use super::*;
 
+    /// The root of `gap` between a point outside (`gap > 0`) and one inside, by 200
+    /// halvings: the inside end, to rounding.
+    fn bisect(gap: impl Fn(f64) -> f64, mut outside: f64, mut inside: f64) -> f64 {
+        for _ in 0..200 {
+            let mid = 0.5 * (outside + inside);
+            if gap(mid) > 0.0 {
+                outside = mid;
+            } else {
+                inside = mid;
+            }
+        }
+        inside
+    }
+
+    /// 20,000 cubic paths with control points uniform in [−2, 2]², from a fixed seed.
+    fn random_paths(mut seed: u64) -> impl Iterator<Item = [DVec2; 4]> {
+        let mut random = move || {
+            seed = seed
+                .wrapping_mul(6_364_136_223_846_793_005)
+                .wrapping_add(1_442_695_040_888_963_407);
+            (seed >> 11) as f64 / (1_u64 << 53) as f64
+        };
+        (0..20_000).map(move |_| {
+            std::array::from_fn(|_| DVec2::new(4.0 * random() - 2.0, 4.0 * random() - 2.0))
+        })
+    }
+
     fn disc(reach: f64) -> Region {
         Region::Disc {
             centre: DVec2::ZERO,
@@ -402,15 +429,7 @@ mod tests {
             h,
         );
         let gap = |t: f64| 0.09 * t * t + (2.0 - 2.5 * t * t).powi(2) - 1.0;
-        let (mut outside, mut inside) = (0.0, 0.8); // gap(0.8) = 0.0576 + 0.16 − 1 < 0
-        for _ in 0..200 {
-            let mid = 0.5 * (outside + inside);
-            if gap(mid) > 0.0 {
-                outside = mid;
-            } else {
-                inside = mid;
-            }
-        }
+        let inside = bisect(gap, 0.0, 0.8); // gap(0.8) = 0.0576 + 0.16 − 1 < 0
         let s = earliest_entry(&disc(1.0), &path).unwrap();
         assert!(
             (s * h - inside).abs() < 1e-13 * h,
@@ -445,15 +464,7 @@ mod tests {
             .map(|k| f64::from(k) / 1000.0)
             .find(|&s| gap(s) <= 0.0)
             .unwrap();
-        let (mut outside, mut inside) = (first_inside - 1e-3, first_inside);
-        for _ in 0..200 {
-            let mid = 0.5 * (outside + inside);
-            if gap(mid) > 0.0 {
-                outside = mid;
-            } else {
-                inside = mid;
-            }
-        }
+        let inside = bisect(gap, first_inside - 1e-3, first_inside);
         let s = earliest_entry(&disc(1.0), &path).unwrap();
         assert!((s - inside).abs() < 1e-12, "s = {s} against {inside}");
     }
@@ -467,18 +478,9 @@ mod tests {
     /// crossing, fails here.
     #[test]
     fn every_entry_sampling_sees_is_found_and_no_other() {
-        let mut seed = 2_024_u64;
-        let mut random = move || {
-            seed = seed
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (seed >> 11) as f64 / (1_u64 << 53) as f64
-        };
         let region = disc(1.0);
         let (mut entries, mut misses) = (0, 0);
-        for _ in 0..20_000 {
-            let mut point = || DVec2::new(4.0 * random() - 2.0, 4.0 * random() - 2.0);
-            let path = [point(), point(), point(), point()];
+        for path in random_paths(2_024) {
             if path[0].length() <= 1.0 + 1e-9 {
                 continue;
             }
@@ -517,13 +519,6 @@ mod tests {
     /// halved.)
     #[test]
     fn crosses_once_is_said_only_of_a_single_crossing() {
-        let mut seed = 77_u64;
-        let mut random = move || {
-            seed = seed
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (seed >> 11) as f64 / (1_u64 << 53) as f64
-        };
         let regions = [
             disc(1.0),
             Region::HalfPlane {
@@ -533,9 +528,7 @@ mod tests {
             },
         ];
         let mut promised = [0, 0];
-        for _ in 0..20_000 {
-            let mut point = || DVec2::new(4.0 * random() - 2.0, 4.0 * random() - 2.0);
-            let path = [point(), point(), point(), point()];
+        for path in random_paths(77) {
             for (k, region) in regions.iter().enumerate() {
                 if !region.crosses_once(&path) {
                     continue;

@@ -146,6 +146,8 @@ struct Interactions {
     far: [Vec<f64>; 6],
     /// The bodies of the leaves that are not, the leaf's own included: position, mass.
     near: [Vec<f64>; 3],
+    /// The walk's squares still to visit (kept from leaf to leaf).
+    stack: Vec<usize>,
 }
 
 struct Tree {
@@ -307,7 +309,8 @@ impl Tree {
         }
         lists.far.iter_mut().for_each(Vec::clear);
         lists.near.iter_mut().for_each(Vec::clear);
-        let mut stack = Vec::with_capacity(4 * DEPTH as usize);
+        let stack = &mut lists.stack;
+        stack.clear();
         stack.push(0_usize);
         while let Some(n) = stack.pop() {
             let node = &self.nodes[n];

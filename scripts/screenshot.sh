@@ -8,15 +8,36 @@ cd "$(dirname "$0")/.."
 out=${1:-target/screenshot.png}
 app=
 xvfb=
-cleanup() { [ -z "$app" ] || kill "$app" 2>/dev/null || true; [ -z "$xvfb" ] || kill "$xvfb" 2>/dev/null || true; }
+log=
+cleanup() { [ -z "$app" ] || kill "$app" 2>/dev/null || true; [ -z "$xvfb" ] || kill "$xvfb" 2>/dev/null || true; [ -z "$log" ] || rm -f "$log"; }
 trap cleanup EXIT
 # shellcheck source=scripts/xvfb.sh
 . scripts/xvfb.sh
 start_xvfb :97
-target/release/newtonlab app example:marble-run --play >/dev/null 2>&1 &
-app=$!
-sleep 6
-kill -0 "$app" || { echo "the app exited before the screenshot"; exit 1; }
+log=$(mktemp)
+# Starts the app and gives it six seconds to draw; says so if it has exited by then.
+start_app() {
+    target/release/newtonlab app example:marble-run --play >"$log" 2>&1 &
+    app=$!
+    sleep 6
+    kill -0 "$app" 2>/dev/null
+}
+# One retry: a CI run once lost the app within six seconds of a fresh Xvfb with nothing in
+# the log to show for it (the output went to /dev/null then). The log is printed either
+# way, so a real crash shows its message and fails on the second try.
+if ! start_app; then
+    wait "$app" && status=0 || status=$?
+    echo "the app exited before the screenshot (exit status $status); its output:"
+    cat "$log"
+    app=
+    start_app || {
+        wait "$app" && status=0 || status=$?
+        echo "the app exited again (exit status $status); its output:"
+        cat "$log"
+        app=
+        exit 1
+    }
+fi
 import -window root "$out"
 colours=$(convert "$out" -format %k info:)
 echo "screenshot $out: $colours colours"

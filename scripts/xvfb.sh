@@ -10,8 +10,16 @@ start_xvfb() {
     Xvfb "$display" -screen 0 1280x800x24 -noreset >/dev/null 2>&1 &
     xvfb=$!
     export DISPLAY=$display
-    for _ in $(seq 50); do
-        [ -S "$socket" ] && return 0
+    # Ready means: the socket is there and, where xdotool is installed (.ci/run installs
+    # it), the server answers a request. A socket alone can be a stale one, or the server
+    # can still be loading its keymaps.
+    for _ in $(seq 100); do
+        kill -0 "$xvfb" 2>/dev/null || { echo "Xvfb exited at start on $display"; return 1; }
+        if [ -S "$socket" ]; then
+            if ! command -v xdotool >/dev/null 2>&1 || xdotool getdisplaygeometry >/dev/null 2>&1; then
+                return 0
+            fi
+        fi
         sleep 0.1
     done
     echo "Xvfb did not start on $display"

@@ -165,6 +165,10 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
             // One figure a line, "<number> <unit>", for scripts (docs/cli.md).
             println!("  {steps_per_second:.1} steps per second");
             println!("  {:.2}x real time", simulated / elapsed);
+            let passes = simulation.steps_taken() - advances_before;
+            println!(
+                "  {passes} passes through the step's pipeline (a step ends early at an impact of a particle under pairwise forces or springs)"
+            );
         }
     }
     print_profile(&simulation.profile(), steps);

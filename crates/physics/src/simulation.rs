@@ -20,6 +20,7 @@
 //! `step_to(t)` shortens the last step so that it lands exactly on `t`: a sample at
 //! `t` is the state at `t`, not at the nearest step.
 
+mod coupled;
 mod ties;
 
 use glam::DVec2;
@@ -82,6 +83,8 @@ pub struct Simulation {
     radius: std::sync::Arc<[f64]>,
     forces: ForceModel,
     contacts: Contacts,
+    /// The coupled particles as a system of their own, for their impacts inside a step.
+    coupled: Option<coupled::CoupledSystem>,
     state: State,
     /// The state at the start of the step being taken, to integrate again from it when
     /// an impact interrupts the step.
@@ -188,11 +191,14 @@ impl Simulation {
         }
         let particles = &scene.particles;
         let forces = ForceModel::new(scene);
+        let contacts = Contacts::new(scene, &forces);
+        let coupled = coupled::CoupledSystem::new(&forces, contacts.coupled());
         let mut simulation = Self {
             names: scene.particle_names().into(),
             tie_names: scene.ties.iter().map(|t| t.name.clone()).collect(),
             radius: particles.iter().map(|p| p.radius).collect(),
-            contacts: Contacts::new(scene, &forces),
+            contacts,
+            coupled,
             forces,
             start: State::default(),
             state: State {
@@ -315,6 +321,9 @@ impl Simulation {
         copy.start = State::default();
         copy.work.drop_scratch();
         copy.contacts.drop_scratch();
+        if let Some(coupled) = &mut copy.coupled {
+            coupled.drop_scratch();
+        }
         copy
     }
 
@@ -469,7 +478,10 @@ impl Simulation {
         }
         let mut struck = None;
         let mut power_at_end = None;
-        if let Some((time, impact)) = interruption {
+        if let Some(first) = interruption.filter(|_| self.coupled_in_step()) {
+            taken = self.coupled_impacts_in_step(first, taken);
+            self.profiler.lap(Stage::Reintegration);
+        } else if let Some((time, impact)) = interruption {
             // The impact comes first; a string's event, if still due, is found again.
             tie_event = None;
             let step = taken;

@@ -40,6 +40,8 @@ pub(super) struct ImpactSearch {
     /// find them: every search after an impact also tries these.
     escaped: Vec<u32>,
     queue: BinaryHeap<Reverse<Event>>,
+    /// How many more impacts this step may apply inside itself.
+    budget: usize,
     neighbours: Vec<u32>,
 }
 
@@ -47,8 +49,14 @@ pub(super) struct ImpactSearch {
 /// state at both ends, plus the kicks of the impacts applied inside the step. Kicks only
 /// ever come in time order and the path is only read after the latest, so their running
 /// sums suffice: a kick Δv at τ adds Δv (t − τ) to every later position.
+///
+/// A coupled particle's path starts again at each impact of the coupled system: from its
+/// integrated state then (`from` seconds into the step) to its integrated state at the
+/// step's end.
 #[derive(Clone, Copy, Debug)]
 struct Path {
+    /// Seconds into the step where the curve starts (0, or a coupled impact's instant).
+    from: f64,
     start: (DVec2, DVec2),
     end: (DVec2, DVec2),
     /// Σ Δv of the kicks so far, m/s.
@@ -62,15 +70,21 @@ impl Path {
     /// integrator's values are returned exactly.
     fn at(&self, t: f64, h: f64) -> (DVec2, DVec2) {
         let ((x0, v0), (x1, v1)) = (self.start, self.end);
-        let s = (t / h).clamp(0.0, 1.0);
-        let (s2, s3) = (s * s, s * s * s);
-        let position = x0 * (2.0 * s3 - 3.0 * s2 + 1.0)
-            + v0 * (h * (s3 - 2.0 * s2 + s))
-            + x1 * (3.0 * s2 - 2.0 * s3)
-            + v1 * (h * (s3 - s2));
-        let velocity = (x1 - x0) * ((6.0 * s - 6.0 * s2) / h)
-            + v0 * (3.0 * s2 - 4.0 * s + 1.0)
-            + v1 * (3.0 * s2 - 2.0 * s);
+        let span = h - self.from;
+        let (position, velocity) = if span > 0.0 {
+            let s = ((t - self.from) / span).clamp(0.0, 1.0);
+            let (s2, s3) = (s * s, s * s * s);
+            let position = x0 * (2.0 * s3 - 3.0 * s2 + 1.0)
+                + v0 * (span * (s3 - 2.0 * s2 + s))
+                + x1 * (3.0 * s2 - 2.0 * s3)
+                + v1 * (span * (s3 - s2));
+            let velocity = (x1 - x0) * ((6.0 * s - 6.0 * s2) / span)
+                + v0 * (3.0 * s2 - 4.0 * s + 1.0)
+                + v1 * (3.0 * s2 - 2.0 * s);
+            (position, velocity)
+        } else {
+            (x0, v0) // a curve that starts at the step's end
+        };
         (
             position + self.kick * t - self.kick_moment,
             velocity + self.kick,
@@ -80,8 +94,13 @@ impl Path {
     /// Bézier control points of the path from `from` to the end of a step of `h`.
     fn after(&self, from: f64, h: f64) -> [DVec2; 4] {
         let ((x0, v0), (x1, v1)) = (self.start, self.end);
-        let p = control_points(x0, v0, x1, v1, h);
-        let u = (from / h).clamp(0.0, 1.0);
+        let span = h - self.from;
+        let p = control_points(x0, v0, x1, v1, span);
+        let u = if span > 0.0 {
+            ((from - self.from) / span).clamp(0.0, 1.0)
+        } else {
+            1.0
+        };
         let q1 = p[1].lerp(p[2], u);
         let q2 = p[2].lerp(p[3], u);
         let r1 = q1.lerp(q2, u);
@@ -93,6 +112,22 @@ impl Path {
         }
         points
     }
+}
+
+/// A coupled particle's path is searched again after an impact of the coupled system
+/// only if it moved by more than this fraction of its radius: far below the touching
+/// band ([`TOUCHING`]), so a kept path can only miss an impact that grazes deeper than
+/// the band by less than this, which the resting solver then holds. Coupled impacts are
+/// measured and applied on the integrated state, never on a path, so a kept path moves
+/// no instant of contact.
+const RESTART: f64 = 1e-9;
+
+/// The coupled particles' integrated state at an instant inside the step: what a coupled
+/// impact is measured and applied on.
+pub(crate) struct Members<'a> {
+    /// Each particle's index in `state`, `None` for particles outside the coupled system.
+    pub local: &'a [Option<u32>],
+    pub state: &'a mut State,
 }
 
 /// An impact found inside the step, valid while both paths are those it was found on.
@@ -147,7 +182,6 @@ impl Contacts {
                     .fold(0.0, f64::max),
                 f64::max,
             );
-        let resting_speed = self.resting_speed(h);
         self.start_paths(start, end, h);
         profiler.lap(Stage::TimeOfImpact);
         let candidates = self.swept_candidates(start, h, forces);
@@ -170,9 +204,24 @@ impl Contacts {
             }
         });
         self.search.queue.extend(found.drain(..).map(Reverse));
+        self.search.budget = 20 * n + 100;
+        self.resume_impacts(end, h, forces, profiler)
+    }
 
+    /// Goes on processing the impacts found inside the step (see
+    /// [`Self::resolve_impacts`]) after a coupled impact was applied
+    /// ([`Self::strike_coupled`], [`Self::restart_paths`]): the next coupled impact is
+    /// returned, and `end` patched with the paths changed so far.
+    pub fn resume_impacts(
+        &mut self,
+        end: &mut State,
+        h: f64,
+        forces: &ForceModel,
+        profiler: &mut Profiler,
+    ) -> Option<(f64, Impact)> {
+        let resting_speed = self.resting_speed(h);
+        let mut found = Vec::new();
         let mut interruption = None;
-        let mut budget = 20 * n + 100;
         while let Some(Reverse(event)) = self.search.queue.pop() {
             let (first, second) = particles_of(event.impact);
             if (
@@ -182,14 +231,14 @@ impl Contacts {
             {
                 continue; // found on a path an earlier impact has since changed
             }
+            if self.search.budget == 0 {
+                break; // pathological: leave the rest to the resting solver
+            }
+            self.search.budget -= 1;
             if self.coupled[first] || second.is_some_and(|j| self.coupled[j]) {
                 interruption = Some((event.time, event.impact));
                 break;
             }
-            if budget == 0 {
-                break; // pathological: leave the rest to the resting solver
-            }
-            budget -= 1;
             self.apply_local(event, h, resting_speed, forces, &mut found);
             self.search.queue.extend(found.drain(..).map(Reverse));
         }
@@ -208,6 +257,7 @@ impl Contacts {
         let n = start.len();
         self.search.paths.clear();
         self.search.paths.extend((0..n).map(|i| Path {
+            from: 0.0,
             start: (start.position[i], start.velocity[i]),
             end: (end.position[i], end.velocity[i]),
             kick: DVec2::ZERO,
@@ -307,56 +357,76 @@ impl Contacts {
             moved.push((j, dv_second));
         }
         for &(p, dv) in &moved {
-            if dv == DVec2::ZERO {
-                continue;
-            }
-            let path = &mut self.search.paths[p];
-            path.kick += dv;
-            path.kick_moment += dv * event.time;
-            self.search.versions[p] += 1;
-            if !self.search.is_changed[p] {
-                self.search.is_changed[p] = true;
-                self.search.changed.push(p as u32);
-            }
+            self.kick(p, dv, event.time);
         }
         for &(p, dv) in &moved {
-            if dv == DVec2::ZERO || forces.is_fixed(p) {
+            if dv != DVec2::ZERO && !forces.is_fixed(p) {
+                self.search_again(p, event.time, h, forces, found);
+            }
+        }
+    }
+
+    /// Adds a kick of `dv` at `time` to `p`'s path, and counts `p` as struck.
+    fn kick(&mut self, p: usize, dv: DVec2, time: f64) {
+        if dv == DVec2::ZERO {
+            return;
+        }
+        let path = &mut self.search.paths[p];
+        path.kick += dv;
+        path.kick_moment += dv * time;
+        self.search.versions[p] += 1;
+        self.mark_changed(p);
+    }
+
+    fn mark_changed(&mut self, p: usize) {
+        if !self.search.is_changed[p] {
+            self.search.is_changed[p] = true;
+            self.search.changed.push(p as u32);
+        }
+    }
+
+    /// Searches `p`'s changed path from `time` on against its neighbours and the
+    /// obstacles.
+    fn search_again(
+        &mut self,
+        p: usize,
+        time: f64,
+        h: f64,
+        forces: &ForceModel,
+        found: &mut Vec<Event>,
+    ) {
+        let bounds = Aabb::around(&self.search.paths[p].after(time, h), self.radius[p]);
+        if !self.proxies.fat(p).contains(&bounds) && !self.search.escaped.contains(&(p as u32)) {
+            self.search.escaped.push(p as u32);
+        }
+        self.search.neighbours.clear();
+        self.proxies.query(&bounds, &mut self.search.neighbours);
+        self.search
+            .neighbours
+            .extend_from_slice(&self.search.escaped);
+        self.search.neighbours.sort_unstable();
+        self.search.neighbours.dedup();
+        let neighbours = std::mem::take(&mut self.search.neighbours);
+        for &q in &neighbours {
+            let q = q as usize;
+            if q == p
+                || (forces.is_fixed(p) && forces.is_fixed(q))
+                || self.touching.by_particle.contains(p, q as u32)
+            {
                 continue;
             }
-            let bounds = Aabb::around(&self.search.paths[p].after(event.time, h), self.radius[p]);
-            if !self.proxies.fat(p).contains(&bounds) && !self.search.escaped.contains(&(p as u32))
-            {
-                self.search.escaped.push(p as u32);
+            let pair = (p.min(q), p.max(q));
+            if let Some(event) = self.search_pair(pair.0, pair.1, time, h) {
+                found.push(event);
             }
-            self.search.neighbours.clear();
-            self.proxies.query(&bounds, &mut self.search.neighbours);
-            self.search
-                .neighbours
-                .extend_from_slice(&self.search.escaped);
-            self.search.neighbours.sort_unstable();
-            self.search.neighbours.dedup();
-            let neighbours = std::mem::take(&mut self.search.neighbours);
-            for &q in &neighbours {
-                let q = q as usize;
-                if q == p
-                    || (forces.is_fixed(p) && forces.is_fixed(q))
-                    || self.touching.by_particle.contains(p, q as u32)
-                {
-                    continue;
-                }
-                let pair = (p.min(q), p.max(q));
-                if let Some(event) = self.search_pair(pair.0, pair.1, event.time, h) {
-                    found.push(event);
-                }
-            }
-            self.search.neighbours = neighbours;
-            self.search_obstacles(p, event.time, h, found);
         }
+        self.search.neighbours = neighbours;
+        self.search_obstacles(p, time, h, found);
     }
 
     /// The control points of `p`'s path from `from` seconds to the end of the step.
     fn path_after(&self, p: usize, from: f64, h: f64) -> [DVec2; 4] {
-        if from == 0.0 && !self.search.is_changed[p] {
+        if from == 0.0 && self.search.versions[p] == 0 {
             self.search.controls[p]
         } else {
             self.search.paths[p].after(from, h)
@@ -417,6 +487,127 @@ impl Contacts {
                 });
             }
         }
+    }
+
+    /// Gap, normal and approach ([`Self::measure`]) of a coupled impact `time` seconds
+    /// into the step: the coupled particles' integrated state there is `members`, the
+    /// others' their paths.
+    pub fn measure_coupled(
+        &self,
+        impact: Impact,
+        time: f64,
+        h: f64,
+        members: &Members<'_>,
+    ) -> (f64, DVec2, f64) {
+        let (first, second) = particles_of(impact);
+        let at = |p: usize| match members.local[p] {
+            Some(k) => (
+                members.state.position[k as usize],
+                members.state.velocity[k as usize],
+            ),
+            None => self.search.paths[p].at(time, h),
+        };
+        self.geometry(impact, at(first), second.map(at))
+    }
+
+    /// Applies a coupled impact at `time` seconds into the step, where `members` is the
+    /// coupled system's integrated state: its impulse goes into `members` for coupled
+    /// particles and kicks the path of an uncoupled partner (searched again). Returns
+    /// whether an impulse was applied (none when the bodies no longer approach).
+    pub fn strike_coupled(
+        &mut self,
+        impact: Impact,
+        time: f64,
+        h: f64,
+        members: &mut Members<'_>,
+        forces: &ForceModel,
+    ) -> bool {
+        let (_, normal, approach) = self.measure_coupled(impact, time, h, members);
+        if approach <= 0.0 {
+            return false;
+        }
+        let restitution = self.restitution_at(impact, approach, self.resting_speed(h));
+        self.applied.push(Applied {
+            time,
+            impact,
+            approach,
+            restitution,
+        });
+        let (first, second) = particles_of(impact);
+        let (dv_first, dv_second) =
+            velocity_changes(impact, normal, approach * (1.0 + restitution), forces);
+        let mut found = Vec::new();
+        for (p, dv) in std::iter::once((first, dv_first)).chain(second.map(|j| (j, dv_second))) {
+            if dv == DVec2::ZERO {
+                continue;
+            }
+            if let Some(k) = members.local[p] {
+                members.state.velocity[k as usize] += dv;
+                self.mark_changed(p); // its path starts again in restart_paths
+            } else {
+                self.kick(p, dv, time);
+                if !forces.is_fixed(p) {
+                    self.search_again(p, time, h, forces, &mut found);
+                }
+            }
+        }
+        self.search.queue.extend(found.into_iter().map(Reverse));
+        true
+    }
+
+    /// Ends the step at `time` seconds into it (of `h`): every particle outside the
+    /// coupled system (`local` is `None` for them) is put where its path is then.
+    pub fn end_at(&self, time: f64, h: f64, state: &mut State, local: &[Option<u32>]) {
+        for (p, path) in self.search.paths.iter().enumerate() {
+            if local[p].is_none() {
+                (state.position[p], state.velocity[p]) = path.at(time, h);
+            }
+        }
+    }
+
+    /// The coupled system's paths start again at `time` seconds into the step, from its
+    /// integrated state `at` then to `end` at the step's end (both indexed like
+    /// `members`), after an impact changed it. A path that moves by less than
+    /// [`RESTART`] of its particle's radius anywhere in the rest of the step is kept,
+    /// with the impacts already found on it; the others are searched again.
+    pub fn restart_paths(
+        &mut self,
+        members: &[usize],
+        (at, end): (&State, &State),
+        time: f64,
+        h: f64,
+        forces: &ForceModel,
+    ) {
+        let mut found = Vec::new();
+        for (k, &p) in members.iter().enumerate() {
+            if forces.is_fixed(p) {
+                continue;
+            }
+            let path = Path {
+                from: time,
+                start: (at.position[k], at.velocity[k]),
+                end: (end.position[k], end.velocity[k]),
+                kick: DVec2::ZERO,
+                kick_moment: DVec2::ZERO,
+            };
+            let old = &self.search.paths[p];
+            let (x0, v0) = old.at(time, h);
+            let (x1, v1) = old.at(h, h);
+            // A bound on how far apart two cubic Hermite curves over the same interval
+            // get: the end points' distance plus the tangent terms' (their basis
+            // functions peak at 4/27).
+            let moved = (path.start.0 - x0).length().max((path.end.0 - x1).length())
+                + 4.0 / 27.0
+                    * (h - time)
+                    * ((path.start.1 - v0).length() + (path.end.1 - v1).length());
+            if moved <= RESTART * self.radius[p] {
+                continue;
+            }
+            self.search.paths[p] = path;
+            self.search.versions[p] += 1;
+            self.search_again(p, time, h, forces, &mut found);
+        }
+        self.search.queue.extend(found.into_iter().map(Reverse));
     }
 
     /// Applies the impulse of an impact returned by [`Self::resolve_impacts`], now that the

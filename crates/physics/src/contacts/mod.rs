@@ -52,6 +52,7 @@ use glam::DVec2;
 
 use self::broad_phase::{Aabb, Proxies};
 use self::impacts::ImpactSearch;
+pub(crate) use self::impacts::Members;
 use self::obstacles::{Obstacle, Shape};
 use self::resting::{RestingSolver, Touching};
 use self::surfaces::StartContacts;
@@ -180,6 +181,11 @@ impl Contacts {
     /// The bytes of what [`Self::drop_scratch`] keeps, by length.
     pub fn memory_bytes(&self) -> usize {
         self.obstacles.len() * size_of::<Obstacle>() + self.resting.memory_bytes()
+    }
+
+    /// Whether each particle feels a pairwise force, a spring, a rod or a string.
+    pub fn coupled(&self) -> &[bool] {
+        &self.coupled
     }
 
     /// How many of the obstacles are ramps (the walls come after them).

@@ -1,0 +1,306 @@
+//! Impacts of coupled particles inside the step, without ending it.
+//!
+//! A particle that feels pairwise forces or springs is *coupled*: an impulse on it
+//! changes the forces on the others it pulls, so its impact cannot be patched onto a path
+//! as an uncoupled particle's is. The coupled particles (with the fixed ones that pull
+//! on them) form a system of their own, closed: no force on them comes from outside it
+//! but the fields and the surfaces they rest on. At an impact of a coupled particle `τ`
+//! seconds into the step, that system alone is integrated from its last impact (or the
+//! step's start) to exactly `τ` (refined by Newton's method on its gap, as for the whole
+//! system before), the impulse applied, and the system integrated on to the step's end.
+//! Its paths then start again at `τ` ([`Contacts::restart_paths`]) and the search goes
+//! on inside the same step.
+//!
+//! So a coupled impact costs an integration of the coupled particles, not a new step
+//! of everything (broad phase, trial step, impact search, resting solver). The result is
+//! the same physics: the state at each impact is the integrator's, from the state at the
+//! impact before it, as when each impact ended the step.
+//!
+//! Not used (each coupled impact still ends the step) with rods or strings, whose events
+//! and projections are the whole step's, and while anything dissipates smoothly (a damped
+//! spring, friction under a particle): the energy ledger integrates that power over the
+//! step from its two ends, which an impulse inside it would break.
+
+use std::sync::Arc;
+
+use crate::constraints::Constraints;
+use crate::contacts::{Impact, Members};
+use crate::forces::{ForceModel, SpringLink, spring::End};
+use crate::integrators::{self, Integrator, Workspace};
+use crate::profile::Stage;
+use crate::state::State;
+
+use super::Simulation;
+
+/// The coupled particles as a system of their own.
+#[derive(Clone, Debug)]
+pub(super) struct CoupledSystem {
+    /// Its particles, ascending: every coupled one, and the fixed ones that pull on them
+    /// by a pairwise force or a spring.
+    members: Arc<[usize]>,
+    /// Each particle's index among the members.
+    local: Arc<[Option<u32>]>,
+    /// The force model of the members alone, without surfaces (each step's are added).
+    model: Arc<ForceModel>,
+    /// What a step with coupled impacts works in: filled again each such step.
+    scratch: Option<Box<Scratch>>,
+}
+
+#[derive(Clone, Debug)]
+struct Scratch {
+    /// The model with this step's surface contacts and threads.
+    forces: ForceModel,
+    /// The members' integrated state `from` seconds into the step, after the impulse of
+    /// the impact there.
+    segment: State,
+    from: f64,
+    /// The members' state at an instant being tried.
+    at: State,
+    /// The members' state at the step's end, integrated from `segment`.
+    end: State,
+    work: Workspace,
+}
+
+impl CoupledSystem {
+    /// The coupled system of a simulation's particles, or `None` when there is none or
+    /// impacts must end the step (rods or strings; see the module doc).
+    pub fn new(forces: &ForceModel, coupled: &[bool]) -> Option<Self> {
+        if !forces.constraints.is_empty() || !coupled.contains(&true) {
+            return None;
+        }
+        let pulls = |i: usize| {
+            forces.interacting.binary_search(&i).is_ok()
+                || forces.springs.iter().any(|s| s.touches(i))
+        };
+        let members: Vec<usize> = (0..coupled.len())
+            .filter(|&i| coupled[i] || (forces.is_fixed(i) && pulls(i)))
+            .collect();
+        let mut local = vec![None; coupled.len()];
+        for (k, &i) in members.iter().enumerate() {
+            local[i] = Some(u32::try_from(k).ok()?);
+        }
+        let model = restricted(forces, &members, &local);
+        Some(Self {
+            members: members.into(),
+            local: local.into(),
+            model: Arc::new(model),
+            scratch: None,
+        })
+    }
+
+    /// Frees the scratch space (keyframes hold none).
+    pub fn drop_scratch(&mut self) {
+        self.scratch = None;
+    }
+
+    /// Starts a step's coupled impacts: the members at the step's `start`, under this
+    /// step's surfaces and threads.
+    fn begin(&mut self, start: &State, forces: &ForceModel) -> &mut Scratch {
+        let model = &self.model;
+        let scratch = self.scratch.get_or_insert_with(|| {
+            Box::new(Scratch {
+                forces: ForceModel::clone(model),
+                segment: State::default(),
+                from: 0.0,
+                at: State::default(),
+                end: State::default(),
+                work: Workspace::default(),
+            })
+        });
+        scratch.forces.workers = forces.workers.clone();
+        scratch.forces.surface_contacts.clear();
+        let local = &self.local;
+        scratch
+            .forces
+            .surface_contacts
+            .extend(forces.surface_contacts.iter().filter_map(|contact| {
+                let particle = local[contact.particle]? as usize;
+                Some(crate::forces::SurfaceContact {
+                    particle,
+                    ..*contact
+                })
+            }));
+        let segment = &mut scratch.segment;
+        segment.time = start.time;
+        segment.position.clear();
+        segment.velocity.clear();
+        segment
+            .position
+            .extend(self.members.iter().map(|&i| start.position[i]));
+        segment
+            .velocity
+            .extend(self.members.iter().map(|&i| start.velocity[i]));
+        scratch.from = 0.0;
+        scratch
+    }
+}
+
+impl Scratch {
+    /// `at` becomes the members' state `time` seconds into the step.
+    fn integrate_to(&mut self, time: f64, method: Integrator) {
+        self.at.clone_from(&self.segment);
+        integrators::advance_exactly(
+            method,
+            &self.forces,
+            &mut self.at,
+            time - self.from,
+            &mut self.work,
+        );
+    }
+
+    /// The state in `at` (`time` seconds into a step of `h`, after an impulse) starts
+    /// the next segment, and `end` is integrated from it to the step's end.
+    fn restart(&mut self, time: f64, h: f64, method: Integrator) {
+        self.segment.clone_from(&self.at);
+        self.from = time;
+        self.end.clone_from(&self.segment);
+        integrators::advance_exactly(
+            method,
+            &self.forces,
+            &mut self.end,
+            h - time,
+            &mut self.work,
+        );
+    }
+}
+
+/// The force model of the `members` alone, indexed by `local`.
+fn restricted(forces: &ForceModel, members: &[usize], local: &[Option<u32>]) -> ForceModel {
+    let pick = |&i: &usize| local[i].map(|k| k as usize);
+    let end = |end: End| match end {
+        End::Particle(i) => local[i].map(|k| End::Particle(k as usize)),
+        End::Point(point) => Some(End::Point(point)),
+    };
+    ForceModel {
+        mass: members.iter().map(|&i| forces.mass[i]).collect(),
+        inverse_mass: members.iter().map(|&i| forces.inverse_mass[i]).collect(),
+        charge: members.iter().map(|&i| forces.charge[i]).collect(),
+        uniform: members.iter().map(|&i| forces.uniform[i]).collect(),
+        gravitational_constant: forces.gravitational_constant,
+        coulomb_constant: forces.coulomb_constant,
+        interacting: forces.interacting.iter().filter_map(pick).collect(),
+        charged: forces.charged.iter().filter_map(pick).collect(),
+        tree: forces.tree,
+        springs: forces
+            .springs
+            .iter()
+            .filter_map(|s| {
+                Some(SpringLink {
+                    from: end(s.from)?,
+                    to: end(s.to)?,
+                    ..*s
+                })
+            })
+            .collect(),
+        constraints: Constraints::default(),
+        workers: forces.workers.clone(),
+        surface_contacts: Vec::new(),
+    }
+}
+
+impl Simulation {
+    /// Whether the coupled impact just found can be handled inside the step.
+    pub(super) fn coupled_in_step(&self) -> bool {
+        self.coupled.is_some() && !self.forces.dissipates()
+    }
+
+    /// Applies the coupled impacts of a step of `taken` seconds in time order, `first`
+    /// the first of them, each at its instant on the coupled system's integrated state,
+    /// and goes on with the impact search after each (see the module doc). Returns the
+    /// step taken: `taken`, or the instant of an impact that drove a coupled particle
+    /// into the surface it rests on, where the step then ends (so that the next step
+    /// starts with that impact, as it did when every coupled impact ended the step: the
+    /// surface's support of a sinking coupled particle is not constant over the step, and
+    /// the energy ledger could not book its work).
+    pub(super) fn coupled_impacts_in_step(&mut self, first: (f64, Impact), taken: f64) -> f64 {
+        let Some(system) = self.coupled.as_mut() else {
+            return taken;
+        };
+        let method = self.integrator;
+        let local = Arc::clone(&system.local);
+        let members = Arc::clone(&system.members);
+        let scratch = system.begin(&self.start, &self.forces);
+        let mut restarted = false;
+        let mut next = Some(first);
+        while let Some((estimate, impact)) = next {
+            let tolerance = 1e-12 * self.contacts.reach(impact);
+            let mut time = estimate.max(scratch.from);
+            for attempt in 0..4 {
+                scratch.integrate_to(time, method);
+                let at = Members {
+                    local: &local,
+                    state: &mut scratch.at,
+                };
+                let (gap, _, approach) = self.contacts.measure_coupled(impact, time, taken, &at);
+                if gap.abs() <= tolerance || approach <= 0.0 || attempt == 3 {
+                    break;
+                }
+                let refined = time + gap / approach;
+                if !(refined > scratch.from && refined <= taken)
+                    || (refined - time).abs() <= f64::EPSILON * time
+                {
+                    break;
+                }
+                time = refined;
+            }
+            let mut at = Members {
+                local: &local,
+                state: &mut scratch.at,
+            };
+            if self
+                .contacts
+                .strike_coupled(impact, time, taken, &mut at, &self.forces)
+            {
+                if drives_into_surface(impact, &self.forces, &local, &scratch.at) {
+                    for (k, &p) in members.iter().enumerate() {
+                        self.state.position[p] = scratch.at.position[k];
+                        self.state.velocity[p] = scratch.at.velocity[k];
+                    }
+                    self.contacts.end_at(time, taken, &mut self.state, &local);
+                    self.state.time = self.start.time + time;
+                    self.work.start_acceleration = None;
+                    return time;
+                }
+                scratch.restart(time, taken, method);
+                self.contacts.restart_paths(
+                    &members,
+                    (&scratch.segment, &scratch.end),
+                    time,
+                    taken,
+                    &self.forces,
+                );
+                restarted = true;
+            }
+            self.profiler.lap(Stage::Reintegration);
+            next = self.contacts.resume_impacts(
+                &mut self.state,
+                taken,
+                &self.forces,
+                &mut self.profiler,
+            );
+        }
+        if restarted {
+            for (k, &p) in members.iter().enumerate() {
+                self.state.position[p] = scratch.end.position[k];
+                self.state.velocity[p] = scratch.end.velocity[k];
+            }
+            self.work.start_acceleration = None;
+        }
+        taken
+    }
+}
+
+/// Whether `impact` left one of its coupled particles moving into a surface it rests on
+/// (`at`: the coupled system's state just after).
+fn drives_into_surface(
+    impact: Impact,
+    forces: &ForceModel,
+    local: &[Option<u32>],
+    at: &State,
+) -> bool {
+    forces.surface_contacts.iter().any(|contact| {
+        impact.involves(contact.particle)
+            && local[contact.particle]
+                .is_some_and(|k| at.velocity[k as usize].dot(contact.normal) < 0.0)
+    })
+}

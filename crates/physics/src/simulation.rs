@@ -8,10 +8,12 @@
 //!    and taut strings) are integrated over a trial step of at most the time step;
 //! 3. a string that snapped taut or went slack inside the trial step shortens it to that
 //!    instant (`simulation/ties.rs`);
-//! 4. impacts inside the (trial) step are located and applied in time order: within the
-//!    step for particles moved only by the field, or, for particles feeling pairwise
-//!    forces, springs, rods or strings, by integrating the system again to exactly that
-//!    instant; then the string's event, unless an impact came first;
+//! 4. impacts inside the (trial) step are located and applied in time order: on their
+//!    paths for particles moved only by the field; for particles feeling pairwise forces
+//!    or springs, by integrating those particles alone to exactly that instant and on to
+//!    the step's end (`simulation/coupled.rs`); with rods or strings, by integrating the
+//!    whole system to that instant, where the step ends; then the string's event, unless
+//!    an impact came first;
 //! 5. resting contacts between particles are resolved (no approach, no growing overlap);
 //! 6. positions and velocities are projected back onto the rods' and strings' lengths;
 //! 7. the new state is checked for non-finite values, which stop the run with the

@@ -3,8 +3,9 @@
 //!
 //! The contact code treats the two differently (see `contacts/mod.rs`): an impact of a
 //! free particle is applied inside the step on its exact path, an impact of a coupled one
-//! (a particle that feels a pairwise force or a spring) ends the step and the whole
-//! system is integrated again to that instant. Pairwise gravitation is on by default, so
+//! (a particle that feels a pairwise force or a spring) on the coupled particles' state
+//! integrated again to that instant (and on to the step's end, or, in some cases, the
+//! step ends there). Pairwise gravitation is on by default, so
 //! most scenes a user builds take the coupled road — and once, a wrong restitution there
 //! passed every test, because every test with e < 1 used free particles.
 //!

@@ -163,3 +163,18 @@ fn a_pile_of_charged_and_sprung_balls_closes_its_books() {
     eprintln!("mixed pile: worst residual {worst:e} of E₀");
     assert!(worst < 1e-9, "worst residual {worst:e} of E₀");
 }
+
+/// The mixture with damped springs: damping's power is integrated over each step from
+/// its ends and its middle, so while anything dissipates smoothly a coupled impact ends
+/// the step (`simulation/coupled.rs`) instead of kicking the motion inside it. Measured
+/// 7.2e-12 of E₀; held to 1e-9. Handled inside the step, the residual is 8.5e-6.
+#[test]
+fn a_pile_of_charged_balls_on_damped_springs_closes_its_books() {
+    let mut pile = physics::generated::mixed(150);
+    for spring in &mut pile.springs {
+        spring.damping = 0.5;
+    }
+    let worst = worst_residual(&pile, 2.0);
+    eprintln!("damped mixed pile: worst residual {worst:e} of E₀");
+    assert!(worst < 1e-9, "worst residual {worst:e} of E₀");
+}

@@ -437,7 +437,7 @@ fn ball_on_a_spring(world: World, (stiffness, mass, radius): (f64, f64, f64)) ->
 
 /// A ball on a spring rattles between two walls 4 mm apart, up to four times a step:
 /// each impact of a coupled particle is applied inside the step, on the integrated
-/// state, and the step goes on (`simulation/coupled.rs`). Closed form: the spring
+/// state, and the step goes on (`simulation/coupled.rs`; no impact ends its step). Closed form: the spring
 /// (ω = 1 rad/s, equilibrium at the box's centre) gives simple harmonic motion between
 /// the walls, where the centre reaches ±d. Starting at the centre at v₀, the ball first
 /// strikes at asin(d/C)/ω, C = v₀/ω, at u₁ = √(v₀² − ω²d²); leaving a wall at w it
@@ -481,6 +481,9 @@ fn a_coupled_ball_rattling_between_walls_strikes_at_its_closed_form_instants() {
         most_in_a_step >= Some(4),
         "{most_in_a_step:?} impacts in a step"
     );
+    // None of them ended its step: 50 passes through the pipeline for 50 steps (ending
+    // the step at each would give one pass per impact more).
+    assert_eq!(simulation.steps_taken(), 50);
     let mut time = (d / v0).asin();
     let mut speed = (v0 * v0 - d * d).sqrt();
     for (n, impact) in impacts.iter().take(20).enumerate() {

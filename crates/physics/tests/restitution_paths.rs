@@ -503,3 +503,45 @@ fn a_coupled_ball_rattling_between_walls_strikes_at_its_closed_form_instants() {
         time += 2.0 * (d / (d * d + speed * speed).sqrt()).asin();
     }
 }
+
+/// A coupled ball strikes a free one, which crosses to a wall, bounces and comes back,
+/// all inside one half-second step: the free ball's path after the coupled impact is
+/// searched again (the wall's impact, and the return, would be missed otherwise). The
+/// striker is the only charged ball (coupled, with no partner to pull it); elastic
+/// impacts of equal masses swap velocities: the striker at 1 m/s meets the ball 0.1 m
+/// away at 0.1 s, that ball's centre reaches the wall 0.1 m on at 0.2 s, and it meets
+/// the striker, now at rest, on its way back at 0.3 s. Each instant to 1e-12 s (straight
+/// lines, no field: rounding).
+#[test]
+fn a_free_ball_struck_by_a_coupled_one_is_followed_through_the_step() {
+    let radius = 0.1;
+    let scene = Scene::new()
+        .with_world(World {
+            electrostatics: true,
+            bounds: Some(Bounds {
+                min: [-1.0, -1.0].into(),
+                max: [0.5, 1.0].into(),
+            }),
+            ..world(false, 1.0)
+        })
+        .with_particle(
+            Particle::new("striker", 1.0)
+                .radius(radius)
+                .charge(1e-6)
+                .velocity([1.0, 0.0]),
+        )
+        .with_particle(
+            Particle::new("struck", 1.0)
+                .radius(radius)
+                .position([0.3, 0.0]),
+        )
+        .with_integrator(physics::Integrator::Rk4, 0.5);
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.record_impacts();
+    simulation.step().unwrap();
+    let times: Vec<f64> = simulation.take_impacts().iter().map(|i| i.time).collect();
+    assert_eq!(times.len(), 3, "{times:?}");
+    for (time, expected) in times.iter().zip([0.1, 0.2, 0.3]) {
+        assert!((time - expected).abs() < 1e-12, "{times:?}");
+    }
+}

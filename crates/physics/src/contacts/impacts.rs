@@ -219,7 +219,6 @@ impl Contacts {
         forces: &ForceModel,
         profiler: &mut Profiler,
     ) -> Option<(f64, Impact)> {
-        let resting_speed = self.resting_speed(h);
         let mut found = Vec::new();
         let mut interruption = None;
         while let Some(Reverse(event)) = self.search.queue.pop() {
@@ -239,7 +238,7 @@ impl Contacts {
                 interruption = Some((event.time, event.impact));
                 break;
             }
-            self.apply_local(event, h, resting_speed, forces, &mut found);
+            self.strike_inside(event.impact, event.time, h, None, forces, &mut found);
             self.search.queue.extend(found.drain(..).map(Reverse));
         }
         for &p in &self.search.changed {
@@ -326,51 +325,58 @@ impl Contacts {
         }
     }
 
-    /// Applies an impact between uncoupled particles at its instant inside the step and
-    /// searches the changed paths again.
-    fn apply_local(
+    /// Applies an impact at `time` seconds into the step, measured where its particles
+    /// are then: on the coupled system's integrated state (`members`) for coupled ones,
+    /// on their paths for the others. The impulse goes into `members` for coupled
+    /// particles (whose paths [`Self::restart_paths`] starts again) and kicks the others'
+    /// paths, which are searched again. Returns whether an impulse was applied (none when
+    /// the bodies no longer approach).
+    fn strike_inside(
         &mut self,
-        event: Event,
+        impact: Impact,
+        time: f64,
         h: f64,
-        resting_speed: f64,
+        mut members: Option<&mut Members<'_>>,
         forces: &ForceModel,
         found: &mut Vec<Event>,
-    ) {
-        let (first, second) = particles_of(event.impact);
-        let (xi, vi) = self.search.paths[first].at(event.time, h);
-        let other = second.map(|j| self.search.paths[j].at(event.time, h));
-        let (_, normal, approach) = self.geometry(event.impact, (xi, vi), other);
+    ) -> bool {
+        let (_, normal, approach) = self.measure_inside(impact, time, h, members.as_deref());
         if approach <= 0.0 {
-            return;
+            return false;
         }
-        let restitution = self.restitution_at(event.impact, approach, resting_speed);
+        let restitution = self.restitution_at(impact, approach, self.resting_speed(h));
         self.applied.push(Applied {
-            time: event.time,
-            impact: event.impact,
+            time,
+            impact,
             approach,
             restitution,
         });
+        let (first, second) = particles_of(impact);
         let (dv_first, dv_second) =
-            velocity_changes(event.impact, normal, approach * (1.0 + restitution), forces);
-        let mut moved = vec![(first, dv_first)];
-        if let Some(j) = second {
-            moved.push((j, dv_second));
-        }
-        for &(p, dv) in &moved {
-            self.kick(p, dv, event.time);
-        }
-        for &(p, dv) in &moved {
-            if dv != DVec2::ZERO && !forces.is_fixed(p) {
-                self.search_again(p, event.time, h, forces, found);
+            velocity_changes(impact, normal, approach * (1.0 + restitution), forces);
+        let mut kicked = Vec::with_capacity(2);
+        for (p, dv) in std::iter::once((first, dv_first)).chain(second.map(|j| (j, dv_second))) {
+            if dv == DVec2::ZERO {
+                continue;
+            }
+            if let Some((k, m)) = members.as_deref_mut().and_then(|m| Some((m.local[p]?, m))) {
+                m.state.velocity[k as usize] += dv;
+                self.mark_changed(p);
+            } else {
+                self.kick(p, dv, time);
+                kicked.push(p);
             }
         }
+        for p in kicked {
+            if !forces.is_fixed(p) {
+                self.search_again(p, time, h, forces, found);
+            }
+        }
+        true
     }
 
     /// Adds a kick of `dv` at `time` to `p`'s path, and counts `p` as struck.
     fn kick(&mut self, p: usize, dv: DVec2, time: f64) {
-        if dv == DVec2::ZERO {
-            return;
-        }
         let path = &mut self.search.paths[p];
         path.kick += dv;
         path.kick_moment += dv * time;
@@ -499,21 +505,29 @@ impl Contacts {
         h: f64,
         members: &Members<'_>,
     ) -> (f64, DVec2, f64) {
+        self.measure_inside(impact, time, h, Some(members))
+    }
+
+    /// [`Self::measure`] `time` seconds into the step, each particle taken from
+    /// `members` if it is one of them, else from its path.
+    fn measure_inside(
+        &self,
+        impact: Impact,
+        time: f64,
+        h: f64,
+        members: Option<&Members<'_>>,
+    ) -> (f64, DVec2, f64) {
         let (first, second) = particles_of(impact);
-        let at = |p: usize| match members.local[p] {
-            Some(k) => (
-                members.state.position[k as usize],
-                members.state.velocity[k as usize],
-            ),
+        let at = |p: usize| match members.and_then(|m| Some((m.local[p]? as usize, m))) {
+            Some((k, m)) => (m.state.position[k], m.state.velocity[k]),
             None => self.search.paths[p].at(time, h),
         };
         self.geometry(impact, at(first), second.map(at))
     }
 
-    /// Applies a coupled impact at `time` seconds into the step, where `members` is the
-    /// coupled system's integrated state: its impulse goes into `members` for coupled
-    /// particles and kicks the path of an uncoupled partner (searched again). Returns
-    /// whether an impulse was applied (none when the bodies no longer approach).
+    /// Applies a coupled impact at `time` seconds into the step on the coupled system's
+    /// integrated state `members` ([`Self::strike_inside`]); its uncoupled partner's
+    /// impacts found again join the queue. Returns whether an impulse was applied.
     pub fn strike_coupled(
         &mut self,
         impact: Impact,
@@ -522,37 +536,10 @@ impl Contacts {
         members: &mut Members<'_>,
         forces: &ForceModel,
     ) -> bool {
-        let (_, normal, approach) = self.measure_coupled(impact, time, h, members);
-        if approach <= 0.0 {
-            return false;
-        }
-        let restitution = self.restitution_at(impact, approach, self.resting_speed(h));
-        self.applied.push(Applied {
-            time,
-            impact,
-            approach,
-            restitution,
-        });
-        let (first, second) = particles_of(impact);
-        let (dv_first, dv_second) =
-            velocity_changes(impact, normal, approach * (1.0 + restitution), forces);
         let mut found = Vec::new();
-        for (p, dv) in std::iter::once((first, dv_first)).chain(second.map(|j| (j, dv_second))) {
-            if dv == DVec2::ZERO {
-                continue;
-            }
-            if let Some(k) = members.local[p] {
-                members.state.velocity[k as usize] += dv;
-                self.mark_changed(p); // its path starts again in restart_paths
-            } else {
-                self.kick(p, dv, time);
-                if !forces.is_fixed(p) {
-                    self.search_again(p, time, h, forces, &mut found);
-                }
-            }
-        }
+        let struck = self.strike_inside(impact, time, h, Some(members), forces, &mut found);
         self.search.queue.extend(found.into_iter().map(Reverse));
-        true
+        struck
     }
 
     /// Ends the step at `time` seconds into it (of `h`): every particle outside the

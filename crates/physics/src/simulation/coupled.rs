@@ -252,10 +252,7 @@ impl Simulation {
                 .strike_coupled(impact, time, taken, &mut at, &self.forces)
             {
                 if drives_into_surface(impact, &self.forces, &local, &scratch.at) {
-                    for (k, &p) in members.iter().enumerate() {
-                        self.state.position[p] = scratch.at.position[k];
-                        self.state.velocity[p] = scratch.at.velocity[k];
-                    }
+                    write_members(&members, &scratch.at, &mut self.state);
                     self.contacts.end_at(time, taken, &mut self.state, &local);
                     self.state.time = self.start.time + time;
                     self.work.start_acceleration = None;
@@ -280,13 +277,18 @@ impl Simulation {
             );
         }
         if restarted {
-            for (k, &p) in members.iter().enumerate() {
-                self.state.position[p] = scratch.end.position[k];
-                self.state.velocity[p] = scratch.end.velocity[k];
-            }
+            write_members(&members, &scratch.end, &mut self.state);
             self.work.start_acceleration = None;
         }
         taken
+    }
+}
+
+/// Puts each member's state in `members_state` (indexed like `members`) into `state`.
+fn write_members(members: &[usize], members_state: &State, state: &mut State) {
+    for (k, &p) in members.iter().enumerate() {
+        state.position[p] = members_state.position[k];
+        state.velocity[p] = members_state.velocity[k];
     }
 }
 

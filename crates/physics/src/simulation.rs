@@ -675,22 +675,12 @@ impl Simulation {
     /// the integrated state (the path used to find it is only an interpolation). Returns
     /// the time integrated.
     fn integrate_to_impact(&mut self, estimate: f64, limit: f64, impact: Impact) -> f64 {
-        let tolerance = 1e-12 * self.contacts.reach(impact);
-        let mut time = estimate;
-        for attempt in 0..4 {
+        let reach = self.contacts.reach(impact);
+        refine_instant(estimate, (0.0, limit), reach, |time| {
             self.integrate_from_start(time);
             let (gap, _, approach) = self.contacts.measure(impact, &self.state);
-            if gap.abs() <= tolerance || approach <= 0.0 || attempt == 3 {
-                break;
-            }
-            let refined = time + gap / approach;
-            if !(refined > 0.0 && refined <= limit) || (refined - time).abs() <= f64::EPSILON * time
-            {
-                break;
-            }
-            time = refined;
-        }
-        time
+            (gap, approach)
+        })
     }
 
     /// The state integrated from the step's start for `time` seconds, exactly.
@@ -737,4 +727,31 @@ impl Simulation {
     pub fn particle(&self, i: usize, accelerations: &[DVec2]) -> ParticleReadout {
         diagnostics::particle(&self.forces, &self.state, accelerations, i)
     }
+}
+
+/// The instant of an impact by Newton's method on its gap: `gap_at(t)` brings the state
+/// to `t` seconds into the step (integrating it) and returns the gap and the approach
+/// speed there. Starts at `estimate`, stays inside (`after`, `limit`], and stops within
+/// 1e-12 of the impact's `reach`, when the bodies no longer approach, or after four
+/// tries; the state is then the one at the instant returned.
+fn refine_instant(
+    estimate: f64,
+    (after, limit): (f64, f64),
+    reach: f64,
+    mut gap_at: impl FnMut(f64) -> (f64, f64),
+) -> f64 {
+    let tolerance = 1e-12 * reach;
+    let mut time = estimate;
+    for attempt in 0..4 {
+        let (gap, approach) = gap_at(time);
+        if gap.abs() <= tolerance || approach <= 0.0 || attempt == 3 {
+            break;
+        }
+        let refined = time + gap / approach;
+        if !(refined > after && refined <= limit) || (refined - time).abs() <= f64::EPSILON * time {
+            break;
+        }
+        time = refined;
+    }
+    time
 }

@@ -30,7 +30,7 @@ use crate::integrators::{self, Integrator, Workspace};
 use crate::profile::Stage;
 use crate::state::State;
 
-use super::Simulation;
+use super::{Simulation, refine_instant};
 
 /// The coupled particles as a system of their own.
 #[derive(Clone, Debug)]
@@ -223,26 +223,17 @@ impl Simulation {
         let mut restarted = false;
         let mut next = Some(first);
         while let Some((estimate, impact)) = next {
-            let tolerance = 1e-12 * self.contacts.reach(impact);
-            let mut time = estimate.max(scratch.from);
-            for attempt in 0..4 {
+            let (from, reach) = (scratch.from, self.contacts.reach(impact));
+            let contacts = &self.contacts;
+            let time = refine_instant(estimate.max(from), (from, taken), reach, |time| {
                 scratch.integrate_to(time, method);
                 let at = Members {
                     local: &local,
                     state: &mut scratch.at,
                 };
-                let (gap, _, approach) = self.contacts.measure_coupled(impact, time, taken, &at);
-                if gap.abs() <= tolerance || approach <= 0.0 || attempt == 3 {
-                    break;
-                }
-                let refined = time + gap / approach;
-                if !(refined > scratch.from && refined <= taken)
-                    || (refined - time).abs() <= f64::EPSILON * time
-                {
-                    break;
-                }
-                time = refined;
-            }
+                let (gap, _, approach) = contacts.measure_coupled(impact, time, taken, &at);
+                (gap, approach)
+            });
             let mut at = Members {
                 local: &local,
                 state: &mut scratch.at,

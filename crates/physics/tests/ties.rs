@@ -594,3 +594,54 @@ fn a_triple_pendulum_keeps_its_energy_and_its_lengths() {
     }
     assert!(worst < 1e-9 * 6.0 * G, "energy drifted by {worst:e} J");
 }
+
+/// A string already at full length whose ball moves outward at the very start of the
+/// run snaps taut then, before the first step: in no field, a ball 1 m below the pivot
+/// moving at (1, −0.5) m/s. Inelastic (the default), its radial 0.5 m/s is taken and it
+/// goes round at 1 m/s, at (sin t, −cos t) m; with restitution ½ the radial speed comes
+/// back as 0.25 m/s inward and the ball flies straight, the string slack, at
+/// (t, −1 + 0.25 t) m until it meets the string's length again at t = 0.5/1.0625 s.
+/// To 1e-9 m (rk4 on a circle at 1 ms errs by about 1e-13 m in a second).
+#[test]
+fn a_string_at_full_length_snaps_taut_at_the_start_of_the_run() {
+    let scene = |restitution: f64| {
+        Scene::new()
+            .with_world(World {
+                gravitation: false,
+                electrostatics: false,
+                ..World::weightless()
+            })
+            .with_particle(
+                Particle::new("ball", 1.5)
+                    .radius(0.05)
+                    .position([0.0, -1.0])
+                    .velocity([1.0, -0.5]),
+            )
+            .with_tie(Tie::string("string", [0.0, 0.0], "ball", 1.0).restitution(restitution))
+    };
+    let mut round = start(&scene(0.0));
+    for t in [0.001, 0.5, 1.0, 2.0] {
+        run_to(&mut round, t);
+        let expected = DVec2::new(t.sin(), -t.cos());
+        let at = round.positions()[0];
+        assert!(
+            at.distance(expected) < 1e-9,
+            "t = {t}: at {at}, not {expected}"
+        );
+    }
+    let mut thrown = start(&scene(0.5));
+    for t in [0.001, 0.2, 0.45] {
+        run_to(&mut thrown, t);
+        let expected = DVec2::new(t, -1.0 + 0.25 * t);
+        let at = thrown.positions()[0];
+        assert!(
+            at.distance(expected) < 1e-9,
+            "t = {t}: at {at}, not {expected}"
+        );
+        let v = thrown.velocities()[0];
+        assert!(
+            v.distance(DVec2::new(1.0, 0.25)) < 1e-9,
+            "t = {t}: moving at {v}"
+        );
+    }
+}

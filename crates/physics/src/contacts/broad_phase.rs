@@ -41,10 +41,20 @@ pub(crate) struct Aabb {
 impl Aabb {
     /// The box of `points`, grown by `margin` on every side.
     pub fn around(points: &[DVec2], margin: f64) -> Self {
+        // Comparisons, not `DVec2::min`/`max`: those are calls in WebAssembly (see
+        // `resting::sweep`), and every particle's path box is built here every step.
         let (mut min, mut max) = (points[0], points[0]);
         for p in &points[1..] {
-            min = min.min(*p);
-            max = max.max(*p);
+            if p.x < min.x {
+                min.x = p.x;
+            } else if p.x > max.x {
+                max.x = p.x;
+            }
+            if p.y < min.y {
+                min.y = p.y;
+            } else if p.y > max.y {
+                max.y = p.y;
+            }
         }
         Self {
             min: min - DVec2::splat(margin),

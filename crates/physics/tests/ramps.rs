@@ -250,3 +250,42 @@ fn a_ball_bounces_off_a_round_post() {
     assert!((t - (1.0 - offset) / 2.0).abs() < 1e-9, "at 45° at {t}");
     assert!(v.distance(DVec2::new(0.0, 2.0)) < 1e-9, "at 45°: {v}");
 }
+
+/// A surface catches a falling ball and holds it, under each integrator (Verlet and
+/// dopri5 carry the acceleration at a step's end into the next step, rk4 does not): a
+/// 0.25 m ball dropped from rest 1 m above a level ramp's top face (at y = 0.05) with
+/// restitution 0 lands at √(2 · 1 m / g) = 0.4515 s and then lies still: at every step
+/// after 0.46 s it is at y = 0.3 and at rest, to 1e-9 (a step of free fall left in it
+/// would put it g h²/2 = 4.9e-6 m into the ramp; without the catch's "sit exactly on
+/// the surface" it is 1.1e-6 m in).
+#[test]
+fn a_ball_caught_by_a_ramp_lies_still_under_every_integrator() {
+    let world = World {
+        gravitation: false,
+        electrostatics: false,
+        ..World::default()
+    };
+    for integrator in [
+        physics::Integrator::Rk4,
+        physics::Integrator::Verlet,
+        physics::Integrator::Dopri5,
+    ] {
+        let scene = Scene::new()
+            .with_world(world.clone())
+            .with_integrator(integrator, 1e-3)
+            .with_ramp(Ramp::new("ramp", [-3.0, 0.0], [3.0, 0.0]).restitution(0.0))
+            .with_particle(Particle::new("ball", 1.0).radius(0.25).position([0.0, 1.3]));
+        let mut simulation = Simulation::new(&scene).expect("a valid scene");
+        for k in 460..=700 {
+            simulation
+                .step_to(f64::from(k) * 1e-3)
+                .expect("the ball stays finite");
+            let (x, v) = (simulation.positions()[0], simulation.velocities()[0]);
+            assert!(
+                (x.y - 0.3).abs() < 1e-9 && v.length() < 1e-9,
+                "{integrator:?} at t = {} s: at {x}, moving at {v}",
+                f64::from(k) * 1e-3
+            );
+        }
+    }
+}

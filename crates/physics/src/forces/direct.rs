@@ -13,7 +13,7 @@
 //! from summing one pair at a time only by rounding (tested to 1e-12 relative per
 //! force). A row's last partners, fewer than two groups, are two groups padded with
 //! bodies that every pair masks out (a lone pair would cost a square root and a
-//! division that no lane shares: 1.6–1.9× the pairs per second at 100 bodies on AVX2).
+//! division that no lane shares: 1.2–1.9× the pairs per second at 100 bodies on AVX2).
 //! Scenes of up to 16 bodies are summed one pair at a time, so they get exactly the
 //! plain loop's numbers.
 //!

@@ -130,6 +130,10 @@ impl Path {
     }
 }
 
+/// Bodies of a coupled impact this fraction of their reach apart at its refined instant
+/// are not touching: the refinement stops within 1e-12 of the reach for a real contact.
+const APART: f64 = 1e-6;
+
 /// A coupled particle's path is searched again after an impact of the coupled system
 /// only if it moved by more than this fraction of its radius: far below the touching
 /// band ([`TOUCHING`]), so a kept path can only miss an impact that grazes deeper than
@@ -356,8 +360,12 @@ impl Contacts {
         forces: &ForceModel,
         found: &mut Vec<Event>,
     ) -> bool {
-        let (_, normal, approach) = self.measure_inside(impact, time, h, members.as_deref());
-        if approach <= 0.0 {
+        let (gap, normal, approach) = self.measure_inside(impact, time, h, members.as_deref());
+        // A coupled impact is measured on the integrated state: bodies still apart there
+        // make no impact (an event found on a path since started again), however they
+        // move. Free impacts are measured on the path they were found on.
+        let apart = members.is_some() && gap > APART * self.reach(impact);
+        if approach <= 0.0 || apart {
             return false;
         }
         let restitution = self.restitution_at(impact, approach, self.resting_speed(h));

@@ -111,7 +111,7 @@ pub(crate) fn add_forces(
 ) {
     let (g, k) = constants;
     let n = ids.len();
-    let padded = n + if n > 2 * LANES { 2 * LANES } else { 0 };
+    let padded = padded_len(n);
     let mut bodies = Bodies::with_capacity(padded);
     for &i in ids {
         bodies.x.push(x[i].x);
@@ -136,6 +136,12 @@ pub(crate) fn add_forces(
         }
         force[i] += sum;
     }
+}
+
+/// How many bodies the columns of `n` hold: 2 × [`LANES`] more for the padded tails,
+/// none for a scene small enough to be summed one pair at a time.
+fn padded_len(n: usize) -> usize {
+    n + if n > 2 * LANES { 2 * LANES } else { 0 }
 }
 
 /// The first row of each block and the end, for `n` bodies: blocks of about equal
@@ -199,12 +205,11 @@ impl WithSimd for Rows<'_> {
     fn with_simd<S: Simd>(self, simd: S) {
         let Rows {
             b,
-            real,
+            real: n,
             range,
             fx,
             fy,
         } = self;
-        let n = real;
         for i in range {
             let body = (b.x[i], b.y[i], b.gm[i], b.kq[i], b.moves[i]);
             let mut sums = ([0.0; LANES], [0.0; LANES]);
@@ -361,8 +366,8 @@ mod tests {
     ) -> (Vec<f64>, Vec<f64>) {
         let n = b.x.len();
         let mut padded = b.clone();
-        padded.pad_to(n + 2 * LANES);
-        let (mut fx, mut fy) = (vec![0.0; n + 2 * LANES], vec![0.0; n + 2 * LANES]);
+        padded.pad_to(padded_len(n));
+        let (mut fx, mut fy) = (vec![0.0; padded_len(n)], vec![0.0; padded_len(n)]);
         sum(&padded, n, &mut fx, &mut fy);
         fx.truncate(n);
         fy.truncate(n);

@@ -521,4 +521,60 @@ mod tests {
         );
         assert_eq!(b[2].to_bits(), 0.0_f64.to_bits());
     }
+
+    /// A dependent row *before* independent ones, at scales from 1e-6 to 1e8 (the
+    /// threshold is relative to the row's own diagonal): M = J Jᵀ with J's second row three
+    /// times its first, so the pivot of row 1 vanishes only to rounding. The solution
+    /// leaves row 1 out (x₁ = 0 exactly) and solves the rest: for b = M x with
+    /// x = (1, 0, 2, −1), it returns x to 1e-9. A dependent row's column must be cleared
+    /// for the rows after it, and a threshold not scaled with the diagonal takes rounding
+    /// for a pivot at one end of the range or every row for dependent at the other.
+    #[test]
+    fn solve_leaves_out_a_dependent_row_in_the_middle_at_any_scale() {
+        let rows = [
+            [0.1, 0.3, 0.7],
+            [0.3, 0.9, 2.1],
+            [0.2, -0.5, 0.4],
+            [1.1, 0.6, -0.3],
+        ];
+        let x = [1.0, 0.0, 2.0, -1.0];
+        for scale in [1e-3, 1.0, 1e4] {
+            let j: Vec<[f64; 3]> = rows.iter().map(|r| r.map(|v| v * scale)).collect();
+            let dot = |a: &[f64; 3], b: &[f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+            let mut matrix: Vec<f64> = (0..16).map(|k| dot(&j[k / 4], &j[k % 4])).collect();
+            let mut b: Vec<f64> = (0..4)
+                .map(|r| (0..4).map(|c| matrix[r * 4 + c] * x[c]).sum())
+                .collect();
+            solve(4, &mut matrix, &mut b);
+            assert_eq!(b[1].to_bits(), 0.0_f64.to_bits(), "scale {scale}: {b:?}");
+            for k in [0, 2, 3] {
+                assert!((b[k] - x[k]).abs() < 1e-9, "scale {scale}: {b:?}");
+            }
+        }
+    }
+
+    /// Five independent rows, every pair coupled (M = J Jᵀ dense, as an island of five
+    /// links sharing particles is not, but the elimination must not care): b = M x gives
+    /// back x to 1e-9. The third row on is where each entry sums over the rows before it
+    /// (a chain of three links, the tests' largest island, has zeros there).
+    #[test]
+    fn solve_solves_a_dense_system_of_five_rows() {
+        let rows = [
+            [1.0, 0.2, 0.3, 0.1, 0.5],
+            [0.4, 1.1, 0.2, 0.6, 0.1],
+            [0.3, 0.5, 0.9, 0.2, 0.7],
+            [0.6, 0.1, 0.4, 1.2, 0.3],
+            [0.2, 0.8, 0.1, 0.3, 1.0],
+        ];
+        let dot = |a: &[f64; 5], b: &[f64; 5]| a.iter().zip(b).map(|(p, q)| p * q).sum::<f64>();
+        let mut matrix: Vec<f64> = (0..25).map(|k| dot(&rows[k / 5], &rows[k % 5])).collect();
+        let x = [1.0, -2.0, 0.5, 3.0, -1.5];
+        let mut b: Vec<f64> = (0..5)
+            .map(|r| (0..5).map(|c| matrix[r * 5 + c] * x[c]).sum())
+            .collect();
+        solve(5, &mut matrix, &mut b);
+        for k in 0..5 {
+            assert!((b[k] - x[k]).abs() < 1e-9, "{b:?}");
+        }
+    }
 }

@@ -289,3 +289,57 @@ fn a_ball_caught_by_a_ramp_lies_still_under_every_integrator() {
         }
     }
 }
+
+/// A ball sliding off the end of a level ramp under Verlet, which carries each step's end
+/// acceleration into the next. While on the ramp that acceleration includes the ramp's
+/// normal force; once the ball is clear of the ramp's rounded end it is in free flight,
+/// and Verlet is exact for a constant acceleration: from the first step that starts clear
+/// of the ramp, the ball follows x₀ + v₀t + ½gt² to rounding (1e-9 m over 0.3 s). An
+/// acceleration carried over from the ramp (the surface contact gone, the step's start
+/// not saying the forces changed) would hold it up for a step, g·h/2 = 5e-3 m/s slow,
+/// 1.5e-3 m off the parabola by the end.
+#[test]
+fn a_ball_sliding_off_a_ramps_end_falls_on_its_parabola_under_verlet() {
+    let (radius, half_thickness, g) = (0.1, 0.01, 9.81);
+    let reach = radius + half_thickness;
+    let world = World {
+        gravitation: false,
+        electrostatics: false,
+        restitution: 0.0,
+        bounds: None,
+        ..World::default()
+    };
+    let scene = Scene::new()
+        .with_world(world)
+        .with_ramp(Ramp::new("ledge", [-1.0, 0.0], [0.0, 0.0]).thickness(2.0 * half_thickness))
+        .with_particle(
+            Particle::new("ball", 1.0)
+                .radius(radius)
+                .position([-0.5, reach])
+                .velocity([2.0, 0.0]),
+        )
+        .with_integrator(physics::Integrator::Verlet, 1e-3);
+    let mut simulation = Simulation::new(&scene).expect("a valid scene");
+    // The first step's start with the ball clear of the ramp's end by more than its
+    // touching band (1e-6 of the reach): the first step without the surface.
+    while simulation.positions()[0].x <= 0.0
+        || simulation.positions()[0].length() <= reach * (1.0 + 2e-6)
+    {
+        simulation.step().expect("a step");
+        assert!(simulation.time() < 1.0, "the ball never left the ramp");
+    }
+    let (t0, x0, v0) = (
+        simulation.time(),
+        simulation.positions()[0],
+        simulation.velocities()[0],
+    );
+    let mut worst: f64 = 0.0;
+    while simulation.time() < t0 + 0.3 {
+        simulation.step().expect("a step");
+        let t = simulation.time() - t0;
+        let theory = x0 + v0 * t + DVec2::new(0.0, -0.5 * g * t * t);
+        worst = worst.max(simulation.positions()[0].distance(theory));
+    }
+    eprintln!("left at {t0} s from {x0} at {v0}; {worst:e} m off the parabola");
+    assert!(worst < 1e-9, "{worst} m off the parabola");
+}

@@ -547,6 +547,111 @@ mod tests {
         assert!(promised.iter().all(|&n| n > 500), "{promised:?}");
     }
 
+    /// The Bernstein coefficients of the gap's sign on a piece, computed another way: the
+    /// control points to the power basis, the product |D(s)|² − r² (or the half-plane's
+    /// linear gap) multiplied out there, and back to Bernstein's basis by
+    /// `b[m] = Σ_{k≤m} C(m, k) / C(n, k) · a[k]`.
+    fn bernstein_of_gap(region: &Region, p: &[DVec2; 4]) -> Vec<f64> {
+        let choose = |n: usize, k: usize| -> f64 {
+            (0..k).fold(1.0, |c, i| c * (n - i) as f64 / (i + 1) as f64)
+        };
+        let to_bernstein = |a: &[f64]| -> Vec<f64> {
+            let n = a.len() - 1;
+            (0..=n)
+                .map(|m| (0..=m).map(|k| choose(m, k) / choose(n, k) * a[k]).sum())
+                .collect()
+        };
+        match *region {
+            Region::Disc { centre, reach } => {
+                let d = p.map(|q| q - centre);
+                // D(s) = d0 + 3(d1 − d0)s + 3(d0 − 2d1 + d2)s² + (d3 − 3d2 + 3d1 − d0)s³.
+                let power = [
+                    d[0],
+                    3.0 * (d[1] - d[0]),
+                    3.0 * (d[0] - 2.0 * d[1] + d[2]),
+                    d[3] - 3.0 * d[2] + 3.0 * d[1] - d[0],
+                ];
+                let mut squared = [0.0; 7];
+                for (i, a) in power.iter().enumerate() {
+                    for (j, b) in power.iter().enumerate() {
+                        squared[i + j] += a.dot(*b);
+                    }
+                }
+                squared[0] -= reach * reach;
+                to_bernstein(&squared)
+            }
+            Region::HalfPlane {
+                point,
+                normal,
+                reach,
+            } => p.iter().map(|q| (*q - point).dot(normal) - reach).collect(),
+            Region::Slab { .. } => Vec::new(),
+        }
+    }
+
+    /// Runs `decides` on 20,000 random pieces against an off-centre disc of reach 0.7
+    /// and an offset, tilted half-plane, and requires it to agree with `rule` applied to
+    /// the gap's Bernstein coefficients computed independently (`bernstein_of_gap`),
+    /// wherever no coefficient is within 1e-9 of zero (where rounding may decide either
+    /// way). Returns how often the rule said yes, per region. (The earlier tests used a
+    /// disc of reach 1 at the origin and a half-plane through it, where
+    /// `reach * reach → reach / reach` and `q − centre → q + centre` change nothing.)
+    fn agrees_with_the_bernstein_rule(
+        seed: u64,
+        decides: impl Fn(&Region, &[DVec2; 4]) -> bool,
+        rule: impl Fn(&[f64]) -> bool,
+    ) -> [usize; 2] {
+        let regions = [
+            Region::Disc {
+                centre: DVec2::new(0.3, -0.2),
+                reach: 0.7,
+            },
+            Region::HalfPlane {
+                point: DVec2::new(0.2, 0.4),
+                normal: DVec2::new(0.6, 0.8),
+                reach: 0.3,
+            },
+        ];
+        let mut yes = [0; 2];
+        for path in random_paths(seed) {
+            for (k, region) in regions.iter().enumerate() {
+                let exact = bernstein_of_gap(region, &path);
+                if exact.iter().any(|c| c.abs() < 1e-9) {
+                    continue;
+                }
+                let expected = rule(&exact);
+                yes[k] += usize::from(expected);
+                assert_eq!(
+                    decides(region, &path),
+                    expected,
+                    "{path:?} against {exact:?}"
+                );
+            }
+        }
+        yes
+    }
+
+    /// `crosses_once` says yes exactly when the gap's Bernstein coefficients start
+    /// positive and change sign once. So it neither promises a crossing that is not
+    /// single nor misses one its rule should see (a "no" costs a subdivision, and a
+    /// formula that said it too often would cost time unseen by the other tests).
+    #[test]
+    fn crosses_once_follows_the_bernstein_rule_on_the_exact_coefficients() {
+        let yes = agrees_with_the_bernstein_rule(91, Region::crosses_once, one_sign_change);
+        assert!(yes.iter().all(|&n| n > 300), "{yes:?}");
+    }
+
+    /// `clear_of` (the disc's seven conditions, the half-plane's four) says a piece stays
+    /// outside exactly when every Bernstein coefficient of its gap is positive. A
+    /// condition dropped or weakened lets a piece that enters be called clear (a ball
+    /// through a ball); one made stricter only costs subdivisions.
+    #[test]
+    fn clear_of_follows_the_bernstein_rule_on_the_exact_coefficients() {
+        let clear =
+            agrees_with_the_bernstein_rule(93, Region::clear_of, |c| c.iter().all(|&x| x > 0.0));
+        assert!(clear.iter().all(|&n| n > 50), "{clear:?}");
+    }
+
     /// The crossing's bracket: the sign rule counts changes, not ends.
     #[test]
     fn one_sign_change_only() {

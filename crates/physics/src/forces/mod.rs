@@ -144,8 +144,12 @@ impl ForceModel {
         for link in &self.springs {
             link.add_forces(x, v, out);
         }
-        for (i, a) in out.iter_mut().enumerate() {
-            *a = uniform::acceleration(self.uniform[i]) + *a * self.inverse_mass[i];
+        for ((a, &field), &w) in out
+            .iter_mut()
+            .zip(self.uniform.iter())
+            .zip(self.inverse_mass.iter())
+        {
+            *a = uniform::acceleration(field) + *a * w;
         }
     }
 
@@ -252,6 +256,9 @@ impl ForceModel {
     /// inverse-square laws, so one distance computation serves both. With a tree,
     /// gravitation through the tree and Coulomb directly among the charged particles.
     fn pairwise(&self, x: &[DVec2], force: &mut [DVec2]) {
+        if self.interacting.len() < 2 {
+            return; // no pair (the ball pit): not even the sum's scratch columns
+        }
         let g = self.gravitational_constant.unwrap_or(0.0);
         let k = self.coulomb_constant.unwrap_or(0.0);
         match self.tree {

@@ -537,17 +537,9 @@ fn a_ball_rests_on_top_of_a_fixed_peg() {
 #[test]
 fn a_ball_dropped_on_a_ball_resting_on_a_peg_bounces_back_to_its_height() {
     let (drop, h) = (0.5, 0.01);
-    let world = World {
-        gravitation: false,
-        electrostatics: false,
-        restitution: 1.0,
-        ..World::default()
-    };
     let top = 0.5 + drop;
-    let scene = Scene::new()
-        .with_world(world)
-        .with_particle(Particle::new("peg", 1.0).radius(0.2).fixed())
-        .with_particle(Particle::new("B", 1.0).radius(0.1).position([0.0, 0.3]))
+    // B is the ball resting on the peg; A is dropped on it.
+    let scene = ball_over_peg(0.3, 1.0)
         .with_particle(Particle::new("A", 1.0).radius(0.1).position([0.0, top]))
         .with_integrator(Integrator::Rk4, h);
     let mut simulation = Simulation::new(&scene).expect("a valid scene");
@@ -576,9 +568,9 @@ fn a_ball_dropped_on_a_ball_resting_on_a_peg_bounces_back_to_its_height() {
 /// caught at the step's start, its approach taken away, and then held by the floor's
 /// normal force for the step: it sits exactly on the floor, still, while sliding on at
 /// its horizontal speed (no friction): after each of ten steps y = r and its vertical
-/// speed is 0 to rounding (1e-15), and x = 0.3 t at 0.3 m/s. Were the slow approach left to the resting solver
-/// at the step's end, the ball would sink 1e-5 m a step; were it treated as an impact,
-/// it would bounce at e times it.
+/// speed is 0 to rounding (1e-15), and x = 0.3 t at 0.3 m/s. Were the slow approach left
+/// to the resting solver at the step's end, the ball would sink 1e-5 m a step; were it
+/// treated as an impact, it would bounce at e times it.
 #[test]
 fn a_ball_sinking_slowly_onto_the_floor_is_caught_and_sits_on_it_exactly() {
     let world = box_with_a_floor(1.0);

@@ -98,7 +98,7 @@ pub(crate) fn measure(forces: &ForceModel, state: &State) -> Diagnostics {
             if forces.is_fixed(i) && forces.is_fixed(j) {
                 continue;
             }
-            let r = state.position[i].distance(state.position[j]);
+            let r = forces.pair_distance(state.position[i], state.position[j]);
             if forces.tree.is_none() {
                 energy.gravitation += gravitation::potential(g, forces.mass[i], forces.mass[j], r);
             }
@@ -120,7 +120,7 @@ fn tree_gravitation(forces: &ForceModel, state: &State, g: f64, theta: f64) -> f
     }
     let x = &state.position;
     let all = crate::forces::tree::potential_energy(
-        g,
+        (g, forces.softening2),
         theta,
         &forces.interacting,
         (x, &forces.mass),
@@ -135,8 +135,8 @@ fn tree_gravitation(forces: &ForceModel, state: &State, g: f64, theta: f64) -> f
     let mut both_fixed = 0.0;
     for (n, &i) in fixed.iter().enumerate() {
         for &j in &fixed[n + 1..] {
-            both_fixed +=
-                gravitation::potential(g, forces.mass[i], forces.mass[j], x[i].distance(x[j]));
+            let r = forces.pair_distance(x[i], x[j]);
+            both_fixed += gravitation::potential(g, forces.mass[i], forces.mass[j], r);
         }
     }
     all - both_fixed
@@ -199,7 +199,7 @@ pub(crate) fn potential_change(forces: &ForceModel, before: &[DVec2], after: &[D
                 continue;
             }
             let pair = |x: &[DVec2]| {
-                let r = x[i].distance(x[j]);
+                let r = forces.pair_distance(x[i], x[j]);
                 gravitation::potential(g, forces.mass[i], forces.mass[j], r)
                     + coulomb::potential(k, forces.charge[i], forces.charge[j], r)
             };

@@ -24,8 +24,9 @@ pub struct FieldReadout {
 }
 
 /// The fields of `scene`'s world and particles, the particles at `positions` (the
-/// scene's own, or a running simulation's), at `point`. A particle exactly at `point`
-/// is left out: its own field there has no value.
+/// scene's own, or a running simulation's), at `point`, with the world's softening. A
+/// particle exactly at `point` is left out when there is none: its own field there has
+/// no value.
 pub fn field_at(scene: &Scene, positions: &[DVec2], point: DVec2) -> FieldReadout {
     let world = &scene.world;
     let uniform = world.gravity.to_dvec2();
@@ -46,7 +47,9 @@ pub fn field_at(scene: &Scene, positions: &[DVec2], point: DVec2) -> FieldReadou
     };
     for (particle, &x) in scene.particles.iter().zip(positions) {
         let d = x - point;
-        let r = d.length();
+        // Softened as the pair laws are: √(r² + ε²), the plain distance without.
+        let softening = world.softening;
+        let r = (d.length_squared() + softening * softening).sqrt();
         if r == 0.0 {
             continue;
         }

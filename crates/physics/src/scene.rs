@@ -439,6 +439,11 @@ pub struct World {
     pub electrostatics: bool,
     /// k, N·m²/C². Default 8.988e9.
     pub coulomb_constant: f64,
+    /// Plummer softening length ε of both pair laws, metres: a pair at distance r
+    /// pulls with G m₁ m₂ r/(r² + ε²)^{3/2} (likewise Coulomb), the force of two
+    /// smeared-out bodies, so that close passes of point stars stay finite. Default 0
+    /// (the exact inverse-square laws).
+    pub softening: f64,
     /// Coefficient of restitution of particle–particle impacts, 0..=1. Default 1.
     pub restitution: f64,
     /// An optional reflecting box.
@@ -469,6 +474,7 @@ impl Default for World {
             gravitational_constant: Self::DEFAULT_GRAVITATIONAL_CONSTANT,
             electrostatics: true,
             coulomb_constant: Self::DEFAULT_COULOMB_CONSTANT,
+            softening: 0.0,
             restitution: 1.0,
             bounds: None,
         }

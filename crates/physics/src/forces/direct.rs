@@ -63,6 +63,8 @@ struct Bodies {
     /// 1 for a body that moves, 0 for a fixed one: a pair of fixed bodies is skipped
     /// (they may even coincide).
     moves: Vec<f64>,
+    /// ε², m², added to every pair's r² (adding 0 changes no bit: r² ≥ 0).
+    softening2: f64,
 }
 
 impl Bodies {
@@ -76,6 +78,7 @@ impl Bodies {
             mass: column(),
             charge: column(),
             moves: column(),
+            softening2: 0.0,
         }
     }
 
@@ -98,21 +101,23 @@ impl Bodies {
 }
 
 /// Adds to `force` (N, indexed by particle) the gravitation (G = `g`) and Coulomb
-/// (k = `k`) forces between every pair of the particles `ids`, with positions `x`,
+/// (k = `k`) forces, softened by ε² = `softening2` (r² + ε² for r², 0 for the exact
+/// laws), between every pair of the particles `ids`, with positions `x`,
 /// masses `mass`, charges `charge`, and `fixed(i)` for a particle that never moves;
 /// on `workers`' threads for many bodies, with the same bits for any number of them.
 pub(crate) fn add_forces(
-    constants: (f64, f64),
+    constants: (f64, f64, f64),
     ids: &[usize],
     (x, mass, charge): (&[DVec2], &[f64], &[f64]),
     fixed: impl Fn(usize) -> bool,
     workers: &Workers,
     force: &mut [DVec2],
 ) {
-    let (g, k) = constants;
+    let (g, k, softening2) = constants;
     let n = ids.len();
     let padded = padded_len(n);
     let mut bodies = Bodies::with_capacity(padded);
+    bodies.softening2 = softening2;
     for &i in ids {
         bodies.x.push(x[i].x);
         bodies.y.push(x[i].y);
@@ -164,12 +169,13 @@ fn blocks(n: usize) -> Vec<usize> {
 }
 
 /// The force on body i (x, y, G mᵢ, k qᵢ, moves) from body j (x, y, mⱼ, qⱼ, moves), N:
-/// (dx, dy) times (G mᵢ mⱼ − k qᵢ qⱼ) / r³, or zero when neither moves.
+/// (dx, dy) times (G mᵢ mⱼ − k qᵢ qⱼ) / (r² + ε²)^{3/2}, or zero when neither moves;
+/// `softening2` is ε².
 #[inline]
-fn pull(i: (f64, f64, f64, f64, f64), j: (f64, f64, f64, f64, f64)) -> (f64, f64) {
+fn pull(i: (f64, f64, f64, f64, f64), j: (f64, f64, f64, f64, f64), softening2: f64) -> (f64, f64) {
     let ((xi, yi, gmi, kqi, moves_i), (xj, yj, mj, qj, moves_j)) = (i, j);
     let (dx, dy) = (xj - xi, yj - yi);
-    let r2 = dx * dx + dy * dy;
+    let r2 = dx * dx + dy * dy + softening2;
     let strength = gmi * mj - kqi * qj;
     let s = strength / (r2 * r2.sqrt());
     let s = if moves_i + moves_j > 0.0 { s } else { 0.0 };
@@ -232,7 +238,8 @@ impl WithSimd for Rows<'_> {
             }
             let (mut tx, mut ty) = (0.0, 0.0);
             for j in j..n {
-                let (px, py) = pull(body, (b.x[j], b.y[j], b.mass[j], b.charge[j], b.moves[j]));
+                let partner = (b.x[j], b.y[j], b.mass[j], b.charge[j], b.moves[j]);
+                let (px, py) = pull(body, partner, b.softening2);
                 tx += px;
                 ty += py;
                 fx[j] -= px;
@@ -291,7 +298,7 @@ fn groups<S: Simd, const FIXED: bool>(
 }
 
 /// For vector `k` of the group from `j`: dx, dy, the pair's strength G mᵢ mⱼ − k qᵢ qⱼ
-/// and r³. For a `FIXED` body i, a fixed partner's strength is 0 and its r³ 1 (two
+/// and r³ (softened: (r² + ε²)^{3/2}). For a `FIXED` body i, a fixed partner's strength is 0 and its r³ 1 (two
 /// fixed bodies may coincide: the shared division stays finite).
 #[inline(always)]
 fn geometry<S: Simd, const FIXED: bool>(
@@ -303,7 +310,10 @@ fn geometry<S: Simd, const FIXED: bool>(
 ) -> (S::f64s, S::f64s, S::f64s, S::f64s) {
     let dx = simd.sub_f64s(lanes::<S>(&b.x, j)[k], xi);
     let dy = simd.sub_f64s(lanes::<S>(&b.y, j)[k], yi);
-    let r2 = simd.add_f64s(simd.mul_f64s(dx, dx), simd.mul_f64s(dy, dy));
+    let r2 = simd.add_f64s(
+        simd.add_f64s(simd.mul_f64s(dx, dx), simd.mul_f64s(dy, dy)),
+        simd.splat_f64s(b.softening2),
+    );
     let strength = simd.sub_f64s(
         simd.mul_f64s(gmi, lanes::<S>(&b.mass, j)[k]),
         simd.mul_f64s(kqi, lanes::<S>(&b.charge, j)[k]),
@@ -390,6 +400,7 @@ mod tests {
             b.kq.push(8.988e9 * b.charge[i as usize]);
             b.moves.push(if i == 5 || i == 6 { 0.0 } else { 1.0 });
         }
+        b.softening2 = 0.7;
         let plain = forces_in(pulp::Scalar::new(), &b);
         assert!(
             plain
@@ -414,8 +425,12 @@ mod tests {
         assert_eq!(dispatched, plain);
     }
 
-    /// The plain loop the kernel replaced: one pair at a time, in order.
-    fn one_pair_at_a_time(g: f64, k: f64, bodies: &[(DVec2, f64, f64, bool)]) -> Vec<DVec2> {
+    /// The plain loop the kernel replaced: one pair at a time, in order, with the
+    /// pair laws softened by ε² = `softening2`.
+    fn one_pair_at_a_time(
+        (g, k, softening2): (f64, f64, f64),
+        bodies: &[(DVec2, f64, f64, bool)],
+    ) -> Vec<DVec2> {
         let mut force = vec![DVec2::ZERO; bodies.len()];
         for (i, &(xi, mi, qi, fixed_i)) in bodies.iter().enumerate() {
             for (j, &(xj, mj, qj, fixed_j)) in bodies.iter().enumerate().skip(i + 1) {
@@ -423,7 +438,7 @@ mod tests {
                     continue;
                 }
                 let d = xj - xi;
-                let r2 = d.length_squared();
+                let r2 = d.length_squared() + softening2;
                 let f = d * ((g * mi * mj - k * qi * qj) / (r2 * r2.sqrt()));
                 force[i] += f;
                 force[j] -= f;
@@ -437,7 +452,9 @@ mod tests {
     /// force within 1e-12 of the plain loop's, relative to the sum of the magnitudes of
     /// the pair forces on the body (the scale rounding works at; a net force can cancel
     /// to far less). The fixed pair that coincides gives no NaN, nor a body at the
-    /// origin, where the padding sits (a pair with the padding is masked out).
+    /// origin, where the padding sits (a pair with the padding is masked out). With the
+    /// exact laws and with a softening of 3 m (against a box of 100 m: most pairs feel
+    /// it, the nearest ones by orders of magnitude).
     #[test]
     fn the_lanes_agree_with_one_pair_at_a_time() {
         let mut seed = 12_345_u64;
@@ -460,36 +477,39 @@ mod tests {
         // At the padding's own place: its pairs with the padding must stay masked.
         bodies[190] = (DVec2::ZERO, 3.0, 2e-4, false);
         let (g, k) = (6.674e-11, 8.988e9);
-        let expected = one_pair_at_a_time(g, k, &bodies);
         let ids: Vec<usize> = (0..bodies.len()).collect();
         let x: Vec<DVec2> = bodies.iter().map(|b| b.0).collect();
         let mass: Vec<f64> = bodies.iter().map(|b| b.1).collect();
         let charge: Vec<f64> = bodies.iter().map(|b| b.2).collect();
-        let mut force = vec![DVec2::ZERO; bodies.len()];
-        add_forces(
-            (g, k),
-            &ids,
-            (&x, &mass, &charge),
-            |i| bodies[i].3,
-            &Workers::default(),
-            &mut force,
-        );
-        for i in 0..bodies.len() {
-            let scale: f64 = (0..bodies.len())
-                .filter(|&j| j != i && !(bodies[i].3 && bodies[j].3))
-                .map(|j| {
-                    let (a, b) = (bodies[i], bodies[j]);
-                    (g * a.1 * b.1 - k * a.2 * b.2).abs() / a.0.distance_squared(b.0)
-                })
-                .sum();
-            let error = force[i].distance(expected[i]) / scale;
-            assert!(force[i].is_finite(), "body {i}: {}", force[i]);
-            assert!(
-                error < 1e-12,
-                "body {i}: {} against {} ({error:e})",
-                force[i],
-                expected[i]
+        for softening2 in [0.0, 9.0] {
+            let expected = one_pair_at_a_time((g, k, softening2), &bodies);
+            let mut force = vec![DVec2::ZERO; bodies.len()];
+            add_forces(
+                (g, k, softening2),
+                &ids,
+                (&x, &mass, &charge),
+                |i| bodies[i].3,
+                &Workers::default(),
+                &mut force,
             );
+            for i in 0..bodies.len() {
+                let scale: f64 = (0..bodies.len())
+                    .filter(|&j| j != i && !(bodies[i].3 && bodies[j].3))
+                    .map(|j| {
+                        let (a, b) = (bodies[i], bodies[j]);
+                        let r2 = a.0.distance_squared(b.0) + softening2;
+                        (g * a.1 * b.1 - k * a.2 * b.2).abs() * a.0.distance(b.0) / (r2 * r2.sqrt())
+                    })
+                    .sum();
+                let error = force[i].distance(expected[i]) / scale;
+                assert!(force[i].is_finite(), "body {i}: {}", force[i]);
+                assert!(
+                    error < 1e-12,
+                    "body {i}, ε² = {softening2}: {} against {} ({error:e})",
+                    force[i],
+                    expected[i]
+                );
+            }
         }
     }
 }

@@ -35,6 +35,8 @@ pub(crate) struct ForceModel {
     pub gravitational_constant: Option<f64>,
     /// k when electrostatics is on.
     pub coulomb_constant: Option<f64>,
+    /// ε², m²: both pair laws read r² + ε² where they would read r² (0: the exact laws).
+    pub softening2: f64,
     /// The particles that take part in pairwise forces, ascending.
     pub interacting: Vec<usize>,
     /// Those of them with a charge, ascending.
@@ -91,6 +93,7 @@ impl ForceModel {
                 .collect(),
             gravitational_constant,
             coulomb_constant,
+            softening2: scene.world.softening * scene.world.softening,
             interacting,
             charged,
             tree: (scene.simulation.pair_forces == PairForces::Tree)
@@ -109,6 +112,12 @@ impl ForceModel {
             surface_contacts: Vec::new(),
             workers: crate::parallel::Workers::default(),
         }
+    }
+
+    /// The distance the pair laws read between points `a` and `b`: √(r² + ε²), the
+    /// plain distance when there is no softening (the same bits).
+    pub fn pair_distance(&self, a: DVec2, b: DVec2) -> f64 {
+        (a.distance_squared(b) + self.softening2).sqrt()
     }
 
     pub fn is_fixed(&self, i: usize) -> bool {
@@ -266,7 +275,7 @@ impl ForceModel {
             Some(theta) => {
                 if g != 0.0 {
                     tree::gravitation(
-                        g,
+                        (g, self.softening2),
                         theta,
                         &self.interacting,
                         (x, &self.mass),
@@ -285,7 +294,7 @@ impl ForceModel {
     /// symmetric direct sum in SIMD lanes ([`direct`]).
     fn direct(&self, x: &[DVec2], force: &mut [DVec2], g: f64, k: f64, ids: &[usize]) {
         direct::add_forces(
-            (g, k),
+            (g, k, self.softening2),
             ids,
             (x, &self.mass, &self.charge),
             |i| self.is_fixed(i),

@@ -68,12 +68,14 @@ fn add_quadrupole(q: &mut [f64; 3], m: f64, r: DVec2) {
 }
 
 /// Adds G mᵢ Σ mⱼ (xⱼ − xᵢ)/|xⱼ − xᵢ|³ to `force[i]` for each body i of `bodies`, with
-/// the sum over the other bodies approximated as above.
+/// the sum over the other bodies approximated as above; `(g, softening2)` are G and ε²,
+/// which stands beside every r² (Plummer softening: r² + ε² in a near pair's law and in
+/// a far cell's expansion, where it changes the quadrupole's term by a part in r²/ε²).
 ///
 /// Each body's sum is its own, so the bodies are shared out among `workers`' threads
 /// with the same bits for any number of them.
 pub(crate) fn gravitation(
-    g: f64,
+    (g, softening2): (f64, f64),
     theta: f64,
     bodies: &[usize],
     (x, mass): (&[DVec2], &[f64]),
@@ -84,20 +86,21 @@ pub(crate) fn gravitation(
         return;
     }
     let accelerations = per_body(theta, bodies, (x, mass), workers, |lists, i| {
-        (i, lists.acceleration(x[i]))
+        (i, lists.acceleration(x[i], softening2))
     });
     for (i, a) in accelerations {
         force[i] += a * (g * mass[i]);
     }
 }
 
-/// The gravitational potential energy of `bodies`, −G Σ mᵢ mⱼ / rᵢⱼ over their pairs,
+/// The gravitational potential energy of `bodies`, −G Σ mᵢ mⱼ / rᵢⱼ over their pairs
+/// (softened: rᵢⱼ² + ε² for rᵢⱼ², with `(g, softening2)` G and ε²),
 /// with each body's potential summed through the tree as its force is (monopole and
 /// quadrupole of each cell far enough away): the energy to the accuracy of the forces.
 /// The bodies are shared out among `workers`' threads and their terms added in order:
 /// the same bits for any number of threads.
 pub(crate) fn potential_energy(
-    g: f64,
+    (g, softening2): (f64, f64),
     theta: f64,
     bodies: &[usize],
     (x, mass): (&[DVec2], &[f64]),
@@ -107,7 +110,7 @@ pub(crate) fn potential_energy(
         return 0.0;
     }
     let terms = per_body(theta, bodies, (x, mass), workers, |lists, i| {
-        mass[i] * lists.inverse_distance_sum(x[i])
+        mass[i] * lists.inverse_distance_sum(x[i], softening2)
     });
     // Each pair is counted from both ends.
     -0.5 * g * terms.iter().sum::<f64>()
@@ -344,21 +347,23 @@ impl Tree {
 impl Interactions {
     /// Σ mⱼ (xⱼ − xᵢ)/|xⱼ − xᵢ|³ over the other bodies, approximated (per kg and per G):
     /// a far cell's monopole and quadrupole, the near bodies one at a time.
-    fn acceleration(&self, p: DVec2) -> DVec2 {
+    fn acceleration(&self, p: DVec2, softening2: f64) -> DVec2 {
         Arch::new().dispatch(Sum {
             lists: self,
             p,
+            softening2,
             potential: false,
         })
     }
 
     /// Σ mⱼ / |xⱼ − xᵢ| over the other bodies, approximated like [`Self::acceleration`]:
     /// a far cell's monopole and quadrupole, M/|D| + (DᵀQD)/(2|D|⁵) (per kg and per G).
-    fn inverse_distance_sum(&self, p: DVec2) -> f64 {
+    fn inverse_distance_sum(&self, p: DVec2, softening2: f64) -> f64 {
         Arch::new()
             .dispatch(Sum {
                 lists: self,
                 p,
+                softening2,
                 potential: true,
             })
             .x
@@ -372,6 +377,8 @@ impl Interactions {
 struct Sum<'a> {
     lists: &'a Interactions,
     p: DVec2,
+    /// ε², beside every r².
+    softening2: f64,
     potential: bool,
 }
 
@@ -383,22 +390,24 @@ impl WithSimd for Sum<'_> {
         let Sum {
             lists,
             p,
+            softening2,
             potential,
         } = self;
+        let at = (p, softening2);
         let mut sums = ([0.0; LANES], [0.0; LANES]);
         let plain = pulp::Scalar::new();
         let tail = add_terms(
             simd,
             &lists.far,
             &mut sums,
-            |cell| far_term(simd, p, cell, potential),
-            |cell| far_term(plain, p, cell, potential),
+            |cell| far_term(simd, at, cell, potential),
+            |cell| far_term(plain, at, cell, potential),
         ) + add_terms(
             simd,
             &lists.near,
             &mut sums,
-            |body| near_term(simd, p, body, potential),
-            |body| near_term(plain, p, body, potential),
+            |body| near_term(simd, at, body, potential),
+            |body| near_term(plain, at, body, potential),
         );
         DVec2::new(sum_lanes(&sums.0), sum_lanes(&sums.1)) + tail
     }
@@ -436,9 +445,15 @@ fn add_terms<S: Simd, const K: usize>(
 
 /// A far cell's pull on a body at `p` per kg and per G, with D from the body to the
 /// cell's centre: M D/|D|³ − Q D/|D|⁵ + (5/2)(DᵀQD) D/|D|⁷ (monopole and quadrupole),
-/// or in x M/|D| + (DᵀQD)/(2|D|⁵) when `potential`.
+/// or in x M/|D| + (DᵀQD)/(2|D|⁵) when `potential`; |D|² is softened to |D|² + ε²
+/// (`at` is p and ε²).
 #[inline(always)]
-fn far_term<S: Simd>(simd: S, p: DVec2, cell: [S::f64s; 6], potential: bool) -> (S::f64s, S::f64s) {
+fn far_term<S: Simd>(
+    simd: S,
+    (p, softening2): (DVec2, f64),
+    cell: [S::f64s; 6],
+    potential: bool,
+) -> (S::f64s, S::f64s) {
     let [cx, cy, m, xx, xy, yy] = cell;
     let (add, sub, mul) = (
         |a, b| simd.add_f64s(a, b),
@@ -448,7 +463,7 @@ fn far_term<S: Simd>(simd: S, p: DVec2, cell: [S::f64s; 6], potential: bool) -> 
     let splat = |value| simd.splat_f64s(value);
     let dx = sub(cx, splat(p.x));
     let dy = sub(cy, splat(p.y));
-    let r2 = add(mul(dx, dx), mul(dy, dy));
+    let r2 = add(add(mul(dx, dx), mul(dy, dy)), splat(softening2));
     let (qdx, qdy) = (add(mul(xx, dx), mul(xy, dy)), add(mul(xy, dx), mul(yy, dy)));
     let dqd = add(mul(dx, qdx), mul(dy, qdy));
     let inverse_r2 = simd.div_f64s(splat(1.0), r2);
@@ -470,11 +485,12 @@ fn far_term<S: Simd>(simd: S, p: DVec2, cell: [S::f64s; 6], potential: bool) -> 
 }
 
 /// A near body's pull on a body at `p` per kg and per G, m D/|D|³, or in x m/|D| when
-/// `potential`; nothing from a body at `p` itself.
+/// `potential`, with |D|² softened to |D|² + ε² (`at` is p and ε²); nothing from a body
+/// at `p` itself.
 #[inline(always)]
 fn near_term<S: Simd>(
     simd: S,
-    p: DVec2,
+    (p, softening2): (DVec2, f64),
     body: [S::f64s; 3],
     potential: bool,
 ) -> (S::f64s, S::f64s) {
@@ -482,8 +498,9 @@ fn near_term<S: Simd>(
     let zero = simd.splat_f64s(0.0);
     let dx = simd.sub_f64s(bx, simd.splat_f64s(p.x));
     let dy = simd.sub_f64s(by, simd.splat_f64s(p.y));
-    let r2 = simd.add_f64s(simd.mul_f64s(dx, dx), simd.mul_f64s(dy, dy));
-    let other = simd.greater_than_f64s(r2, zero);
+    let d2 = simd.add_f64s(simd.mul_f64s(dx, dx), simd.mul_f64s(dy, dy));
+    let other = simd.greater_than_f64s(d2, zero);
+    let r2 = simd.add_f64s(d2, simd.splat_f64s(softening2));
     let r = simd.sqrt_f64s(r2);
     if potential {
         let value = simd.div_f64s(m, r);
@@ -500,16 +517,21 @@ mod tests {
 
     /// The sums at one point, in vectors of `simd`'s width: the pull, and the
     /// inverse-distance sum.
+    /// A softening that every sum below feels.
+    const SOFTENING2: f64 = 0.4;
+
     fn sums_in<S: Simd>(simd: S, lists: &Interactions, p: DVec2) -> (DVec2, DVec2) {
         let pull = Sum {
             lists,
             p,
+            softening2: SOFTENING2,
             potential: false,
         }
         .with_simd(simd);
         let potential = Sum {
             lists,
             p,
+            softening2: SOFTENING2,
             potential: true,
         }
         .with_simd(simd);
@@ -556,7 +578,10 @@ mod tests {
             }
         }
         assert_eq!(
-            (lists.acceleration(p), lists.inverse_distance_sum(p)),
+            (
+                lists.acceleration(p, SOFTENING2),
+                lists.inverse_distance_sum(p, SOFTENING2)
+            ),
             (plain.0, plain.1.x)
         );
     }

@@ -222,6 +222,15 @@ pub const WORLD: &[Field<World>] = &[
         "The Coulomb constant"
     ),
     number!(
+        "softening",
+        "softening",
+        softening,
+        Rule::NonNegative,
+        "m",
+        Some("0.0"),
+        "Plummer softening ε of gravitation and Coulomb: force ∝ r/(r² + ε²)^(3/2), finite in close passes"
+    ),
+    number!(
         "restitution",
         "restitution",
         restitution,

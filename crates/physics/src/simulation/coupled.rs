@@ -178,6 +178,7 @@ fn restricted(forces: &ForceModel, members: &[usize], local: &[Option<u32>]) -> 
         uniform: members.iter().map(|&i| forces.uniform[i]).collect(),
         gravitational_constant: forces.gravitational_constant,
         coulomb_constant: forces.coulomb_constant,
+        softening2: forces.softening2,
         interacting: forces.interacting.iter().filter_map(pick).collect(),
         charged: forces.charged.iter().filter_map(pick).collect(),
         tree: forces.tree,

@@ -444,6 +444,10 @@ pub struct World {
     /// smeared-out bodies, so that close passes of point stars stay finite. Default 0
     /// (the exact inverse-square laws).
     pub softening: f64,
+    /// Whether particles strike and rest on each other. Default true; false lets them
+    /// pass through each other (a star cluster's softened points), while ramps and the
+    /// bounds still stop them.
+    pub collisions: bool,
     /// Coefficient of restitution of particle–particle impacts, 0..=1. Default 1.
     pub restitution: f64,
     /// An optional reflecting box.
@@ -475,6 +479,7 @@ impl Default for World {
             electrostatics: true,
             coulomb_constant: Self::DEFAULT_COULOMB_CONSTANT,
             softening: 0.0,
+            collisions: true,
             restitution: 1.0,
             bounds: None,
         }

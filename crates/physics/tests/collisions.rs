@@ -597,3 +597,65 @@ fn a_ball_sinking_slowly_onto_the_floor_is_caught_and_sits_on_it_exactly() {
         );
     }
 }
+
+/// `[world] collisions = false`: two balls of 0.5 m sent at each other along nearly the
+/// same line at 2 m/s pass through each other on their straight lines (x = x₀ + v t,
+/// to 1e-12 m at t = 2, when they have crossed), and still bounce off the bounds'
+/// walls (elastic, e = 1): the one going right meets the wall at x = 9.5 at t = 6.25
+/// and is back at 8.0 at t = 7, to 1e-9 m (the impact is located to 1e-9 s). With
+/// collisions, they would have struck each other at t ≈ 1.3.
+#[test]
+fn without_collisions_balls_pass_through_each_other_and_still_bounce_off_walls() {
+    let mut world = no_forces();
+    world.collisions = false;
+    world.bounds = Some(physics::Bounds {
+        min: [-10.0, -10.0].into(),
+        max: [10.0, 10.0].into(),
+    });
+    let scene = Scene::new()
+        .with_world(world)
+        .with_particle(
+            Particle::new("a", 1.0)
+                .position([-3.0, 0.0])
+                .velocity([2.0, 0.0]),
+        )
+        .with_particle(
+            Particle::new("b", 1.0)
+                .position([3.0, 0.1])
+                .velocity([-2.0, 0.0]),
+        );
+    let mut simulation = Simulation::new(&scene).expect("a valid scene");
+    simulation.step_to(2.0).expect("no failure");
+    let x = simulation.positions();
+    assert!(x[0].distance(DVec2::new(1.0, 0.0)) < 1e-12, "a at {}", x[0]);
+    assert!(
+        x[1].distance(DVec2::new(-1.0, 0.1)) < 1e-12,
+        "b at {}",
+        x[1]
+    );
+    simulation.step_to(7.0).expect("no failure");
+    let x = simulation.positions();
+    assert!(x[0].distance(DVec2::new(8.0, 0.0)) < 1e-9, "a at {}", x[0]);
+    assert!(x[1].distance(DVec2::new(-8.0, 0.1)) < 1e-9, "b at {}", x[1]);
+}
+
+/// `[world] collisions = false`: a ball of 0.1 m set on top of another on the floor
+/// (touching, at rest) does not rest on it but falls through it onto the floor, where
+/// both lie at y = r after 1 s (it falls 0.2 m in 0.2 s; restitution 0.5 and the resting
+/// solver settle it well within the rest), to 1e-6 m. With collisions it would stay at
+/// y = 3r.
+#[test]
+fn without_collisions_a_ball_falls_through_another_onto_the_floor() {
+    let mut world = box_with_a_floor(2.0);
+    world.gravity = [0.0, -9.81].into();
+    world.collisions = false;
+    let scene = Scene::new()
+        .with_world(world)
+        .with_particle(Particle::new("below", 1.0).radius(0.1).position([0.0, 0.1]))
+        .with_particle(Particle::new("above", 1.0).radius(0.1).position([0.0, 0.3]));
+    let mut simulation = Simulation::new(&scene).expect("a valid scene");
+    simulation.step_to(1.0).expect("no failure");
+    for (name, p) in ["below", "above"].iter().zip(simulation.positions()) {
+        assert!((p.y - 0.1).abs() < 1e-6, "{name} at {p}");
+    }
+}

@@ -182,6 +182,7 @@ gravitational_constant = 1e-3
 electrostatics = true
 coulomb_constant = 0.1
 softening = 0.125
+collisions = false
 restitution = 0.25
 bounds = { min = [-5.5, -1e3], max = [55.5, 100.1] }
 [simulation]
@@ -228,16 +229,21 @@ follow = "p2"
     .expect("the scene is valid")
 }
 
-/// `softening`, added to version 1 for star clusters: read and checked like every number
-/// (0 or more, with its position), and written only when it is not 0, so that a file
-/// which does not use it saves exactly as it did before the key existed.
+/// `softening` and `collisions`, added to version 1 for star clusters: read and checked
+/// like every number (0 or more, with its position), and written only when not at their
+/// defaults, so that a file which does not use them saves exactly as it did before the
+/// keys existed.
 #[test]
 fn softening_is_checked_and_written_only_when_used() {
     let plain = "version = 1\n[[particle]]\nmass = 1\nposition = [0, 0]\n";
     let scene = Scene::from_toml(plain).expect("valid");
     assert_eq!(scene.world.softening, 0.0, "the exact laws by default");
     for format in [SceneFormat::Toml, SceneFormat::Json] {
-        assert!(!scene.to_text(format).contains("softening"), "{format:?}");
+        let text = scene.to_text(format);
+        assert!(
+            !text.contains("softening") && !text.contains("collisions"),
+            "{format:?}"
+        );
     }
     let soft = Scene::from_toml(
         &plain.replace("version = 1\n", "version = 1\n[world]\nsoftening = 0.05\n"),

@@ -307,6 +307,9 @@ impl Contacts {
 
     /// The pairs whose swept boxes overlap and that do not touch, ascending.
     fn swept_candidates(&mut self, start: &State, h: f64, forces: &ForceModel) -> Vec<(u32, u32)> {
+        if !self.collisions {
+            return Vec::new();
+        }
         // Touching pairs are the resting solver's: both lists are ascending, so one walk
         // through the touching list takes them out.
         let mut touching = self.touching.pairs.as_slice();
@@ -425,6 +428,10 @@ impl Contacts {
         forces: &ForceModel,
         found: &mut Vec<Event>,
     ) {
+        if !self.collisions {
+            self.search_obstacles(p, time, h, found);
+            return;
+        }
         let bounds = Aabb::around(&self.search.paths[p].after(time, h), self.radius[p]);
         if !self.proxies.fat(p).contains(&bounds) && !self.search.escaped.contains(&(p as u32)) {
             self.search.escaped.push(p as u32);

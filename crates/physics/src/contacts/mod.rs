@@ -108,6 +108,9 @@ pub(crate) struct Contacts {
     radius: std::sync::Arc<[f64]>,
     /// Particle–particle restitution.
     restitution: f64,
+    /// Whether particles strike and rest on each other (`[world] collisions`): without,
+    /// no pair of particles is ever looked for, and only the obstacles stop them.
+    collisions: bool,
     /// The largest acceleration seen in the last step, m/s².
     acceleration_scale: f64,
     proxies: Proxies,
@@ -146,6 +149,7 @@ impl Contacts {
             obstacles,
             radius: scene.particles.iter().map(|p| p.radius).collect(),
             restitution: scene.world.restitution,
+            collisions: scene.world.collisions,
             acceleration_scale: forces
                 .uniform
                 .iter()

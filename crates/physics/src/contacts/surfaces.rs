@@ -120,12 +120,17 @@ impl Contacts {
         let radius = &self.radius;
         let (position, velocity) = (&state.position, &state.velocity);
         self.touching.pairs.clear();
-        let candidates = self.proxies.update(
-            &self.boxes,
-            |i| fat_margin(radius[i], velocity[i], h),
-            |i, j| forces.is_fixed(i) && forces.is_fixed(j),
-            &self.workers,
-        );
+        // Without collisions no pair of particles touches: the broad phase is not asked.
+        let candidates: &[(u32, u32)] = if self.collisions {
+            self.proxies.update(
+                &self.boxes,
+                |i| fat_margin(radius[i], velocity[i], h),
+                |i, j| forces.is_fixed(i) && forces.is_fixed(j),
+                &self.workers,
+            )
+        } else {
+            &[]
+        };
         let boxes = &self.boxes;
         self.touching
             .pairs

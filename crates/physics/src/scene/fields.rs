@@ -230,6 +230,13 @@ pub const WORLD: &[Field<World>] = &[
         Some("0.0"),
         "Plummer softening ε of gravitation and Coulomb: force ∝ r/(r² + ε²)^(3/2), finite in close passes"
     ),
+    boolean!(
+        "collisions",
+        "collisions between particles",
+        collisions,
+        "true",
+        "Particles strike and rest on each other; false: they pass through each other (ramps and bounds still stop them)"
+    ),
     number!(
         "restitution",
         "restitution",

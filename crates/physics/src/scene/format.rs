@@ -305,18 +305,15 @@ impl Scene {
 /// A section's fields as written: every field in table order, optional ones only when
 /// set.
 /// Keys added to version 1 after files were first written: a writer leaves each out
-/// while it holds its default (0), so a file saved without using it reads, and is
-/// written, exactly as before the key existed.
-const WRITTEN_WHEN_USED: &[&str] = &["softening"];
+/// while it holds its default, so a file saved without using it reads, and is written,
+/// exactly as before the key existed.
+const WRITTEN_WHEN_USED: &[&str] = &["softening", "collisions"];
 
 fn out_fields<T>(fields: &[Field<T>], target: &T) -> Vec<(&'static str, Out)> {
     fields
         .iter()
         .filter_map(|f| {
             let out = match (f.get)(target) {
-                FieldValue::Number(x) if x == 0.0 && WRITTEN_WHEN_USED.contains(&f.key) => {
-                    return None;
-                }
                 FieldValue::Number(x) => Out::Number(x),
                 FieldValue::Vector(v) => Out::Vector(v),
                 FieldValue::Bool(b) => Out::Bool(b),
@@ -327,7 +324,8 @@ fn out_fields<T>(fields: &[Field<T>], target: &T) -> Vec<(&'static str, Out)> {
                 FieldValue::Color(color) => Out::Text(color?.to_hex()),
                 FieldValue::Bounds(bounds) => Out::Bounds(bounds?),
             };
-            Some((f.key, out))
+            let unused = WRITTEN_WHEN_USED.contains(&f.key) && f.default == Some(&out.to_toml());
+            (!unused).then_some((f.key, out))
         })
         .collect()
 }

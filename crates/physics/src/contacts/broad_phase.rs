@@ -233,18 +233,21 @@ impl BroadPhase {
                 };
                 partners.clear();
                 let (column, row) = (c as usize % grid.columns, c as usize / grid.columns);
+                let bi = &boxes[i];
+                // Tested first, sorted after: in a dense cluster a particle's 3 × 3
+                // cells hold ten times as many boxes as overlap its own, and sorting
+                // them all took a fifth of a step.
                 for y in row.saturating_sub(1)..=(row + 1).min(grid.rows - 1) {
                     for x in column.saturating_sub(1)..=(column + 1).min(grid.columns - 1) {
-                        partners.extend(grid.members(x, y).iter().filter(|&&j| j as usize > i));
+                        partners.extend(grid.members(x, y).iter().filter(|&&j| {
+                            j as usize > i
+                                && bi.overlaps(&boxes[j as usize])
+                                && !skip(i, j as usize)
+                        }));
                     }
                 }
                 partners.sort_unstable();
-                let bi = &boxes[i];
-                for &j in &partners {
-                    if bi.overlaps(&boxes[j as usize]) && !skip(i, j as usize) {
-                        pairs.push((i as u32, j));
-                    }
-                }
+                pairs.extend(partners.iter().map(|&j| (i as u32, j)));
             }
         });
         self.pair_oversized(boxes, &skip);

@@ -375,8 +375,8 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
                 momentum: [get(Total::MomentumX), get(Total::MomentumY)],
             }
         }
-        (Some(simulation), _, _) => {
-            let d = simulation.diagnostics();
+        (Some(_), _, _) => {
+            let d = runner.diagnostics().unwrap_or_default();
             Energies {
                 kinetic: d.energy.kinetic,
                 potential: vec![

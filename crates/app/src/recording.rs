@@ -9,7 +9,7 @@
 //! halves as it grows. At a 1 ms step the first samples are 5 ms apart; a two-particle
 //! scene keeps that resolution for about three hours of simulated time.
 
-use physics::{DVec2, ImpactRecord, Of, Quantity, Simulation, Total};
+use physics::{DVec2, Diagnostics, ImpactRecord, Of, Quantity, Simulation, Total};
 
 /// Numbers kept at most: 32 MiB of f64.
 pub const BUDGET: usize = 1 << 22;
@@ -100,15 +100,16 @@ impl Recording {
         self.names.iter().position(|n| n == name)
     }
 
-    /// Takes a sample if this step is one of the recorded instants.
-    pub fn after_step(&mut self, simulation: &Simulation) {
+    /// Takes a sample if this step is one of the recorded instants; returns the system's
+    /// diagnostics when it did (the readouts show them without computing them again).
+    pub fn after_step(&mut self, simulation: &Simulation) -> Option<Diagnostics> {
         let steps = simulation.steps_taken() - self.first_step;
-        if steps.is_multiple_of(self.stride) {
-            self.sample(simulation);
-        }
+        steps
+            .is_multiple_of(self.stride)
+            .then(|| self.sample(simulation))
     }
 
-    fn sample(&mut self, simulation: &Simulation) {
+    fn sample(&mut self, simulation: &Simulation) -> Diagnostics {
         if self.data.len() + self.width > self.budget.max(2 * self.width) {
             self.thin();
         }
@@ -135,6 +136,7 @@ impl Recording {
             Total::MomentumX => d.momentum.x,
             Total::MomentumY => d.momentum.y,
         }));
+        d
     }
 
     /// Keeps samples 0, 2, 4, …: the instants of twice the stride.

@@ -202,6 +202,9 @@ impl Contacts {
                     .fold(0.0, f64::max),
                 f64::max,
             );
+        if !self.collisions && self.obstacles.is_empty() {
+            return None; // nothing a particle could strike: no paths to build
+        }
         self.start_paths(start, end, h);
         profiler.lap(Stage::TimeOfImpact);
         let candidates = self.swept_candidates(start, h, forces);

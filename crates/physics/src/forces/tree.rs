@@ -225,16 +225,20 @@ impl Tree {
         let half = side / 2.0;
         let middle = corner + DVec2::splat(half);
         let quarter = |p: DVec2| usize::from(p.x >= middle.x) + 2 * usize::from(p.y >= middle.y);
+        // A stable counting sort: one pass counts the quarters, one places the bodies.
+        let mut counts = [0; 4];
+        for &i in &self.order[start..end] {
+            counts[quarter(x[i])] += 1;
+        }
+        let mut next = [0, counts[0], counts[0] + counts[1], 0];
+        next[3] = next[2] + counts[2];
+        let ends = [0, 1, 2, 3].map(|q| start + next[q] + counts[q]);
         scratch.clear();
-        let mut ends = [0; 4];
-        for (q, end_of_quarter) in ends.iter_mut().enumerate() {
-            scratch.extend(
-                self.order[start..end]
-                    .iter()
-                    .copied()
-                    .filter(|&i| quarter(x[i]) == q),
-            );
-            *end_of_quarter = start + scratch.len();
+        scratch.resize(end - start, 0);
+        for &i in &self.order[start..end] {
+            let slot = &mut next[quarter(x[i])];
+            scratch[*slot] = i;
+            *slot += 1;
         }
         self.order[start..end].copy_from_slice(scratch);
         let mut first = start;

@@ -121,6 +121,8 @@ pub struct App {
     launch: Launch,
     frame_times: Vec<f64>,
     last_frame: Option<Instant>,
+    /// When the measured frames began, and the simulated time then.
+    measured_from: Option<(Instant, f64)>,
     shown_title: String,
     /// The user agreed to quit with unsaved changes.
     quitting: bool,
@@ -170,6 +172,7 @@ impl App {
             launch: Launch::default(),
             frame_times: Vec::new(),
             last_frame: None,
+            measured_from: None,
             shown_title: String::new(),
             quitting: false,
             forget_entries: false,
@@ -1306,6 +1309,8 @@ impl App {
         {
             self.frame_times
                 .push(now.duration_since(last).as_secs_f64());
+            // The speed over the whole measurement, from its first frame.
+            self.measured_from.get_or_insert((now, self.time()));
         }
         ui.ctx().request_repaint();
         if let Some(every) = self.launch.report_every.filter(|&e| e > 0)
@@ -1339,6 +1344,11 @@ impl App {
                 reason = "an index within the list"
             )]
             let percentile = |p: f64| times[((times.len() - 1) as f64 * p).round() as usize];
+            let speed = self
+                .measured_from
+                .map_or(self.runner.achieved, |(from, t)| {
+                    (self.time() - t) / now.duration_since(from).as_secs_f64()
+                });
             #[expect(
                 clippy::print_stdout,
                 reason = "the measurement is the output of this mode"
@@ -1353,7 +1363,7 @@ impl App {
                     1.0 / mean,
                     percentile(0.5) * 1000.0,
                     percentile(0.95) * 1000.0,
-                    self.runner.achieved,
+                    speed,
                 );
             }
             self.launch.measure_frames = None;

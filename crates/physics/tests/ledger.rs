@@ -115,8 +115,8 @@ fn impacts_take_what_a_bouncing_ball_loses() {
     assert!(residual.abs() < 1e-11, "residual {residual} J");
 }
 
-/// The books of `scene` over `seconds`, sampled every 10 ms: the largest |residual|
-/// relative to the starting energy.
+/// The largest |energy + dissipated − E₀| / |E₀| over `seconds`, sampled every 10 ms;
+/// every residual must be a number.
 fn worst_residual(scene: &Scene, seconds: f64) -> f64 {
     let mut simulation = Simulation::new(scene).expect("a valid scene");
     simulation.keep_ledger();
@@ -127,6 +127,12 @@ fn worst_residual(scene: &Scene, seconds: f64) -> f64 {
         simulation.step_to(next).expect("steps");
         let ledger = simulation.ledger().expect("kept");
         let residual = simulation.diagnostics().energy.total() + ledger.total() - start;
+        // `f64::max` passes a NaN by: a residual that is not a number must fail here.
+        assert!(
+            residual.is_finite(),
+            "t = {}: residual {residual}",
+            simulation.time()
+        );
         worst = worst.max(residual.abs() / start.abs());
     }
     worst

@@ -130,6 +130,30 @@ test("a shared link opens its scene; a corrupted one shows the error", async () 
   await context.close();
 });
 
+test("the 20,000-star cluster is drawn and plays in the browser", async () => {
+  const { page, context, errors } = await open("#example=star-cluster");
+  let s = await status(page);
+  assert.equal(s.name, "Star cluster of 20,000");
+  assert.equal(s.particles, 20000);
+  // Its stars are painted into one picture of the canvas (a texture): it must show. The
+  // middle of the canvas is inside the disc, covered by stars of the palette's colours;
+  // there the orbit example leaves 96 % of the pixels the canvas's background.
+  const png = PNG.sync.read(await page.screenshot({ clip: { x: 350, y: 330, width: 160, height: 160 } }));
+  let background = 0;
+  for (let i = 0; i < png.data.length; i += 4) {
+    if (png.data[i] >= 245 && png.data[i + 1] >= 245 && png.data[i + 2] >= 240) background++;
+  }
+  const share = background / (png.data.length / 4);
+  console.log(`star cluster: ${(100 * share).toFixed(1)} % of the canvas's middle is background`);
+  assert.ok(share < 0.5, `the stars are drawn (${(100 * share).toFixed(1)} % background)`);
+  await page.keyboard.press("Space");
+  await page.waitForFunction(() => window.newtonlab_status().time >= 0.1, null, { timeout: 30000 });
+  s = await status(page);
+  assert.ok(s.playing, "playing");
+  assert.deepEqual(errors, [], "no console errors");
+  await context.close();
+});
+
 test("the scene being edited survives a reload", async () => {
   const { page, context } = await open("#example=collision");
   const before = (await status(page)).particles;

@@ -58,6 +58,12 @@ fn energy_error(
             .step_to(f64::from(k) * period / f64::from(samples_per_orbit))
             .expect("the orbit integrates");
         let error = specific_energy(simulation) - start;
+        // Not `f64::max`, which passes a NaN by.
+        assert!(
+            error.is_finite(),
+            "energy error {error} at t = {}",
+            simulation.time()
+        );
         worst = worst.max(error.abs());
         sum += error;
         count += 1.0;

@@ -155,7 +155,13 @@ fn double_pendulum_energy_error(lower_angle: f64, time_step: f64) -> f64 {
                 simulation.time()
             );
         }
-        worst = worst.max((energy(&simulation) - initial).abs());
+        let drift = (energy(&simulation) - initial).abs();
+        assert!(
+            drift.is_finite(),
+            "energy {drift} at t = {}",
+            simulation.time()
+        );
+        worst = worst.max(drift);
     }
     worst
 }
@@ -590,7 +596,13 @@ fn a_triple_pendulum_keeps_its_energy_and_its_lengths() {
         ] {
             assert!((length - 1.0).abs() < 1e-12, "{which} rod {length} m");
         }
-        worst = worst.max((simulation.diagnostics().energy.total() - initial).abs());
+        let drift = (simulation.diagnostics().energy.total() - initial).abs();
+        assert!(
+            drift.is_finite(),
+            "energy {drift} at t = {}",
+            simulation.time()
+        );
+        worst = worst.max(drift);
     }
     assert!(worst < 1e-9 * 6.0 * G, "energy drifted by {worst:e} J");
 }

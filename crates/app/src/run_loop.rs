@@ -92,6 +92,25 @@ fn readout_key(simulation: &Simulation, d: Diagnostics) -> (u64, f64, Diagnostic
     (simulation.steps_taken(), simulation.time(), d)
 }
 
+/// What a step leaves besides the state: its impacts and, when due, a sample in the
+/// recording (whose diagnostics the readouts then show) and a keyframe.
+fn keep_step(
+    simulation: &mut Simulation,
+    recording: &mut Option<Recording>,
+    timeline: &mut Option<Timeline>,
+    readout: &RefCell<Option<(u64, f64, Diagnostics)>>,
+) {
+    if let Some(recording) = recording {
+        recording.note_impacts(simulation.take_impacts());
+        if let Some(d) = recording.after_step(simulation) {
+            readout.replace(Some(readout_key(simulation, d)));
+        }
+    }
+    if let Some(timeline) = timeline {
+        timeline.after_step(simulation);
+    }
+}
+
 impl Runner {
     /// The energies and momentum of the simulation's current state, for the readouts:
     /// computed once per step shown (see the `readout` field).
@@ -174,17 +193,12 @@ impl Runner {
         }
         if let Some(simulation) = self.simulation.as_mut() {
             match simulation.step() {
-                Ok(()) => {
-                    if let Some(recording) = &mut self.recording {
-                        recording.note_impacts(simulation.take_impacts());
-                        if let Some(d) = recording.after_step(simulation) {
-                            self.readout.replace(Some(readout_key(simulation, d)));
-                        }
-                    }
-                    if let Some(timeline) = &mut self.timeline {
-                        timeline.after_step(simulation);
-                    }
-                }
+                Ok(()) => keep_step(
+                    simulation,
+                    &mut self.recording,
+                    &mut self.timeline,
+                    &self.readout,
+                ),
                 Err(error) => self.failure = Some(error.to_string()),
             }
         }
@@ -220,15 +234,12 @@ impl Runner {
                 self.playing = false;
                 break;
             }
-            if let Some(recording) = &mut self.recording {
-                recording.note_impacts(simulation.take_impacts());
-                if let Some(d) = recording.after_step(simulation) {
-                    self.readout.replace(Some(readout_key(simulation, d)));
-                }
-            }
-            if let Some(timeline) = &mut self.timeline {
-                timeline.after_step(simulation);
-            }
+            keep_step(
+                simulation,
+                &mut self.recording,
+                &mut self.timeline,
+                &self.readout,
+            );
             self.debt -= step;
             steps += 1;
             if clock.elapsed().as_secs_f64() > budget {
@@ -248,11 +259,12 @@ impl Runner {
         // and several times the truth.
         self.window.0 += simulation.time() - start_time;
         self.window.1 += real_dt;
-        if self.window.1 >= ACHIEVED_WINDOW || self.achieved == 0.0 && self.window.1 > 0.0 {
-            self.achieved = self.window.0 / self.window.1;
-        }
-        if self.window.1 >= ACHIEVED_WINDOW {
-            self.window = (0.0, 0.0);
+        let (simulated, real) = self.window;
+        if real >= ACHIEVED_WINDOW || self.achieved == 0.0 && real > 0.0 {
+            self.achieved = simulated / real;
+            if real >= ACHIEVED_WINDOW {
+                self.window = (0.0, 0.0);
+            }
         }
         if trails {
             self.record_trails();

@@ -45,11 +45,11 @@ pub fn field_at(scene: &Scene, positions: &[DVec2], point: DVec2) -> FieldReadou
     } else {
         0.0
     };
+    // Softened as the pair laws are: √(r² + ε²), the plain distance without.
+    let softening2 = world.softening * world.softening;
     for (particle, &x) in scene.particles.iter().zip(positions) {
         let d = x - point;
-        // Softened as the pair laws are: √(r² + ε²), the plain distance without.
-        let softening = world.softening;
-        let r = (d.length_squared() + softening * softening).sqrt();
+        let r = (d.length_squared() + softening2).sqrt();
         if r == 0.0 {
             continue;
         }

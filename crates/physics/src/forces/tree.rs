@@ -70,7 +70,7 @@ fn add_quadrupole(q: &mut [f64; 3], m: f64, r: DVec2) {
 /// Adds G mᵢ Σ mⱼ (xⱼ − xᵢ)/|xⱼ − xᵢ|³ to `force[i]` for each body i of `bodies`, with
 /// the sum over the other bodies approximated as above; `(g, softening2)` are G and ε²,
 /// which stands beside every r² (Plummer softening: r² + ε² in a near pair's law and in
-/// a far cell's expansion, where it changes the quadrupole's term by a part in r²/ε²).
+/// a far cell's expansion, where it changes the quadrupole's term by a part in ε²/r²).
 ///
 /// Each body's sum is its own, so the bodies are shared out among `workers`' threads
 /// with the same bits for any number of them.
@@ -230,9 +230,11 @@ impl Tree {
         for &i in &self.order[start..end] {
             counts[quarter(x[i])] += 1;
         }
-        let mut next = [0, counts[0], counts[0] + counts[1], 0];
-        next[3] = next[2] + counts[2];
-        let ends = [0, 1, 2, 3].map(|q| start + next[q] + counts[q]);
+        let mut next = [0; 4];
+        for q in 1..4 {
+            next[q] = next[q - 1] + counts[q - 1];
+        }
+        let ends: [usize; 4] = std::array::from_fn(|q| start + next[q] + counts[q]);
         scratch.clear();
         scratch.resize(end - start, 0);
         for &i in &self.order[start..end] {
@@ -449,8 +451,7 @@ fn add_terms<S: Simd, const K: usize>(
 
 /// A far cell's pull on a body at `p` per kg and per G, with D from the body to the
 /// cell's centre: M D/|D|³ − Q D/|D|⁵ + (5/2)(DᵀQD) D/|D|⁷ (monopole and quadrupole),
-/// or in x M/|D| + (DᵀQD)/(2|D|⁵) when `potential`; |D|² is softened to |D|² + ε²
-/// (`at` is p and ε²).
+/// or in x M/|D| + (DᵀQD)/(2|D|⁵) when `potential`; |D|² is softened to |D|² + ε².
 #[inline(always)]
 fn far_term<S: Simd>(
     simd: S,
@@ -489,8 +490,7 @@ fn far_term<S: Simd>(
 }
 
 /// A near body's pull on a body at `p` per kg and per G, m D/|D|³, or in x m/|D| when
-/// `potential`, with |D|² softened to |D|² + ε² (`at` is p and ε²); nothing from a body
-/// at `p` itself.
+/// `potential`, with |D|² softened to |D|² + ε²; nothing from a body at `p` itself.
 #[inline(always)]
 fn near_term<S: Simd>(
     simd: S,

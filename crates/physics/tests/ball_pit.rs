@@ -73,4 +73,12 @@ fn the_ball_pit_settles() {
         kinetic < 1e-3 * initial,
         "still moving: kinetic energy {kinetic} J"
     );
+    // The balls on the floor press into it by about 0.1 mm; the state saved here (what
+    // `--save-state` and the app's "edit from here" write) is still a scene that opens.
+    let saved = simulation.saved_state(&scene);
+    assert_eq!(
+        saved.validate(),
+        [],
+        "the settled pit saved is not a valid scene"
+    );
 }

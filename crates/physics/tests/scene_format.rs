@@ -447,3 +447,44 @@ fn the_docs_reference_is_the_field_table() {
         "docs/scene-format.md should contain the field reference:\n\n{reference}"
     );
 }
+
+/// A particle must lie inside the world's bounds, save for a press into a wall of up to a
+/// tenth of its radius: a ball resting on the floor of a pile sits about 1 % into it, and
+/// a saved state of that pile must open again.
+#[test]
+fn particles_lie_inside_the_bounds_up_to_a_press_into_a_wall() {
+    let scene = |x: f64, y: f64| {
+        format!(
+            "version = 1\n[world]\nbounds = {{ min = [0, 0], max = [10, 10] }}\n\
+             [[particle]]\nname = \"A\"\nmass = 1\nradius = 1\nposition = [{x}, {y}]\n"
+        )
+    };
+    for (x, y) in [
+        (5.0, 5.0),
+        (1.0, 1.0),
+        (9.0, 9.0),
+        (0.95, 5.0),
+        (5.0, 9.05),
+        (0.905, 9.095),
+    ] {
+        assert!(
+            Scene::from_toml(&scene(x, y)).is_ok(),
+            "a ball at ({x}, {y}) is inside, or pressed less than a tenth of its radius into a wall"
+        );
+    }
+    for (x, y) in [
+        (0.85, 5.0),
+        (5.0, 9.2),
+        (5.0, -3.0),
+        (12.0, 5.0),
+        (0.5, 0.5),
+    ] {
+        assert_eq!(
+            problems(&scene(x, y)),
+            [format!(
+                "8:12 particle 'A': position [{x}, {y}] puts the particle (radius 1) outside the world bounds"
+            )],
+            "a ball at ({x}, {y}) reaches out of the box"
+        );
+    }
+}

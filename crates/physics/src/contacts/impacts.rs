@@ -497,8 +497,17 @@ impl Contacts {
     /// The first impact of particle `p` with each obstacle after `after` seconds.
     fn search_obstacles(&self, p: usize, after: f64, h: f64, found: &mut Vec<Event>) {
         let from = after;
-        let path = self.path_after(p, from, h);
-        let bounds = Aabb::around(&path, self.radius[p]);
+        // A path not changed since the step's start has its swept box already: most
+        // particles are clear of every obstacle, and need nothing else.
+        let mut path = None;
+        let bounds = if from == 0.0 && self.search.versions[p] == 0 {
+            self.boxes[p]
+        } else {
+            Aabb::around(
+                path.insert(self.search.paths[p].after(from, h)),
+                self.radius[p],
+            )
+        };
         for (k, obstacle) in self.obstacles.iter().enumerate() {
             if obstacle.shape.clear_of_box(bounds.min, bounds.max)
                 || self
@@ -509,6 +518,7 @@ impl Contacts {
             {
                 continue;
             }
+            let path = path.get_or_insert_with(|| self.search.controls[p]);
             let reach = self.radius[p] + half_thickness(&obstacle.shape);
             if obstacle.shape.distance(path[0]).0 - self.radius[p] <= TOUCHING * reach {
                 continue;
@@ -517,7 +527,7 @@ impl Contacts {
             let first = regions[..count]
                 .iter()
                 .flatten()
-                .filter_map(|region| earliest_entry(region, &path))
+                .filter_map(|region| earliest_entry(region, path))
                 .fold(f64::INFINITY, f64::min);
             if first.is_finite() {
                 found.push(Event {

@@ -26,6 +26,8 @@
 
 use std::sync::Arc;
 
+use glam::DVec2;
+
 use crate::constraints::Constraints;
 use crate::contacts::{Impact, Members};
 use crate::forces::{ForceModel, SpringLink, spring::End};
@@ -67,7 +69,7 @@ struct Scratch {
     /// from it ([`Scratch::move_to`]).
     integrated: Option<f64>,
     base: State,
-    base_acceleration: Vec<glam::DVec2>,
+    base_acceleration: Vec<DVec2>,
 }
 
 /// How near (a fraction of the step) an instant must be to the last one the coupled
@@ -168,8 +170,7 @@ impl Scratch {
             && (time - integrated).abs() <= CARRIED * h
         {
             if self.base_acceleration.is_empty() {
-                self.base_acceleration
-                    .resize(self.base.len(), glam::DVec2::ZERO);
+                self.base_acceleration.resize(self.base.len(), DVec2::ZERO);
                 self.forces.accelerations(
                     &self.base.position,
                     &self.base.velocity,

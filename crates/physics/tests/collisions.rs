@@ -202,14 +202,15 @@ fn newtons_cradle_passes_the_blow_to_the_last_ball() {
 /// (x, vx). Gravity sets the resting speed, 2 g h = 0.01962 m/s at the 1 ms step.
 fn balls_on_a_floor(restitution: f64, balls: &[(f64, f64)]) -> Scene {
     let mut scene = Scene::new().with_world(World {
+        gravitation: false,
+        electrostatics: false,
         restitution,
         bounds: Some(Bounds {
             min: Vector::cartesian(-20.0, 0.0),
             max: Vector::cartesian(20.0, 10.0),
         }),
-        ..no_forces()
+        ..World::default()
     });
-    scene.world.gravity = Vector::cartesian(0.0, -9.81);
     for (i, &(x, vx)) in balls.iter().enumerate() {
         scene = scene.with_particle(
             Particle::new(format!("ball {i}"), 1.0)

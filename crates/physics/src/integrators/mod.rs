@@ -180,6 +180,47 @@ pub(crate) fn advance_exactly(
     work.start_acceleration = None;
 }
 
+/// The acceleration at a state that several integrations start from, once the first of
+/// them computed it (rk4's first stage): the coupled system integrates from one impact's
+/// state to the step's end and again to the next impact.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct KnownStart {
+    acceleration: Vec<DVec2>,
+    known: bool,
+}
+
+impl KnownStart {
+    /// The state integrations start from changed: its acceleration is not known.
+    pub fn forget(&mut self) {
+        self.known = false;
+    }
+}
+
+/// [`advance_exactly`] from a state integrated from before with the same `start`: with
+/// rk4 the first of its four evaluations is the one already made, with the same bits.
+/// Other methods integrate as [`advance_exactly`] does.
+pub(crate) fn advance_exactly_from(
+    method: Integrator,
+    forces: &ForceModel,
+    state: &mut State,
+    h: f64,
+    work: &mut Workspace,
+    start: &mut KnownStart,
+) {
+    if method != Integrator::Rk4 {
+        advance_exactly(method, forces, state, h, work);
+        return;
+    }
+    work.start_acceleration = None;
+    let known = start.known.then_some(start.acceleration.as_slice());
+    rk4::step_knowing(forces, state, h, work, known);
+    if !start.known {
+        start.acceleration.clone_from(&work.accelerations[0]);
+        start.known = true;
+    }
+    state.time += h;
+}
+
 /// Advances `state` by one step of at most `max_step` seconds (exactly `max_step` for
 /// the fixed-step methods) and returns the step taken, seconds.
 pub(crate) fn advance(

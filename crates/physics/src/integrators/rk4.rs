@@ -6,11 +6,26 @@
 //! 1,000 steps per period) that it is the best default for teaching. Exact for constant
 //! acceleration. Four force evaluations per step.
 
+use glam::DVec2;
+
 use crate::forces::ForceModel;
 use crate::integrators::Workspace;
 use crate::state::State;
 
 pub(crate) fn step(forces: &ForceModel, state: &mut State, h: f64, work: &mut Workspace) {
+    step_knowing(forces, state, h, work, None);
+}
+
+/// [`step`] from a state whose acceleration is known already (`start`, as a step from
+/// the same state computed it): the first of the four evaluations is skipped, with the
+/// same bits. After any step, `work.accelerations[0]` is the acceleration at its start.
+pub(crate) fn step_knowing(
+    forces: &ForceModel,
+    state: &mut State,
+    h: f64,
+    work: &mut Workspace,
+    start: Option<&[DVec2]>,
+) {
     let n = state.len();
     work.prepare(4, n);
     let Workspace {
@@ -31,7 +46,10 @@ pub(crate) fn step(forces: &ForceModel, state: &mut State, h: f64, work: &mut Wo
             }
         }
         kv[s].copy_from_slice(&stage.velocity);
-        forces.accelerations(&stage.position, &stage.velocity, &mut ka[s]);
+        match start {
+            Some(known) if s == 0 => ka[0].copy_from_slice(known),
+            _ => forces.accelerations(&stage.position, &stage.velocity, &mut ka[s]),
+        }
     }
     let sixth = h / 6.0;
     for i in 0..n {

@@ -667,7 +667,7 @@ impl Simulation {
             .map(|applied| impact_energy_lost(applied, w))
             .sum();
         let settled = kinetic - self.forces.kinetic_energy(&self.state.velocity);
-        ledger.impacts += caught + in_step + settled - moved;
+        ledger.impacts += caught + in_step + self.contacts.caught_in_step + settled - moved;
     }
 
     /// Integrates from the step's start to the instant of `impact`, first estimated at

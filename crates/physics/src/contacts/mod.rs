@@ -127,6 +127,9 @@ pub(crate) struct Contacts {
     coupled: Vec<bool>,
     /// The impacts applied in this step.
     pub applied: Vec<Applied>,
+    /// The kinetic energy taken in this step by catching coupled particles that an impact
+    /// inside it left sinking slowly into their surfaces (`simulation/coupled.rs`), J.
+    pub caught_in_step: f64,
 }
 
 /// An impact as it was applied.
@@ -170,6 +173,7 @@ impl Contacts {
                 })
                 .collect(),
             applied: Vec::new(),
+            caught_in_step: 0.0,
         }
     }
 
@@ -205,7 +209,7 @@ impl Contacts {
             .count()
     }
 
-    fn resting_speed(&self, h: f64) -> f64 {
+    pub fn resting_speed(&self, h: f64) -> f64 {
         2.0 * self.acceleration_scale * h + 1e-12
     }
 

@@ -32,7 +32,7 @@ use glam::DVec2;
 
 use crate::constraints::Constraints;
 use crate::contacts::{Impact, Members};
-use crate::forces::{ForceModel, SpringLink, spring::End};
+use crate::forces::{ForceModel, SpringLink, SurfaceContact, spring::End};
 use crate::integrators::{self, Integrator, KnownStart, Workspace};
 use crate::profile::Stage;
 use crate::state::State;
@@ -276,10 +276,12 @@ impl Simulation {
     /// the first of them, each at its instant on the coupled system's integrated state,
     /// and goes on with the impact search after each (see the module doc). Returns the
     /// step taken: `taken`, or the instant of an impact that drove a coupled particle
-    /// into the surface it rests on, where the step then ends (so that the next step
-    /// starts with that impact, as it did when every coupled impact ended the step: the
-    /// surface's support of a sinking coupled particle is not constant over the step, and
-    /// the energy ledger could not book its work).
+    /// into the surface it rests on faster than a resting contact's speed, where the step
+    /// then ends (so that the next step starts with that impact, as it did when every
+    /// coupled impact ended the step: the surface's support of a sinking coupled particle
+    /// is not constant over the step, and the energy ledger could not book its work). A
+    /// slower one is caught on its surface at once ([`catch_on_surfaces`]), as the next
+    /// step's start would, and the step goes on.
     pub(super) fn coupled_impacts_in_step(&mut self, first: (f64, Impact), taken: f64) -> f64 {
         let Some(system) = self.coupled.as_mut() else {
             return taken;
@@ -310,13 +312,17 @@ impl Simulation {
                 .contacts
                 .strike_coupled(impact, time, taken, &mut at, &self.forces)
             {
-                if drives_into_surface(impact, &self.forces, &local, &scratch.at) {
+                let resting_speed = self.contacts.resting_speed(taken);
+                let caught =
+                    catch_on_surfaces(impact, &self.forces, &local, &mut scratch.at, resting_speed);
+                let Some(energy) = caught else {
                     write_members(&members, &scratch.at, &mut self.state);
                     self.contacts.end_at(time, taken, &mut self.state, &local);
                     self.state.time = self.start.time + time;
                     self.work.start_acceleration = None;
                     return time;
-                }
+                };
+                self.contacts.caught_in_step += energy;
                 scratch.restart(time, taken, method);
                 self.contacts.restart_paths(
                     &members,
@@ -351,17 +357,41 @@ fn write_members(members: &[usize], members_state: &State, state: &mut State) {
     }
 }
 
-/// Whether `impact` left one of its coupled particles moving into a surface it rests on
-/// (`at`: the coupled system's state just after).
-fn drives_into_surface(
+/// After `impact` (`at`: the coupled system's state just after it): `None` when it left one
+/// of its coupled particles moving into a surface it rests on faster than `resting_speed`,
+/// for which the step must end there (the next step's start applies that impact).
+/// Otherwise each of them moving into its surface more slowly is caught there, as the
+/// next step's start would catch it: its velocity into the surface is taken away (an
+/// impact that slow has no restitution), and the kinetic energy that took, joules, is
+/// returned. Without the catch such a particle would sink through the rest of the step,
+/// whose support the ledger could not book; ending the step for it cost a whole pass
+/// through the pipeline (half the steps that ended early in the mixed scene).
+fn catch_on_surfaces(
     impact: Impact,
     forces: &ForceModel,
     local: &[Option<u32>],
-    at: &State,
-) -> bool {
-    forces.surface_contacts.iter().any(|contact| {
-        impact.involves(contact.particle)
-            && local[contact.particle]
-                .is_some_and(|k| at.velocity[k as usize].dot(contact.normal) < 0.0)
-    })
+    at: &mut State,
+    resting_speed: f64,
+) -> Option<f64> {
+    let into = |contact: &SurfaceContact, at: &State| {
+        let k = local[contact.particle]? as usize;
+        impact
+            .involves(contact.particle)
+            .then(|| (k, -at.velocity[k].dot(contact.normal)))
+    };
+    if forces
+        .surface_contacts
+        .iter()
+        .any(|contact| into(contact, at).is_some_and(|(_, approach)| approach > resting_speed))
+    {
+        return None;
+    }
+    let mut energy = 0.0;
+    for contact in &forces.surface_contacts {
+        if let Some((k, approach)) = into(contact, at).filter(|&(_, approach)| approach > 0.0) {
+            at.velocity[k] += contact.normal * approach;
+            energy += 0.5 * forces.mass[contact.particle] * approach * approach;
+        }
+    }
+    Some(energy)
 }

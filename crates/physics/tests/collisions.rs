@@ -372,6 +372,50 @@ fn impacts_chained_inside_one_step_are_each_at_their_instant() {
     );
 }
 
+/// A ball whose path an impact turned is searched again from where it now goes, even
+/// where particles pass through each other (collisions off, so no pair is searched):
+/// at 10 m/s it strikes the wall at x = 6 (its centre at 5.5) at 0.05 s, crosses the box
+/// back and strikes the wall at x = −10 at 1.55 s, all inside one step of 2 s. At 2 s it
+/// is at −9.5 + 10 × 0.45 = −5 m, moving at 10 m/s, to rounding. (The box its first path
+/// swept ends at x = 4.5: a search that kept it would find the far wall clear.)
+#[test]
+fn a_ball_turned_by_a_wall_meets_the_far_wall_in_the_same_step_without_collisions() {
+    let scene = Scene::new()
+        .with_world(without_collisions([-10.0, -5.0], [6.0, 5.0]))
+        .with_integrator(Integrator::Rk4, 2.0)
+        .with_particle(
+            Particle::new("A", 1.0)
+                .position([5.0, 0.0])
+                .velocity([10.0, 0.0]),
+        );
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.record_impacts();
+    simulation.step_to(2.0).unwrap();
+    let times: Vec<f64> = simulation.take_impacts().iter().map(|i| i.time).collect();
+    assert_eq!(times.len(), 2, "two impacts: {times:?}");
+    for (time, theory) in times.iter().zip([0.05, 1.55]) {
+        assert!(
+            (time - theory).abs() < 1e-12,
+            "impact at {time} s, theory {theory} s"
+        );
+    }
+    assert_states(
+        &simulation,
+        &[(DVec2::new(-5.0, 0.0), DVec2::new(10.0, 0.0))],
+    );
+}
+
+/// No forces, no collisions between particles, and walls from `min` to `max`.
+fn without_collisions(min: [f64; 2], max: [f64; 2]) -> physics::World {
+    let mut world = no_forces();
+    world.collisions = false;
+    world.bounds = Some(physics::Bounds {
+        min: min.into(),
+        max: max.into(),
+    });
+    world
+}
+
 /// Each ball's position and velocity against theory, to 1e-11: rounding over the ten
 /// metres these tests travel.
 fn assert_states(simulation: &Simulation, expected: &[(DVec2, DVec2)]) {
@@ -679,14 +723,8 @@ fn a_ball_sinking_slowly_onto_the_floor_is_caught_and_sits_on_it_exactly() {
 /// collisions, they would have struck each other at t ≈ 1.3.
 #[test]
 fn without_collisions_balls_pass_through_each_other_and_still_bounce_off_walls() {
-    let mut world = no_forces();
-    world.collisions = false;
-    world.bounds = Some(physics::Bounds {
-        min: [-10.0, -10.0].into(),
-        max: [10.0, 10.0].into(),
-    });
     let scene = Scene::new()
-        .with_world(world)
+        .with_world(without_collisions([-10.0, -10.0], [10.0, 10.0]))
         .with_particle(
             Particle::new("a", 1.0)
                 .position([-3.0, 0.0])

@@ -431,11 +431,15 @@ impl Contacts {
         forces: &ForceModel,
         found: &mut Vec<Event>,
     ) {
+        // Each box holds its particle's path from its last change to the step's end, so
+        // two that do not overlap cannot meet from here on (nor a box and an obstacle
+        // it is clear of).
+        let bounds = Aabb::around(&self.search.paths[p].after(time, h), self.radius[p]);
+        self.boxes[p] = bounds;
         if !self.collisions {
             self.search_obstacles(p, time, h, found);
             return;
         }
-        let bounds = Aabb::around(&self.search.paths[p].after(time, h), self.radius[p]);
         if !self.proxies.fat(p).contains(&bounds) && !self.search.escaped.contains(&(p as u32)) {
             self.search.escaped.push(p as u32);
         }
@@ -450,6 +454,7 @@ impl Contacts {
         for &q in &neighbours {
             let q = q as usize;
             if q == p
+                || !bounds.overlaps(&self.boxes[q])
                 || (forces.is_fixed(p) && forces.is_fixed(q))
                 || self.touching.by_particle.contains(p, q as u32)
             {
@@ -497,17 +502,9 @@ impl Contacts {
     /// The first impact of particle `p` with each obstacle after `after` seconds.
     fn search_obstacles(&self, p: usize, after: f64, h: f64, found: &mut Vec<Event>) {
         let from = after;
-        // A path not changed since the step's start has its swept box already: most
+        // Its swept box holds its path from its last change on (see `search_again`): most
         // particles are clear of every obstacle, and need nothing else.
-        let mut path = None;
-        let bounds = if from == 0.0 && self.search.versions[p] == 0 {
-            self.boxes[p]
-        } else {
-            Aabb::around(
-                path.insert(self.search.paths[p].after(from, h)),
-                self.radius[p],
-            )
-        };
+        let (bounds, mut path) = (self.boxes[p], None);
         for (k, obstacle) in self.obstacles.iter().enumerate() {
             if obstacle.shape.clear_of_box(bounds.min, bounds.max)
                 || self
@@ -518,7 +515,7 @@ impl Contacts {
             {
                 continue;
             }
-            let path = path.get_or_insert_with(|| self.search.controls[p]);
+            let path = path.get_or_insert_with(|| self.path_after(p, from, h));
             let reach = self.radius[p] + half_thickness(&obstacle.shape);
             if obstacle.shape.distance(path[0]).0 - self.radius[p] <= TOUCHING * reach {
                 continue;

@@ -29,6 +29,7 @@
 
 use glam::DVec2;
 
+use super::{larger, smaller};
 use crate::parallel::Workers;
 
 /// An axis-aligned box.
@@ -100,7 +101,8 @@ impl Grid {
         // Truncation is the floor once negatives are clamped to 0 (and NaN goes to 0):
         // `f64::floor` is a call into libm on baseline x86-64, and this runs twice per
         // particle per step.
-        let c = ((p - self.origin) / self.cell).max(DVec2::ZERO);
+        let c = (p - self.origin) / self.cell;
+        let c = DVec2::new(larger(c.x, 0.0), larger(c.y, 0.0));
         (
             (c.x as usize).min(self.columns - 1),
             (c.y as usize).min(self.rows - 1),
@@ -120,8 +122,8 @@ impl Grid {
         for (i, b) in boxes.iter().enumerate() {
             let size = b.max - b.min;
             if b.min.is_finite() && b.max.is_finite() && size.max_element() <= self.cell {
-                lo = lo.min(b.min);
-                hi = hi.max(b.min);
+                lo = DVec2::new(smaller(b.min.x, lo.x), smaller(b.min.y, lo.y));
+                hi = DVec2::new(larger(b.min.x, hi.x), larger(b.min.y, hi.y));
                 self.cell_of.push(Some(0));
             } else {
                 oversized.push(i as u32);

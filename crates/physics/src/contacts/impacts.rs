@@ -17,7 +17,8 @@ use glam::DVec2;
 use super::broad_phase::Aabb;
 use super::time_of_impact::{Region, control_points, earliest_entry};
 use super::{
-    Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness, particles_of, velocity_changes,
+    Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness, larger, particles_of,
+    velocity_changes,
 };
 use crate::forces::ForceModel;
 use crate::profile::{Profiler, Stage};
@@ -192,16 +193,13 @@ impl Contacts {
         profiler: &mut Profiler,
     ) -> Option<(f64, Impact)> {
         let n = start.len();
-        self.acceleration_scale = (0..n)
-            .map(|i| end.velocity[i].distance(start.velocity[i]) / h)
-            .fold(
-                forces
-                    .uniform
-                    .iter()
-                    .map(|a| a.length())
-                    .fold(0.0, f64::max),
-                f64::max,
-            );
+        let field = forces
+            .uniform
+            .iter()
+            .fold(0.0, |largest, a| larger(a.length(), largest));
+        self.acceleration_scale = (0..n).fold(field, |largest, i| {
+            larger(end.velocity[i].distance(start.velocity[i]) / h, largest)
+        });
         if !self.collisions && self.obstacles.is_empty() {
             return None; // nothing a particle could strike: no paths to build
         }

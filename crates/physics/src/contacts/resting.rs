@@ -17,7 +17,7 @@
 use glam::DVec2;
 
 use super::obstacles::Obstacle;
-use super::separation;
+use super::{separation, smaller};
 use crate::state::State;
 
 /// Overlap tolerated between resting particles before positions are corrected, as a
@@ -337,7 +337,7 @@ impl RestingSolver {
             for row in &self.pairs {
                 let (i, j) = (row.i as usize, row.j as usize);
                 let (gap, normal) = pair_gap(position, radius, i, j);
-                let excess = -gap - ALLOWED_OVERLAP * radius[i].min(radius[j]);
+                let excess = -gap - ALLOWED_OVERLAP * smaller(radius[i], radius[j]);
                 let total = row.inverse_mass_i + row.inverse_mass_j;
                 if excess > 0.0 && total > 0.0 {
                     let shift = normal * (CORRECTION * excess / total);

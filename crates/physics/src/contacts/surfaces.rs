@@ -12,7 +12,7 @@
 use glam::DVec2;
 
 use super::broad_phase::Aabb;
-use super::{Applied, Contacts, Impact, TOUCHING, approach_along, fat_margin, half_thickness};
+use super::{Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness};
 use crate::forces::{ForceModel, SurfaceContact};
 use crate::profile::{Profiler, Stage};
 use crate::state::State;
@@ -28,7 +28,7 @@ pub(super) struct StartContacts {
     /// The touching pairs by particle.
     pub by_particle: Adjacency,
     /// Scratch: each touching contact and its normal.
-    pub normals: Vec<(Impact, DVec2)>,
+    pub normals: Normals,
 }
 
 impl Contacts {
@@ -164,38 +164,32 @@ impl Contacts {
     /// `resting_speed`, pass after pass until none does. A contact still approaching after
     /// many passes (a ball squeezed between two others) is made inelastic, which ends it.
     fn impacts_now(&mut self, state: &mut State, forces: &ForceModel, resting_speed: f64) -> bool {
-        // Only velocities change here, so each contact's normal is found once.
-        let mut contacts = std::mem::take(&mut self.touching.normals);
-        contacts.clear();
-        let pairs = self
-            .touching
-            .pairs
-            .iter()
-            .map(|&(i, j)| Impact::Pair(i as usize, j as usize));
-        let obstacles = self
-            .touching
-            .surfaces
-            .iter()
-            .map(|&(p, k)| Impact::Obstacle(p as usize, k as usize));
-        contacts.extend(
-            pairs
-                .chain(obstacles)
-                .map(|impact| (impact, self.measure(impact, state).1)),
-        );
+        // Only velocities change here, so each contact's normal is found once. Each pass
+        // sweeps the pairs, then the surfaces, each in a tight loop of its own (in the
+        // browser the sweep over one list of both kinds was 26 % of the time).
+        let mut normals = std::mem::take(&mut self.touching.normals);
+        normals.pairs.clear();
+        normals.surfaces.clear();
+        for &(i, j) in &self.touching.pairs {
+            let normal = self.measure(Impact::Pair(i as usize, j as usize), state).1;
+            normals.pairs.push((i, j, normal));
+        }
+        for &(p, k) in &self.touching.surfaces {
+            let normal = self
+                .measure(Impact::Obstacle(p as usize, k as usize), state)
+                .1;
+            normals.surfaces.push((p, k, normal));
+        }
         let max_passes = 2 * state.len() + 8;
         let mut changed = false;
         for pass in 0..=max_passes {
             let inelastic = pass == max_passes;
             let mut any = false;
-            for &(impact, normal) in &contacts {
-                let approach = approach_along(impact, normal, state);
-                if approach <= resting_speed {
-                    continue;
-                }
+            let mut strike = |this: &mut Self, impact, normal, approach, state: &mut State| {
                 let restitution = if inelastic {
                     0.0
                 } else {
-                    self.restitution_at(impact, approach, resting_speed)
+                    this.restitution_at(impact, approach, resting_speed)
                 };
                 let applied = Applied {
                     time: 0.0,
@@ -203,17 +197,46 @@ impl Contacts {
                     approach,
                     restitution,
                 };
-                self.strike(applied, normal, state, forces);
+                this.strike(applied, normal, state, forces);
                 any = true;
+            };
+            for &(i, j, normal) in &normals.pairs {
+                let (i, j) = (i as usize, j as usize);
+                let approach = (state.velocity[i] - state.velocity[j]).dot(normal);
+                if approach > resting_speed {
+                    strike(self, Impact::Pair(i, j), normal, approach, state);
+                }
+            }
+            for &(p, k, normal) in &normals.surfaces {
+                let p = p as usize;
+                let approach = -state.velocity[p].dot(normal);
+                if approach > resting_speed {
+                    strike(
+                        self,
+                        Impact::Obstacle(p, k as usize),
+                        normal,
+                        approach,
+                        state,
+                    );
+                }
             }
             changed |= any;
             if !any {
                 break;
             }
         }
-        self.touching.normals = contacts;
+        self.touching.normals = normals;
         changed
     }
+}
+
+/// The touching contacts' normals at the step's start, as [`Contacts::impacts_now`]
+/// sweeps them: (i, j, normal from i towards j) and (particle, obstacle, normal from the
+/// surface).
+#[derive(Clone, Debug, Default)]
+pub(super) struct Normals {
+    pairs: Vec<(u32, u32, DVec2)>,
+    surfaces: Vec<(u32, u32, DVec2)>,
 }
 
 /// Pairs listed by particle (compressed rows): each pair (i, j) under both i and j.

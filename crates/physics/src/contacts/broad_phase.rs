@@ -63,11 +63,17 @@ impl Aabb {
         }
     }
 
+    #[expect(
+        clippy::needless_bitwise_bool,
+        reason = "no branches: measured +10 % on the 1,000-ball pit"
+    )]
     pub fn overlaps(&self, other: &Self) -> bool {
-        self.min.x <= other.max.x
-            && other.min.x <= self.max.x
-            && self.min.y <= other.max.y
-            && other.min.y <= self.max.y
+        // `&`, not `&&`: four comparisons and no branch (the broad phase's filters run
+        // this on every candidate pair, twice a step, and the outcome is hard to predict).
+        (self.min.x <= other.max.x)
+            & (other.min.x <= self.max.x)
+            & (self.min.y <= other.max.y)
+            & (other.min.y <= self.max.y)
     }
 }
 

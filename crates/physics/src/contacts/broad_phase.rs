@@ -63,6 +63,19 @@ impl Aabb {
         }
     }
 
+    /// Whether this box lies inside `outer` without touching its sides (false when
+    /// either is not finite).
+    #[expect(
+        clippy::needless_bitwise_bool,
+        reason = "no branches, as in `overlaps`"
+    )]
+    pub fn strictly_inside(&self, outer: &Self) -> bool {
+        (self.min.x > outer.min.x)
+            & (self.min.y > outer.min.y)
+            & (self.max.x < outer.max.x)
+            & (self.max.y < outer.max.y)
+    }
+
     #[expect(
         clippy::needless_bitwise_bool,
         reason = "no branches: measured +10 % on the 1,000-ball pit"

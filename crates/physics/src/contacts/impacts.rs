@@ -503,7 +503,8 @@ impl Contacts {
         // Its swept box holds its path from its last change on (see `search_again`): most
         // particles are clear of every obstacle, and need nothing else.
         let (bounds, mut path) = (self.boxes[p], None);
-        for (k, obstacle) in self.obstacles.iter().enumerate() {
+        let near = self.obstacles_near(&bounds);
+        for (k, obstacle) in self.obstacles[..near].iter().enumerate() {
             if obstacle.shape.clear_of_box(bounds.min, bounds.max)
                 || self
                     .touching

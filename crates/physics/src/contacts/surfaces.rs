@@ -145,7 +145,8 @@ impl Contacts {
         profiler.lap(Stage::BroadPhase);
         self.touching.surfaces.clear();
         for p in (0..n).filter(|&p| !forces.is_fixed(p)) {
-            for (k, obstacle) in self.obstacles.iter().enumerate() {
+            let near = self.obstacles_near(&self.boxes[p]);
+            for (k, obstacle) in self.obstacles[..near].iter().enumerate() {
                 if obstacle
                     .shape
                     .clear_of_box(self.boxes[p].min, self.boxes[p].max)

@@ -180,7 +180,7 @@ impl Ord for Event {
 impl Contacts {
     /// Processes the impacts within the step from `start` to `end` (`h` seconds) in time
     /// order. Impacts among uncoupled particles are applied inside the step and `end` is
-    /// patched with their effect. The first impact involving a coupled particle stops the
+    /// patched with their effect once no coupled impact is left. The first impact involving a coupled particle stops the
     /// processing: it is returned (seconds into the step), and the caller integrates the
     /// system to that instant, lays [`Self::patch`] over it and applies [`Self::apply`].
     /// Touching contacts are the resting solver's and are not searched.
@@ -232,7 +232,7 @@ impl Contacts {
     /// Goes on processing the impacts found inside the step (see
     /// [`Self::resolve_impacts`]) after a coupled impact was applied
     /// ([`Self::strike_coupled`], [`Self::restart_paths`]): the next coupled impact is
-    /// returned, and `end` patched with the paths changed so far.
+    /// returned, or, when none is left, `end` patched with the paths impacts changed.
     pub fn resume_impacts(
         &mut self,
         end: &mut State,
@@ -262,10 +262,14 @@ impl Contacts {
             self.strike_inside(event.impact, event.time, h, None, forces, &mut found);
             self.search.queue.extend(found.drain(..).map(Reverse));
         }
-        for &p in &self.search.changed {
-            let (x, v) = self.search.paths[p as usize].at(h, h);
-            end.position[p as usize] = x;
-            end.velocity[p as usize] = v;
+        // The caller integrates again (or, for a coupled impact, resumes here) when
+        // interrupted: `end` is patched once the step's impacts are all applied.
+        if interruption.is_none() {
+            for &p in &self.search.changed {
+                let (x, v) = self.search.paths[p as usize].at(h, h);
+                end.position[p as usize] = x;
+                end.velocity[p as usize] = v;
+            }
         }
         profiler.lap(Stage::TimeOfImpact);
         interruption

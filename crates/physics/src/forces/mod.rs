@@ -145,6 +145,13 @@ impl ForceModel {
         }
     }
 
+    /// Whether every particle's acceleration is constant through a step: no pairwise
+    /// forces, springs, rods or strings, so each feels only the field, its applied
+    /// acceleration and the surfaces' answer to them (fixed for the step).
+    pub fn accelerations_are_constant(&self) -> bool {
+        self.interacting.is_empty() && self.springs.is_empty() && self.constraints.is_empty()
+    }
+
     /// The accelerations of the fields, pairwise forces and springs: everything the
     /// rods, strings and surfaces answer.
     pub fn free_accelerations(&self, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {

@@ -6,20 +6,12 @@
 //! Kept to show why better methods exist.
 
 use crate::forces::ForceModel;
-use crate::integrators::Workspace;
+use crate::integrators::{self, Workspace};
 use crate::state::State;
 
 pub(crate) fn step(forces: &ForceModel, state: &mut State, h: f64, work: &mut Workspace) {
-    work.prepare(1, state.len());
-    let a = &mut work.accelerations[0];
-    forces.accelerations(&state.position, &state.velocity, a);
-    for ((x, v), a) in state
-        .position
-        .iter_mut()
-        .zip(&mut state.velocity)
-        .zip(a.iter())
-    {
+    integrators::from_accelerations(forces, state, work, |x, v, a| {
         *x += *v * h;
-        *v += *a * h;
-    }
+        *v += a * h;
+    });
 }

@@ -235,6 +235,7 @@ pub(crate) fn advance(
         Integrator::Euler => euler::step,
         Integrator::SemiImplicitEuler => semi_implicit_euler::step,
         Integrator::Verlet => verlet::step,
+        Integrator::Rk4 if forces.accelerations_are_constant() => ballistic,
         Integrator::Rk4 => rk4::step,
         Integrator::Pefrl => pefrl::step,
         Integrator::Dopri5 => {
@@ -247,6 +248,39 @@ pub(crate) fn advance(
     fixed(forces, state, max_step, work);
     state.time += max_step;
     Ok(max_step)
+}
+
+/// rk4's step where every particle's acceleration is constant through it (the field, an
+/// applied acceleration, and the surfaces' answer to them: no pair forces, springs, rods
+/// or strings): x + v h + a h²/2, v + a h, which rk4 gives exactly for such motion, here
+/// from one evaluation instead of four (the ball pit's integration, 0 to 1 s: 12 µs a
+/// step against 3; it agrees with rk4's arithmetic to rounding, not bit for bit).
+fn ballistic(forces: &ForceModel, state: &mut State, h: f64, work: &mut Workspace) {
+    from_accelerations(forces, state, work, |x, v, a| {
+        *x += *v * h + a * (0.5 * h * h);
+        *v += a * h;
+    });
+}
+
+/// The accelerations at `state`, evaluated once, and `update` of each particle's position
+/// and velocity with its acceleration: the one-evaluation methods.
+pub(crate) fn from_accelerations(
+    forces: &ForceModel,
+    state: &mut State,
+    work: &mut Workspace,
+    update: impl Fn(&mut DVec2, &mut DVec2, DVec2),
+) {
+    work.prepare(1, state.len());
+    let a = &mut work.accelerations[0];
+    forces.accelerations(&state.position, &state.velocity, a);
+    for ((x, v), a) in state
+        .position
+        .iter_mut()
+        .zip(&mut state.velocity)
+        .zip(a.iter())
+    {
+        update(x, v, *a);
+    }
 }
 
 #[cfg(test)]

@@ -180,9 +180,9 @@ pub(crate) fn advance_exactly(
     work.start_acceleration = None;
 }
 
-/// The acceleration at a state that several integrations start from, once the first of
-/// them computed it (rk4's first stage): the coupled system integrates from one impact's
-/// state to the step's end and again to the next impact.
+/// The acceleration at a state that is used more than once, once something computed it
+/// (rk4's first stage, or [`KnownStart::of`]): the coupled system integrates from one
+/// impact's state to the step's end and again to the next impact.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct KnownStart {
     acceleration: Vec<DVec2>,
@@ -190,9 +190,21 @@ pub(crate) struct KnownStart {
 }
 
 impl KnownStart {
-    /// The state integrations start from changed: its acceleration is not known.
+    /// The state changed: its acceleration is not known.
     pub fn forget(&mut self) {
         self.known = false;
+    }
+
+    /// The acceleration at `state` under `forces`, computed the first time it is asked
+    /// for since [`Self::forget`].
+    pub fn of(&mut self, forces: &ForceModel, state: &State) -> &[DVec2] {
+        if !self.known {
+            self.acceleration.clear();
+            self.acceleration.resize(state.len(), DVec2::ZERO);
+            forces.accelerations(&state.position, &state.velocity, &mut self.acceleration);
+            self.known = true;
+        }
+        &self.acceleration
     }
 }
 

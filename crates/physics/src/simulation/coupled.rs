@@ -28,8 +28,6 @@
 
 use std::sync::Arc;
 
-use glam::DVec2;
-
 use crate::constraints::Constraints;
 use crate::contacts::{Impact, Members};
 use crate::forces::{ForceModel, SpringLink, SurfaceContact, spring::End};
@@ -73,7 +71,7 @@ struct Scratch {
     /// from it ([`Scratch::move_to`]).
     integrated: Option<f64>,
     base: State,
-    base_acceleration: Vec<DVec2>,
+    base_acceleration: KnownStart,
 }
 
 /// How near (a fraction of the step) an instant must be to the last one the coupled
@@ -134,7 +132,7 @@ impl CoupledSystem {
                 segment_start: KnownStart::default(),
                 integrated: None,
                 base: State::default(),
-                base_acceleration: Vec::new(),
+                base_acceleration: KnownStart::default(),
             })
         });
         scratch.forces.workers = forces.workers.clone();
@@ -175,14 +173,7 @@ impl Scratch {
         if let Some(integrated) = self.integrated
             && (time - integrated).abs() <= CARRIED * h
         {
-            if self.base_acceleration.is_empty() {
-                self.base_acceleration.resize(self.base.len(), DVec2::ZERO);
-                self.forces.accelerations(
-                    &self.base.position,
-                    &self.base.velocity,
-                    &mut self.base_acceleration,
-                );
-            }
+            let acceleration = self.base_acceleration.of(&self.forces, &self.base);
             let delta = time - integrated;
             self.at.clone_from(&self.base);
             self.at.time = self.base.time + delta;
@@ -191,7 +182,7 @@ impl Scratch {
                 .position
                 .iter_mut()
                 .zip(&mut self.at.velocity)
-                .zip(&self.base_acceleration)
+                .zip(acceleration)
             {
                 *x += *v * delta + *a * (0.5 * delta * delta);
                 *v += *a * delta;
@@ -209,7 +200,7 @@ impl Scratch {
         );
         self.integrated = Some(time);
         self.base.clone_from(&self.at);
-        self.base_acceleration.clear();
+        self.base_acceleration.forget();
     }
 
     /// The state in `at` (`time` seconds into a step of `h`, after an impulse) starts

@@ -406,10 +406,10 @@ fn a_ball_turned_by_a_wall_meets_the_far_wall_in_the_same_step_without_collision
 }
 
 /// No forces, no collisions between particles, and walls from `min` to `max`.
-fn without_collisions(min: [f64; 2], max: [f64; 2]) -> physics::World {
+fn without_collisions(min: [f64; 2], max: [f64; 2]) -> World {
     let mut world = no_forces();
     world.collisions = false;
-    world.bounds = Some(physics::Bounds {
+    world.bounds = Some(Bounds {
         min: min.into(),
         max: max.into(),
     });

@@ -180,9 +180,10 @@ impl Ord for Event {
 impl Contacts {
     /// Processes the impacts within the step from `start` to `end` (`h` seconds) in time
     /// order. Impacts among uncoupled particles are applied inside the step and `end` is
-    /// patched with their effect once no coupled impact is left. The first impact involving a coupled particle stops the
-    /// processing: it is returned (seconds into the step), and the caller integrates the
-    /// system to that instant, lays [`Self::patch`] over it and applies [`Self::apply`].
+    /// patched with their effect once no coupled impact is left. The first impact
+    /// involving a coupled particle stops the processing: it is returned (seconds into
+    /// the step), and the caller integrates the system to that instant, lays
+    /// [`Self::patch`] over it and applies [`Self::apply`].
     /// Touching contacts are the resting solver's and are not searched.
     pub fn resolve_impacts(
         &mut self,

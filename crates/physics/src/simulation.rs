@@ -408,6 +408,19 @@ impl Simulation {
     /// When the state becomes non-finite or the adaptive integrator fails; the state is
     /// then the one at which the failure was found.
     pub fn step_to(&mut self, time: f64) -> Result<(), SimulationError> {
+        // Run on a thread of the pool when a step has work to share out: see
+        // `Workers::inside` (entering the pool costs about 30 µs, which a small scene's
+        // step does not win back).
+        let shares = self.forces.shares_pairs() || self.state.len() >= crate::parallel::MIN_ITEMS;
+        if shares && self.contacts.workers.threads() > 1 {
+            let workers = self.contacts.workers.clone();
+            return workers.inside(|| self.step_to_here(time));
+        }
+        self.step_to_here(time)
+    }
+
+    /// [`Self::step_to`] on the calling thread.
+    fn step_to_here(&mut self, time: f64) -> Result<(), SimulationError> {
         // Every loop here is bounded: dopri5 may take many more steps than the time step
         // implies (a close pass), but not ten thousand times more: that would take seconds
         // for one step, and says the time step is far too long for the motion.

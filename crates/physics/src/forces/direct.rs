@@ -140,10 +140,15 @@ fn padded_len(n: usize) -> usize {
     n + if n > 2 * LANES { 2 * LANES } else { 0 }
 }
 
+/// Whether a sum over `n` bodies is split into blocks that the threads share.
+pub(crate) fn is_blocked(n: usize) -> bool {
+    n >= BLOCKED_FROM
+}
+
 /// The first row of each block and the end, for `n` bodies: blocks of about equal
 /// numbers of pairs (row i has n − 1 − i), one block below [`BLOCKED_FROM`].
 fn blocks(n: usize) -> Vec<usize> {
-    if n < BLOCKED_FROM {
+    if !is_blocked(n) {
         return vec![0, n];
     }
     let total = n * (n - 1) / 2;

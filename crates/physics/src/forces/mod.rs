@@ -137,6 +137,18 @@ impl ForceModel {
         }
     }
 
+    /// Whether an evaluation shares its pair sum out among threads (when there are
+    /// several): the direct sum of many bodies, or a tree over many leaves.
+    pub(crate) fn shares_pairs(&self) -> bool {
+        match self.tree {
+            None => direct::is_blocked(self.interacting.len()),
+            Some(_) => {
+                direct::is_blocked(self.charged.len())
+                    || self.interacting.len() >= crate::parallel::MIN_ITEMS
+            }
+        }
+    }
+
     /// The accelerations of every force but the surfaces'.
     fn accelerations_off_surfaces(&self, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
         self.free_accelerations(x, v, out);

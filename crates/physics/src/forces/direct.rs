@@ -102,36 +102,66 @@ pub(crate) fn add_forces(
     let (g, k, softening2) = constants;
     let n = ids.len();
     let padded = padded_len(n);
-    // Column by column: each a tight loop.
-    let column = |value: &dyn Fn(usize) -> f64| {
-        let mut column = Vec::with_capacity(padded);
-        column.extend(ids.iter().map(|&i| value(i)));
-        column
-    };
-    let mut bodies = Bodies {
-        x: column(&|i| x[i].x),
-        y: column(&|i| x[i].y),
-        gm: column(&|i| g * mass[i]),
-        kq: column(&|i| k * charge[i]),
-        mass: column(&|i| mass[i]),
-        charge: column(&|i| charge[i]),
-        moves: column(&|i| if fixed(i) { 0.0 } else { 1.0 }),
-        softening2,
-    };
-    bodies.pad_to(padded);
-    let rows = blocks(n);
-    let sums = workers.map(rows.len() - 1, |b| {
-        let (mut fx, mut fy) = (vec![0.0; padded], vec![0.0; padded]);
-        pairs(&bodies, n, rows[b]..rows[b + 1], &mut fx, &mut fy);
-        (fx, fy)
-    });
-    for (a, &i) in ids.iter().enumerate() {
-        let mut sum = DVec2::ZERO;
-        for (fx, fy) in &sums {
-            sum += DVec2::new(fx[a], fy[a]);
+    SCRATCH.with_borrow_mut(|scratch| {
+        let Scratch { bodies, fx, fy } = scratch;
+        // Column by column: each a tight loop.
+        let fill = |column: &mut Vec<f64>, value: &dyn Fn(usize) -> f64| {
+            column.clear();
+            column.extend(ids.iter().map(|&i| value(i)));
+        };
+        fill(&mut bodies.x, &|i| x[i].x);
+        fill(&mut bodies.y, &|i| x[i].y);
+        fill(&mut bodies.gm, &|i| g * mass[i]);
+        fill(&mut bodies.kq, &|i| k * charge[i]);
+        fill(&mut bodies.mass, &|i| mass[i]);
+        fill(&mut bodies.charge, &|i| charge[i]);
+        fill(&mut bodies.moves, &|i| if fixed(i) { 0.0 } else { 1.0 });
+        bodies.softening2 = softening2;
+        bodies.pad_to(padded);
+        let bodies = &*bodies;
+        let add = |sums: &[(&[f64], &[f64])], force: &mut [DVec2]| {
+            for (a, &i) in ids.iter().enumerate() {
+                let mut sum = DVec2::ZERO;
+                for (fx, fy) in sums {
+                    sum += DVec2::new(fx[a], fy[a]);
+                }
+                force[i] += sum;
+            }
+        };
+        if !is_blocked(n) {
+            // One block, on this thread, into buffers kept from call to call: the
+            // coupled group of a mixed scene (some hundred bodies) is summed tens of times
+            // a step, and allocating the columns and buffers each time was 5 % of it.
+            for buffer in [&mut *fx, &mut *fy] {
+                buffer.clear();
+                buffer.resize(padded, 0.0);
+            }
+            pairs(bodies, n, 0..n, fx, fy);
+            add(&[(fx, fy)], force);
+            return;
         }
-        force[i] += sum;
-    }
+        let rows = blocks(n);
+        let sums = workers.map(rows.len() - 1, |b| {
+            let (mut fx, mut fy) = (vec![0.0; padded], vec![0.0; padded]);
+            pairs(bodies, n, rows[b]..rows[b + 1], &mut fx, &mut fy);
+            (fx, fy)
+        });
+        let sums: Vec<(&[f64], &[f64])> = sums.iter().map(|(x, y)| (&x[..], &y[..])).collect();
+        add(&sums, force);
+    });
+}
+
+thread_local! {
+    /// The columns of the bodies and a single block's forces, kept from sum to sum.
+    static SCRATCH: std::cell::RefCell<Scratch> = std::cell::RefCell::default();
+}
+
+/// See [`SCRATCH`].
+#[derive(Default)]
+struct Scratch {
+    bodies: Bodies,
+    fx: Vec<f64>,
+    fy: Vec<f64>,
 }
 
 /// How many bodies the columns of `n` hold: 2 × [`LANES`] more for the padded tails,

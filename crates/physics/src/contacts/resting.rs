@@ -237,10 +237,12 @@ pub(crate) struct RestingSolver {
 }
 
 impl RestingSolver {
-    /// Frees the rows, which every solve builds again; the last impulses stay.
+    /// Frees the rows and their schedule, which every solve builds again; the last
+    /// impulses stay.
     pub fn drop_scratch(&mut self) {
         self.pairs = Vec::new();
         self.surfaces = Vec::new();
+        self.schedule = Schedule::default();
     }
 
     /// The bytes of the last impulses, by length.

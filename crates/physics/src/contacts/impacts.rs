@@ -113,6 +113,20 @@ impl Path {
         let ((x0, v0), (x1, v1)) = (self.start, self.end);
         let span = h - self.from;
         let p = control_points(x0, v0, x1, v1, span);
+        // From the curve's own start and with no kick (every path as the step begins, a
+        // thousand of them a step in the pit): the points themselves. The general case
+        // below gives the same numbers (a split at 0, and kicks of zero), but its
+        // arithmetic was 8 % of the time of impact (`bench --scene pit --particles 1000
+        // --seconds 1 --threads 1`: 55.4–57.0 → 50.9–51.7 µs a step, three alternating
+        // pairs); it can differ only in the sign of a zero.
+        #[expect(
+            clippy::float_cmp,
+            reason = "exactly the curve's start: no split at all"
+        )]
+        let at_start = from == self.from;
+        if at_start && self.kick == DVec2::ZERO && self.kick_moment == DVec2::ZERO {
+            return p;
+        }
         let u = if span > 0.0 {
             ((from - self.from) / span).clamp(0.0, 1.0)
         } else {

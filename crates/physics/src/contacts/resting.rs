@@ -397,11 +397,7 @@ impl RestingSolver {
 struct Schedule {
     pairs: Vec<u32>,
     surfaces: Vec<u32>,
-    /// Per particle: the level after the last row that touched it.
-    ready: Vec<u32>,
-    /// Per row: its level; then the rows per level.
-    level: Vec<u32>,
-    count: Vec<u32>,
+    levels: Levels,
 }
 
 impl Schedule {
@@ -413,16 +409,25 @@ impl Schedule {
         pairs: impl Iterator<Item = (u32, u32)>,
         surfaces: impl Iterator<Item = (u32, u32)>,
     ) {
-        let mut pair_order = std::mem::take(&mut self.pairs);
-        self.levels(n, pairs, &mut pair_order);
-        self.pairs = pair_order;
-        let mut surface_order = std::mem::take(&mut self.surfaces);
-        self.levels(n, surfaces, &mut surface_order);
-        self.surfaces = surface_order;
+        self.levels.order(n, pairs, &mut self.pairs);
+        self.levels.order(n, surfaces, &mut self.surfaces);
     }
+}
 
+/// The levels of one list of rows, and what finding them works in.
+#[derive(Clone, Debug, Default)]
+struct Levels {
+    /// Per particle: the level after the last row that touched it.
+    ready: Vec<u32>,
+    /// Per row: its level.
+    level: Vec<u32>,
+    /// Per level: its rows; after [`Levels::order`], where its rows end in the order.
+    count: Vec<u32>,
+}
+
+impl Levels {
     /// `order` becomes the rows sorted by level, ascending within a level.
-    fn levels(&mut self, n: usize, rows: impl Iterator<Item = (u32, u32)>, order: &mut Vec<u32>) {
+    fn order(&mut self, n: usize, rows: impl Iterator<Item = (u32, u32)>, order: &mut Vec<u32>) {
         self.ready.clear();
         self.ready.resize(n, 0);
         self.level.clear();
@@ -570,8 +575,8 @@ mod tests {
     /// The pairs' levels: far fewer than the rows, and no two rows of a level sharing a
     /// particle (what lets the processor overlap them); `scheduled` is their order.
     fn assert_levels_overlap_rows(n: usize, pairs: &[PairRow], scheduled: &[u32]) {
-        let (mut levels, mut pair_order) = (Schedule::default(), Vec::new());
-        levels.levels(n, pairs.iter().map(|r| (r.i, r.j)), &mut pair_order);
+        let (mut levels, mut pair_order) = (Levels::default(), Vec::new());
+        levels.order(n, pairs.iter().map(|r| (r.i, r.j)), &mut pair_order);
         assert_eq!(pair_order, scheduled);
         assert!(
             levels.count.len() < 100, // 55 for the test's 400 rows

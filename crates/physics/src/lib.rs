@@ -88,6 +88,8 @@ mod profile;
 mod scene;
 mod simulation;
 mod state;
+#[cfg(test)]
+mod testing;
 
 pub use diagnostics::{Diagnostics, Energy, ParticleReadout};
 pub use examples::{EXAMPLES, Example, example};

@@ -702,13 +702,8 @@ mod tests {
     /// keep a path that moved, and its impacts found on the old one.
     #[test]
     fn a_restarted_paths_distance_from_the_old_one_is_bounded_and_the_bound_is_tight() {
-        let mut seed = 99_u64;
-        let mut random = move || {
-            seed = seed
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 * 2.0 - 1.0
-        };
+        let mut uniform = crate::testing::uniform(99);
+        let mut random = move || uniform() * 2.0 - 1.0;
         let h = 1e-3;
         for _ in 0..2000 {
             let mut vector = |scale: f64| DVec2::new(random(), random()) * scale;

@@ -479,13 +479,7 @@ mod tests {
     /// only, or to leave its particles ready at its own level, fails it).
     #[test]
     fn the_schedule_gives_the_bits_of_ascending_order() {
-        let mut seed = 7_u64;
-        let mut random = move || {
-            seed = seed
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut random = crate::testing::uniform(7);
         let n = 60_u32;
         let inverse_mass: Vec<f64> = (0..n)
             .map(|i| if i % 10 == 3 { 0.0 } else { 0.2 + random() })

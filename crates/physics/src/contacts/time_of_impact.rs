@@ -298,13 +298,8 @@ mod tests {
     }
 
     /// 20,000 cubic paths with control points uniform in [−2, 2]², from a fixed seed.
-    fn random_paths(mut seed: u64) -> impl Iterator<Item = [DVec2; 4]> {
-        let mut random = move || {
-            seed = seed
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (seed >> 11) as f64 / (1_u64 << 53) as f64
-        };
+    fn random_paths(seed: u64) -> impl Iterator<Item = [DVec2; 4]> {
+        let mut random = crate::testing::uniform(seed);
         (0..20_000).map(move |_| {
             std::array::from_fn(|_| DVec2::new(4.0 * random() - 2.0, 4.0 * random() - 2.0))
         })

@@ -483,13 +483,7 @@ mod tests {
     /// it, the nearest ones by orders of magnitude).
     #[test]
     fn the_lanes_agree_with_one_pair_at_a_time() {
-        let mut seed = 12_345_u64;
-        let mut random = move || {
-            seed = seed
-                .wrapping_mul(6_364_136_223_846_793_005)
-                .wrapping_add(1_442_695_040_888_963_407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64
-        };
+        let mut random = crate::testing::uniform(12_345);
         let mut bodies: Vec<(DVec2, f64, f64, bool)> = (0..203)
             .map(|_| {
                 let x = DVec2::new(random() * 100.0 - 50.0, random() * 100.0 - 50.0);

@@ -155,10 +155,13 @@ fn a_pile_closes_its_books() {
 }
 
 /// The same with the paper's 4.1 mixture (every tenth ball charged, every tenth pair on a
-/// spring): impacts of coupled particles take the re-integrating road, and a position
-/// correction changes the springs' and the charges' potential energy too. Measured
-/// 5.3e-10 of E₀ at the scene's 1 ms step; held to 1e-9. The residual is a truncation
-/// error: 6.4e-9, 5.3e-10 and 5.7e-11 at 2, 1 and 0.5 ms. (It was 1.7e-11 while every
+/// spring): impacts of coupled particles are answered inside the step by what the struck
+/// ball pulls (`simulation/coupled/response.rs`), and a position correction changes the
+/// springs' and the charges' potential energy too. Measured 5.5e-10 of E₀ at the scene's
+/// 1 ms step; held to 1e-9. The residual is a truncation error: 1.9e-9, 5.5e-10, 6.0e-11
+/// and 1.3e-11 at 2, 1, 0.5 and 0.25 ms, as when each such impact integrated the coupled
+/// balls again (1.9e-9, 5.5e-10, 5.9e-11, 1.3e-11); without the answer's β term it is
+/// 2.6e-9 at 1 ms, without its α term 7.5e-7. (It was 1.7e-11 while every
 /// coupled impact ended the step; applied inside the step, a struck coupled particle on
 /// the floor keeps the support the step started with until the step's end, and the
 /// ledger books that support's work from its value at the end.)

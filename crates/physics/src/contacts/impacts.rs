@@ -630,26 +630,57 @@ impl Contacts {
         h: f64,
         forces: &ForceModel,
     ) {
-        let mut found = Vec::new();
         for (k, &p) in members.iter().enumerate() {
-            if forces.is_fixed(p) {
-                continue;
-            }
-            let path = Path {
-                from: time,
-                start: (at.position[k], at.velocity[k]),
-                end: (end.position[k], end.velocity[k]),
-                kick: DVec2::ZERO,
-                kick_moment: DVec2::ZERO,
-            };
-            if path.apart_from(&self.search.paths[p], h) <= RESTART * self.radius[p] {
-                continue;
-            }
-            self.search.paths[p] = path;
-            self.search.versions[p] += 1;
-            self.search_again(p, time, h, forces, &mut found);
+            _ = self.restart_path(
+                p,
+                (
+                    (at.position[k], at.velocity[k]),
+                    (end.position[k], end.velocity[k]),
+                ),
+                time,
+                h,
+                forces,
+            );
         }
+    }
+
+    /// Whether particle `p`'s path is kept when its motion moved by at most `moved`
+    /// metres anywhere in the rest of the step ([`RESTART`]).
+    pub fn keeps_path(&self, p: usize, moved: f64) -> bool {
+        moved <= RESTART * self.radius[p]
+    }
+
+    /// Particle `p`'s path starts again at `time` seconds into the step, from `start`
+    /// (position and velocity) then to `end` at the step's end, unless it moves by less
+    /// than [`RESTART`] of its radius ([`Self::restart_paths`]); a fixed particle's
+    /// never moves. Returns whether it started again.
+    pub fn restart_path(
+        &mut self,
+        p: usize,
+        (start, end): ((DVec2, DVec2), (DVec2, DVec2)),
+        time: f64,
+        h: f64,
+        forces: &ForceModel,
+    ) -> bool {
+        if forces.is_fixed(p) {
+            return false;
+        }
+        let path = Path {
+            from: time,
+            start,
+            end,
+            kick: DVec2::ZERO,
+            kick_moment: DVec2::ZERO,
+        };
+        if path.apart_from(&self.search.paths[p], h) <= RESTART * self.radius[p] {
+            return false;
+        }
+        self.search.paths[p] = path;
+        self.search.versions[p] += 1;
+        let mut found = Vec::new();
+        self.search_again(p, time, h, forces, &mut found);
         self.search.queue.extend(found.into_iter().map(Reverse));
+        true
     }
 
     /// Applies the impulse of an impact returned by [`Self::resolve_impacts`], now that the

@@ -6,6 +6,7 @@ pub(crate) mod coulomb;
 pub(crate) mod direct;
 pub(crate) mod gravitation;
 pub(crate) mod normal;
+mod response;
 pub(crate) mod spring;
 pub(crate) mod tree;
 pub(crate) mod uniform;

@@ -4,16 +4,18 @@
 //! changes the forces on the others it pulls, so its impact cannot be patched onto a path
 //! as an uncoupled particle's is. The coupled particles (with the fixed ones that pull
 //! on them) form a system of their own, closed: no force on them comes from outside it
-//! but the fields and the surfaces they rest on. At an impact of a coupled particle `τ`
-//! seconds into the step, that system alone is integrated from its last impact (or the
-//! step's start) to exactly `τ` (refined by Newton's method on its gap, as for the whole
-//! system before), the impulse applied, and the system integrated on to the step's end.
-//! Its paths then start again at `τ` ([`Contacts::restart_paths`]) and the search goes
-//! on inside the same step.
+//! but the fields and the surfaces they rest on. With rk4, an impact of a coupled particle
+//! `τ` seconds into the step is applied on that system's motion through the step and
+//! answered to first order and beyond by everything the struck particle pulls, without
+//! integrating again ([`response`]). With the other methods that system alone is
+//! integrated from its last impact (or the step's start) to exactly `τ` (refined by
+//! Newton's method on its gap), the impulse applied, and the system integrated on to the
+//! step's end. Either way its paths then start again at `τ`
+//! ([`Contacts::restart_paths`]) and the search goes on inside the same step.
 //!
-//! So a coupled impact costs an integration of the coupled particles, not a new step
-//! of everything (broad phase, trial step, impact search, resting solver). The result is
-//! the same physics: the state at each impact is the integrator's, from the state at the
+//! So a coupled impact costs a response (rk4) or an integration of the coupled particles,
+//! not a new step of everything (broad phase, trial step, impact search, resting solver).
+//! Integrating again, the state at each impact is the integrator's, from the state at the
 //! impact before it, as when each impact ended the step. Newton's method integrates
 //! once, to the instant the search estimated; its corrections (of order 1e-10 s) carry
 //! that state on by its acceleration to second order instead of integrating again
@@ -25,6 +27,8 @@
 //! and projections are the whole step's, and while anything dissipates smoothly (a damped
 //! spring, friction under a particle): the energy ledger integrates that power over the
 //! step from its two ends, which an impulse inside it would break.
+
+mod response;
 
 use std::sync::Arc;
 
@@ -72,6 +76,8 @@ struct Scratch {
     integrated: Option<f64>,
     base: State,
     base_acceleration: KnownStart,
+    /// With rk4: the members' motion through the step ([`response`]).
+    motion: response::Motion,
 }
 
 /// How near (a fraction of the step) an instant must be to the last one the coupled
@@ -133,6 +139,7 @@ impl CoupledSystem {
                 integrated: None,
                 base: State::default(),
                 base_acceleration: KnownStart::default(),
+                motion: response::Motion::default(),
             })
         });
         scratch.forces.workers = forces.workers.clone();
@@ -274,6 +281,9 @@ impl Simulation {
     /// slower one is caught on its surface at once ([`catch_on_surfaces`]), as the next
     /// step's start would, and the step goes on.
     pub(super) fn coupled_impacts_in_step(&mut self, first: (f64, Impact), taken: f64) -> f64 {
+        if self.integrator == Integrator::Rk4 {
+            return self.coupled_responses_in_step(first, taken);
+        }
         let Some(system) = self.coupled.as_mut() else {
             return taken;
         };

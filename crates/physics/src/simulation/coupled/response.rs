@@ -1,0 +1,545 @@
+//! Coupled impacts by the motion's response, without integrating again (rk4).
+//!
+//! Through a step the coupled particles follow the integrator's motion, known at its two
+//! ends. An impact at τ changes a struck particle's velocity by Δv; from then on it moves
+//! off that motion by δ(t), and everything it pulls (by a pair law or a spring) feels the
+//! difference. With s = t − τ and J = ∂a/∂x the forces' Jacobian
+//! ([`crate::forces::ForceModel::displacement_response`]), the departures of all of them
+//! obey δ″ = a(x + δ) − a(x), δ(τ) = 0, δ′(τ) = Δv on the struck particle, whose series is
+//!
+//!   δ = Δv s + α s³/6 + β s⁴/12 + γ s⁵/120 + …,   α = J Δv,   γ = J α,
+//!
+//! β carrying the Jacobian's change along the motion and the forces' curvature
+//! (J′ Δv + ∂J/∂x [Δv, Δv]). α is one pass over the struck particle's partners; β comes
+//! from the exact change of their forces at the step's end, the struck particle moved on
+//! by Δv (h − τ) ([`crate::forces::ForceModel::displacement_change`]), less α's part;
+//! γ sums J α over the struck particle and those it shares a spring with (the largest
+//! answers: a pair law's partner at a distance answers by far less, and its own answer
+//! less again). What is left out is of order J² Δv s⁵ for the others and J³ Δv s⁷ for
+//! them, below the integrator's own error over the step in the tests' scenes.
+//!
+//! What an impact is measured and applied on must be as exact as the integrator: each
+//! involved particle's acceleration is taken as the cubic through its values and rates
+//! (∂a/∂x · v, [`crate::forces::ForceModel::acceleration_rate`]) at both ends, integrated
+//! from the start, off by order h⁵ in the velocity. The quintic through the ends'
+//! positions, velocities and accelerations, which serves what only reads where a particle
+//! is (the Jacobian, the impact search's paths), would carry rk4's error in the end
+//! position, divided by h, into the velocity. Newton's method finds the instant on that
+//! curve, so the gap closes there exactly as before; the step still ends at the
+//! integrator's state plus the departures.
+//!
+//! So an impact of a coupled particle costs a few passes over what it pulls instead of
+//! integrating every coupled particle again, twice (to the impact and on to the step's
+//! end: 7.5 evaluations of all their forces an impact in the processing-time scene), and
+//! the step one evaluation at its end. Measured against closed forms (a ball on a spring
+//! rattling between walls, up to four impacts a step: instants and speeds to 1e-13; a
+//! stiff spring's impact at ωh = 0.1 as near the truth as integrating to the instant) and
+//! by the energy ledger of a pile of charged and sprung balls (the residual as before:
+//! 1.9e-9, 5.5e-10, 6.0e-11, 1.3e-11 of E₀ at 2, 1, 0.5 and 0.25 ms steps). Without γ
+//! the rattling ball's speeds were off by 2e-9 (its test fails, and the spring-pulled
+//! ball's); without β the pile's residual was 4.7 times larger (2.6e-9: its test fails);
+//! without α, 1,400 times.
+//!
+//! A surface that supports a particle answers a push into it: the part of an answer into
+//! a surface the particle rests on is taken away, as the surface's force would (a pull
+//! away is left, since the support may not hold the particle there). A step that ends at
+//! a coupled impact ([`super::catch_on_surfaces`]) puts every member where the motion has
+//! it then, with every rate measured in bulk.
+//!
+//! Only rk4 uses it: a lower-order method's motion between the ends is its own steps',
+//! which the curve would make more exact than the method itself; those integrate again
+//! ([`super`]).
+
+use std::borrow::Cow;
+use std::sync::Arc;
+
+use glam::DVec2;
+
+use crate::contacts::{Contacts, Impact, Members};
+use crate::forces::ForceModel;
+use crate::forces::spring::End;
+use crate::profile::Stage;
+use crate::state::State;
+
+use super::super::{Simulation, refine_instant};
+use super::{catch_on_surfaces, write_members};
+
+/// The coupled particles' motion through one step: the integrator's, between its two
+/// ends, and each particle's departure from it since the impacts applied so far.
+#[derive(Clone, Debug, Default)]
+pub(super) struct Motion {
+    /// The members' state at the step's start and at the trial step's end, and their
+    /// accelerations there.
+    start: State,
+    start_acceleration: Vec<DVec2>,
+    end: State,
+    end_acceleration: Vec<DVec2>,
+    /// Each member's rate of acceleration at both ends, once an impact measured it.
+    rates: Vec<Option<[DVec2; 2]>>,
+    /// Each member's departure from the integrator's motion, the quintic
+    /// c0 + c1 t + … + c5 t⁵ of the seconds t into the step.
+    departure: Vec<[DVec2; 6]>,
+    /// At most how far each member's departure moved it (anywhere up to the step's
+    /// end) since its impact search's path last started again.
+    moved: Vec<f64>,
+    /// Scratch: the members' positions at an impact, the struck one's spring partners,
+    /// and the members' answers to it.
+    position: Vec<DVec2>,
+    partners: Vec<usize>,
+    answers: [Vec<DVec2>; 3],
+}
+
+impl Motion {
+    /// A step's motion: the members at the `start` state and the trial step's `end`,
+    /// `start_acceleration` the whole system's at the start (rk4's first stage), the
+    /// end's computed under `forces` (the members' model with this step's surfaces).
+    fn begin(
+        &mut self,
+        members: &[usize],
+        (start, start_acceleration): (&State, &[DVec2]),
+        end: &State,
+        forces: &ForceModel,
+    ) {
+        for (mine, whole) in [(&mut self.start, start), (&mut self.end, end)] {
+            mine.time = whole.time;
+            mine.position.clear();
+            mine.position
+                .extend(members.iter().map(|&i| whole.position[i]));
+            mine.velocity.clear();
+            mine.velocity
+                .extend(members.iter().map(|&i| whole.velocity[i]));
+        }
+        self.start_acceleration.clear();
+        self.start_acceleration
+            .extend(members.iter().map(|&i| start_acceleration[i]));
+        self.end_acceleration.clear();
+        self.end_acceleration.resize(members.len(), DVec2::ZERO);
+        forces.accelerations(
+            &self.end.position,
+            &self.end.velocity,
+            &mut self.end_acceleration,
+        );
+        self.rates.clear();
+        self.rates.resize(members.len(), None);
+        self.departure.clear();
+        self.departure.resize(members.len(), [DVec2::ZERO; 6]);
+        self.moved.clear();
+        self.moved.resize(members.len(), 0.0);
+    }
+
+    /// Member `k`'s position and velocity `t` seconds into a step of `h`, near enough for
+    /// what only reads where it is (the forces' Jacobian, the impact search's paths): the
+    /// quintic through the positions, velocities and accelerations at both ends.
+    fn at(&self, k: usize, t: f64, h: f64) -> (DVec2, DVec2) {
+        let (x0, v0, a0) = (
+            self.start.position[k],
+            self.start.velocity[k],
+            self.start_acceleration[k],
+        );
+        let (x1, v1, a1) = (
+            self.end.position[k],
+            self.end.velocity[k],
+            self.end_acceleration[k],
+        );
+        let (position, velocity) = if t >= h {
+            (x1, v1)
+        } else {
+            // The curve ends where the velocities and accelerations at both ends put it
+            // (x0 + h (v0 + v1)/2 + h² (a0 − a1)/12), not at the integrator's x1, whose
+            // error of order (ωh)⁵ a curve through it would divide by h in its velocity.
+            let x1 = x0 + (v0 + v1) * (0.5 * h) + (a0 - a1) * (h * h / 12.0);
+            let s = t / h;
+            let (s2, s3) = (s * s, s * s * s);
+            let (s4, s5) = (s2 * s2, s2 * s3);
+            let h3 = 10.0 * s3 - 15.0 * s4 + 6.0 * s5;
+            let h1 = s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5;
+            let h2 = 0.5 * (s2 - 3.0 * s3 + 3.0 * s4 - s5);
+            let h4 = -4.0 * s3 + 7.0 * s4 - 3.0 * s5;
+            let h5 = 0.5 * (s3 - 2.0 * s4 + s5);
+            let d3 = 30.0 * (s2 - 2.0 * s3 + s4);
+            let d1 = 1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4;
+            let d2 = s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4;
+            let d4 = -12.0 * s2 + 28.0 * s3 - 15.0 * s4;
+            let d5 = 1.5 * s2 - 4.0 * s3 + 2.5 * s4;
+            let position =
+                x0 + (x1 - x0) * h3 + (v0 * h1 + v1 * h4) * h + (a0 * h2 + a1 * h5) * (h * h);
+            let velocity = (x1 - x0) * (d3 / h) + v0 * d1 + v1 * d4 + (a0 * d2 + a1 * d5) * h;
+            (position, velocity)
+        };
+        self.departed(k, t, (position, velocity))
+    }
+
+    /// Member `k`'s position and velocity `t` seconds into a step of `h`, as exactly as
+    /// the integrator's own: what an impact is measured and applied on. The acceleration
+    /// is the cubic through its values and rates at both ends (the rates computed the
+    /// first time the member is asked for, under `forces`), integrated from the start:
+    /// its error is of order h⁴ in the acceleration, h⁵ in the velocity. (The quintic of
+    /// [`Self::at`] is off by its end's error over h in the velocity: 4e-10 of the speed
+    /// for ω = 1 /s at 20 ms steps.)
+    fn exactly(&mut self, k: usize, t: f64, h: f64, forces: &ForceModel) -> (DVec2, DVec2) {
+        if t >= h {
+            return self.at(k, t, h);
+        }
+        let [j0, j1] = *self.rates[k].get_or_insert_with(|| {
+            let rate = |state: &State, a: DVec2| {
+                let rate = forces.acceleration_rate(&state.position, &state.velocity, k);
+                supported(forces, k, a, rate)
+            };
+            [
+                rate(&self.start, self.start_acceleration[k]),
+                rate(&self.end, self.end_acceleration[k]),
+            ]
+        });
+        let (x0, v0, a0) = (
+            self.start.position[k],
+            self.start.velocity[k],
+            self.start_acceleration[k],
+        );
+        let a1 = self.end_acceleration[k];
+        let s = t / h;
+        let (s2, s3) = (s * s, s * s * s);
+        let (s4, s5) = (s2 * s2, s2 * s3);
+        // The cubic Hermite basis of the acceleration, integrated once and twice from 0.
+        let once = [
+            s4 / 2.0 - s3 + s,
+            s4 / 4.0 - 2.0 * s3 / 3.0 + s2 / 2.0,
+            s3 - s4 / 2.0,
+            s4 / 4.0 - s3 / 3.0,
+        ];
+        let twice = [
+            s5 / 10.0 - s4 / 4.0 + s2 / 2.0,
+            s5 / 20.0 - s4 / 6.0 + s3 / 6.0,
+            s4 / 4.0 - s5 / 10.0,
+            s5 / 20.0 - s4 / 12.0,
+        ];
+        let data = [a0, j0 * h, a1, j1 * h];
+        let sum = |weights: [f64; 4]| {
+            data.iter()
+                .zip(weights)
+                .fold(DVec2::ZERO, |total, (d, w)| total + *d * w)
+        };
+        let position = x0 + v0 * t + sum(twice) * (h * h);
+        let velocity = v0 + sum(once) * h;
+        self.departed(k, t, (position, velocity))
+    }
+
+    /// The impact search's paths of the members whose motion moved by more than it keeps
+    /// ([`Contacts::keeps_path`]) start again `time` seconds into a step of `h`.
+    fn restart_paths(
+        &mut self,
+        contacts: &mut Contacts,
+        members: &[usize],
+        (time, h): (f64, f64),
+        forces: &ForceModel,
+    ) {
+        for (k, &p) in members.iter().enumerate() {
+            if !contacts.keeps_path(p, self.moved[k]) {
+                let (start, end) = (self.at(k, time, h), self.at(k, h, h));
+                if contacts.restart_path(p, (start, end), time, h, forces) {
+                    self.moved[k] = 0.0;
+                }
+            }
+        }
+    }
+
+    /// Every member's rates of acceleration at both ends of a step of `h`, for all of
+    /// them to be put where they are exactly: by central differences of the accelerations
+    /// along each end's velocities, ±h/1000 (four evaluations of the members' forces,
+    /// where one member's own rate reads its partners one by one; the difference's error
+    /// is of order 1e-6² of the rate, its rounding's some 1e-10 m/s³ in the 1 ms step,
+    /// which moves a velocity by 1e-14 m/s). A rate already measured is kept.
+    fn measure_every_rate(&mut self, forces: &ForceModel, h: f64) {
+        let epsilon = h * 1e-3;
+        let n = self.start.len();
+        let mut rates = [vec![DVec2::ZERO; n], vec![DVec2::ZERO; n]];
+        let mut moved = State::default();
+        let mut a = [vec![DVec2::ZERO; n], vec![DVec2::ZERO; n]];
+        for (state, rate) in [&self.start, &self.end].into_iter().zip(&mut rates) {
+            for (side, sign) in a.iter_mut().zip([1.0, -1.0]) {
+                moved.clone_from(state);
+                for (x, v) in moved.position.iter_mut().zip(&state.velocity) {
+                    *x += *v * (sign * epsilon);
+                }
+                forces.accelerations(&moved.position, &moved.velocity, side);
+            }
+            for ((r, plus), minus) in rate.iter_mut().zip(&a[0]).zip(&a[1]) {
+                *r = (*plus - *minus) / (2.0 * epsilon);
+            }
+        }
+        for (k, known) in self.rates.iter_mut().enumerate() {
+            known.get_or_insert([rates[0][k], rates[1][k]]);
+        }
+    }
+
+    /// `motion` (a position and velocity of member `k` at `t`) with its departure added.
+    fn departed(&self, k: usize, t: f64, (position, velocity): (DVec2, DVec2)) -> (DVec2, DVec2) {
+        let [c0, c1, c2, c3, c4, c5] = self.departure[k];
+        (
+            position + c0 + (c1 + (c2 + (c3 + (c4 + c5 * t) * t) * t) * t) * t,
+            velocity + c1 + (c2 * 2.0 + (c3 * 3.0 + (c4 * 4.0 + c5 * (5.0 * t)) * t) * t) * t,
+        )
+    }
+
+    /// Puts member `k`'s state `t` seconds into a step of `h` into `state` ([`Self::exactly`]).
+    fn write(&mut self, k: usize, t: f64, h: f64, state: &mut State, forces: &ForceModel) {
+        (state.position[k], state.velocity[k]) = self.exactly(k, t, h, forces);
+    }
+
+    /// Adds `size`·(t − τ)ⁿ to member `k`'s departure, n = `power` (1 to 5), and the
+    /// most it moves the member by the end of a step of `h` to its [`Self::moved`].
+    fn depart(&mut self, k: usize, size: DVec2, (tau, h): (f64, f64), power: usize) {
+        // The binomial expansion of (t − τ)ⁿ: C(n, m) (−τ)^(n−m) tᵐ.
+        const BINOMIAL: [[f64; 6]; 6] = [
+            [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0, 0.0, 0.0, 0.0],
+            [1.0, 2.0, 1.0, 0.0, 0.0, 0.0],
+            [1.0, 3.0, 3.0, 1.0, 0.0, 0.0],
+            [1.0, 4.0, 6.0, 4.0, 1.0, 0.0],
+            [1.0, 5.0, 10.0, 10.0, 5.0, 1.0],
+        ];
+        if size == DVec2::ZERO {
+            return;
+        }
+        let c = &mut self.departure[k];
+        let mut power_of_tau = 1.0; // (−τ)^(n−m), m from n down
+        for m in (0..=power).rev() {
+            c[m] += size * (BINOMIAL[power][m] * power_of_tau);
+            power_of_tau *= -tau;
+        }
+        let exponent = i32::try_from(power).unwrap_or(i32::MAX);
+        self.moved[k] += size.length() * (h - tau).powi(exponent);
+    }
+
+    /// The positions of the members the forces on `k` and on `partners` read, `t`
+    /// seconds into a step of `h`, into `position` (the others are left as they are).
+    fn positions_read_by(
+        &self,
+        (k, partners): (usize, &[usize]),
+        (t, h): (f64, f64),
+        forces: &ForceModel,
+        position: &mut [DVec2],
+    ) {
+        let displaced = || std::iter::once(k).chain(partners.iter().copied());
+        if displaced().any(|m| forces.interacting.binary_search(&m).is_ok()) {
+            for &j in &forces.interacting {
+                position[j] = self.at(j, t, h).0;
+            }
+        }
+        for spring in &forces.springs {
+            if displaced().any(|m| spring.touches(m)) {
+                for end in [spring.from, spring.to] {
+                    if let End::Particle(j) = end {
+                        position[j] = self.at(j, t, h).0;
+                    }
+                }
+            }
+        }
+        position[k] = self.at(k, t, h).0;
+    }
+
+    /// Member `k`'s velocity changed by `kick` at `tau` seconds into a step of `h`: its
+    /// departure and every member's answer to it (see the module doc).
+    fn kick(&mut self, k: usize, kick: DVec2, (tau, h): (f64, f64), forces: &ForceModel) {
+        if kick == DVec2::ZERO {
+            return;
+        }
+        let n = self.start.len();
+        let span = h - tau;
+        let mut partners = std::mem::take(&mut self.partners);
+        partners.clear();
+        partners.extend(forces.springs.iter().filter_map(|spring| {
+            match (spring.from, spring.to) {
+                (End::Particle(a), End::Particle(b)) if a == k => Some(b),
+                (End::Particle(a), End::Particle(b)) if b == k => Some(a),
+                _ => None,
+            }
+        }));
+        let mut position = std::mem::take(&mut self.position);
+        position.resize(n, DVec2::ZERO);
+        self.positions_read_by((k, &partners), (tau, h), forces, &mut position);
+        // The answer's acceleration in s = t − τ: α s from the Jacobian at τ; β s² from the
+        // exact change of the forces at the step's end where the struck particle has
+        // moved on by Δv s (the Jacobian's change along the motion, and the forces'
+        // curvature); γ s³/3!·… (J α s⁵/120 in the position, the velocity's
+        // J² Δv s⁴/24: 4e-10 of a kick at ω = 1 /s, 10 ms after it) through the struck
+        // particle and those it shares a spring with, whose answers are the largest (a
+        // pair law's partner at a distance answers by far less, and its answers less
+        // again).
+        let [mut alpha, mut beta, mut gamma] = std::mem::take(&mut self.answers);
+        for answer in [&mut alpha, &mut beta, &mut gamma] {
+            answer.clear();
+            answer.resize(n, DVec2::ZERO);
+        }
+        forces.displacement_response(&position, k, kick, &mut alpha);
+        for contact in &forces.surface_contacts {
+            let answer = &mut alpha[contact.particle];
+            *answer = pushed_back(contact.normal, *answer);
+        }
+        for &m in std::iter::once(&k).chain(&partners) {
+            forces.displacement_response(&position, m, alpha[m], &mut gamma);
+        }
+        if span > 0.0 {
+            self.positions_read_by((k, &[]), (h, h), forces, &mut position);
+            forces.displacement_change(&position, k, kick * span, &mut beta);
+            for (b, a) in beta.iter_mut().zip(&alpha) {
+                *b = (*b - *a * span) / (span * span);
+            }
+        }
+        for contact in &forces.surface_contacts {
+            for answer in [&mut beta[contact.particle], &mut gamma[contact.particle]] {
+                *answer = pushed_back(contact.normal, *answer);
+            }
+        }
+        self.depart(k, kick, (tau, h), 1);
+        for j in 0..n {
+            self.depart(j, alpha[j] / 6.0, (tau, h), 3);
+            self.depart(j, beta[j] / 12.0, (tau, h), 4);
+            self.depart(j, gamma[j] / 120.0, (tau, h), 5);
+        }
+        (self.position, self.partners, self.answers) = (position, partners, [alpha, beta, gamma]);
+    }
+}
+
+/// A change `answer` of a supported particle's acceleration less its part into the
+/// surface of `normal`, which the surface's support answers; a pull away is left (the
+/// support may not hold the particle there).
+fn pushed_back(normal: DVec2, answer: DVec2) -> DVec2 {
+    let into = answer.dot(normal);
+    if into < 0.0 {
+        answer - normal * into
+    } else {
+        answer
+    }
+}
+
+/// Member `k`'s rate of acceleration `rate` where its acceleration is `acceleration`,
+/// less the part along the normal of a surface holding it there (its acceleration has
+/// no part into that surface then: the support answers every change of the others).
+fn supported(forces: &ForceModel, k: usize, acceleration: DVec2, rate: DVec2) -> DVec2 {
+    forces
+        .surface_contacts
+        .iter()
+        .filter(|contact| contact.particle == k)
+        .fold(rate, |rate, contact| {
+            let held = acceleration.dot(contact.normal) <= 1e-9 * acceleration.length();
+            if held {
+                rate - contact.normal * rate.dot(contact.normal)
+            } else {
+                rate
+            }
+        })
+}
+
+/// The members an impact involves (none for a particle outside the coupled system).
+fn involved(impact: Impact, local: &[Option<u32>]) -> [Option<usize>; 2] {
+    match impact {
+        Impact::Pair(i, j) => [Some(i), Some(j)],
+        Impact::Obstacle(p, _) => [Some(p), None],
+    }
+    .map(|p| p.and_then(|p| local[p]).map(|k| k as usize))
+}
+
+impl Simulation {
+    /// [`Self::coupled_impacts_in_step`] with rk4: each coupled impact applied on the
+    /// integrator's motion through the step and answered to first order (see the module
+    /// doc), no integration again.
+    pub(super) fn coupled_responses_in_step(&mut self, first: (f64, Impact), taken: f64) -> f64 {
+        let Some(system) = self.coupled.as_mut() else {
+            return taken;
+        };
+        let local = Arc::clone(&system.local);
+        let members = Arc::clone(&system.members);
+        let scratch = system.begin(&self.start, &self.forces);
+        // rk4's first stage is the acceleration at the start (the trial step's).
+        let start_acceleration = match self.work.accelerations.first() {
+            Some(a) if a.len() == self.state.len() => Cow::Borrowed(a.as_slice()),
+            _ => {
+                let mut a = vec![DVec2::ZERO; self.state.len()];
+                self.forces
+                    .accelerations(&self.start.position, &self.start.velocity, &mut a);
+                Cow::Owned(a)
+            }
+        };
+        scratch.motion.begin(
+            &members,
+            (&self.start, &start_acceleration),
+            &self.state,
+            &scratch.forces,
+        );
+        scratch.at.clone_from(&scratch.segment);
+        let mut restarted = false;
+        let mut next = Some(first);
+        while let Some((estimate, impact)) = next {
+            let (from, reach) = (scratch.from, self.contacts.reach(impact));
+            let involved = involved(impact, &local);
+            let contacts = &self.contacts;
+            let (motion, at, forces) = (&mut scratch.motion, &mut scratch.at, &scratch.forces);
+            let mut move_to = |time: f64, at: &mut State| {
+                for &k in involved.iter().flatten() {
+                    motion.write(k, time, taken, at, forces);
+                }
+            };
+            let time = refine_instant(estimate.max(from), (from, taken), reach, |time| {
+                move_to(time, at);
+                let members = Members {
+                    local: &local,
+                    state: at,
+                };
+                let (gap, _, approach) = contacts.measure_coupled(impact, time, taken, &members);
+                (gap, approach)
+            });
+            move_to(time, at);
+            let before = involved.map(|k| k.map(|k| at.velocity[k]));
+            let mut members_at = Members {
+                local: &local,
+                state: at,
+            };
+            if self
+                .contacts
+                .strike_coupled(impact, time, taken, &mut members_at, &self.forces)
+            {
+                let resting_speed = self.contacts.resting_speed(taken);
+                let caught = catch_on_surfaces(impact, &self.forces, &local, at, resting_speed);
+                let Some(energy) = caught else {
+                    let motion = &mut scratch.motion;
+                    motion.measure_every_rate(&scratch.forces, taken);
+                    for k in 0..members.len() {
+                        if !involved.contains(&Some(k)) {
+                            motion.write(k, time, taken, at, &scratch.forces);
+                        }
+                    }
+                    write_members(&members, at, &mut self.state);
+                    self.contacts.end_at(time, taken, &mut self.state, &local);
+                    self.state.time = self.start.time + time;
+                    self.work.start_acceleration = None;
+                    return time;
+                };
+                self.contacts.caught_in_step += energy;
+                let motion = &mut scratch.motion;
+                for (k, before) in involved.into_iter().zip(before) {
+                    if let (Some(k), Some(before)) = (k, before) {
+                        motion.kick(k, at.velocity[k] - before, (time, taken), &scratch.forces);
+                    }
+                }
+                motion.restart_paths(&mut self.contacts, &members, (time, taken), &self.forces);
+                scratch.from = time;
+                restarted = true;
+            }
+            self.profiler.lap(Stage::Reintegration);
+            next = self.contacts.resume_impacts(
+                &mut self.state,
+                taken,
+                &self.forces,
+                &mut self.profiler,
+            );
+        }
+        if restarted {
+            let motion = &scratch.motion;
+            for (k, &p) in members.iter().enumerate() {
+                (self.state.position[p], self.state.velocity[p]) = motion.at(k, taken, taken);
+            }
+            self.work.start_acceleration = None;
+        }
+        taken
+    }
+}

@@ -45,6 +45,8 @@ pub(crate) struct ForceModel {
     /// The opening angle when gravitation is summed with a tree.
     pub tree: Option<f64>,
     pub springs: Vec<SpringLink>,
+    /// Each particle's springs (indices into `springs`), ascending.
+    pub springs_at: Arc<[Box<[u32]>]>,
     /// Rods and strings: their forces are added last, answering all the others.
     pub constraints: Constraints,
     /// The threads the direct pair sum may use.
@@ -73,6 +75,17 @@ impl ForceModel {
             .filter(|&i| particles[i].charge != 0.0)
             .collect();
         let index = |end| spring::End::of(scene, end);
+        let springs: Vec<SpringLink> = scene
+            .springs
+            .iter()
+            .map(|s| SpringLink {
+                from: index(&s.from),
+                to: index(&s.to),
+                stiffness: s.stiffness,
+                natural_length: s.natural_length,
+                damping: s.damping,
+            })
+            .collect();
         let inverse_mass: Vec<f64> = particles
             .iter()
             .map(|p| if p.fixed { 0.0 } else { 1.0 / p.mass })
@@ -99,17 +112,8 @@ impl ForceModel {
             charged,
             tree: (scene.simulation.pair_forces == PairForces::Tree)
                 .then_some(scene.simulation.opening_angle),
-            springs: scene
-                .springs
-                .iter()
-                .map(|s| SpringLink {
-                    from: index(&s.from),
-                    to: index(&s.to),
-                    stiffness: s.stiffness,
-                    natural_length: s.natural_length,
-                    damping: s.damping,
-                })
-                .collect(),
+            springs_at: spring::each_particles(&springs, particles.len()),
+            springs,
             surface_contacts: Vec::new(),
             workers: crate::parallel::Workers::default(),
         }

@@ -33,14 +33,15 @@ impl ForceModel {
     }
 
     /// The springs at particle `k`, each with its other end.
-    fn spring_partners(&self, k: usize) -> impl Iterator<Item = (&SpringLink, End)> + '_ {
-        self.springs
-            .iter()
-            .filter_map(move |spring| match (spring.from, spring.to) {
+    pub fn spring_partners(&self, k: usize) -> impl Iterator<Item = (&SpringLink, End)> + '_ {
+        self.springs_at[k].iter().filter_map(move |&index| {
+            let spring = &self.springs[index as usize];
+            match (spring.from, spring.to) {
                 (End::Particle(a), other) if a == k => Some((spring, other)),
                 (other, End::Particle(b)) if b == k => Some((spring, other)),
                 _ => None,
-            })
+            }
+        })
     }
 
     /// Adds to `out` the change of every particle's acceleration, m/s², when particle `k`
@@ -164,6 +165,11 @@ mod tests {
             natural_length,
             damping: 0.0,
         };
+        let springs = vec![
+            spring(End::Particle(0), End::Particle(1), 0.8),
+            spring(End::Point(DVec2::new(1.0, 1.0)), End::Particle(0), 0.3),
+            spring(End::Particle(2), End::Particle(5), 0.0),
+        ];
         let model = ForceModel {
             mass: mass.into(),
             inverse_mass: inverse_mass.into(),
@@ -175,11 +181,8 @@ mod tests {
             interacting: (0..n).collect(),
             charged: (0..n).filter(|i| i % 3 != 0).collect(),
             tree: None,
-            springs: vec![
-                spring(End::Particle(0), End::Particle(1), 0.8),
-                spring(End::Point(DVec2::new(1.0, 1.0)), End::Particle(0), 0.3),
-                spring(End::Particle(2), End::Particle(5), 0.0),
-            ],
+            springs_at: crate::forces::spring::each_particles(&springs, n),
+            springs,
             constraints: crate::constraints::Constraints::default(),
             workers: crate::parallel::Workers::default(),
             surface_contacts: Vec::new(),

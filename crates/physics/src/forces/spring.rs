@@ -106,3 +106,19 @@ impl SpringLink {
         0.5 * self.stiffness * stretch * stretch
     }
 }
+
+/// Each of `n` particles' springs: the indices into `springs` of those at it, ascending.
+pub(crate) fn each_particles(springs: &[SpringLink], n: usize) -> std::sync::Arc<[Box<[u32]>]> {
+    let mut at = vec![Vec::new(); n];
+    for (index, spring) in springs.iter().enumerate() {
+        let index = u32::try_from(index).unwrap_or(u32::MAX);
+        for end in [spring.from, spring.to] {
+            if let End::Particle(i) = end
+                && at[i].last() != Some(&index)
+            {
+                at[i].push(index);
+            }
+        }
+    }
+    at.into_iter().map(Vec::into_boxed_slice).collect()
+}

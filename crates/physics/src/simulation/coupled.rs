@@ -236,6 +236,17 @@ fn restricted(forces: &ForceModel, members: &[usize], local: &[Option<u32>]) -> 
         End::Particle(i) => local[i].map(|k| End::Particle(k as usize)),
         End::Point(point) => Some(End::Point(point)),
     };
+    let springs: Vec<SpringLink> = forces
+        .springs
+        .iter()
+        .filter_map(|s| {
+            Some(SpringLink {
+                from: end(s.from)?,
+                to: end(s.to)?,
+                ..*s
+            })
+        })
+        .collect();
     ForceModel {
         mass: members.iter().map(|&i| forces.mass[i]).collect(),
         inverse_mass: members.iter().map(|&i| forces.inverse_mass[i]).collect(),
@@ -247,17 +258,8 @@ fn restricted(forces: &ForceModel, members: &[usize], local: &[Option<u32>]) -> 
         interacting: forces.interacting.iter().filter_map(pick).collect(),
         charged: forces.charged.iter().filter_map(pick).collect(),
         tree: forces.tree,
-        springs: forces
-            .springs
-            .iter()
-            .filter_map(|s| {
-                Some(SpringLink {
-                    from: end(s.from)?,
-                    to: end(s.to)?,
-                    ..*s
-                })
-            })
-            .collect(),
+        springs_at: crate::forces::spring::each_particles(&springs, members.len()),
+        springs,
         constraints: Constraints::default(),
         workers: forces.workers.clone(),
         surface_contacts: Vec::new(),

@@ -285,9 +285,10 @@ impl Motion {
         (state.position[k], state.velocity[k]) = self.exactly(k, t, h, forces);
     }
 
-    /// Adds `size`·(t − τ)ⁿ to member `k`'s departure, n = `power` (1 to 5), and the
-    /// most it moves the member by the end of a step of `h` to its [`Self::moved`].
-    fn depart(&mut self, k: usize, size: DVec2, (tau, h): (f64, f64), power: usize) {
+    /// Adds Σ `sizes[n]`·(t − τ)ⁿ to member `k`'s departure (n from 0 to 5), and a bound
+    /// on how far that moves the member by the end of a step of `h` to its
+    /// [`Self::moved`].
+    fn depart(&mut self, k: usize, sizes: [DVec2; 6], (tau, h): (f64, f64)) {
         // The binomial expansion of (t − τ)ⁿ: C(n, m) (−τ)^(n−m) tᵐ.
         const BINOMIAL: [[f64; 6]; 6] = [
             [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
@@ -297,17 +298,24 @@ impl Motion {
             [1.0, 4.0, 6.0, 4.0, 1.0, 0.0],
             [1.0, 5.0, 10.0, 10.0, 5.0, 1.0],
         ];
-        if size == DVec2::ZERO {
+        if sizes == [DVec2::ZERO; 6] {
             return;
         }
         let c = &mut self.departure[k];
-        let mut power_of_tau = 1.0; // (−τ)^(n−m), m from n down
-        for m in (0..=power).rev() {
-            c[m] += size * (BINOMIAL[power][m] * power_of_tau);
-            power_of_tau *= -tau;
+        let mut power_of_tau = [1.0; 6];
+        for p in 1..6 {
+            power_of_tau[p] = power_of_tau[p - 1] * -tau;
         }
-        let exponent = i32::try_from(power).unwrap_or(i32::MAX);
-        self.moved[k] += size.length() * (h - tau).powi(exponent);
+        for (n, size) in sizes.into_iter().enumerate() {
+            if size == DVec2::ZERO {
+                continue;
+            }
+            for m in 0..=n {
+                c[m] += size * (BINOMIAL[n][m] * power_of_tau[n - m]);
+            }
+            let exponent = i32::try_from(n).unwrap_or(i32::MAX);
+            self.moved[k] += size.length() * (h - tau).powi(exponent);
+        }
     }
 
     /// The positions of the members the forces on `k` and on `partners` read, `t`
@@ -325,8 +333,8 @@ impl Motion {
                 position[j] = self.at(j, t, h).0;
             }
         }
-        for spring in &forces.springs {
-            if displaced().any(|m| spring.touches(m)) {
+        for m in displaced() {
+            for (spring, _) in forces.spring_partners(m) {
                 for end in [spring.from, spring.to] {
                     if let End::Particle(j) = end {
                         position[j] = self.at(j, t, h).0;
@@ -347,13 +355,14 @@ impl Motion {
         let span = h - tau;
         let mut partners = std::mem::take(&mut self.partners);
         partners.clear();
-        partners.extend(forces.springs.iter().filter_map(|spring| {
-            match (spring.from, spring.to) {
-                (End::Particle(a), End::Particle(b)) if a == k => Some(b),
-                (End::Particle(a), End::Particle(b)) if b == k => Some(a),
-                _ => None,
-            }
-        }));
+        partners.extend(
+            forces
+                .spring_partners(k)
+                .filter_map(|(_, other)| match other {
+                    End::Particle(o) => Some(o),
+                    End::Point(_) => None,
+                }),
+        );
         let mut position = std::mem::take(&mut self.position);
         position.resize(n, DVec2::ZERO);
         self.positions_read_by((k, &partners), (tau, h), forces, &mut position);
@@ -390,11 +399,18 @@ impl Motion {
                 *answer = pushed_back(contact.normal, *answer);
             }
         }
-        self.depart(k, kick, (tau, h), 1);
+        let z = DVec2::ZERO;
         for j in 0..n {
-            self.depart(j, alpha[j] / 6.0, (tau, h), 3);
-            self.depart(j, beta[j] / 12.0, (tau, h), 4);
-            self.depart(j, gamma[j] / 120.0, (tau, h), 5);
+            let linear = if j == k { kick } else { z };
+            let sizes = [
+                z,
+                linear,
+                z,
+                alpha[j] / 6.0,
+                beta[j] / 12.0,
+                gamma[j] / 120.0,
+            ];
+            self.depart(j, sizes, (tau, h));
         }
         (self.position, self.partners, self.answers) = (position, partners, [alpha, beta, gamma]);
     }

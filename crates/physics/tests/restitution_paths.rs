@@ -3,9 +3,10 @@
 //!
 //! The contact code treats the two differently (see `contacts/mod.rs`): an impact of a
 //! free particle is applied inside the step on its exact path, an impact of a coupled one
-//! (a particle that feels a pairwise force or a spring) on the coupled particles' state
-//! integrated again to that instant (and on to the step's end, or, in some cases, the
-//! step ends there). Pairwise gravitation is on by default, so
+//! (a particle that feels a pairwise force or a spring) on the coupled particles' motion
+//! through the step, which everything the struck one pulls then answers (with rk4; other
+//! methods integrate the coupled particles again to that instant and on to the step's
+//! end; in some cases the step ends there). Pairwise gravitation is on by default, so
 //! most scenes a user builds take the coupled road — and once, a wrong restitution there
 //! passed every test, because every test with e < 1 used free particles.
 //!
@@ -622,6 +623,60 @@ fn a_coupled_ball_struck_hard_into_its_floor_bounces_off_it() {
             v[k]
         );
     }
+}
+
+/// A coupled ball the floor holds stays on the floor through impacts inside the step:
+/// a ball on a frictionless floor, on a spring from a point above it (natural length
+/// 0.5 m, stretched to 1 m: it pulls up with 2.5 N, less than the ball's weight), slides
+/// to and fro and strikes the walls 0.4 m apart elastically, several times a second. The
+/// floor holds it (closed form: its centre's height is its radius at every instant). The
+/// spring's answer to each blow pulls partly upwards (its axis is tilted); the floor's
+/// support takes that part away, as it takes the spring's whole upward pull. Held to
+/// 1e-12 of the radius at every millisecond for 5 s (the support cancels the vertical
+/// acceleration exactly: measured 0). Leaving the answer's vertical part in moves the
+/// ball off the floor by 2.6e-10 m (`simulation/coupled/response.rs`, `Motion::hold`);
+/// leaving it in the rates of acceleration the impacts are measured on, by 1.6e-9 m.
+#[test]
+fn a_sprung_ball_on_the_floor_stays_on_it_through_its_impacts() {
+    let radius = 0.1;
+    let scene = Scene::new()
+        .with_world(World {
+            gravitation: false,
+            electrostatics: false,
+            restitution: 1.0,
+            bounds: Some(Bounds {
+                min: [-0.2 - radius, 0.0].into(),
+                max: [0.2 + radius, 10.0].into(),
+            }),
+            ..World::default()
+        })
+        .with_particle(
+            Particle::new("ball", 1.0)
+                .radius(radius)
+                .position([0.0, radius])
+                .velocity([2.0, 0.0]),
+        )
+        .with_spring(physics::Spring::new(
+            "spring",
+            [0.0, radius + 1.0],
+            "ball",
+            5.0,
+            0.5,
+        ));
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.record_impacts();
+    let mut worst: f64 = 0.0;
+    for k in 1..=5000 {
+        simulation.step_to(f64::from(k) * 1e-3).unwrap();
+        worst = worst.max((simulation.positions()[0].y - radius).abs());
+    }
+    let walls = simulation
+        .take_impacts()
+        .iter()
+        .filter(|impact| impact.normal_speed_before > 0.5)
+        .count();
+    assert!(walls >= 20, "{walls} impacts with the walls");
+    assert!(worst <= 1e-12 * radius, "off the floor by {worst:e} m");
 }
 
 /// The clock and the motion agree while coupled impacts end steps early: in the paper's

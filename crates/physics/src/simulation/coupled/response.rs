@@ -40,11 +40,14 @@
 //! ball's); without β the pile's residual was 4.7 times larger (2.6e-9: its test fails);
 //! without α, 1,400 times.
 //!
-//! A surface that supports a particle answers a push into it: the part of an answer into
-//! a surface the particle rests on is taken away, as the surface's force would (a pull
-//! away is left, since the support may not hold the particle there). A step that ends at
-//! a coupled impact ([`super::catch_on_surfaces`]) puts every member where the motion has
-//! it then, with every rate measured in bulk.
+//! A surface that holds a particle (its support pressing at the step's start) answers
+//! any small change of the others' pull along its normal, either way: that part of an
+//! answer, and of a rate of acceleration, is taken away, as the integration's own
+//! support takes it (one step from the same state against integrating again, over 2,000
+//! steps of the mixed pile of 150: the largest difference 1.8e-12 m, against 6.5e-9 m
+//! with the normal part left in). A step that ends at a coupled impact
+//! ([`super::catch_on_surfaces`]) puts every member where the motion has it then, with
+//! every rate measured in bulk.
 //!
 //! Only rk4 uses it: a lower-order method's motion between the ends is its own steps',
 //! which the curve would make more exact than the method itself; those integrate again
@@ -242,6 +245,18 @@ impl Motion {
         }
     }
 
+    /// The parts of `answers` (changes of the members' accelerations) along the normal of
+    /// a surface that holds the member at the step's start taken away: the support
+    /// answers any small change of the others' pull, either way.
+    fn hold(&self, forces: &ForceModel, answers: &mut [DVec2]) {
+        for contact in &forces.surface_contacts {
+            let k = contact.particle;
+            if holds(self.start_acceleration[k], contact.normal) {
+                answers[k] -= contact.normal * answers[k].dot(contact.normal);
+            }
+        }
+    }
+
     /// Every member's rates of acceleration at both ends of a step of `h`, for all of
     /// them to be put where they are exactly: by central differences of the accelerations
     /// along each end's velocities, ±h/1000 (four evaluations of the members' forces,
@@ -380,10 +395,7 @@ impl Motion {
             answer.resize(n, DVec2::ZERO);
         }
         forces.displacement_response(&position, k, kick, &mut alpha);
-        for contact in &forces.surface_contacts {
-            let answer = &mut alpha[contact.particle];
-            *answer = pushed_back(contact.normal, *answer);
-        }
+        self.hold(forces, &mut alpha);
         for &m in std::iter::once(&k).chain(&partners) {
             forces.displacement_response(&position, m, alpha[m], &mut gamma);
         }
@@ -394,11 +406,8 @@ impl Motion {
                 *b = (*b - *a * span) / (span * span);
             }
         }
-        for contact in &forces.surface_contacts {
-            for answer in [&mut beta[contact.particle], &mut gamma[contact.particle]] {
-                *answer = pushed_back(contact.normal, *answer);
-            }
-        }
+        self.hold(forces, &mut beta);
+        self.hold(forces, &mut gamma);
         let z = DVec2::ZERO;
         for j in 0..n {
             let linear = if j == k { kick } else { z };
@@ -416,18 +425,6 @@ impl Motion {
     }
 }
 
-/// A change `answer` of a supported particle's acceleration less its part into the
-/// surface of `normal`, which the surface's support answers; a pull away is left (the
-/// support may not hold the particle there).
-fn pushed_back(normal: DVec2, answer: DVec2) -> DVec2 {
-    let into = answer.dot(normal);
-    if into < 0.0 {
-        answer - normal * into
-    } else {
-        answer
-    }
-}
-
 /// Member `k`'s rate of acceleration `rate` where its acceleration is `acceleration`,
 /// less the part along the normal of a surface holding it there (its acceleration has
 /// no part into that surface then: the support answers every change of the others).
@@ -435,15 +432,17 @@ fn supported(forces: &ForceModel, k: usize, acceleration: DVec2, rate: DVec2) ->
     forces
         .surface_contacts
         .iter()
-        .filter(|contact| contact.particle == k)
+        .filter(|contact| contact.particle == k && holds(acceleration, contact.normal))
         .fold(rate, |rate, contact| {
-            let held = acceleration.dot(contact.normal) <= 1e-9 * acceleration.length();
-            if held {
-                rate - contact.normal * rate.dot(contact.normal)
-            } else {
-                rate
-            }
+            rate - contact.normal * rate.dot(contact.normal)
         })
+}
+
+/// Whether a surface of `normal` holds a particle whose acceleration (its answer
+/// included) is `acceleration`: the answer took away every part of it into the surface,
+/// which a particle pulled away from it would still have.
+fn holds(acceleration: DVec2, normal: DVec2) -> bool {
+    acceleration.dot(normal) <= 1e-9 * acceleration.length()
 }
 
 /// The members an impact involves (none for a particle outside the coupled system).

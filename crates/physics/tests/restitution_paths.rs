@@ -411,8 +411,9 @@ fn the_impact_log_names_the_ramp_the_wall_or_the_particle_struck() {
 /// itself: rk4's own error after the 15 steps before it, whose phase lags (ωh)⁵/120 a
 /// step (1.2e-8 s in all; measured 1.15e-8 s and 9.7e-8; integrating the coupled system
 /// to the instant instead, as each impact once did, 1.18e-8 s and 1.0e-7). Measured on
-/// the quintic through the step's ends instead of the motion's own curve
-/// (`simulation/coupled/response.rs`), the speed is off by 2.2e-7 of itself.
+/// the cubic through the step's ends (as the impact search's paths are) instead of the
+/// motion's own curve (`simulation/coupled/response.rs`), the speed is off by 1.8e-6 of
+/// itself; on the quintic through their positions, velocities and accelerations, 2.2e-7.
 #[test]
 fn a_coupled_impact_is_located_where_the_balls_touch() {
     let (radius, omega, amplitude) = (0.1, 100.0_f64, 1.1_f64);
@@ -476,7 +477,7 @@ fn ball_on_a_spring(world: World, (stiffness, mass, radius): (f64, f64, f64)) ->
 /// impacts: the motion is rk4's, off by about (ωh)⁵/120 of itself, 3e-11 on a whole
 /// 0.02 s step (measured: speeds to 3e-13, instants to 4e-11 s). Leaving out the
 /// answer's fifth-order term (the velocity's ω⁴ Δv s⁴/24) puts the speeds 2e-9 off;
-/// measuring on the quintic through the step's ends, 1.1e-9. (With 0.1 s steps and 1 cm between the
+/// measuring on the cubic through the step's ends, 1.1e-9. (With 0.1 s steps and 1 cm between the
 /// walls the seventh impact is 1.3e-9 s late, rk4's error, as it was when each coupled
 /// impact ended the step.)
 #[test]

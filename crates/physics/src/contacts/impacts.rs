@@ -74,15 +74,7 @@ impl Path {
         let span = h - self.from;
         let (position, velocity) = if span > 0.0 {
             let s = ((t - self.from) / span).clamp(0.0, 1.0);
-            let (s2, s3) = (s * s, s * s * s);
-            let position = x0 * (2.0 * s3 - 3.0 * s2 + 1.0)
-                + v0 * (span * (s3 - 2.0 * s2 + s))
-                + x1 * (3.0 * s2 - 2.0 * s3)
-                + v1 * (span * (s3 - s2));
-            let velocity = (x1 - x0) * ((6.0 * s - 6.0 * s2) / span)
-                + v0 * (3.0 * s2 - 4.0 * s + 1.0)
-                + v1 * (3.0 * s2 - 2.0 * s);
-            (position, velocity)
+            hermite(((x0, v0), (x1, v1)), span, s)
         } else {
             (x0, v0) // a curve that starts at the step's end
         };
@@ -143,6 +135,24 @@ impl Path {
         }
         points
     }
+}
+
+/// The cubic Hermite curve from position and velocity `start` to `end` over `span`
+/// seconds: its position and velocity at the fraction `s` of the span.
+pub(crate) fn hermite(
+    ((x0, v0), (x1, v1)): ((DVec2, DVec2), (DVec2, DVec2)),
+    span: f64,
+    s: f64,
+) -> (DVec2, DVec2) {
+    let (s2, s3) = (s * s, s * s * s);
+    let position = x0 * (2.0 * s3 - 3.0 * s2 + 1.0)
+        + v0 * (span * (s3 - 2.0 * s2 + s))
+        + x1 * (3.0 * s2 - 2.0 * s3)
+        + v1 * (span * (s3 - s2));
+    let velocity = (x1 - x0) * ((6.0 * s - 6.0 * s2) / span)
+        + v0 * (3.0 * s2 - 4.0 * s + 1.0)
+        + v1 * (3.0 * s2 - 2.0 * s);
+    (position, velocity)
 }
 
 /// Bodies of a coupled impact this fraction of their reach apart at its refined instant

@@ -44,6 +44,32 @@ impl ForceModel {
         })
     }
 
+    /// Particle `k`'s acceleration, m/s², at positions `x` and velocities `v`: what
+    /// [`Self::accelerations`] gives it (to rounding), from one pass over its partners.
+    /// The pair laws are summed directly (a tree's sum differs by its approximation).
+    pub fn acceleration_of(&self, x: &[DVec2], v: &[DVec2], k: usize) -> DVec2 {
+        let pairs = self.pair_partners(k).fold(DVec2::ZERO, |force, (j, c)| {
+            let d = x[j] - x[k];
+            let r2 = d.length_squared() + self.softening2;
+            force + d * (c / (r2 * r2.sqrt()))
+        });
+        let springs = self
+            .spring_partners(k)
+            .fold(DVec2::ZERO, |force, (spring, _)| {
+                let f = spring.force_on_from(x, v);
+                match spring.from {
+                    End::Particle(i) if i == k => force + f,
+                    _ => force - f,
+                }
+            });
+        let mut a = super::uniform::acceleration(self.uniform[k])
+            + (pairs + springs) * self.inverse_mass[k];
+        for contact in self.surface_contacts.iter().filter(|c| c.particle == k) {
+            contact.apply(&mut a);
+        }
+        a
+    }
+
     /// Adds to `out` the change of every particle's acceleration, m/s², when particle `k`
     /// alone moves by `delta` from positions `x`, to first order in `delta`: the pair laws
     /// (summed directly, also when a tree sums their forces: the tree approximates this
@@ -229,6 +255,25 @@ mod tests {
                     (change[j] - response[j]).length() <= 1e-6 * response[j].length().max(1e-9)
                 );
             }
+        }
+    }
+
+    /// One particle's acceleration is the whole evaluation's, to 1e-12 of its scale.
+    #[test]
+    fn one_particles_acceleration_is_the_evaluations() {
+        let mut uniform = crate::testing::uniform(3);
+        let n = 9;
+        let (model, x) = model(n, &mut uniform);
+        let v: Vec<DVec2> = (0..n).map(|_| DVec2::new(uniform(), uniform())).collect();
+        let mut a = vec![DVec2::ZERO; n];
+        model.accelerations(&x, &v, &mut a);
+        let scale = a.iter().map(|a| a.length()).fold(1.0, f64::max);
+        for (k, expected) in a.iter().enumerate() {
+            let one = model.acceleration_of(&x, &v, k);
+            assert!(
+                (one - *expected).length() <= 1e-12 * scale,
+                "particle {k}: {one} against {expected}"
+            );
         }
     }
 

@@ -59,9 +59,16 @@ pub(crate) struct SpringLink {
 impl SpringLink {
     /// Adds the spring's forces on its ends to `force`.
     pub fn add_forces(&self, x: &[DVec2], v: &[DVec2], force: &mut [DVec2]) {
+        let f = self.force_on_from(x, v);
+        self.from.add_force(force, f);
+        self.to.add_force(force, -f);
+    }
+
+    /// The spring's force on its `from` end, N (on `to`, the opposite).
+    pub fn force_on_from(&self, x: &[DVec2], v: &[DVec2]) -> DVec2 {
         let d = self.to.position(x) - self.from.position(x);
         let length = d.length();
-        let f = if length > 0.0 {
+        if length > 0.0 {
             let axis = d / length;
             let closing_speed = (self.to.velocity(v) - self.from.velocity(v)).dot(axis);
             axis * (self.stiffness * (length - self.natural_length) + self.damping * closing_speed)
@@ -69,9 +76,7 @@ impl SpringLink {
             // Ends at one point: the axis is undefined and the elastic force
             // −k (L − L0) u has no direction; only damping of the relative motion remains.
             (self.to.velocity(v) - self.from.velocity(v)) * self.damping
-        };
-        self.from.add_force(force, f);
-        self.to.add_force(force, -f);
+        }
     }
 
     /// The power its damping takes out of the motion, watts (≥ 0): b times the square of

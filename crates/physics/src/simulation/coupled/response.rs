@@ -21,17 +21,20 @@
 //! What an impact is measured and applied on must be as exact as the integrator: each
 //! involved particle's acceleration is taken as the cubic through its values and rates
 //! (∂a/∂x · v, [`crate::forces::ForceModel::acceleration_rate`]) at both ends, integrated
-//! from the start, off by order h⁵ in the velocity. The quintic through the ends'
-//! positions, velocities and accelerations, which serves what only reads where a particle
-//! is (the Jacobian, the impact search's paths), would carry rk4's error in the end
-//! position, divided by h, into the velocity. Newton's method finds the instant on that
-//! curve, so the gap closes there exactly as before; the step still ends at the
-//! integrator's state plus the departures.
+//! from the start, off by order h⁵ in the velocity (an involved particle's acceleration at
+//! the step's end is computed when first needed, one pass over its partners). The cubic
+//! through the ends' positions and velocities serves what only reads where a particle is
+//! (the Jacobian, the impact search's paths); measured on it, an impact's speed would be
+//! off by order h³ (1.8e-6 of it on the stiff spring of `restitution_paths.rs`), and on the
+//! quintic through the ends' accelerations too, by rk4's error in the end position
+//! divided by h (2.2e-7). Newton's method finds the instant on the motion's own curve, so
+//! the gap closes there exactly as before; the step still ends at the integrator's state
+//! plus the departures.
 //!
 //! So an impact of a coupled particle costs a few passes over what it pulls instead of
 //! integrating every coupled particle again, twice (to the impact and on to the step's
-//! end: 7.5 evaluations of all their forces an impact in the processing-time scene), and
-//! the step one evaluation at its end. Measured against closed forms (a ball on a spring
+//! end: 7.5 evaluations of all their forces an impact in the processing-time scene).
+//! Measured against closed forms (a ball on a spring
 //! rattling between walls, up to four impacts a step: instants and speeds to 1e-13; a
 //! stiff spring's impact at ωh = 0.1 as near the truth as integrating to the instant) and
 //! by the energy ledger of a pile of charged and sprung balls (the residual as before:
@@ -58,7 +61,7 @@ use std::sync::Arc;
 
 use glam::DVec2;
 
-use crate::contacts::{Contacts, Impact, Members};
+use crate::contacts::{Contacts, Impact, Members, hermite};
 use crate::forces::ForceModel;
 use crate::forces::spring::End;
 use crate::profile::Stage;
@@ -76,7 +79,7 @@ pub(super) struct Motion {
     start: State,
     start_acceleration: Vec<DVec2>,
     end: State,
-    end_acceleration: Vec<DVec2>,
+    end_acceleration: Vec<Option<DVec2>>,
     /// Each member's rate of acceleration at both ends, once an impact measured it.
     rates: Vec<Option<[DVec2; 2]>>,
     /// Each member's departure from the integrator's motion, the quintic
@@ -116,12 +119,11 @@ impl Motion {
         self.start_acceleration
             .extend(members.iter().map(|&i| start_acceleration[i]));
         self.end_acceleration.clear();
-        self.end_acceleration.resize(members.len(), DVec2::ZERO);
-        forces.accelerations(
-            &self.end.position,
-            &self.end.velocity,
-            &mut self.end_acceleration,
-        );
+        self.end_acceleration.resize(members.len(), None);
+        if forces.tree.is_some() {
+            // A tree's sum of one particle's forces is not the direct sum's.
+            self.measure_every_end_acceleration(forces);
+        }
         self.rates.clear();
         self.rates.resize(members.len(), None);
         self.departure.clear();
@@ -132,57 +134,47 @@ impl Motion {
 
     /// Member `k`'s position and velocity `t` seconds into a step of `h`, near enough for
     /// what only reads where it is (the forces' Jacobian, the impact search's paths): the
-    /// quintic through the positions, velocities and accelerations at both ends.
+    /// cubic through the positions and velocities at both ends, off by some h⁴ x⁗/384.
     fn at(&self, k: usize, t: f64, h: f64) -> (DVec2, DVec2) {
-        let (x0, v0, a0) = (
-            self.start.position[k],
-            self.start.velocity[k],
-            self.start_acceleration[k],
-        );
-        let (x1, v1, a1) = (
-            self.end.position[k],
-            self.end.velocity[k],
-            self.end_acceleration[k],
-        );
+        let (x0, v0) = (self.start.position[k], self.start.velocity[k]);
+        let (x1, v1) = (self.end.position[k], self.end.velocity[k]);
         let (position, velocity) = if t >= h {
             (x1, v1)
         } else {
-            // The curve ends where the velocities and accelerations at both ends put it
-            // (x0 + h (v0 + v1)/2 + h² (a0 − a1)/12), not at the integrator's x1, whose
-            // error of order (ωh)⁵ a curve through it would divide by h in its velocity.
-            let x1 = x0 + (v0 + v1) * (0.5 * h) + (a0 - a1) * (h * h / 12.0);
-            let s = t / h;
-            let (s2, s3) = (s * s, s * s * s);
-            let (s4, s5) = (s2 * s2, s2 * s3);
-            let h3 = 10.0 * s3 - 15.0 * s4 + 6.0 * s5;
-            let h1 = s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5;
-            let h2 = 0.5 * (s2 - 3.0 * s3 + 3.0 * s4 - s5);
-            let h4 = -4.0 * s3 + 7.0 * s4 - 3.0 * s5;
-            let h5 = 0.5 * (s3 - 2.0 * s4 + s5);
-            let d3 = 30.0 * (s2 - 2.0 * s3 + s4);
-            let d1 = 1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4;
-            let d2 = s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4;
-            let d4 = -12.0 * s2 + 28.0 * s3 - 15.0 * s4;
-            let d5 = 1.5 * s2 - 4.0 * s3 + 2.5 * s4;
-            let position =
-                x0 + (x1 - x0) * h3 + (v0 * h1 + v1 * h4) * h + (a0 * h2 + a1 * h5) * (h * h);
-            let velocity = (x1 - x0) * (d3 / h) + v0 * d1 + v1 * d4 + (a0 * d2 + a1 * d5) * h;
-            (position, velocity)
+            hermite(((x0, v0), (x1, v1)), h, t / h)
         };
         self.departed(k, t, (position, velocity))
+    }
+
+    /// Member `k`'s acceleration at the trial step's end, computed the first time it is
+    /// asked for (one pass over its partners, not an evaluation of every member).
+    fn end_acceleration(&mut self, k: usize, forces: &ForceModel) -> DVec2 {
+        *self.end_acceleration[k].get_or_insert_with(|| {
+            forces.acceleration_of(&self.end.position, &self.end.velocity, k)
+        })
+    }
+
+    /// Every member's acceleration at the trial step's end not yet known, in one
+    /// evaluation.
+    fn measure_every_end_acceleration(&mut self, forces: &ForceModel) {
+        let mut a = vec![DVec2::ZERO; self.end.len()];
+        forces.accelerations(&self.end.position, &self.end.velocity, &mut a);
+        for (known, a) in self.end_acceleration.iter_mut().zip(a) {
+            known.get_or_insert(a);
+        }
     }
 
     /// Member `k`'s position and velocity `t` seconds into a step of `h`, as exactly as
     /// the integrator's own: what an impact is measured and applied on. The acceleration
     /// is the cubic through its values and rates at both ends (the rates computed the
     /// first time the member is asked for, under `forces`), integrated from the start:
-    /// its error is of order h⁴ in the acceleration, h⁵ in the velocity. (The quintic of
-    /// [`Self::at`] is off by its end's error over h in the velocity: 4e-10 of the speed
-    /// for ω = 1 /s at 20 ms steps.)
+    /// its error is of order h⁴ in the acceleration, h⁵ in the velocity. (The cubic of
+    /// [`Self::at`] is off by order h³ in the velocity.)
     fn exactly(&mut self, k: usize, t: f64, h: f64, forces: &ForceModel) -> (DVec2, DVec2) {
         if t >= h {
             return self.at(k, t, h);
         }
+        let a1 = self.end_acceleration(k, forces);
         let [j0, j1] = *self.rates[k].get_or_insert_with(|| {
             let rate = |state: &State, a: DVec2| {
                 let rate = forces.acceleration_rate(&state.position, &state.velocity, k);
@@ -190,7 +182,7 @@ impl Motion {
             };
             [
                 rate(&self.start, self.start_acceleration[k]),
-                rate(&self.end, self.end_acceleration[k]),
+                rate(&self.end, a1),
             ]
         });
         let (x0, v0, a0) = (
@@ -198,7 +190,6 @@ impl Motion {
             self.start.velocity[k],
             self.start_acceleration[k],
         );
-        let a1 = self.end_acceleration[k];
         let s = t / h;
         let (s2, s3) = (s * s, s * s * s);
         let (s4, s5) = (s2 * s2, s2 * s3);
@@ -259,11 +250,13 @@ impl Motion {
 
     /// Every member's rates of acceleration at both ends of a step of `h`, for all of
     /// them to be put where they are exactly: by central differences of the accelerations
-    /// along each end's velocities, ±h/1000 (four evaluations of the members' forces,
+    /// along each end's velocities, ±h/1000 (four evaluations of the members' forces, and
+    /// a fifth for the end's accelerations,
     /// where one member's own rate reads its partners one by one; the difference's error
     /// is of order 1e-6² of the rate, its rounding's some 1e-10 m/s³ in the 1 ms step,
     /// which moves a velocity by 1e-14 m/s). A rate already measured is kept.
     fn measure_every_rate(&mut self, forces: &ForceModel, h: f64) {
+        self.measure_every_end_acceleration(forces);
         let epsilon = h * 1e-3;
         let n = self.start.len();
         let mut rates = [vec![DVec2::ZERO; n], vec![DVec2::ZERO; n]];

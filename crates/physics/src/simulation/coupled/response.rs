@@ -101,8 +101,9 @@ pub(super) struct Motion {
 
 impl Motion {
     /// A step's motion: the members at the `start` state and the trial step's `end`,
-    /// `start_acceleration` the whole system's at the start (rk4's first stage), the
-    /// end's computed under `forces` (the members' model with this step's surfaces).
+    /// `start_acceleration` the whole system's at the start (rk4's first stage); the
+    /// end's are computed under `forces` (the members' model with this step's surfaces)
+    /// as impacts need them.
     fn begin(
         &mut self,
         members: &[usize],
@@ -378,14 +379,13 @@ impl Motion {
         let mut position = std::mem::take(&mut self.position);
         position.resize(n, DVec2::ZERO);
         self.positions_read_by((k, &partners), (tau, h), forces, &mut position);
-        // The answer's acceleration in s = t − τ: α s from the Jacobian at τ; β s² from the
-        // exact change of the forces at the step's end where the struck particle has
-        // moved on by Δv s (the Jacobian's change along the motion, and the forces'
-        // curvature); γ s³/3!·… (J α s⁵/120 in the position, the velocity's
-        // J² Δv s⁴/24: 4e-10 of a kick at ω = 1 /s, 10 ms after it) through the struck
-        // particle and those it shares a spring with, whose answers are the largest (a
-        // pair law's partner at a distance answers by far less, and its answers less
-        // again).
+        // The answer's acceleration in s = t − τ: α s from the Jacobian at τ; β s² + c s³
+        // from the exact change of the forces where the struck particle has moved on by
+        // Δv s (the Jacobian's change along the motion, and the forces' curvature); γ s³/6
+        // (J α s⁵/120 in the position, the velocity's J² Δv s⁴/24: 4e-10 of a kick at
+        // ω = 1 /s, 10 ms after it) through the struck particle and those it shares a
+        // spring with, whose answers are the largest (a pair law's partner at a distance
+        // answers by far less, and its answers less again).
         let [mut alpha, mut beta, mut gamma, mut cubic] = std::mem::take(&mut self.answers);
         for answer in [&mut alpha, &mut beta, &mut gamma, &mut cubic] {
             answer.clear();

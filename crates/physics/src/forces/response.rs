@@ -44,6 +44,19 @@ impl ForceModel {
         })
     }
 
+    /// Whether a spring turns its ends within a step of `h` by more than (ω h)² = 1e-2,
+    /// ω² = k (1/m₁ + 1/m₂): there the motion between the step's ends is too far from a
+    /// short series for an impact's answer (`simulation/coupled/response.rs`).
+    pub fn has_stiff_springs(&self, h: f64) -> bool {
+        let inverse_mass = |end: End| match end {
+            End::Particle(i) => self.inverse_mass[i],
+            End::Point(_) => 0.0,
+        };
+        self.springs.iter().any(|spring| {
+            spring.stiffness * (inverse_mass(spring.from) + inverse_mass(spring.to)) * h * h > 1e-2
+        })
+    }
+
     /// Particle `k`'s acceleration, m/s², at positions `x` and velocities `v`: what
     /// [`Self::accelerations`] gives it (to rounding), from one pass over its partners.
     /// The pair laws are summed directly (a tree's sum differs by its approximation).

@@ -283,7 +283,7 @@ impl Simulation {
     /// slower one is caught on its surface at once ([`catch_on_surfaces`]), as the next
     /// step's start would, and the step goes on.
     pub(super) fn coupled_impacts_in_step(&mut self, first: (f64, Impact), taken: f64) -> f64 {
-        if self.integrator == Integrator::Rk4 {
+        if self.integrator == Integrator::Rk4 && !self.forces.has_stiff_springs(taken) {
             return self.coupled_responses_in_step(first, taken);
         }
         let Some(system) = self.coupled.as_mut() else {

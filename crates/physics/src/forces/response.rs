@@ -229,6 +229,21 @@ mod tests {
         (model, x)
     }
 
+    /// The accelerations of `model`'s fields, pair laws and springs at positions `x`, at rest.
+    fn free_accelerations(model: &ForceModel, x: &[DVec2]) -> Vec<DVec2> {
+        let mut a = vec![DVec2::ZERO; x.len()];
+        model.free_accelerations(x, &vec![DVec2::ZERO; x.len()], &mut a);
+        a
+    }
+
+    /// (plus − minus) / 2ε, element by element.
+    fn central_difference(plus: &[DVec2], minus: &[DVec2], eps: f64) -> Vec<DVec2> {
+        plus.iter()
+            .zip(minus)
+            .map(|(p, m)| (*p - *m) / (2.0 * eps))
+            .collect()
+    }
+
     /// The exact change equals the difference of the accelerations themselves for a
     /// displacement of 3 cm of each particle in turn (to rounding: 1e-12 of their scale),
     /// and approaches the response for a small one.
@@ -237,11 +252,7 @@ mod tests {
         let mut uniform = crate::testing::uniform(11);
         let n = 9;
         let (model, x) = model(n, &mut uniform);
-        let accelerations = |x: &[DVec2]| {
-            let mut a = vec![DVec2::ZERO; n];
-            model.free_accelerations(x, &vec![DVec2::ZERO; n], &mut a);
-            a
-        };
+        let accelerations = |x: &[DVec2]| free_accelerations(&model, x);
         let before = accelerations(&x);
         let scale = before.iter().map(|a| a.length()).fold(1.0, f64::max);
         for k in 0..n {
@@ -302,17 +313,10 @@ mod tests {
             .collect();
         let at = |t: f64| {
             let moved: Vec<DVec2> = x.iter().zip(&v).map(|(x, v)| *x + *v * t).collect();
-            let mut a = vec![DVec2::ZERO; n];
-            model.free_accelerations(&moved, &vec![DVec2::ZERO; n], &mut a);
-            a
+            free_accelerations(&model, &moved)
         };
         let eps = 1e-6;
-        let (after, before) = (at(eps), at(-eps));
-        let difference: Vec<DVec2> = after
-            .iter()
-            .zip(&before)
-            .map(|(p, m)| (*p - *m) / (2.0 * eps))
-            .collect();
+        let difference = central_difference(&at(eps), &at(-eps), eps);
         let scale = difference.iter().map(|d| d.length()).fold(1e-3, f64::max);
         for (k, expected) in difference.iter().enumerate() {
             let rate = model.acceleration_rate(&x, &v, k);
@@ -333,11 +337,7 @@ mod tests {
         let mut uniform = crate::testing::uniform(7);
         let n = 9;
         let (model, x) = model(n, &mut uniform);
-        let accelerations = |x: &[DVec2]| {
-            let mut a = vec![DVec2::ZERO; n];
-            model.free_accelerations(x, &vec![DVec2::ZERO; n], &mut a);
-            a
-        };
+        let accelerations = |x: &[DVec2]| free_accelerations(&model, x);
         let eps = 1e-6;
         for k in 0..n {
             for delta in [DVec2::X, DVec2::new(0.6, -0.8)] {
@@ -346,12 +346,8 @@ mod tests {
                 let (mut plus, mut minus) = (x.clone(), x.clone());
                 plus[k] += delta * eps;
                 minus[k] -= delta * eps;
-                let (ap, am) = (accelerations(&plus), accelerations(&minus));
-                let difference: Vec<DVec2> = ap
-                    .iter()
-                    .zip(&am)
-                    .map(|(p, m)| (*p - *m) / (2.0 * eps))
-                    .collect();
+                let difference =
+                    central_difference(&accelerations(&plus), &accelerations(&minus), eps);
                 let scale = difference.iter().map(|d| d.length()).fold(1e-3, f64::max);
                 for (j, (r, d)) in response.iter().zip(&difference).enumerate() {
                     assert!(

@@ -266,13 +266,13 @@ impl Motion {
         }
     }
 
-    /// Every member's rates of acceleration at both ends of a step of `h`, for all of
-    /// them to be put where they are exactly: by central differences of the accelerations
-    /// along each end's velocities, ±h/1000 (four evaluations of the members' forces, and
-    /// a fifth for the end's accelerations,
-    /// where one member's own rate reads its partners one by one; the difference's error
-    /// is of order 1e-6² of the rate, its rounding's some 1e-10 m/s³ in the 1 ms step,
-    /// which moves a velocity by 1e-14 m/s). A rate already measured is kept.
+    /// Every member's rates of acceleration (and accelerations) at both ends of a step of
+    /// `h`, for all of them to be put where they are exactly: the rates by central
+    /// differences of the accelerations along each end's velocities, ±h/1000. Five
+    /// evaluations of the members' forces, where one member's own rate reads its partners
+    /// one by one; the difference's error is of order 1e-6² of the rate, its rounding's
+    /// some 1e-10 m/s³ in the 1 ms step, which moves a velocity by 1e-14 m/s. A rate
+    /// already measured is kept.
     fn measure_every_rate(&mut self, forces: &ForceModel, h: f64) {
         self.measure_every_end_acceleration(forces);
         let epsilon = h * 1e-3;

@@ -144,15 +144,25 @@ pub(crate) fn hermite(
     span: f64,
     s: f64,
 ) -> (DVec2, DVec2) {
-    let (s2, s3) = (s * s, s * s * s);
-    let position = x0 * (2.0 * s3 - 3.0 * s2 + 1.0)
-        + v0 * (span * (s3 - 2.0 * s2 + s))
-        + x1 * (3.0 * s2 - 2.0 * s3)
-        + v1 * (span * (s3 - s2));
+    let s2 = s * s;
+    let position = hermite_position(((x0, v0), (x1, v1)), span, s);
     let velocity = (x1 - x0) * ((6.0 * s - 6.0 * s2) / span)
         + v0 * (3.0 * s2 - 4.0 * s + 1.0)
         + v1 * (3.0 * s2 - 2.0 * s);
     (position, velocity)
+}
+
+/// [`hermite`]'s position alone, for what only reads where a body is.
+pub(crate) fn hermite_position(
+    ((x0, v0), (x1, v1)): ((DVec2, DVec2), (DVec2, DVec2)),
+    span: f64,
+    s: f64,
+) -> DVec2 {
+    let (s2, s3) = (s * s, s * s * s);
+    x0 * (2.0 * s3 - 3.0 * s2 + 1.0)
+        + v0 * (span * (s3 - 2.0 * s2 + s))
+        + x1 * (3.0 * s2 - 2.0 * s3)
+        + v1 * (span * (s3 - s2))
 }
 
 /// Bodies of a coupled impact this fraction of their reach apart at its refined instant

@@ -57,7 +57,7 @@ use glam::DVec2;
 
 use self::broad_phase::{Aabb, Proxies};
 use self::impacts::ImpactSearch;
-pub(crate) use self::impacts::{Members, hermite};
+pub(crate) use self::impacts::{Members, hermite, hermite_position};
 use self::obstacles::{Obstacle, Shape};
 use self::resting::{RestingSolver, Touching};
 use self::surfaces::StartContacts;

@@ -78,7 +78,7 @@ use std::sync::Arc;
 
 use glam::DVec2;
 
-use crate::contacts::{Contacts, Impact, Members, hermite};
+use crate::contacts::{Contacts, Impact, Members, hermite, hermite_position};
 use crate::forces::ForceModel;
 use crate::forces::spring::End;
 use crate::profile::Stage;
@@ -162,6 +162,20 @@ impl Motion {
             hermite(((x0, v0), (x1, v1)), h, t / h)
         };
         self.departed(k, t, (position, velocity))
+    }
+
+    /// [`Self::at`]'s position alone (the same arithmetic): what the Jacobian and the
+    /// exact change of the forces read.
+    fn position_at(&self, k: usize, t: f64, h: f64) -> DVec2 {
+        let (x0, v0) = (self.start.position[k], self.start.velocity[k]);
+        let (x1, v1) = (self.end.position[k], self.end.velocity[k]);
+        let position = if t >= h {
+            x1
+        } else {
+            hermite_position(((x0, v0), (x1, v1)), h, t / h)
+        };
+        let [c0, c1, c2, c3, c4, c5] = self.departure[k];
+        position + c0 + (c1 + (c2 + (c3 + (c4 + c5 * t) * t) * t) * t) * t
     }
 
     /// Member `k`'s acceleration at the trial step's end, computed the first time it is
@@ -329,9 +343,9 @@ impl Motion {
     }
 
     /// Adds Σ `sizes[n]`·(t − τ)ⁿ to member `k`'s departure (n from 0 to 5), and a bound
-    /// on how far that moves the member by the end of a step of `h` to its
-    /// [`Self::moved`].
-    fn depart(&mut self, k: usize, sizes: [DVec2; 6], (tau, h): (f64, f64)) {
+    /// on how far that moves the member by the end of the step to its [`Self::moved`]:
+    /// `powers` are the powers of −τ and of the rest of the step S, [`Powers::of`].
+    fn depart(&mut self, k: usize, sizes: [DVec2; 6], powers: &Powers) {
         // The binomial expansion of (t − τ)ⁿ: C(n, m) (−τ)^(n−m) tᵐ.
         const BINOMIAL: [[f64; 6]; 6] = [
             [1.0, 0.0, 0.0, 0.0, 0.0, 0.0],
@@ -345,19 +359,14 @@ impl Motion {
             return;
         }
         let c = &mut self.departure[k];
-        let mut power_of_tau = [1.0; 6];
-        for p in 1..6 {
-            power_of_tau[p] = power_of_tau[p - 1] * -tau;
-        }
         for (n, size) in sizes.into_iter().enumerate() {
             if size == DVec2::ZERO {
                 continue;
             }
             for m in 0..=n {
-                c[m] += size * (BINOMIAL[n][m] * power_of_tau[n - m]);
+                c[m] += size * (BINOMIAL[n][m] * powers.tau[n - m]);
             }
-            let exponent = i32::try_from(n).unwrap_or(i32::MAX);
-            self.moved[k] += size.length() * (h - tau).powi(exponent);
+            self.moved[k] += size.length() * powers.span[n];
         }
     }
 
@@ -373,19 +382,19 @@ impl Motion {
         let displaced = || std::iter::once(k).chain(partners.iter().copied());
         if displaced().any(|m| forces.interacting.binary_search(&m).is_ok()) {
             for &j in &forces.interacting {
-                position[j] = self.at(j, t, h).0;
+                position[j] = self.position_at(j, t, h);
             }
         }
         for m in displaced() {
             for (spring, _) in forces.spring_partners(m) {
                 for end in [spring.from, spring.to] {
                     if let End::Particle(j) = end {
-                        position[j] = self.at(j, t, h).0;
+                        position[j] = self.position_at(j, t, h);
                     }
                 }
             }
         }
-        position[k] = self.at(k, t, h).0;
+        position[k] = self.position_at(k, t, h);
     }
 
     /// Member `k`'s velocity changed by `kick` at `tau` seconds into a step of `h`: its
@@ -448,26 +457,44 @@ impl Motion {
         self.hold(forces, &mut gamma);
         self.hold(forces, &mut cubic);
         let z = DVec2::ZERO;
-        let largest = |terms: &dyn Fn(usize) -> f64| (0..n).map(terms).fold(0.0, f64::max);
-        let first = largest(&|j| alpha[j].length());
-        let last = largest(&|j| (gamma[j] / 120.0 + cubic[j] / 20.0).length());
+        let powers = Powers::of(tau, span);
+        // The largest first and fifth-order answers, for the trust rules below.
+        let (mut first, mut last) = (0.0, 0.0);
+        for j in 0..n {
+            let fifth = gamma[j] / 120.0 + cubic[j] / 20.0;
+            first = f64::max(first, alpha[j].length());
+            last = f64::max(last, fifth.length());
+            let linear = if j == k { kick } else { z };
+            let sizes = [z, linear, z, alpha[j] / 6.0, beta[j] / 12.0, fifth];
+            self.depart(j, sizes, &powers);
+        }
         let trusted = first * span * span <= STIFF * kick.length()
             && last * span.powi(4) <= TRUSTED * kick.length();
-        for j in 0..n {
-            let linear = if j == k { kick } else { z };
-            let sizes = [
-                z,
-                linear,
-                z,
-                alpha[j] / 6.0,
-                beta[j] / 12.0,
-                gamma[j] / 120.0 + cubic[j] / 20.0,
-            ];
-            self.depart(j, sizes, (tau, h));
-        }
         (self.position, self.partners, self.answers) =
             (position, partners, [alpha, beta, gamma, cubic]);
         trusted
+    }
+}
+
+/// The powers 0 to 5 of −τ and of the rest of the step S after an impact at τ, for
+/// [`Motion::depart`]: computed once an impact, not once a member and term.
+struct Powers {
+    tau: [f64; 6],
+    span: [f64; 6],
+}
+
+impl Powers {
+    fn of(tau: f64, span: f64) -> Self {
+        let mut tau_powers = [1.0; 6];
+        for p in 1..6 {
+            tau_powers[p] = tau_powers[p - 1] * -tau;
+        }
+        // As `powi` multiplies them (by squaring), so that the bounds keep their bits.
+        let (s2, s4) = (span * span, span * span * (span * span));
+        Self {
+            tau: tau_powers,
+            span: [1.0, span, s2, span * s2, s4, span * s4],
+        }
     }
 }
 

@@ -20,8 +20,10 @@ pub enum Stage {
     Integration,
     /// Impacts searched on the paths through the step, and applied in time order.
     TimeOfImpact,
-    /// The system integrated again to the instant of an impact of a coupled particle.
-    Reintegration,
+    /// Impacts of coupled particles (under pair forces or springs) inside the step: with
+    /// rk4 answered by the forces, else integrated again; or the whole system integrated
+    /// to the instant of one that ends the step.
+    CoupledImpacts,
     /// The resting-contact solver and the overlap correction.
     RestingSolver,
 }
@@ -33,7 +35,7 @@ impl Stage {
         Self::StartContacts,
         Self::Integration,
         Self::TimeOfImpact,
-        Self::Reintegration,
+        Self::CoupledImpacts,
         Self::RestingSolver,
     ];
 
@@ -44,7 +46,7 @@ impl Stage {
             Self::StartContacts => "contacts at start",
             Self::Integration => "integration",
             Self::TimeOfImpact => "time of impact",
-            Self::Reintegration => "re-integration",
+            Self::CoupledImpacts => "coupled impacts",
             Self::RestingSolver => "resting solver",
         }
     }

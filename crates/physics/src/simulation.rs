@@ -495,7 +495,7 @@ impl Simulation {
         let mut power_at_end = None;
         if let Some(first) = interruption.filter(|_| self.coupled_in_step()) {
             taken = self.coupled_impacts_in_step(first, taken);
-            self.profiler.lap(Stage::Reintegration);
+            self.profiler.lap(Stage::CoupledImpacts);
         } else if let Some((time, impact)) = interruption {
             // The impact comes first; a string's event, if still due, is found again.
             tie_event = None;
@@ -509,7 +509,7 @@ impl Simulation {
                 .apply(impact, &mut self.state, &self.forces, taken);
             self.work.start_acceleration = None;
             struck = Some(impact);
-            self.profiler.lap(Stage::Reintegration);
+            self.profiler.lap(Stage::CoupledImpacts);
         }
         self.log_impacts();
         let before_settling = self.ledger.map(|_| {

@@ -336,7 +336,7 @@ impl Simulation {
                 );
                 restarted = true;
             }
-            self.profiler.lap(Stage::Reintegration);
+            self.profiler.lap(Stage::CoupledImpacts);
             next = self.contacts.resume_impacts(
                 &mut self.state,
                 taken,

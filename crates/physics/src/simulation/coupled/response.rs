@@ -629,7 +629,7 @@ impl Simulation {
                 scratch.from = time;
                 restarted = true;
             }
-            self.profiler.lap(Stage::Reintegration);
+            self.profiler.lap(Stage::CoupledImpacts);
             next = self.contacts.resume_impacts(
                 &mut self.state,
                 taken,

@@ -627,6 +627,105 @@ impl Contacts {
         struck
     }
 
+    /// The impacts of particle `p` with the surfaces it rested on at the step's start
+    /// that it closes on faster than a resting contact's speed `time` seconds into the
+    /// step (of `h`) while still apart from them (by less than a resting contact's speed
+    /// times the step: it left them that slowly), each with the instant it meets the
+    /// surface at that speed. The impact search leaves the surfaces a particle rests on to
+    /// the resting contacts; a blow that sends it back into one makes an impact there.
+    pub fn closing_on_rests(
+        &self,
+        p: usize,
+        (time, h): (f64, f64),
+        members: &Members<'_>,
+    ) -> Vec<(f64, Impact)> {
+        let resting_speed = self.resting_speed(h);
+        let first = self
+            .touching
+            .surfaces
+            .partition_point(|&(q, _)| (q as usize) < p);
+        self.touching.surfaces[first..]
+            .iter()
+            .take_while(|&&(q, _)| q as usize == p)
+            .filter_map(|&(_, k)| {
+                let impact = Impact::Obstacle(p, k as usize);
+                let (gap, _, approach) = self.measure_inside(impact, time, h, Some(members));
+                (gap > TOUCHING * self.reach(impact) && approach > resting_speed)
+                    .then(|| (time + gap / approach, impact))
+            })
+            .collect()
+    }
+
+    /// Queues `impact` of a coupled particle, expected `time` seconds into the step, for
+    /// the search to take in time order ([`Self::resume_impacts`]).
+    pub fn expect(&mut self, impact: Impact, time: f64) {
+        let (first, second) = particles_of(impact);
+        let versions = (
+            self.search.versions[first],
+            second.map_or(0, |j| self.search.versions[j]),
+        );
+        self.search.queue.push(Reverse(Event {
+            time,
+            impact,
+            versions,
+        }));
+    }
+
+    /// The particles that may touch particle `p` where it is at `position` (the broad
+    /// phase's candidates, ascending; none when particles do not collide).
+    pub fn neighbours_at(&self, p: usize, position: DVec2) -> Vec<usize> {
+        if !self.collisions {
+            return Vec::new();
+        }
+        let bounds = Aabb::around(&[position], self.radius[p] * (1.0 + TOUCHING));
+        let mut neighbours = Vec::new();
+        self.proxies.query(&bounds, &mut neighbours);
+        neighbours.extend_from_slice(&self.search.escaped);
+        neighbours.sort_unstable();
+        neighbours.dedup();
+        neighbours
+            .into_iter()
+            .map(|q| q as usize)
+            .filter(|&q| q != p)
+            .collect()
+    }
+
+    /// The contacts of particle `p` (its `neighbours`, [`Self::neighbours_at`], and the
+    /// obstacles) that touch `time` seconds into the step (of `h`) and close faster than a
+    /// resting contact's speed, in a fixed order: what a blow at that instant passes on
+    /// at once, as the step's start passes a blow along a row of touching balls. Coupled
+    /// particles are read from `members`, the others from their paths.
+    pub fn closing_at(
+        &self,
+        p: usize,
+        neighbours: &[usize],
+        (time, h): (f64, f64),
+        members: &Members<'_>,
+        forces: &ForceModel,
+    ) -> Vec<Impact> {
+        let resting_speed = self.resting_speed(h);
+        let closing = |impact: Impact| {
+            let (gap, _, approach) = self.measure_inside(impact, time, h, Some(members));
+            gap <= TOUCHING * self.reach(impact) && approach > resting_speed
+        };
+        let position = match members.local[p] {
+            Some(k) => members.state.position[k as usize],
+            None => self.search.paths[p].at(time, h).0,
+        };
+        let bounds = Aabb::around(&[position], self.radius[p] * (1.0 + TOUCHING));
+        let pairs = neighbours
+            .iter()
+            .filter(|&&q| !(forces.is_fixed(p) && forces.is_fixed(q)))
+            .map(|&q| Impact::Pair(p.min(q), p.max(q)));
+        let obstacles = (0..self.obstacles_near(&bounds))
+            .filter(|&k| !self.obstacles[k].shape.clear_of_box(bounds.min, bounds.max))
+            .map(|k| Impact::Obstacle(p, k));
+        pairs
+            .chain(obstacles)
+            .filter(|&impact| closing(impact))
+            .collect()
+    }
+
     /// Ends the step at `time` seconds into it (of `h`): every particle outside the
     /// coupled system (`local` is `None` for them) is put where its path is then.
     pub fn end_at(&self, time: f64, h: f64, state: &mut State, local: &[Option<u32>]) {

@@ -14,13 +14,16 @@
 //!     searching them again against their neighbours: a thousand balls crashing into a
 //!     pile cost one step, not one step per impact;
 //!   - an impact involving a *coupled* particle changes the forces on every particle it
-//!     pulls, so its path cannot be patched: the coupled particles, a closed system of
-//!     their own, are integrated again to exactly that instant and on to the step's end
-//!     with the impulse applied, their paths start again there, and the search goes on
-//!     inside the step (`simulation/coupled.rs`). With rods or strings, while anything
-//!     dissipates smoothly, or when the impact drives a coupled particle into the surface
-//!     it rests on, the impact ends the step instead: the whole system is integrated to
-//!     its instant ([`Contacts::patch`], [`Contacts::apply`]).
+//!     pulls, so its path cannot be patched: with rk4 everything it pulls answers the
+//!     impulse by a short series of the forces' answer, otherwise the coupled particles,
+//!     a closed system of their own, are integrated again to exactly that instant and on
+//!     to the step's end with the impulse applied; their paths start again there, and the
+//!     search goes on inside the step (`simulation/coupled.rs`). An impact that drives a
+//!     coupled particle into the surface it rests on bounces it off there and then (with
+//!     rk4; what it then drives into is struck at that instant too,
+//!     [`Contacts::closing_at`]), or ends the step (the other methods). With rods or
+//!     strings, or while anything dissipates smoothly, the impact ends the step: the whole
+//!     system is integrated to its instant ([`Contacts::patch`], [`Contacts::apply`]).
 //! - **Resting contact** (slower approach, or touching at the start of a step): a particle
 //!   on a ramp or wall is held there for the step by a normal force with friction, part
 //!   of the smooth forces ([`crate::forces::normal`]); touching particles are kept apart by

@@ -61,6 +61,16 @@ impl ForceModel {
     /// [`Self::accelerations`] gives it (to rounding), from one pass over its partners.
     /// The pair laws are summed directly (a tree's sum differs by its approximation).
     pub fn acceleration_of(&self, x: &[DVec2], v: &[DVec2], k: usize) -> DVec2 {
+        let mut a = self.free_acceleration_of(x, v, k);
+        for contact in self.surface_contacts.iter().filter(|c| c.particle == k) {
+            contact.apply(&mut a);
+        }
+        a
+    }
+
+    /// [`Self::acceleration_of`] without the surfaces' answer: what the fields, the pair
+    /// laws and the springs alone give particle `k`.
+    pub fn free_acceleration_of(&self, x: &[DVec2], v: &[DVec2], k: usize) -> DVec2 {
         let pairs = self.pair_partners(k).fold(DVec2::ZERO, |force, (j, c)| {
             let d = x[j] - x[k];
             let r2 = d.length_squared() + self.softening2;
@@ -75,12 +85,7 @@ impl ForceModel {
                     _ => force - f,
                 }
             });
-        let mut a = super::uniform::acceleration(self.uniform[k])
-            + (pairs + springs) * self.inverse_mass[k];
-        for contact in self.surface_contacts.iter().filter(|c| c.particle == k) {
-            contact.apply(&mut a);
-        }
-        a
+        super::uniform::acceleration(self.uniform[k]) + (pairs + springs) * self.inverse_mass[k]
     }
 
     /// Adds to `out` the change of every particle's acceleration, m/s², when particle `k`

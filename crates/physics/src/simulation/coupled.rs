@@ -281,7 +281,8 @@ impl Simulation {
     /// coupled impact ended the step: the surface's support of a sinking coupled particle
     /// is not constant over the step, and the energy ledger could not book its work). A
     /// slower one is caught on its surface at once ([`catch_on_surfaces`]), as the next
-    /// step's start would, and the step goes on.
+    /// step's start would, and the step goes on. (With rk4 a faster one bounces off its
+    /// surface there and then, and the step goes on too: [`response`].)
     pub(super) fn coupled_impacts_in_step(&mut self, first: (f64, Impact), taken: f64) -> f64 {
         if self.integrator == Integrator::Rk4 && !self.forces.has_stiff_springs(taken) {
             return self.coupled_responses_in_step(first, taken);
@@ -316,8 +317,14 @@ impl Simulation {
                 .strike_coupled(impact, time, taken, &mut at, &self.forces)
             {
                 let resting_speed = self.contacts.resting_speed(taken);
-                let caught =
-                    catch_on_surfaces(impact, &self.forces, &local, &mut scratch.at, resting_speed);
+                let struck = |p: usize| impact.involves(p);
+                let caught = catch_on_surfaces(
+                    &struck,
+                    &self.forces,
+                    &local,
+                    &mut scratch.at,
+                    resting_speed,
+                );
                 let Some(energy) = caught else {
                     write_members(&members, &scratch.at, &mut self.state);
                     self.contacts.end_at(time, taken, &mut self.state, &local);
@@ -360,8 +367,9 @@ fn write_members(members: &[usize], members_state: &State, state: &mut State) {
     }
 }
 
-/// After `impact` (`at`: the coupled system's state just after it): `None` when it left one
-/// of its coupled particles moving into a surface it rests on faster than `resting_speed`,
+/// After an impact (`at`: the coupled system's state just after it; `struck`: whether a
+/// particle was struck by it): `None` when it left a struck coupled particle moving into a
+/// surface it rests on faster than `resting_speed`,
 /// for which the step must end there (the next step's start applies that impact).
 /// Otherwise each of them moving into its surface more slowly is caught there, as the
 /// next step's start would catch it: its velocity into the surface is taken away (an
@@ -370,7 +378,7 @@ fn write_members(members: &[usize], members_state: &State, state: &mut State) {
 /// whose support the ledger could not book; ending the step for it cost a whole pass
 /// through the pipeline (half the steps that ended early in the mixed scene).
 fn catch_on_surfaces(
-    impact: Impact,
+    struck: &dyn Fn(usize) -> bool,
     forces: &ForceModel,
     local: &[Option<u32>],
     at: &mut State,
@@ -378,9 +386,7 @@ fn catch_on_surfaces(
 ) -> Option<f64> {
     let into = |contact: &SurfaceContact, at: &State| {
         let k = local[contact.particle]? as usize;
-        impact
-            .involves(contact.particle)
-            .then(|| (k, -at.velocity[k].dot(contact.normal)))
+        struck(contact.particle).then(|| (k, -at.velocity[k].dot(contact.normal)))
     };
     if forces
         .surface_contacts

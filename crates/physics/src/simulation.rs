@@ -462,18 +462,22 @@ impl Simulation {
         let begun_with = self.begin(max_step);
         let begun = self.contacts.applied.len();
         self.start.clone_from(&self.state);
-        let mut taken = integrators::advance(
-            self.integrator,
-            &self.forces,
-            &mut self.state,
-            max_step,
-            self.tolerance,
-            &mut self.work,
-        )
-        .map_err(|_| SimulationError::StepTooSmall {
-            time: self.state.time,
-            tolerance: self.tolerance,
-        })?;
+        let mut taken = if self.split_trial_step(max_step) {
+            max_step
+        } else {
+            integrators::advance(
+                self.integrator,
+                &self.forces,
+                &mut self.state,
+                max_step,
+                self.tolerance,
+                &mut self.work,
+            )
+            .map_err(|_| SimulationError::StepTooSmall {
+                time: self.state.time,
+                tolerance: self.tolerance,
+            })?
+        };
         // A blown-up trial step stops here: the searches below assume a sane state.
         self.check_finite()?;
         let mut tie_event = self.find_tie_event(taken);

@@ -127,6 +127,8 @@ pub(super) struct Motion {
     /// Members a blow sent off the surface that held them ([`Self::release`]): no longer
     /// held for the rest of the step.
     released: Vec<usize>,
+    /// Each member a surface holds at the step's start, with the surface's normal.
+    holding: Vec<(usize, DVec2)>,
 }
 
 impl Motion {
@@ -153,6 +155,14 @@ impl Motion {
         self.start_acceleration.clear();
         self.start_acceleration
             .extend(members.iter().map(|&i| start_acceleration[i]));
+        self.holding.clear();
+        self.holding.extend(
+            forces
+                .surface_contacts
+                .iter()
+                .filter(|contact| holds(self.start_acceleration[contact.particle], contact.normal))
+                .map(|contact| (contact.particle, contact.normal)),
+        );
         self.end_acceleration.clear();
         self.end_acceleration.resize(members.len(), None);
         if forces.tree.is_some() {
@@ -289,11 +299,10 @@ impl Motion {
     /// The parts of `answers` (changes of the members' accelerations) along the normal of
     /// a surface that holds the member at the step's start taken away: the support
     /// answers any small change of the others' pull, either way.
-    fn hold(&self, forces: &ForceModel, answers: &mut [DVec2]) {
-        for contact in &forces.surface_contacts {
-            let k = contact.particle;
-            if self.held(k, contact.normal) {
-                answers[k] -= contact.normal * answers[k].dot(contact.normal);
+    fn hold(&self, answers: &mut [DVec2]) {
+        for &(k, normal) in &self.holding {
+            if !self.released.contains(&k) {
+                answers[k] -= normal * answers[k].dot(normal);
             }
         }
     }
@@ -338,7 +347,7 @@ impl Motion {
         answer.resize(n, DVec2::ZERO);
         forces.displacement_response(&position, k, normal * -start, &mut answer);
         self.released.push(k);
-        self.hold(forces, &mut answer);
+        self.hold(&mut answer);
         let powers = Powers::of(tau, span);
         let z = DVec2::ZERO;
         for (j, answer) in answer.iter().enumerate() {
@@ -512,7 +521,7 @@ impl Motion {
             answer.resize(n, DVec2::ZERO);
         }
         forces.displacement_response(&position, k, kick, &mut alpha);
-        self.hold(forces, &mut alpha);
+        self.hold(&mut alpha);
         for &m in std::iter::once(&k).chain(&partners) {
             forces.displacement_response(&position, m, alpha[m], &mut gamma);
         }
@@ -533,21 +542,27 @@ impl Motion {
                 *c = (whole - half * 4.0) * (2.0 / (span * span * span));
             }
         }
-        self.hold(forces, &mut beta);
-        self.hold(forces, &mut gamma);
-        self.hold(forces, &mut cubic);
+        self.hold(&mut beta);
+        self.hold(&mut gamma);
+        self.hold(&mut cubic);
         let z = DVec2::ZERO;
         let powers = Powers::of(tau, span);
         // The largest first and fifth-order answers, for the trust rules below.
+        // (Their squares compared: the square root is monotonic, so the largest is the
+        // same number, with a root a kick instead of two a member.)
         let (mut first, mut last) = (0.0, 0.0);
         for j in 0..n {
-            let fifth = gamma[j] / 120.0 + cubic[j] / 20.0;
-            first = f64::max(first, alpha[j].length());
-            last = f64::max(last, fifth.length());
             let linear = if j == k { kick } else { z };
+            if linear == z && alpha[j] == z && beta[j] == z && gamma[j] == z && cubic[j] == z {
+                continue; // nothing it pulls answers: no departure
+            }
+            let fifth = gamma[j] / 120.0 + cubic[j] / 20.0;
+            first = f64::max(first, alpha[j].length_squared());
+            last = f64::max(last, fifth.length_squared());
             let sizes = [z, linear, z, alpha[j] / 6.0, beta[j] / 12.0, fifth];
             self.depart(j, sizes, &powers);
         }
+        let (first, last) = (first.sqrt(), last.sqrt());
         let trusted = first * span * span <= STIFF * kick.length()
             && last * span.powi(4) <= TRUSTED * kick.length();
         (self.position, self.partners, self.answers) =

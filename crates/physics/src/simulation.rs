@@ -523,7 +523,7 @@ impl Simulation {
                 &self.state.position,
                 &self.state.velocity,
                 &self.radius,
-            );
+            ) + self.contacts.released_in_step;
             (
                 end,
                 self.forces.kinetic_energy(&self.state.velocity),

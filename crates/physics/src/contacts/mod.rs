@@ -138,6 +138,10 @@ pub(crate) struct Contacts {
     /// The kinetic energy taken in this step by catching coupled particles that an impact
     /// inside it left sinking slowly into their surfaces (`simulation/coupled.rs`), J.
     pub caught_in_step: f64,
+    /// The work the surfaces' normal force did in this step on coupled particles a blow
+    /// sent off them inside it, up to the blow (`simulation/coupled/response.rs`), J:
+    /// their contacts are off the step's books after it.
+    pub released_in_step: f64,
 }
 
 /// An impact as it was applied.
@@ -187,6 +191,7 @@ impl Contacts {
                 .collect(),
             applied: Vec::new(),
             caught_in_step: 0.0,
+            released_in_step: 0.0,
         }
     }
 

@@ -124,9 +124,9 @@ pub(super) struct Motion {
     position: Vec<DVec2>,
     partners: Vec<usize>,
     answers: [Vec<DVec2>; 4],
-    /// Members a blow sent off the surface that held them ([`Self::release`]): no longer
-    /// held for the rest of the step.
-    released: Vec<usize>,
+    /// Members a blow sent off a surface that held them, with its normal ([`Self::release`]):
+    /// no longer held by it for the rest of the step.
+    released: Vec<(usize, DVec2)>,
     /// Each member a surface holds at the step's start, with the surface's normal.
     holding: Vec<(usize, DVec2)>,
 }
@@ -301,7 +301,7 @@ impl Motion {
     /// answers any small change of the others' pull, either way.
     fn hold(&self, answers: &mut [DVec2]) {
         for &(k, normal) in &self.holding {
-            if !self.released.contains(&k) {
+            if !self.released.contains(&(k, normal)) {
                 answers[k] -= normal * answers[k].dot(normal);
             }
         }
@@ -310,7 +310,7 @@ impl Motion {
     /// Whether a surface of `normal` holds member `k` now: it pressed on it at the step's
     /// start and no blow has sent it off since.
     fn held(&self, k: usize, normal: DVec2) -> bool {
-        holds(self.start_acceleration[k], normal) && !self.released.contains(&k)
+        holds(self.start_acceleration[k], normal) && !self.released.contains(&(k, normal))
     }
 
     /// Member `k`, held by a surface of `normal` until a blow `tau` seconds into a step of
@@ -320,9 +320,15 @@ impl Motion {
     /// between: δ = −n (s₀ σ²/2 + ṡ σ³/6), σ = t − τ; the next term, s̈ σ⁴/24, is some
     /// 1e-15 m in a 1 ms step), and everything it pulls answers that, J δ σ⁴/24 (the
     /// answer's own next terms are of order J ṡ σ⁵). The surface's normal force then does
-    /// no work on it in the step ([`Simulation::coupled_responses_in_step`] takes its
-    /// contact off the books).
-    fn release(&mut self, k: usize, normal: DVec2, (tau, h): (f64, f64), forces: &ForceModel) {
+    /// no work on it in the rest of the step ([`Simulation::coupled_responses_in_step`]
+    /// takes its contact off the books); returns the work it did up to the blow, J.
+    fn release(
+        &mut self,
+        k: usize,
+        normal: DVec2,
+        (tau, h): (f64, f64),
+        forces: &ForceModel,
+    ) -> f64 {
         let n = self.start.len();
         let span = h - tau;
         let mut position = std::mem::take(&mut self.position);
@@ -346,7 +352,7 @@ impl Motion {
         answer.clear();
         answer.resize(n, DVec2::ZERO);
         forces.displacement_response(&position, k, normal * -start, &mut answer);
-        self.released.push(k);
+        self.released.push((k, normal));
         self.hold(&mut answer);
         let powers = Powers::of(tau, span);
         let z = DVec2::ZERO;
@@ -367,6 +373,12 @@ impl Motion {
         }
         let [b, c, d] = rest;
         (self.position, self.answers) = (position, [answer, b, c, d]);
+        // Until the blow the surface held it, moving along its normal as slowly as it
+        // was leaving it at the step's start: the normal force's work then, as the books
+        // take it for a surface that held a particle through the whole step (the force
+        // where it is now, times the way it went along the normal).
+        let depth = (self.position_at(k, tau, h) - self.start.position[k]).dot(normal);
+        forces.mass[k] * start * depth
     }
 
     /// Every member's rates of acceleration (and accelerations) at both ends of a step of
@@ -740,14 +752,14 @@ impl Simulation {
         taken
     }
 
-    /// The surface contacts of the `released` particles taken off the step's books: their
+    /// The `released` surface contacts (particle, normal) taken off the step's books: their
     /// surfaces stopped holding them inside the step ([`Motion::release`]), and did no
     /// work on them.
-    fn forget_surfaces(&mut self, released: &[usize]) {
+    fn forget_surfaces(&mut self, released: &[(usize, DVec2)]) {
         if !released.is_empty() {
             self.forces
                 .surface_contacts
-                .retain(|contact| !released.contains(&contact.particle));
+                .retain(|contact| !released.contains(&(contact.particle, contact.normal)));
         }
     }
 }
@@ -784,7 +796,7 @@ fn answer_blow(
     (local, members): (&[Option<u32>], &[usize]),
     mut struck: Vec<(usize, DVec2)>,
     (time, h): (f64, f64),
-    released: &mut Vec<usize>,
+    released: &mut Vec<(usize, DVec2)>,
 ) -> (bool, Vec<usize>, Vec<(f64, Impact)>) {
     let at = &mut scratch.at;
     let resting_speed = contacts.resting_speed(h);
@@ -832,8 +844,9 @@ fn answer_blow(
                 && motion.held(k, contact.normal)
                 && at.velocity[k].dot(contact.normal) > resting_speed
             {
-                motion.release(k, contact.normal, (time, h), &scratch.forces);
-                released.push(members[k]);
+                contacts.released_in_step +=
+                    motion.release(k, contact.normal, (time, h), &scratch.forces);
+                released.push((members[k], contact.normal));
             }
         }
         for &(k, before) in &struck {

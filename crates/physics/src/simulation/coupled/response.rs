@@ -333,39 +333,45 @@ impl Motion {
         let span = h - tau;
         let mut position = std::mem::take(&mut self.position);
         position.resize(n, DVec2::ZERO);
-        // Pair laws and springs read no velocity here: no coupled impact is answered
-        // inside the step while anything dissipates smoothly.
-        let pull = |position: &[DVec2]| {
+        // The support that stops: the surfaces' answer to the pull with this one among
+        // those still holding the member, less it without (the same as the pressing
+        // force along its normal when no other surface holds it; at a corner or in a
+        // wedge the surfaces' answers are not independent). Pair laws and springs read
+        // no velocity here: no coupled impact is answered inside the step while anything
+        // dissipates smoothly.
+        let support = |position: &[DVec2]| {
             let free = forces.free_acceleration_of(position, &self.start.velocity, k);
-            (-free.dot(normal)).max(0.0)
+            let (mut with, mut without) = (free, free);
+            for contact in forces.surface_contacts.iter().filter(|c| c.particle == k) {
+                if !self.released.contains(&(k, contact.normal)) {
+                    contact.apply(&mut with);
+                    if contact.normal != normal {
+                        contact.apply(&mut without);
+                    }
+                }
+            }
+            with - without
         };
         self.positions_read_by((k, &[]), (h, h), forces, &mut position);
-        let end = pull(&position);
+        let end = support(&position);
         self.positions_read_by((k, &[]), (tau, h), forces, &mut position);
-        let start = pull(&position);
+        let start = support(&position);
         let slope = if span > 0.0 {
             (end - start) / span
         } else {
-            0.0
+            DVec2::ZERO
         };
         let [mut answer, rest @ ..] = std::mem::take(&mut self.answers);
         answer.clear();
         answer.resize(n, DVec2::ZERO);
-        forces.displacement_response(&position, k, normal * -start, &mut answer);
+        forces.displacement_response(&position, k, -start, &mut answer);
         self.released.push((k, normal));
         self.hold(&mut answer);
         let powers = Powers::of(tau, span);
         let z = DVec2::ZERO;
         for (j, answer) in answer.iter().enumerate() {
             let sizes = if j == k {
-                [
-                    z,
-                    z,
-                    normal * (-start / 2.0),
-                    normal * (-slope / 6.0),
-                    *answer / 24.0,
-                    z,
-                ]
+                [z, z, start / -2.0, slope / -6.0, *answer / 24.0, z]
             } else {
                 [z, z, z, z, *answer / 24.0, z]
             };
@@ -377,8 +383,7 @@ impl Motion {
         // was leaving it at the step's start: the normal force's work then, as the books
         // take it for a surface that held a particle through the whole step (the force
         // where it is now, times the way it went along the normal).
-        let depth = (self.position_at(k, tau, h) - self.start.position[k]).dot(normal);
-        forces.mass[k] * start * depth
+        forces.mass[k] * start.dot(self.position_at(k, tau, h) - self.start.position[k])
     }
 
     /// Every member's rates of acceleration (and accelerations) at both ends of a step of
@@ -837,12 +842,16 @@ fn answer_blow(
         contacts.caught_in_step += energy;
         let motion = &mut scratch.motion;
         // Those sent off the surface that held them first, so that their
-        // answers to the blow keep their part along its normal.
+        // answers to the blow keep their part along its normal; and those a hair
+        // above it (an impact with it queued): they fly free until they meet it.
+        let apart = |p: usize| rests.iter().any(|&(_, impact)| impact.involves(p));
         for contact in &scratch.forces.surface_contacts {
             let k = contact.particle;
+            let normal_speed = at.velocity[k].dot(contact.normal);
             if struck.iter().any(|&(s, _)| s == k)
                 && motion.held(k, contact.normal)
-                && at.velocity[k].dot(contact.normal) > resting_speed
+                && (normal_speed > resting_speed
+                    || (apart(members[k]) && normal_speed < -resting_speed))
             {
                 contacts.released_in_step +=
                     motion.release(k, contact.normal, (time, h), &scratch.forces);

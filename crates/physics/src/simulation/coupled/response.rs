@@ -66,7 +66,7 @@
 //! (`a_coupled_ball_sent_off_its_floor_by_a_blow_flies_as_thrown_up`, exact to 1e-20 m
 //! with it). Such a blow used to end the step at its instant, so that the next step's
 //! start passed it on: a whole pass through the pipeline each, 294 of the 1,894 passes
-//! of the mixed scene of 1,000 balls over 1.6 s; the mixed scene now runs 34–80 % faster
+//! of the mixed scene of 1,000 balls over 1.6 s; the mixed scene now runs 34–87 % faster
 //! at 900 to 1,200 balls.
 //!
 //! Where the series is no description of the motion, the answer is not used. A step

@@ -315,11 +315,13 @@ impl Motion {
 
     /// Member `k`, held by a surface of `normal` until a blow `tau` seconds into a step of
     /// `h` sent it off, moves without the surface's support for the rest of the step: its
-    /// departure loses the support's acceleration s(t) along the normal (s the pull into
-    /// the surface where the motion has it, at τ and at the step's end, taken as linear
-    /// between: δ = −n (s₀ σ²/2 + ṡ σ³/6), σ = t − τ; the next term, s̈ σ⁴/24, is some
-    /// 1e-15 m in a 1 ms step), and everything it pulls answers that, J δ σ⁴/24 (the
-    /// answer's own next terms are of order J ṡ σ⁵). The surface's normal force then does
+    /// departure loses the support's acceleration S(t) (the surfaces' answer to the pull
+    /// with this one among those still holding it, less without it: along the normal,
+    /// the pull into the surface, when no other surface holds it; at a corner or in a
+    /// wedge the answers are not independent), where the motion has it at τ and at the
+    /// step's end, taken as linear between: δ = −(S₀ σ²/2 + Ṡ σ³/6), σ = t − τ (the
+    /// next term, S̈ σ⁴/24, is some 1e-15 m in a 1 ms step); and everything it pulls
+    /// answers that, J δ σ⁴/24 (the answer's own next terms are of order J Ṡ σ⁵). The surface's normal force then does
     /// no work on it in the rest of the step ([`Simulation::coupled_responses_in_step`]
     /// takes its contact off the books); returns the work it did up to the blow, J.
     fn release(

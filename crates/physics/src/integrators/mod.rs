@@ -267,7 +267,7 @@ pub(crate) fn advance(
 /// or strings): x + v h + a h²/2, v + a h, which rk4 gives exactly for such motion, here
 /// from one evaluation instead of four (the ball pit's integration, 0 to 1 s: 12 µs a
 /// step against 3; it agrees with rk4's arithmetic to rounding, not bit for bit).
-fn ballistic(forces: &ForceModel, state: &mut State, h: f64, work: &mut Workspace) {
+pub(crate) fn ballistic(forces: &ForceModel, state: &mut State, h: f64, work: &mut Workspace) {
     from_accelerations(forces, state, work, |x, v, a| {
         *x += *v * h + a * (0.5 * h * h);
         *v += a * h;

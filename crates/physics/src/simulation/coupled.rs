@@ -297,12 +297,7 @@ impl Simulation {
         }
         let members = Arc::clone(&system.members);
         let scratch = system.prepare(&self.forces);
-        self.work.prepare(4, n);
-        let start = &mut self.work.accelerations[0];
-        let state = &mut self.state;
-        self.forces
-            .accelerations(&state.position, &state.velocity, start);
-        let trial = &mut scratch.trial;
+        let (trial, state) = (&mut scratch.trial, &mut self.state);
         trial.time = state.time;
         for (mine, whole) in [
             (&mut trial.position, &state.position),
@@ -311,17 +306,12 @@ impl Simulation {
             mine.clear();
             mine.extend(members.iter().map(|&i| whole[i]));
         }
+        // Everything moved by its acceleration at the start (rk4's first stage, left in
+        // `self.work`), then the coupled particles integrated again from the start.
+        integrators::ballistic(&self.forces, state, h, &mut self.work);
+        let start = &self.work.accelerations[0];
         let known: Vec<glam::DVec2> = members.iter().map(|&i| start[i]).collect();
         integrators::rk4::step_knowing(&scratch.forces, trial, h, &mut scratch.work, Some(&known));
-        for ((x, v), a) in state
-            .position
-            .iter_mut()
-            .zip(&mut state.velocity)
-            .zip(start.iter())
-        {
-            *x += *v * h + *a * (0.5 * h * h);
-            *v += *a * h;
-        }
         write_members(&members, trial, state);
         state.time += h;
         true

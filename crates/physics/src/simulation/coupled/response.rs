@@ -301,7 +301,7 @@ impl Motion {
     /// answers any small change of the others' pull, either way.
     fn hold(&self, answers: &mut [DVec2]) {
         for &(k, normal) in &self.holding {
-            if !self.released.contains(&(k, normal)) {
+            if self.held(k, normal) {
                 answers[k] -= normal * answers[k].dot(normal);
             }
         }
@@ -310,20 +310,21 @@ impl Motion {
     /// Whether a surface of `normal` holds member `k` now: it pressed on it at the step's
     /// start and no blow has sent it off since.
     fn held(&self, k: usize, normal: DVec2) -> bool {
-        holds(self.start_acceleration[k], normal) && !self.released.contains(&(k, normal))
+        self.holding.contains(&(k, normal)) && !self.released.contains(&(k, normal))
     }
 
     /// Member `k`, held by a surface of `normal` until a blow `tau` seconds into a step of
     /// `h` sent it off, moves without the surface's support for the rest of the step: its
-    /// departure loses the support's acceleration S(t) (the surfaces' answer to the pull
-    /// with this one among those still holding it, less without it: along the normal,
-    /// the pull into the surface, when no other surface holds it; at a corner or in a
-    /// wedge the answers are not independent), where the motion has it at τ and at the
-    /// step's end, taken as linear between: δ = −(S₀ σ²/2 + Ṡ σ³/6), σ = t − τ (the
-    /// next term, S̈ σ⁴/24, is some 1e-15 m in a 1 ms step); and everything it pulls
-    /// answers that, J δ σ⁴/24 (the answer's own next terms are of order J Ṡ σ⁵). The surface's normal force then does
-    /// no work on it in the rest of the step ([`Simulation::coupled_responses_in_step`]
-    /// takes its contact off the books); returns the work it did up to the blow, J.
+    /// departure loses the support's acceleration S(t), where the motion has it at τ and
+    /// at the step's end, taken as linear between: δ = −(S₀ σ²/2 + Ṡ σ³/6), σ = t − τ
+    /// (the next term, S̈ σ⁴/24, is some 1e-15 m in a 1 ms step); and everything it pulls
+    /// answers that, J δ σ⁴/24 (the answer's own next terms are of order J Ṡ σ⁵). S is the
+    /// surfaces' answer to the pull with this one among those still holding the member,
+    /// less it without: the pull into the surface along its normal when no other surface
+    /// holds it; at a corner or in a wedge the answers are not independent. The surface's
+    /// normal force then does no work on it in the rest of the step
+    /// ([`Simulation::coupled_responses_in_step`] takes its contact off the books);
+    /// returns the work it did up to the blow, J.
     fn release(
         &mut self,
         k: usize,
@@ -335,12 +336,8 @@ impl Motion {
         let span = h - tau;
         let mut position = std::mem::take(&mut self.position);
         position.resize(n, DVec2::ZERO);
-        // The support that stops: the surfaces' answer to the pull with this one among
-        // those still holding the member, less it without (the same as the pressing
-        // force along its normal when no other surface holds it; at a corner or in a
-        // wedge the surfaces' answers are not independent). Pair laws and springs read
-        // no velocity here: no coupled impact is answered inside the step while anything
-        // dissipates smoothly.
+        // The support that stops (S above). Pair laws and springs read no velocity here:
+        // no coupled impact is answered inside the step while anything dissipates.
         let support = |position: &[DVec2]| {
             let free = forces.free_acceleration_of(position, &self.start.velocity, k);
             let (mut with, mut without) = (free, free);
@@ -381,10 +378,10 @@ impl Motion {
         }
         let [b, c, d] = rest;
         (self.position, self.answers) = (position, [answer, b, c, d]);
-        // Until the blow the surface held it, moving along its normal as slowly as it
-        // was leaving it at the step's start: the normal force's work then, as the books
-        // take it for a surface that held a particle through the whole step (the force
-        // where it is now, times the way it went along the normal).
+        // Until the blow the surface held it, moving along its normal only as slowly as
+        // it was leaving it at the step's start: the support's work then, as the books
+        // take it for a surface that holds a particle through a whole step (the support
+        // where it is now, times the way it went).
         forces.mass[k] * start.dot(self.position_at(k, tau, h) - self.start.position[k])
     }
 
@@ -832,9 +829,9 @@ fn answer_blow(
         .iter()
         .flat_map(|&(k, _)| contacts.closing_on_rests(members[k], (time, h), &members_at))
         .collect();
+    let apart = |p: usize| rests.iter().any(|&(_, impact)| impact.involves(p));
     let is_caught = |p: usize| {
-        local[p].is_some_and(|k| struck.iter().any(|&(s, _)| s == k as usize))
-            && !rests.iter().any(|&(_, impact)| impact.involves(p))
+        local[p].is_some_and(|k| struck.iter().any(|&(s, _)| s == k as usize)) && !apart(p)
     };
     let caught = passed
         .then(|| catch_on_surfaces(&is_caught, forces, local, at, resting_speed))
@@ -846,7 +843,6 @@ fn answer_blow(
         // Those sent off the surface that held them first, so that their
         // answers to the blow keep their part along its normal; and those a hair
         // above it (an impact with it queued): they fly free until they meet it.
-        let apart = |p: usize| rests.iter().any(|&(_, impact)| impact.involves(p));
         for contact in &scratch.forces.surface_contacts {
             let k = contact.particle;
             let normal_speed = at.velocity[k].dot(contact.normal);

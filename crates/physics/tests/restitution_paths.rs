@@ -581,7 +581,9 @@ fn a_free_ball_struck_by_a_coupled_one_is_followed_through_the_step() {
 
 /// `scene` with ball B (mass `masses.0`) resting on the floor at the origin, held by a
 /// spring of `stiffness` from 3 m beside it at its natural length (so coupled, and pulled
-/// by nothing while it rests), and ball A (`masses.1`) `d` above it, both of `radius`.
+/// by nothing while it rests), and ball A (`masses.1`) `d` above it, both of `radius`;
+/// particles 1 and 2, after a ball C resting on the floor 3 m to the left (so that
+/// neither is the first particle nor has the first contact in the lists).
 fn dropped_on_a_sprung_ball(
     scene: Scene,
     (mass_b, mass_a): (f64, f64),
@@ -589,6 +591,11 @@ fn dropped_on_a_sprung_ball(
     (radius, d): (f64, f64),
 ) -> Scene {
     scene
+        .with_particle(
+            Particle::new("C", 1.0)
+                .radius(radius)
+                .position([-3.0, radius]),
+        )
         .with_particle(
             Particle::new("B", mass_b)
                 .radius(radius)
@@ -634,7 +641,7 @@ fn a_coupled_ball_struck_hard_into_its_floor_bounces_off_it() {
     let mut simulation = Simulation::new(&scene).unwrap();
     simulation.step_to(2.0 * (2.0 * d / g).sqrt()).unwrap();
     let (x, v) = (simulation.positions(), simulation.velocities());
-    for (name, k, height) in [("A", 1, 3.0 * radius + d), ("B", 0, radius)] {
+    for (name, k, height) in [("A", 2, 3.0 * radius + d), ("B", 1, radius)] {
         assert!(
             x[k].distance(DVec2::new(0.0, height)) < 1e-9 && v[k].length() < 1e-9,
             "{name} at {} moving at {}, theory (0, {height}) at rest",
@@ -680,7 +687,7 @@ fn a_coupled_ball_sent_off_its_floor_by_a_blow_flies_as_thrown_up() {
         simulation.step_to(t1 + s).unwrap();
         let rise = w * s - 0.5 * g * s * s;
         let x = simulation.positions();
-        for (name, k, start) in [("B", 0, radius), ("A", 1, 3.0 * radius)] {
+        for (name, k, start) in [("B", 1, radius), ("A", 2, 3.0 * radius)] {
             let expected = DVec2::new(0.0, start + rise);
             assert!(
                 x[k].distance(expected) < 1e-9,
@@ -736,8 +743,8 @@ fn a_coupled_ball_rising_off_its_floor_struck_back_bounces_where_it_meets_it() {
             ((u + v0) * tb, v0 * tb - fall, v0 - g * tb)
         };
         let mut scene = dropped_on_a_sprung_ball(scene, (mass_b, mass_a), 1e-9, (radius, gap));
-        scene.particles[0] = scene.particles[0].clone().velocity([0.0, v0]);
-        scene.particles[1] = scene.particles[1].clone().velocity([0.0, -u]);
+        scene.particles[1] = scene.particles[1].clone().velocity([0.0, v0]);
+        scene.particles[2] = scene.particles[2].clone().velocity([0.0, -u]);
         let mut simulation = Simulation::new(&scene).unwrap();
         let v_a = -u - g * tb;
         let total = mass_a + mass_b;
@@ -754,10 +761,10 @@ fn a_coupled_ball_rising_off_its_floor_struck_back_bounces_where_it_meets_it() {
             simulation.step_to(bounce + s).unwrap();
             let since_blow = s + delta;
             let expected = [
-                ("B", 0, radius + up * s - 0.5 * g * s * s),
+                ("B", 1, radius + up * s - 0.5 * g * s * s),
                 (
                     "A",
-                    1,
+                    2,
                     radius + height_a + after_a * since_blow - 0.5 * g * since_blow * since_blow,
                 ),
             ];

@@ -705,8 +705,8 @@ fn a_coupled_ball_sent_off_its_floor_by_a_blow_flies_as_thrown_up() {
 /// floor rising at v₀, and A (1 kg) above it, falling at u = 1 m/s, strikes it τ = 0.5 ms
 /// later, inside the first step, when B is some µm up, tens of times the touching
 /// tolerance. The impact search leaves that floor to the resting contacts (B touched it at
-/// the step's start). Twice: v₀ = 0.03 m/s, faster than a resting contact leaves, so the
-/// floor lets B go and it flies freely (A's gap is (u + v₀) τ: gravity does not change
+/// the step's start). Twice: v₀ = 0.03 m/s, faster than a resting contact leaves (2 g h,
+/// 0.02 m/s in the 1 ms step), so the floor lets B go and it flies freely (A's gap is (u + v₀) τ: gravity does not change
 /// it); and v₀ = 0.01 m/s, slower, so the floor holds B, which rises at v₀ without falling
 /// back until the blow (the gap is (u + v₀) τ + g τ²/2) and then loses the floor's
 /// support. All impacts are elastic: A goes up, and B down at V (the impulse formulas)

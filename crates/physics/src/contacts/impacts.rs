@@ -550,13 +550,7 @@ impl Contacts {
         let (bounds, mut path) = (self.boxes[p], None);
         let near = self.obstacles_near(&bounds);
         for (k, obstacle) in self.obstacles[..near].iter().enumerate() {
-            if obstacle.shape.clear_of_box(bounds.min, bounds.max)
-                || self
-                    .touching
-                    .surfaces
-                    .binary_search(&(p as u32, k as u32))
-                    .is_ok()
-            {
+            if obstacle.shape.clear_of_box(bounds.min, bounds.max) || self.touched_at_start(p, k) {
                 continue;
             }
             let path = path.get_or_insert_with(|| self.path_after(p, from, h));
@@ -654,6 +648,23 @@ impl Contacts {
                     .then(|| (time + gap / approach, impact))
             })
             .collect()
+    }
+
+    /// Whether particle `p` touched obstacle `k` at the step's start.
+    fn touched_at_start(&self, p: usize, k: usize) -> bool {
+        self.touching
+            .surfaces
+            .binary_search(&(p as u32, k as u32))
+            .is_ok()
+    }
+
+    /// Whether `impact` is with a surface its particle touched at the step's start (one
+    /// [`Self::closing_on_rests`] queued: the impact search leaves those surfaces alone).
+    pub fn with_a_rest(&self, impact: Impact) -> bool {
+        match impact {
+            Impact::Obstacle(p, k) => self.touched_at_start(p, k),
+            Impact::Pair(..) => false,
+        }
     }
 
     /// Queues `impact` of a coupled particle, expected `time` seconds into the step, for

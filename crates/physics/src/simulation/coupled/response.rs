@@ -707,12 +707,14 @@ impl Simulation {
                     .zip(before)
                     .filter_map(|(k, before)| Some((k?, before?)))
                     .collect();
+                let off_a_rest = self.contacts.with_a_rest(impact);
                 let (trusted, written, rests) = answer_blow(
                     (&mut self.contacts, &self.forces),
                     scratch,
                     (&local, &members),
                     struck,
                     (time, taken),
+                    off_a_rest,
                     &mut released,
                 );
                 if !trusted {
@@ -791,25 +793,31 @@ fn start_acceleration<'a>(
 /// rests queued for later ([`Contacts::closing_on_rests`]), slow approaches caught
 /// ([`catch_on_surfaces`]), those sent off a holding surface released
 /// ([`Motion::release`], added to `released`), and every struck particle's answer.
-/// Returns whether the answers can be trusted (else the step ends at the impact), the
-/// members whose state in `scratch.at` is written, and the impacts with rests to queue
-/// once the paths start again.
+/// `off_a_rest`: the impact is with a surface the ball touched at the step's start (one
+/// queued by [`Contacts::closing_on_rests`]). Returns whether the answers can be trusted
+/// (else the step ends at the impact), the members whose state in `scratch.at` is
+/// written, and the impacts with rests to queue once the paths start again.
 fn answer_blow(
     (contacts, forces): (&mut Contacts, &ForceModel),
     scratch: &mut Scratch,
     (local, members): (&[Option<u32>], &[usize]),
     mut struck: Vec<(usize, DVec2)>,
     (time, h): (f64, f64),
+    off_a_rest: bool,
     released: &mut Vec<(usize, DVec2)>,
 ) -> (bool, Vec<usize>, Vec<(f64, Impact)>) {
     let at = &mut scratch.at;
     let resting_speed = contacts.resting_speed(h);
-    // Driven into a surface it rests on faster than a resting contact's
-    // speed, a ball bounces off it at once, and passes that on.
-    let driven = scratch.forces.surface_contacts.iter().any(|contact| {
-        let k = contact.particle;
-        struck.iter().any(|&(s, _)| s == k) && -at.velocity[k].dot(contact.normal) > resting_speed
-    });
+    // Driven into a surface it rests on faster than a resting contact's speed, a ball
+    // bounces off it at once, and passes that on; so does a ball that meets again a
+    // surface it had drifted off (it was touching what it now drives into when the blow
+    // that sent it there struck: a ball on top of it, say).
+    let driven = off_a_rest
+        || scratch.forces.surface_contacts.iter().any(|contact| {
+            let k = contact.particle;
+            struck.iter().any(|&(s, _)| s == k)
+                && -at.velocity[k].dot(contact.normal) > resting_speed
+        });
     let (passed, written) = if driven {
         pass_on(
             (contacts, forces),

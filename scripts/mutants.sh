@@ -2,7 +2,7 @@
 # Mutation testing of the physics crate with cargo-mutants: every plausible one-line bug
 # (a sign, an operator, a constant, a function returning a default) is injected in turn
 # and the physics tests must fail. On demand, not in CI: about 25 s per mutant on the
-# 2-core machine, some 1,300 mutants for the whole physics (hours). Settings:
+# 2-core machine, some 3,400 mutants for the whole physics (a day). Settings:
 # .cargo/mutants.toml. Results: mutants.out/ (caught.txt, missed.txt, timeout.txt).
 #
 #   scripts/mutants.sh                                   everything configured

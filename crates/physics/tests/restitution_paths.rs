@@ -718,12 +718,13 @@ fn fly_up_together(simulation: &mut Simulation, from: f64, up: f64, radius: f64)
 /// later, inside the first step, when B is some µm up, tens of times the touching
 /// tolerance. The impact search leaves that floor to the resting contacts (B touched it at
 /// the step's start). Twice: v₀ = 0.03 m/s, faster than a resting contact leaves (2 g h,
-/// 0.02 m/s in the 1 ms step), so the floor lets B go and it flies freely (A's gap is (u + v₀) τ: gravity does not change
-/// it); and v₀ = 0.01 m/s, slower, so the floor holds B, which rises at v₀ without falling
-/// back until the blow (the gap is (u + v₀) τ + g τ²/2) and then loses the floor's
-/// support. All impacts are elastic: A goes up, and B down at V (the impulse formulas)
-/// until it meets the floor δ later (its height + V δ − g δ²/2 = 0), which sends it up
-/// at W = −(V − g δ); from there both fly freely, A ahead of B. Held to 1e-9 m at a
+/// 0.02 m/s in the 1 ms step), so the floor lets B go and it flies freely (A's gap is
+/// (u + v₀) τ: gravity does not change it); and v₀ = 0.01 m/s, slower, so the floor holds
+/// B, which rises at v₀ without falling back until the blow (the gap is
+/// (u + v₀) τ + g τ²/2) and then loses the floor's support. All impacts are elastic: A
+/// goes up, and B down at V (the impulse formulas) until it meets the floor δ later (its
+/// height + V δ − g δ²/2 = 0), which sends it up at W = −(V − g δ); from there both fly
+/// freely, A ahead of B. Held to 1e-9 m at a
 /// quarter, a half and three quarters of B's flight (measured: 4e-16 m). Without the
 /// impact with the floor B had touched (`Contacts::closing_on_rests` finding nothing), B
 /// sinks into the floor until the step's end and the next step's start bounces it:

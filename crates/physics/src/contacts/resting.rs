@@ -498,6 +498,38 @@ mod tests {
     use super::*;
     use crate::contacts::obstacles::Shape;
 
+    /// Two balls of 0.1 m at rest at `position`, touching, one of them (`on_floor`) on a
+    /// floor at height `floor`, solved as one step's resting contacts; where they end.
+    fn on_a_floor(
+        floor: f64,
+        position: [DVec2; 2],
+        inverse_mass: [f64; 2],
+        on_floor: u32,
+    ) -> Vec<DVec2> {
+        let obstacles = [Obstacle {
+            shape: Shape::HalfPlane {
+                point: DVec2::new(0.0, floor),
+                normal: DVec2::Y,
+            },
+            restitution: 0.0,
+            friction: 0.0,
+        }];
+        let touching = Touching {
+            pairs: &[(0, 1)],
+            surfaces: &[(on_floor, 0)],
+            obstacles: &obstacles,
+            radius: &[0.1, 0.1],
+            inverse_mass: &inverse_mass,
+        };
+        let mut state = State {
+            time: 0.0,
+            position: position.to_vec(),
+            velocity: vec![DVec2::ZERO; 2],
+        };
+        RestingSolver::default().solve(&touching, &mut state, 1e-3, 0.02, |_| false);
+        state.position
+    }
+
     /// The overlap correction measures each pair's gap as the corrections before it left
     /// it, not only along the line the row was built with. Ball B (index 1) overlaps a
     /// fixed ball A at the origin by 1 % of the radius, side by side, and sinks into a
@@ -518,8 +550,6 @@ mod tests {
     ///   1e-5 m (measured 3.5e-6 m). Twice the curvature ends 3.5e-4 m off.
     #[test]
     fn an_overlap_is_measured_where_the_corrections_before_it_left_it() {
-        let radius = [0.1, 0.1];
-        let inverse_mass = [0.0, 1.0];
         // Where the floor is, where the exact correction leaves B, and within what.
         let cases = [
             (
@@ -530,35 +560,14 @@ mod tests {
             (-0.0851, DVec2::new(0.199_300_786_845_876, 0.0148), 1e-5),
         ];
         for (floor, expected, tolerance) in cases {
-            let obstacles = [Obstacle {
-                shape: Shape::HalfPlane {
-                    point: DVec2::new(0.0, floor),
-                    normal: DVec2::Y,
-                },
-                restitution: 0.0,
-                friction: 0.0,
-            }];
-            let touching = Touching {
-                pairs: &[(0, 1)],
-                surfaces: &[(1, 0)],
-                obstacles: &obstacles,
-                radius: &radius,
-                inverse_mass: &inverse_mass,
-            };
-            let mut state = State {
-                time: 0.0,
-                position: vec![DVec2::ZERO, DVec2::new(0.198, 0.0)],
-                velocity: vec![DVec2::ZERO; 2],
-            };
-            let mut solver = RestingSolver::default();
-            solver.solve(&touching, &mut state, 1e-3, 0.02, |_| false);
-            let off = state.position[1].distance(expected);
+            let position = on_a_floor(floor, [DVec2::ZERO, DVec2::new(0.198, 0.0)], [0.0, 1.0], 1);
+            let off = position[1].distance(expected);
             assert!(
                 off < tolerance,
                 "floor at {floor}: B at {}, {off:e} m off",
-                state.position[1]
+                position[1]
             );
-            assert_eq!(state.position[0], DVec2::ZERO, "the fixed ball moved");
+            assert_eq!(position[0], DVec2::ZERO, "the fixed ball moved");
         }
     }
 
@@ -574,35 +583,17 @@ mod tests {
     /// that took only the pairs' corrections as movement would stop after the first.
     #[test]
     fn a_correction_that_pushes_a_ball_into_another_is_followed_by_more_sweeps() {
-        let radius = [0.1, 0.1];
-        let inverse_mass = [1.0, 0.5];
-        let obstacles = [Obstacle {
-            shape: Shape::HalfPlane {
-                point: DVec2::new(0.0, -0.05),
-                normal: DVec2::Y,
-            },
-            restitution: 0.0,
-            friction: 0.0,
-        }];
-        let touching = Touching {
-            pairs: &[(0, 1)],
-            surfaces: &[(0, 0)],
-            obstacles: &obstacles,
-            radius: &radius,
-            inverse_mass: &inverse_mass,
-        };
-        let mut state = State {
-            time: 0.0,
-            position: vec![DVec2::ZERO, DVec2::new(0.0, 0.19995)],
-            velocity: vec![DVec2::ZERO; 2],
-        };
-        let mut solver = RestingSolver::default();
-        solver.solve(&touching, &mut state, 1e-3, 0.02, |_| false);
+        let position = on_a_floor(
+            -0.05,
+            [DVec2::ZERO, DVec2::new(0.0, 0.19995)],
+            [1.0, 0.5],
+            0,
+        );
         let expected = [
             DVec2::new(0.0, 0.0499),
             DVec2::new(0.0, 0.19995 + 0.04985 * 91.0 / 216.0),
         ];
-        for (ball, (at, expected)) in ["B", "C"].iter().zip(state.position.iter().zip(expected)) {
+        for (ball, (at, expected)) in ["B", "C"].iter().zip(position.iter().zip(expected)) {
             let off = at.distance(expected);
             assert!(off < 1e-12, "{ball} at {at}, {off:e} m off");
         }

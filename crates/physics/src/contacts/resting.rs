@@ -287,9 +287,8 @@ impl RestingSolver {
         let mut last_pairs = Remembered::new(&self.last_pairs);
         for &(i, j) in touching.pairs {
             let (a, b) = (i as usize, j as usize);
-            let (gap, normal) = pair_gap(position, touching.radius, a, b);
+            let (distance, normal) = separation(position[b] - position[a]);
             let radius = (touching.radius[a], touching.radius[b]);
-            let distance = gap + radius.0 + radius.1;
             let mut row = PairRow {
                 i,
                 j,
@@ -485,12 +484,6 @@ impl Levels {
             *place += 1;
         }
     }
-}
-
-/// Gap (metres, negative when overlapping) and unit normal from `i` towards `j`.
-fn pair_gap(position: &[DVec2], radius: &[f64], i: usize, j: usize) -> (f64, DVec2) {
-    let (distance, normal) = separation(position[j] - position[i]);
-    (distance - radius[i] - radius[j], normal)
 }
 
 #[cfg(test)]

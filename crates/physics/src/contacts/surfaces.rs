@@ -12,7 +12,7 @@
 use glam::DVec2;
 
 use super::broad_phase::Aabb;
-use super::{Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness};
+use super::{Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness, separation};
 use crate::forces::{ForceModel, SurfaceContact};
 use crate::profile::{Profiler, Stage};
 use crate::state::State;
@@ -133,16 +133,24 @@ impl Contacts {
         } else {
             &[]
         };
-        let boxes = &self.boxes;
+        let normals = &mut self.touching.normals.pairs;
+        normals.clear();
         // A plain loop: as an iterator's filter the test was a call through a reference
         // to the closure in WebAssembly (6 % of the pit's time in V8, `benches/wasm`).
         for &(i, j) in candidates {
             let (a, b) = (i as usize, j as usize);
             let reach = radius[a] + radius[b];
-            if boxes[a].overlaps(&boxes[b])
-                && position[a].distance(position[b]) - reach <= TOUCHING * reach
-            {
-                self.touching.pairs.push((i, j));
+            let offset = position[b] - position[a];
+            // The squared distance first (no square root for the many candidates that
+            // are clearly apart), with room to spare for its rounding: the test after it
+            // decides.
+            let within = reach * (1.0 + 2.0 * TOUCHING);
+            if offset.length_squared() <= within * within {
+                let (distance, normal) = separation(offset);
+                if distance - reach <= TOUCHING * reach {
+                    self.touching.pairs.push((i, j));
+                    normals.push((i, j, normal));
+                }
             }
         }
         self.touching.by_particle.fill(n, &self.touching.pairs);
@@ -169,16 +177,12 @@ impl Contacts {
     /// `resting_speed`, pass after pass until none does. A contact still approaching after
     /// many passes (a ball squeezed between two others) is made inelastic, which ends it.
     fn impacts_now(&mut self, state: &mut State, forces: &ForceModel, resting_speed: f64) -> bool {
-        // Only velocities change here, so each contact's normal is found once. Each pass
-        // sweeps the pairs, then the surfaces, each in a tight loop of its own (in the
-        // browser the sweep over one list of both kinds was 26 % of the time).
+        // Only velocities change here, so each contact's normal is found once (a pair's
+        // when it was found touching). Each pass sweeps the pairs, then the surfaces,
+        // each in a tight loop of its own (in the browser the sweep over one list of both
+        // kinds was 26 % of the time).
         let mut normals = std::mem::take(&mut self.touching.normals);
-        normals.pairs.clear();
         normals.surfaces.clear();
-        for &(i, j) in &self.touching.pairs {
-            let normal = self.measure(Impact::Pair(i as usize, j as usize), state).1;
-            normals.pairs.push((i, j, normal));
-        }
         for &(p, k) in &self.touching.surfaces {
             let normal = self
                 .measure(Impact::Obstacle(p as usize, k as usize), state)

@@ -44,6 +44,8 @@ pub(super) struct ImpactSearch {
     /// How many more impacts this step may apply inside itself.
     budget: usize,
     neighbours: Vec<u32>,
+    /// Scratch: the candidate pairs whose swept boxes overlap, not touching.
+    candidates: Vec<(u32, u32)>,
 }
 
 /// A particle's path through the step: the cubic Hermite curve through the integrator's
@@ -265,6 +267,7 @@ impl Contacts {
                 this.search_obstacles(p, 0.0, h, found);
             }
         });
+        self.search.candidates = candidates;
         self.search.queue.extend(found.drain(..).map(Reverse));
         self.search.budget = 20 * n + 100;
         self.resume_impacts(end, h, forces, profiler)
@@ -353,30 +356,36 @@ impl Contacts {
 
     /// The pairs whose swept boxes overlap and that do not touch, ascending.
     fn swept_candidates(&mut self, start: &State, h: f64, forces: &ForceModel) -> Vec<(u32, u32)> {
+        let mut swept = std::mem::take(&mut self.search.candidates);
+        swept.clear();
         if !self.collisions {
-            return Vec::new();
+            return swept;
         }
         // Touching pairs are the resting solver's: both lists are ascending, so one walk
         // through the touching list takes them out.
-        let mut touching = self.touching.pairs.as_slice();
+        let touching = self.touching.pairs.as_slice();
+        let mut next_touching = 0;
         let (radius, boxes) = (&self.radius, &self.boxes);
-        self.proxies
-            .update(
-                boxes,
-                |i| fat_margin(radius[i], start.velocity[i], h),
-                |i, j| forces.is_fixed(i) && forces.is_fixed(j),
-                &self.workers,
-            )
-            .iter()
-            .copied()
-            .filter(|&(i, j)| boxes[i as usize].overlaps(&boxes[j as usize]))
-            .filter(|pair| {
-                while touching.first().is_some_and(|t| t < pair) {
-                    touching = &touching[1..];
-                }
-                touching.first() != Some(pair)
-            })
-            .collect()
+        let candidates = self.proxies.update(
+            boxes,
+            |i| fat_margin(radius[i], start.velocity[i], h),
+            |i, j| forces.is_fixed(i) && forces.is_fixed(j),
+            &self.workers,
+        );
+        // A plain loop, as the touching test's (an iterator's filter is a call through a
+        // reference to the closure in WebAssembly).
+        for &pair in candidates {
+            if !boxes[pair.0 as usize].overlaps(&boxes[pair.1 as usize]) {
+                continue;
+            }
+            while touching.get(next_touching).is_some_and(|t| *t < pair) {
+                next_touching += 1;
+            }
+            if touching.get(next_touching) != Some(&pair) {
+                swept.push(pair);
+            }
+        }
+        swept
     }
 
     /// Whether impacts inside the last step changed any path.

@@ -64,6 +64,8 @@ impl Contacts {
         }
         for &(p, k) in &self.touching.surfaces {
             let (p, obstacle) = (p as usize, &self.obstacles[k as usize]);
+            // Measured again, not taken from the touching test: sitting on an earlier
+            // surface (a wall beside a ramp) may have moved the ball.
             let (distance, normal) = obstacle.shape.distance(state.position[p]);
             let approach = -state.velocity[p].dot(normal);
             if approach < -resting_speed {

@@ -13,6 +13,12 @@
 //! grazing a surface is discarded after a level or two, and nothing is sampled: no speed
 //! skips over a thin ramp.
 //!
+//! Two balls under the same field alone (most pairs in a falling or piling crowd) move on
+//! a straight line relative to each other, at constant speed: for such a path the entry
+//! into a disc is the root of a quadratic ([`straight_entry`]), found without the
+//! subdivision (the time of impact of the 1,000-ball pit 49 → 43 µs a step over its
+//! first second).
+//!
 //! Alternatives weighed: sampling the gap at sub-steps misses thin ramps at high speed; a
 //! straight-line swept test ignores acceleration within the step; bounding the distance by
 //! the control points' spread converges only linearly and explodes for grazing paths.
@@ -217,7 +223,66 @@ fn split(p: &[DVec2; 4]) -> ([DVec2; 4], [DVec2; 4]) {
 /// The earliest parameter s in (0, 1] at which the path, which starts outside, is inside
 /// `region`; `None` if it stays outside.
 pub(crate) fn earliest_entry(region: &Region, path: &[DVec2; 4]) -> Option<f64> {
+    if let Region::Disc { centre, reach } = *region
+        && let Some(entry) = straight_entry(&path.map(|p| p - centre), reach)
+    {
+        return entry;
+    }
     search(region, path, 0.0, 1.0, 0)
+}
+
+/// How far, as a fraction of the reach, a path may bend off a straight line and still be
+/// taken as one by [`straight_entry`].
+const STRAIGHT: f64 = 1e-12;
+
+/// The earliest entry into the disc of `reach` about the origin of a path that is a
+/// straight line travelled at constant speed to within [`STRAIGHT`] of the reach (two
+/// balls under the same field alone: their accelerations cancel), as the root of a
+/// quadratic; `None` for any other path, and for one that the rounding of the root
+/// leaves a hair outside (the search then finds it). The line is tested against the
+/// reach less how far the path can be from it, so the path is inside at the instant
+/// returned (checked, as the search's is), at most twice that distance over the approach
+/// speed after it entered.
+#[expect(
+    clippy::option_option,
+    reason = "not straight (search), or straight with or without an entry"
+)]
+fn straight_entry(path: &[DVec2; 4], reach: f64) -> Option<Option<f64>> {
+    let (start, chord) = (path[0], path[3] - path[0]);
+    // The curve less the line is the cubic with control points 0, d1, d2, 0: never
+    // farther from the line than 3/4 of the larger.
+    let d1 = path[1] - (start + chord / 3.0);
+    let d2 = path[2] - (start + chord * (2.0 / 3.0));
+    let bend = d1.length_squared().max(d2.length_squared());
+    if bend > (STRAIGHT * reach).powi(2) {
+        return None;
+    }
+    // Less a hair for the rounding of the root and of the point at it (without it a
+    // quarter of the entries came out a hair outside, and went to the search).
+    let inner = reach * (1.0 - 1e-14) - 0.75 * bend.sqrt();
+    // |start + chord s|² = inner², from outside: a s² + 2 b s + c = 0, c > 0.
+    let (a, b, c) = (
+        chord.length_squared(),
+        start.dot(chord),
+        start.length_squared() - inner * inner,
+    );
+    if c <= 0.0 {
+        return None; // starts inside: the search's
+    }
+    let discriminant = b * b - a * c;
+    if b >= 0.0 || discriminant < 0.0 {
+        return Some(None); // moving apart, or passing by
+    }
+    // The smaller root, without cancellation.
+    let s = c / (-b + discriminant.sqrt());
+    if s > 1.0 {
+        return Some(None);
+    }
+    let region = Region::Disc {
+        centre: DVec2::ZERO,
+        reach,
+    };
+    (region.gap(point_at(path, s)) <= 0.0).then_some(Some(s))
 }
 
 fn search(region: &Region, path: &[DVec2; 4], s0: f64, s1: f64, depth: u32) -> Option<f64> {
@@ -462,6 +527,69 @@ mod tests {
         let inside = bisect(gap, first_inside - 1e-3, first_inside);
         let s = earliest_entry(&disc(1.0), &path).unwrap();
         assert!((s - inside).abs() < 1e-12, "s = {s} against {inside}");
+    }
+
+    /// Two balls under the same field alone move on straight lines relative to each other:
+    /// [`straight_entry`] answers for such a path by a quadratic's root, and must agree
+    /// with the subdivision (`search`) to 1e-12 of the step, entries and misses alike, on
+    /// 20,000 random straight paths about the unit disc (their control points rounded as
+    /// any are). A path bent by more than [`STRAIGHT`] of the reach is left to the search.
+    #[test]
+    fn a_straight_path_is_answered_by_the_quadratic_as_the_search_answers_it() {
+        let region = disc(1.0);
+        let mut random = crate::testing::uniform(7);
+        let (mut entries, mut misses, mut left) = (0, 0, 0);
+        for _ in 0..20_000 {
+            let start = DVec2::new(6.0 * random() - 3.0, 6.0 * random() - 3.0);
+            let velocity = DVec2::new(8.0 * random() - 4.0, 8.0 * random() - 4.0);
+            let (h, field) = (0.7, DVec2::new(0.0, -9.81));
+            // Both ends of each of two balls, the same field on both: the difference of
+            // their paths is straight to rounding.
+            let ball = |x: DVec2, v: DVec2| {
+                control_points(x, v, x + v * h + field * (h * h / 2.0), v + field * h, h)
+            };
+            let other = DVec2::new(random(), random());
+            let (a, b) = (ball(other, DVec2::ZERO), ball(other + start, velocity));
+            let path: [DVec2; 4] = std::array::from_fn(|k| b[k] - a[k]);
+            if path[0].length() <= 1.0 + 1e-9 {
+                continue;
+            }
+            let answer = straight_entry(&path, 1.0);
+            let searched = search(&region, &path, 0.0, 1.0, 0);
+            match (answer, searched) {
+                (Some(Some(s)), Some(t)) => {
+                    entries += 1;
+                    assert!((s - t).abs() < 1e-12, "{path:?}: {s} against {t}");
+                }
+                (Some(None), None) => misses += 1,
+                (None, _) => left += 1, // rounded a hair outside: the search's
+                (answer, searched) => panic!("{path:?}: {answer:?} against {searched:?}"),
+            }
+        }
+        assert!(
+            entries > 1_000 && misses > 10_000 && left < 200,
+            "{entries} entries, {misses} misses, {left} left to the search"
+        );
+        // Bent by 1e-9 of the reach, well beyond the rounding: not taken as straight.
+        let bent = [
+            DVec2::new(3.0, 0.0),
+            DVec2::new(1.0, 1e-9),
+            DVec2::new(-1.0, 1e-9),
+            DVec2::new(-3.0, 0.0),
+        ];
+        assert_eq!(straight_entry(&bent, 1.0), None);
+        assert!(
+            straight_entry(
+                &[
+                    bent[0],
+                    bent[1] - DVec2::new(0.0, 1e-9),
+                    bent[2] - DVec2::new(0.0, 1e-9),
+                    bent[3]
+                ],
+                1.0
+            )
+            .is_some()
+        );
     }
 
     /// Against brute force: 20,000 random cubic paths starting outside the unit disc

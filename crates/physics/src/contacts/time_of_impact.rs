@@ -578,6 +578,11 @@ mod tests {
             DVec2::new(-3.0, 0.0),
         ];
         assert_eq!(straight_entry(&bent, 1.0), None);
+        // The bound scales with the reach: bent by 1e-12 m, straight for a reach of 2 m
+        // (within 2e-12 m), not for one of 0.2 m (within 2e-13 m).
+        let slightly = bent.map(|p| DVec2::new(p.x, p.y * 1e-3));
+        assert!(straight_entry(&slightly, 2.0).is_some());
+        assert_eq!(straight_entry(&slightly, 0.2), None);
         assert!(
             straight_entry(
                 &[

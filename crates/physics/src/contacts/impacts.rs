@@ -503,6 +503,8 @@ impl Contacts {
         self.search.neighbours.sort_unstable();
         self.search.neighbours.dedup();
         let neighbours = std::mem::take(&mut self.search.neighbours);
+        // `p`'s own path, found once for all its neighbours.
+        let own = self.path_after(p, time, h);
         for &q in &neighbours {
             let q = q as usize;
             if q == p
@@ -512,10 +514,13 @@ impl Contacts {
             {
                 continue;
             }
-            let pair = (p.min(q), p.max(q));
-            if let Some(event) = self.search_pair(pair.0, pair.1, time, h) {
-                found.push(event);
-            }
+            let other = self.path_after(q, time, h);
+            let event = if p < q {
+                self.search_paths(p, q, (&own, &other), time, h)
+            } else {
+                self.search_paths(q, p, (&other, &own), time, h)
+            };
+            found.extend(event);
         }
         self.search.neighbours = neighbours;
         self.search_obstacles(p, time, h, found);
@@ -532,8 +537,20 @@ impl Contacts {
 
     /// The first impact of particles `i < j` after `after` seconds into the step.
     fn search_pair(&self, i: usize, j: usize, after: f64, h: f64) -> Option<Event> {
+        let (a, b) = (self.path_after(i, after, h), self.path_after(j, after, h));
+        self.search_paths(i, j, (&a, &b), after, h)
+    }
+
+    /// [`Self::search_pair`] with the particles' paths from `after` on, `(a, b)`.
+    fn search_paths(
+        &self,
+        i: usize,
+        j: usize,
+        (a, b): (&[DVec2; 4], &[DVec2; 4]),
+        after: f64,
+        h: f64,
+    ) -> Option<Event> {
         let from = after;
-        let (a, b) = (self.path_after(i, from, h), self.path_after(j, from, h));
         let relative: [DVec2; 4] = std::array::from_fn(|k| b[k] - a[k]);
         let reach = self.radius[i] + self.radius[j];
         if relative[0].length() - reach <= TOUCHING * reach {

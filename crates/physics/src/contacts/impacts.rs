@@ -486,7 +486,10 @@ impl Contacts {
         // Each box holds its particle's path from its last change to the step's end, so
         // two that do not overlap cannot meet from here on (nor a box and an obstacle
         // it is clear of).
-        let bounds = Aabb::around(&self.search.paths[p].after(time, h), self.radius[p]);
+        // (Its path has changed, so this is `paths[p].after`, found once for the box and
+        // for every neighbour's search.)
+        let own = self.path_after(p, time, h);
+        let bounds = Aabb::around(&own, self.radius[p]);
         self.boxes[p] = bounds;
         if !self.collisions {
             self.search_obstacles(p, time, h, found);
@@ -503,8 +506,6 @@ impl Contacts {
         self.search.neighbours.sort_unstable();
         self.search.neighbours.dedup();
         let neighbours = std::mem::take(&mut self.search.neighbours);
-        // `p`'s own path, found once for all its neighbours.
-        let own = self.path_after(p, time, h);
         for &q in &neighbours {
             let q = q as usize;
             if q == p

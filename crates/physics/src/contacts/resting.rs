@@ -174,11 +174,10 @@ fn warm_start<R: Row>(row: &mut R, last: f64, blow: bool, velocity: &mut [DVec2]
 ///
 /// The loop has no branch: a row left out has a zero effective mass and pushes nothing,
 /// and pushing nothing adds zero to the velocities.
-fn sweep<R: Row>(rows: &mut [R], order: &[u32], velocity: &mut [DVec2]) -> Option<f64> {
+fn sweep<R: Row>(rows: &mut [R], velocity: &mut [DVec2]) -> Option<f64> {
     let mut largest: f64 = 0.0;
     let mut any = false;
-    for &k in order {
-        let row = &mut rows[k as usize];
+    for row in rows {
         let solved = *row.solved();
         let approach = row.approach(velocity);
         // Comparisons, not `f64::max`: WebAssembly has no instruction with its rule for
@@ -243,10 +242,13 @@ pub(crate) struct RestingSolver {
     last_pairs: Vec<((u32, u32), f64)>,
     last_surfaces: Vec<((u32, u32), f64)>,
     last_step: f64,
+    /// The rows, in the order the sweeps take them ([`Schedule`]).
     pairs: Vec<PairRow>,
     surfaces: Vec<SurfaceRow>,
-    /// The order the sweeps take the rows in ([`Schedule`]).
     schedule: Schedule,
+    /// Scratch: the rows as built, in the touching lists' order.
+    built_pairs: Vec<PairRow>,
+    built_surfaces: Vec<SurfaceRow>,
 }
 
 impl RestingSolver {
@@ -256,6 +258,8 @@ impl RestingSolver {
         self.pairs = Vec::new();
         self.surfaces = Vec::new();
         self.schedule = Schedule::default();
+        self.built_pairs = Vec::new();
+        self.built_surfaces = Vec::new();
     }
 
     /// The bytes of the last impulses, by length.
@@ -283,7 +287,7 @@ impl RestingSolver {
         let (position, velocity) = (&state.position, &mut state.velocity);
         let w = touching.inverse_mass;
         let mut changed = false;
-        self.pairs.clear();
+        self.built_pairs.clear();
         let mut last_pairs = Remembered::new(&self.last_pairs);
         for &(i, j) in touching.pairs {
             let (a, b) = (i as usize, j as usize);
@@ -308,9 +312,9 @@ impl RestingSolver {
             // Warm start: last step's impulse, scaled to this step.
             let last = last_pairs.impulse((i, j)) * warm;
             changed |= warm_start(&mut row, last, blow, velocity);
-            self.pairs.push(row);
+            self.built_pairs.push(row);
         }
-        self.surfaces.clear();
+        self.built_surfaces.clear();
         let mut last_surfaces = Remembered::new(&self.last_surfaces);
         for &(p, k) in touching.surfaces {
             let at = position[p as usize];
@@ -327,18 +331,23 @@ impl RestingSolver {
             let blow = row.approach(velocity) > resting_speed && is_struck(p as usize);
             let last = last_surfaces.impulse((p, k)) * warm;
             changed |= warm_start(&mut row, last, blow, velocity);
-            self.surfaces.push(row);
+            self.built_surfaces.push(row);
         }
         self.schedule.order(
             velocity.len(),
-            self.pairs.iter().map(|r| (r.i, r.j)),
-            self.surfaces.iter().map(|r| (r.particle, r.particle)),
+            self.built_pairs.iter().map(|r| (r.i, r.j)),
+            self.built_surfaces.iter().map(|r| (r.particle, r.particle)),
         );
-        let order = &self.schedule;
+        arrange(&self.built_pairs, &self.schedule.pairs, &mut self.pairs);
+        arrange(
+            &self.built_surfaces,
+            &self.schedule.surfaces,
+            &mut self.surfaces,
+        );
         let tolerance = 1e-4 * resting_speed.max(1e-9);
         for _ in 0..ITERATIONS {
-            let pairs = sweep(&mut self.pairs, &order.pairs, velocity);
-            let surfaces = sweep(&mut self.surfaces, &order.surfaces, velocity);
+            let pairs = sweep(&mut self.pairs, velocity);
+            let surfaces = sweep(&mut self.surfaces, velocity);
             let largest = match (pairs, surfaces) {
                 (None, None) => break,
                 (a, b) => a.unwrap_or(0.0).max(b.unwrap_or(0.0)),
@@ -349,15 +358,18 @@ impl RestingSolver {
             }
         }
         changed |= self.correct_overlaps(&mut state.position);
+        // Remembered by key, ascending: each row back in its place in the touching lists.
         self.last_pairs.clear();
-        self.last_pairs
-            .extend(self.pairs.iter().map(|r| ((r.i, r.j), r.solved.impulse)));
+        self.last_pairs.resize(self.pairs.len(), ((0, 0), 0.0));
+        for (row, &k) in self.pairs.iter().zip(&self.schedule.pairs) {
+            self.last_pairs[k as usize] = ((row.i, row.j), row.solved.impulse);
+        }
         self.last_surfaces.clear();
-        self.last_surfaces.extend(
-            self.surfaces
-                .iter()
-                .map(|r| ((r.particle, r.obstacle), r.solved.impulse)),
-        );
+        self.last_surfaces
+            .resize(self.surfaces.len(), ((0, 0), 0.0));
+        for (row, &k) in self.surfaces.iter().zip(&self.schedule.surfaces) {
+            self.last_surfaces[k as usize] = ((row.particle, row.obstacle), row.solved.impulse);
+        }
         self.last_step = h;
         changed
     }
@@ -378,8 +390,7 @@ impl RestingSolver {
         let mut changed = false;
         for _ in 0..POSITION_SWEEPS {
             let mut moved = false;
-            for &k in &self.schedule.pairs {
-                let row = &self.pairs[k as usize];
+            for row in &self.pairs {
                 let (i, j) = (row.i as usize, row.j as usize);
                 let offset = position[j] - position[i];
                 let across = row.normal.perp_dot(offset);
@@ -390,8 +401,7 @@ impl RestingSolver {
                 position[j] += shift * row.inverse_mass_j;
                 moved |= excess * row.correction > 0.0;
             }
-            for &k in &self.schedule.surfaces {
-                let row = &self.surfaces[k as usize];
+            for row in &self.surfaces {
                 let p = row.particle as usize;
                 let excess = row.reach - position[p].dot(row.normal);
                 let excess = if excess > 0.0 { excess } else { 0.0 };
@@ -405,6 +415,14 @@ impl RestingSolver {
         }
         changed
     }
+}
+
+/// `built` in `order`, into `rows`: the sweeps then walk the rows front to back, with no
+/// index to look up and each row next to the one before it in memory (the pit's rows,
+/// some 200 kB, were taken in a scattered order eight times a step).
+fn arrange<R: Copy>(built: &[R], order: &[u32], rows: &mut Vec<R>) {
+    rows.clear();
+    rows.extend(order.iter().map(|&k| built[k as usize]));
 }
 
 /// The order the sweeps take the rows in: any order that keeps every two rows with a
@@ -660,33 +678,38 @@ mod tests {
             surfaces.iter().map(|r| (r.particle, r.particle)),
         );
         assert_levels_overlap_rows(n as usize, &pairs, &schedule.pairs);
+        // Swept in the lists' order, and arranged in the schedule's; the impulses are
+        // compared in the lists' order.
+        let run = |pairs: &mut [PairRow], surfaces: &mut [SurfaceRow], order: (&[u32], &[u32])| {
+            let mut v = velocity.clone();
+            for _ in 0..8 {
+                sweep(pairs, &mut v);
+                sweep(surfaces, &mut v);
+            }
+            let mut impulses = vec![0; pairs.len() + surfaces.len()];
+            for (row, &k) in pairs.iter().zip(order.0) {
+                impulses[k as usize] = row.solved.impulse.to_bits();
+            }
+            for (row, &k) in surfaces.iter().zip(order.1) {
+                impulses[pairs.len() + k as usize] = row.solved.impulse.to_bits();
+            }
+            let bits: Vec<u64> = v
+                .iter()
+                .flat_map(|v| [v.x.to_bits(), v.y.to_bits()])
+                .collect();
+            (bits, impulses)
+        };
+        let (mut pairs_arranged, mut surfaces_arranged) = (Vec::new(), Vec::new());
+        arrange(&pairs, &schedule.pairs, &mut pairs_arranged);
+        arrange(&surfaces, &schedule.surfaces, &mut surfaces_arranged);
         let ascending = (
             (0_u32..).take(pairs.len()).collect::<Vec<_>>(),
             (0_u32..).take(surfaces.len()).collect::<Vec<_>>(),
         );
-        let run =
-            |pairs: &mut Vec<PairRow>, surfaces: &mut Vec<SurfaceRow>, order: (&[u32], &[u32])| {
-                let mut v = velocity.clone();
-                for _ in 0..8 {
-                    sweep(pairs, order.0, &mut v);
-                    sweep(surfaces, order.1, &mut v);
-                }
-                let impulses: Vec<u64> = pairs
-                    .iter()
-                    .map(|r| r.solved.impulse.to_bits())
-                    .chain(surfaces.iter().map(|r| r.solved.impulse.to_bits()))
-                    .collect();
-                let bits: Vec<u64> = v
-                    .iter()
-                    .flat_map(|v| [v.x.to_bits(), v.y.to_bits()])
-                    .collect();
-                (bits, impulses)
-            };
-        let (mut pairs_again, mut surfaces_again) = (pairs.clone(), surfaces.clone());
         let expected = run(&mut pairs, &mut surfaces, (&ascending.0, &ascending.1));
         let scheduled = run(
-            &mut pairs_again,
-            &mut surfaces_again,
+            &mut pairs_arranged,
+            &mut surfaces_arranged,
             (&schedule.pairs, &schedule.surfaces),
         );
         assert!(expected == scheduled, "the scheduled sweeps differ");

@@ -26,7 +26,7 @@ use crate::state::State;
 /// fraction of the smaller radius; well under the 1 % a user could notice.
 const ALLOWED_OVERLAP: f64 = 1e-3;
 /// Fraction of the excess overlap corrected per position sweep: gentle enough not to pop
-/// a pile.
+/// a pile. A power of two (a row's share is this times its effective mass, to the bit).
 const CORRECTION: f64 = 0.5;
 /// Position sweeps per step.
 const POSITION_SWEEPS: usize = 4;
@@ -152,20 +152,37 @@ impl Row for SurfaceRow {
     }
 }
 
-/// A new row's accumulator: left out when it is a blow being passed on (its effective
-/// mass zeroed); otherwise warm-started with `last` N·s, which is applied. Returns
-/// whether it was.
-fn warm_start<R: Row>(row: &mut R, last: f64, blow: bool, velocity: &mut [DVec2]) -> bool {
-    let solved = row.solved();
-    if blow {
-        solved.mass = 0.0;
+/// Warm-starts the rows, each built with its impulse of the last step (scaled to this
+/// one), in their order: a row that is a blow being passed on (approaching faster than
+/// `resting_speed`, with `is_blow` of its particles) is left out, its effective mass
+/// zeroed; any other applies its impulse. Returns whether any did.
+///
+/// Done over the rows arranged in the schedule's order, not as they are built: each row's
+/// test reads the velocities the rows before it with a particle in common left, so in
+/// the lists' order, where most rows share a particle with the one before, each waited
+/// for the last (measured: 24 µs of the 40 µs that building the settled 1,000-ball
+/// pile's rows took).
+fn warm_start<R: Row>(
+    rows: &mut [R],
+    velocity: &mut [DVec2],
+    resting_speed: f64,
+    is_blow: impl Fn(&R) -> bool,
+) -> bool {
+    let mut any = false;
+    for row in rows {
+        if row.approach(velocity) > resting_speed && is_blow(row) {
+            row.solved().mass = 0.0;
+        }
+        let solved = row.solved();
+        let last = solved.impulse;
+        if solved.mass == 0.0 || last <= 0.0 {
+            solved.impulse = 0.0;
+            continue;
+        }
+        row.push(last, velocity);
+        any = true;
     }
-    if solved.mass == 0.0 || last <= 0.0 {
-        return false;
-    }
-    solved.impulse = last;
-    row.push(last, velocity);
-    true
+    any
 }
 
 /// One Gauss–Seidel sweep: each row's accumulated impulse becomes the one that stops its
@@ -293,26 +310,22 @@ impl RestingSolver {
             let (a, b) = (i as usize, j as usize);
             let (distance, normal) = separation(position[b] - position[a]);
             let radius = (touching.radius[a], touching.radius[b]);
-            let mut row = PairRow {
+            let mut solved = Accumulator::new(w[a] + w[b]);
+            // Warm start: last step's impulse, scaled to this step (applied below).
+            solved.impulse = last_pairs.impulse((i, j)) * warm;
+            self.built_pairs.push(PairRow {
                 i,
                 j,
                 normal,
                 inverse_mass_i: w[a],
                 inverse_mass_j: w[b],
-                solved: Accumulator::new(w[a] + w[b]),
+                solved,
                 reach: radius.0 + radius.1 - ALLOWED_OVERLAP * smaller(radius.0, radius.1),
                 bend: if distance > 0.0 { 0.5 / distance } else { 0.0 },
-                correction: if w[a] + w[b] > 0.0 {
-                    CORRECTION / (w[a] + w[b])
-                } else {
-                    0.0
-                },
-            };
-            let blow = row.approach(velocity) > resting_speed && (is_struck(a) || is_struck(b));
-            // Warm start: last step's impulse, scaled to this step.
-            let last = last_pairs.impulse((i, j)) * warm;
-            changed |= warm_start(&mut row, last, blow, velocity);
-            self.built_pairs.push(row);
+                // CORRECTION / (w[a] + w[b]) to the bit, one division fewer: CORRECTION
+                // is a power of two.
+                correction: CORRECTION * solved.mass,
+            });
         }
         self.built_surfaces.clear();
         let mut last_surfaces = Remembered::new(&self.last_surfaces);
@@ -320,18 +333,16 @@ impl RestingSolver {
             let at = position[p as usize];
             let (distance, normal) = touching.obstacles[k as usize].shape.distance(at);
             let radius = touching.radius[p as usize];
-            let mut row = SurfaceRow {
+            let mut solved = Accumulator::new(w[p as usize]);
+            solved.impulse = last_surfaces.impulse((p, k)) * warm; // applied below
+            self.built_surfaces.push(SurfaceRow {
                 particle: p,
                 obstacle: k,
                 normal,
                 inverse_mass: w[p as usize],
-                solved: Accumulator::new(w[p as usize]),
+                solved,
                 reach: at.dot(normal) + radius * (1.0 - ALLOWED_OVERLAP) - distance,
-            };
-            let blow = row.approach(velocity) > resting_speed && is_struck(p as usize);
-            let last = last_surfaces.impulse((p, k)) * warm;
-            changed |= warm_start(&mut row, last, blow, velocity);
-            self.built_surfaces.push(row);
+            });
         }
         self.schedule.order(
             velocity.len(),
@@ -344,6 +355,12 @@ impl RestingSolver {
             &self.schedule.surfaces,
             &mut self.surfaces,
         );
+        changed |= warm_start(&mut self.pairs, velocity, resting_speed, |r| {
+            is_struck(r.i as usize) || is_struck(r.j as usize)
+        });
+        changed |= warm_start(&mut self.surfaces, velocity, resting_speed, |r| {
+            is_struck(r.particle as usize)
+        });
         let tolerance = 1e-4 * resting_speed.max(1e-9);
         for _ in 0..ITERATIONS {
             let pairs = sweep(&mut self.pairs, velocity);

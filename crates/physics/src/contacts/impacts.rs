@@ -511,7 +511,7 @@ impl Contacts {
             if q == p
                 || !bounds.overlaps(&self.boxes[q])
                 || (forces.is_fixed(p) && forces.is_fixed(q))
-                || self.touching.by_particle.contains(p, q as u32)
+                || self.touching.touch(p, q)
             {
                 continue;
             }

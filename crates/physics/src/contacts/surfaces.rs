@@ -25,10 +25,18 @@ pub(super) struct StartContacts {
     pub pairs: Vec<(u32, u32)>,
     /// (particle, obstacle) touching, ascending.
     pub surfaces: Vec<(u32, u32)>,
-    /// The touching pairs by particle.
-    pub by_particle: Adjacency,
     /// Scratch: each touching contact and its normal.
     pub normals: Normals,
+}
+
+impl StartContacts {
+    /// Whether particles `p` and `q` touch (a search in the ascending list: asked only
+    /// after a strike inside the step, for the struck particle's neighbours, so a lookup
+    /// table built every step cost more than it saved).
+    pub fn touch(&self, p: usize, q: usize) -> bool {
+        let pair = (p.min(q) as u32, p.max(q) as u32);
+        self.pairs.binary_search(&pair).is_ok()
+    }
 }
 
 impl Contacts {
@@ -155,7 +163,6 @@ impl Contacts {
                 }
             }
         }
-        self.touching.by_particle.fill(n, &self.touching.pairs);
         profiler.lap(Stage::BroadPhase);
         self.touching.surfaces.clear();
         for p in (0..n).filter(|&p| !forces.is_fixed(p)) {
@@ -248,40 +255,4 @@ impl Contacts {
 pub(super) struct Normals {
     pairs: Vec<(u32, u32, DVec2)>,
     surfaces: Vec<(u32, u32, DVec2)>,
-}
-
-/// Pairs listed by particle (compressed rows): each pair (i, j) under both i and j.
-#[derive(Clone, Debug, Default)]
-pub(super) struct Adjacency {
-    first: Vec<u32>,
-    partners: Vec<u32>,
-}
-
-impl Adjacency {
-    fn fill(&mut self, n: usize, pairs: &[(u32, u32)]) {
-        self.first.clear();
-        self.first.resize(n + 1, 0);
-        for &(i, j) in pairs {
-            self.first[i as usize + 1] += 1;
-            self.first[j as usize + 1] += 1;
-        }
-        for p in 0..n {
-            self.first[p + 1] += self.first[p];
-        }
-        self.partners.clear();
-        self.partners.resize(2 * pairs.len(), 0);
-        let mut next = self.first.clone();
-        for &(i, j) in pairs {
-            for (a, b) in [(i, j), (j, i)] {
-                let slot = &mut next[a as usize];
-                self.partners[*slot as usize] = b;
-                *slot += 1;
-            }
-        }
-    }
-
-    /// Whether `p` and `q` are a listed pair.
-    pub(super) fn contains(&self, p: usize, q: u32) -> bool {
-        self.partners[self.first[p] as usize..self.first[p + 1] as usize].contains(&q)
-    }
 }

@@ -627,17 +627,11 @@ mod tests {
         }
     }
 
-    /// Velocity sweeps over a random tangle of rows taken in the
-    /// [`Schedule`]'s order give the same bits as taken in ascending order: 60 particles
-    /// of random masses (a tenth of them fixed), 400 distinct pairs drawn at random (so
-    /// that many rows share particles, in every pattern) and 30 surface rows, eight
-    /// sweeps each way. The pairs fall into far fewer levels than rows, and no level has
-    /// two rows with a particle in common (a row made to wait for one of its particles
-    /// only, or to leave its particles ready at its own level, fails it).
-    #[test]
-    fn the_schedule_gives_the_bits_of_ascending_order() {
+    /// The random tangle of [`the_schedule_gives_the_bits_of_ascending_order`]: `n`
+    /// particles' velocities, 400 distinct pairs' rows and 30 surface rows, both lists
+    /// ascending.
+    fn random_tangle(n: u32) -> (Vec<DVec2>, Vec<PairRow>, Vec<SurfaceRow>) {
         let mut random = crate::testing::uniform(7);
-        let n = 60_u32;
         let inverse_mass: Vec<f64> = (0..n)
             .map(|i| if i % 10 == 3 { 0.0 } else { 0.2 + random() })
             .collect();
@@ -654,13 +648,13 @@ mod tests {
                 keys.insert((a.min(b), a.max(b)));
             }
         }
-        let mut pairs: Vec<PairRow> = keys
+        let pairs: Vec<PairRow> = keys
             .into_iter()
             .map(|(i, j)| {
                 let angle = random() * std::f64::consts::TAU;
                 let (w_i, w_j) = (inverse_mass[i as usize], inverse_mass[j as usize]);
                 let mut solved = Accumulator::new(w_i + w_j);
-                solved.impulse = random() * 0.1;
+                solved.impulse = if random() < 0.2 { 0.0 } else { random() * 0.1 };
                 PairRow {
                     i,
                     j,
@@ -688,6 +682,20 @@ mod tests {
             })
             .collect();
         surfaces.sort_by_key(|r| (r.particle, r.obstacle));
+        (velocity, pairs, surfaces)
+    }
+
+    /// Warm starts and velocity sweeps over a random tangle of rows taken in the
+    /// [`Schedule`]'s order give the same bits as taken in ascending order: 60 particles
+    /// of random masses (a tenth of them fixed), 400 distinct pairs drawn at random (so
+    /// that many rows share particles, in every pattern) and 30 surface rows, warm
+    /// starts (some rows cold, some left out as blows) and eight sweeps each way. The pairs fall into far fewer levels than rows, and no level has
+    /// two rows with a particle in common (a row made to wait for one of its particles
+    /// only, or to leave its particles ready at its own level, fails it).
+    #[test]
+    fn the_schedule_gives_the_bits_of_ascending_order() {
+        let n = 60_u32;
+        let (velocity, mut pairs, mut surfaces) = random_tangle(n);
         let mut schedule = Schedule::default();
         schedule.order(
             n as usize,
@@ -697,8 +705,13 @@ mod tests {
         assert_levels_overlap_rows(n as usize, &pairs, &schedule.pairs);
         // Swept in the lists' order, and arranged in the schedule's; the impulses are
         // compared in the lists' order.
+        // Warm starts first (a seventh of the particles struck, so that some rows are
+        // blows left out), then the sweeps.
+        let struck = |p: u32| p % 7 == 2;
         let run = |pairs: &mut [PairRow], surfaces: &mut [SurfaceRow], order: (&[u32], &[u32])| {
             let mut v = velocity.clone();
+            warm_start(pairs, &mut v, 0.3, |r| struck(r.i) || struck(r.j));
+            warm_start(surfaces, &mut v, 0.3, |r| struck(r.particle));
             for _ in 0..8 {
                 sweep(pairs, &mut v);
                 sweep(surfaces, &mut v);
@@ -716,6 +729,7 @@ mod tests {
                 .collect();
             (bits, impulses)
         };
+        let blows = |pairs: &[PairRow]| pairs.iter().filter(|r| r.solved.mass == 0.0).count();
         let (mut pairs_arranged, mut surfaces_arranged) = (Vec::new(), Vec::new());
         arrange(&pairs, &schedule.pairs, &mut pairs_arranged);
         arrange(&surfaces, &schedule.surfaces, &mut surfaces_arranged);
@@ -723,7 +737,18 @@ mod tests {
             (0_u32..).take(pairs.len()).collect::<Vec<_>>(),
             (0_u32..).take(surfaces.len()).collect::<Vec<_>>(),
         );
+        let (before, zero) = (
+            blows(&pairs),
+            pairs.iter().filter(|r| r.solved.impulse == 0.0).count(),
+        );
         let expected = run(&mut pairs, &mut surfaces, (&ascending.0, &ascending.1));
+        // Some rows are left out as blows and some start cold, so both branches are met.
+        assert!(
+            blows(&pairs) > before + 20,
+            "{} blows",
+            blows(&pairs) - before
+        );
+        assert!(zero > 20, "{zero} rows without a last impulse");
         let scheduled = run(
             &mut pairs_arranged,
             &mut surfaces_arranged,

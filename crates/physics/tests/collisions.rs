@@ -387,28 +387,14 @@ fn bounds_reflect_with_the_world_restitution() {
 /// step, and B passed through A.
 #[test]
 fn impacts_chained_inside_one_step_are_each_at_their_instant() {
-    let mut world = no_forces();
-    world.bounds = Some(physics::Bounds {
-        min: [-10.0, -5.0].into(),
-        max: [6.0, 5.0].into(),
-    });
-    let scene = Scene::new()
-        .with_world(world)
-        .with_integrator(Integrator::Rk4, 2.0)
-        .with_particle(Particle::new("A", 1.0).velocity([5.0, 0.0]))
-        .with_particle(Particle::new("B", 1.0).position([3.0, 0.0]));
-    let mut simulation = Simulation::new(&scene).unwrap();
-    simulation.record_impacts();
-    simulation.step_to(2.0).unwrap();
-    assert_eq!(simulation.steps_taken(), 1, "one step");
-    let times: Vec<f64> = simulation.take_impacts().iter().map(|i| i.time).collect();
-    assert_eq!(times.len(), 3, "three impacts: {times:?}");
-    for (time, theory) in times.iter().zip([0.4, 0.9, 1.4]) {
-        assert!(
-            (time - theory).abs() < 1e-12,
-            "impact at {time} s, theory {theory} s"
-        );
-    }
+    let simulation = one_step_in_a_box(
+        2.0,
+        &[
+            Particle::new("A", 1.0).velocity([5.0, 0.0]),
+            Particle::new("B", 1.0).position([3.0, 0.0]),
+        ],
+        &[0.4, 0.9, 1.4],
+    );
     assert_states(
         &simulation,
         &[
@@ -416,6 +402,35 @@ fn impacts_chained_inside_one_step_are_each_at_their_instant() {
             (DVec2::new(3.0, 0.0), DVec2::ZERO),
         ],
     );
+}
+
+/// `particles`, weightless in the box from (−10, −5) to (6, 5), run through one step of
+/// `h` seconds of rk4; their impacts are at the instants `theory`, to 1e-12 s.
+fn one_step_in_a_box(h: f64, particles: &[Particle], theory: &[f64]) -> Simulation {
+    let mut world = no_forces();
+    world.bounds = Some(Bounds {
+        min: [-10.0, -5.0].into(),
+        max: [6.0, 5.0].into(),
+    });
+    let mut scene = Scene::new()
+        .with_world(world)
+        .with_integrator(Integrator::Rk4, h);
+    for particle in particles {
+        scene = scene.with_particle(particle.clone());
+    }
+    let mut simulation = Simulation::new(&scene).expect("the scene starts");
+    simulation.record_impacts();
+    simulation.step_to(h).expect("the step runs");
+    assert_eq!(simulation.steps_taken(), 1, "one step");
+    let times: Vec<f64> = simulation.take_impacts().iter().map(|i| i.time).collect();
+    assert_eq!(times.len(), theory.len(), "impacts at {times:?}");
+    for (time, theory) in times.iter().zip(theory) {
+        assert!(
+            (time - theory).abs() < 1e-12,
+            "impact at {time} s, theory {theory} s"
+        );
+    }
+    simulation
 }
 
 /// A ball set moving by an impact inside a step meets a fixed ball in the same step: A
@@ -428,29 +443,15 @@ fn impacts_chained_inside_one_step_are_each_at_their_instant() {
 /// no test caught) lets B run through C.
 #[test]
 fn a_ball_struck_inside_a_step_meets_a_fixed_ball_in_the_same_step() {
-    let mut world = no_forces();
-    world.bounds = Some(Bounds {
-        min: [-10.0, -5.0].into(),
-        max: [6.0, 5.0].into(),
-    });
-    let scene = Scene::new()
-        .with_world(world)
-        .with_integrator(Integrator::Rk4, 1.0)
-        .with_particle(Particle::new("A", 1.0).velocity([5.0, 0.0]))
-        .with_particle(Particle::new("B", 1.0).position([3.0, 0.0]))
-        .with_particle(Particle::new("C", 1.0).position([5.0, 0.0]).fixed());
-    let mut simulation = Simulation::new(&scene).unwrap();
-    simulation.record_impacts();
-    simulation.step_to(1.0).unwrap();
-    assert_eq!(simulation.steps_taken(), 1, "one step");
-    let times: Vec<f64> = simulation.take_impacts().iter().map(|i| i.time).collect();
-    assert_eq!(times.len(), 3, "three impacts: {times:?}");
-    for (time, theory) in times.iter().zip([0.4, 0.6, 0.8]) {
-        assert!(
-            (time - theory).abs() < 1e-12,
-            "impact at {time} s, theory {theory} s"
-        );
-    }
+    let simulation = one_step_in_a_box(
+        1.0,
+        &[
+            Particle::new("A", 1.0).velocity([5.0, 0.0]),
+            Particle::new("B", 1.0).position([3.0, 0.0]),
+            Particle::new("C", 1.0).position([5.0, 0.0]).fixed(),
+        ],
+        &[0.4, 0.6, 0.8],
+    );
     assert_states(
         &simulation,
         &[

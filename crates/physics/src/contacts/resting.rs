@@ -13,8 +13,8 @@
 //! side by side, pairs and surface contacts in two arrays, so the inner loop touches
 //! nothing else. Pairs are swept before surfaces, each with the result of sweeping them
 //! in ascending order, as the touching lists are (in an order that gives the same bits
-//! and lets the processor overlap rows: [`Schedule`]): the result does not depend on
-//! anything but the scene.
+//! and lets the processor overlap rows, [`Schedule`], the rows copied into it before the
+//! warm starts): the result does not depend on anything but the scene.
 
 use glam::DVec2;
 
@@ -154,8 +154,9 @@ impl Row for SurfaceRow {
 
 /// Warm-starts the rows, each built with its impulse of the last step (scaled to this
 /// one), in their order: a row that is a blow being passed on (approaching faster than
-/// `resting_speed`, with `is_blow` of its particles) is left out, its effective mass
-/// zeroed; any other applies its impulse. Returns whether any did.
+/// `resting_speed`, and `struck`: one of its particles was struck in this step) is left
+/// out, its effective mass zeroed; any other applies its impulse. Returns whether any
+/// did.
 ///
 /// Done over the rows arranged in the schedule's order, not as they are built: each row's
 /// test reads the velocities the rows before it with a particle in common left, so in
@@ -166,11 +167,11 @@ fn warm_start<R: Row>(
     rows: &mut [R],
     velocity: &mut [DVec2],
     resting_speed: f64,
-    is_blow: impl Fn(&R) -> bool,
+    struck: impl Fn(&R) -> bool,
 ) -> bool {
     let mut any = false;
     for row in rows {
-        if row.approach(velocity) > resting_speed && is_blow(row) {
+        if row.approach(velocity) > resting_speed && struck(row) {
             row.solved().mass = 0.0;
         }
         let solved = row.solved();

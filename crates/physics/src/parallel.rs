@@ -15,8 +15,15 @@ use std::ops::Range;
 #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
 const PIECES_PER_THREAD: usize = 4;
 /// Fewer items than this run on the calling thread: waking the pool costs more than it
-/// saves (measured: with 1,000 balls two threads were 20 % slower than one).
-pub(crate) const MIN_ITEMS: usize = 4096;
+/// saves (measured: with 1,000 balls two threads were 20 % slower than one). It also
+/// decides whether a step of that many particles runs inside the pool at all. On two
+/// shared cores 4,096 was too few: the 10,000-ball pit, 0 to 1 s, ran 10 % slower on two
+/// threads than on one (1,154–1,176 steps per second against 1,282–1,293), and as fast as
+/// on one from 16,384 (1,282–1,293), while the star clusters of 5,000 to 20,000 stars and
+/// the 4.1 table's 10,000 balls ran the same either way (`bench --scene pit --particles
+/// 10000 --seconds 1 --threads 2`, `--scene cluster`, `--scene mixed`; an Intel Xeon,
+/// 2026-11-24).
+pub(crate) const MIN_ITEMS: usize = 16_384;
 
 /// The threads a simulation may use.
 #[derive(Clone, Debug, Default)]
@@ -140,13 +147,15 @@ impl Workers {
 mod tests {
     use super::*;
 
-    /// Squares of 0..10,000 (enough to be split), gathered in pieces on 1, 2 and 3 threads: always the same list.
+    /// Squares of 0..20,000 (enough to be split), gathered in pieces on 1, 2 and 3 threads: always the same list.
     #[test]
     fn pieces_join_in_order_for_any_thread_count() {
-        let expected: Vec<u64> = (0..10_000_u64).map(|i| i * i).collect();
+        let n = 20_000;
+        assert!(n >= MIN_ITEMS, "too few to be split");
+        let expected: Vec<u64> = (0..n as u64).map(|i| i * i).collect();
         for threads in [1, 2, 3] {
             let mut out = Vec::new();
-            Workers::new(threads).collect_into(10_000, &mut out, |range, out| {
+            Workers::new(threads).collect_into(n, &mut out, |range, out| {
                 out.extend(range.map(|i| (i as u64) * (i as u64)));
             });
             assert_eq!(out, expected, "{threads} threads");

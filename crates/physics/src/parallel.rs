@@ -71,18 +71,30 @@ impl Workers {
 
     /// Runs `work` over `0..n` in pieces and appends what the pieces push to `out`, in the
     /// order of the pieces: the same `out` for any number of threads.
-    #[cfg_attr(
-        not(all(feature = "parallel", not(target_arch = "wasm32"))),
-        expect(clippy::unused_self, reason = "the pool exists only where threads do")
-    )]
     pub fn collect_into<T: Send>(
         &self,
         n: usize,
         out: &mut Vec<T>,
         work: impl Fn(Range<usize>, &mut Vec<T>) + Sync,
     ) {
+        self.collect_into_from(MIN_ITEMS, n, out, work);
+    }
+
+    /// [`Self::collect_into`] for items that cost enough to be split from `least` of them
+    /// (a Barnes–Hut tree's leaves, each a walk and the sums of its bodies).
+    #[cfg_attr(
+        not(all(feature = "parallel", not(target_arch = "wasm32"))),
+        expect(clippy::unused_self, reason = "the pool exists only where threads do")
+    )]
+    pub fn collect_into_from<T: Send>(
+        &self,
+        least: usize,
+        n: usize,
+        out: &mut Vec<T>,
+        work: impl Fn(Range<usize>, &mut Vec<T>) + Sync,
+    ) {
         #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
-        if let Some(pool) = self.pool.as_ref().filter(|_| n >= MIN_ITEMS) {
+        if let Some(pool) = self.pool.as_ref().filter(|_| n >= least.max(2)) {
             use rayon::prelude::*;
             let pieces = (pool.current_num_threads() * PIECES_PER_THREAD).min(n.max(1));
             let piece = |k: usize| k * n / pieces..(k + 1) * n / pieces;
@@ -101,6 +113,8 @@ impl Workers {
             }
             return;
         }
+        #[cfg(not(all(feature = "parallel", not(target_arch = "wasm32"))))]
+        let _ = least;
         work(0..n, out);
     }
 }

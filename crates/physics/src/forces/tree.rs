@@ -38,7 +38,7 @@ use crate::parallel::Workers;
 
 /// Bodies per leaf: below this a square is summed directly. 32 against 16 or 64: the
 /// fewest walks for near sums the lanes make cheap (measured at 10,000 and 100,000).
-const LEAF: usize = 32;
+pub(crate) const LEAF: usize = 32;
 /// Deepest square: bodies closer than 2⁻⁴⁸ of the whole extent share a leaf.
 const DEPTH: u32 = 48;
 
@@ -119,6 +119,13 @@ pub(crate) fn potential_energy(
 /// `sum(lists, i)` for every body i of `bodies`, in the tree's order, with `lists` what
 /// i's leaf feels: the leaves are shared out among `workers`' threads, each leaf walked
 /// once, and the results kept in order (the same for any number of threads).
+/// Leaves from which a tree's sums are shared out among threads: each leaf's walk and
+/// sums cost some 30 µs in the 20,000-star cluster, so even a small tree pays for the
+/// pool (the item count that cheap lists are split from, [`crate::parallel::MIN_ITEMS`],
+/// left every tree below 131,000 bodies on one thread: the 20,000-star cluster ran at
+/// 13.3 steps per second on one thread and on two).
+pub(crate) const SPLIT_LEAVES: usize = 32;
+
 fn per_body<T: Send>(
     theta: f64,
     bodies: &[usize],
@@ -129,7 +136,7 @@ fn per_body<T: Send>(
     let tree = Tree::build(bodies, x, mass);
     let leaves = tree.leaves();
     let mut results = Vec::with_capacity(bodies.len());
-    workers.collect_into(leaves.len(), &mut results, |range, out| {
+    workers.collect_into_from(SPLIT_LEAVES, leaves.len(), &mut results, |range, out| {
         let mut lists = Interactions::default();
         for &leaf in &leaves[range] {
             tree.interactions(leaf, theta, (x, mass), &mut lists);

@@ -19,10 +19,10 @@ const PIECES_PER_THREAD: usize = 4;
 /// decides whether a step of that many particles runs inside the pool at all. On two
 /// shared cores 4,096 was too few: the 10,000-ball pit, 0 to 1 s, ran 10 % slower on two
 /// threads than on one (1,154–1,176 steps per second against 1,282–1,293), and as fast as
-/// on one from 16,384 (1,282–1,293), while the star clusters of 5,000 to 20,000 stars and
-/// the 4.1 table's 10,000 balls ran the same either way (`bench --scene pit --particles
-/// 10000 --seconds 1 --threads 2`, `--scene cluster`, `--scene mixed`; an Intel Xeon,
-/// 2026-11-24).
+/// on one from 16,384 (1,282–1,293), while the 4.1 table's 10,000 balls ran the same
+/// either way (`bench --scene pit --particles 10000 --seconds 1 --threads 2`, `--scene
+/// mixed`; an Intel Xeon, 2026-11-24). A Barnes–Hut tree's leaves, dear items, are split
+/// from far fewer (`tree::SPLIT_LEAVES`).
 pub(crate) const MIN_ITEMS: usize = 16_384;
 
 /// The threads a simulation may use.
@@ -94,7 +94,7 @@ impl Workers {
         work: impl Fn(Range<usize>, &mut Vec<T>) + Sync,
     ) {
         #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
-        if let Some(pool) = self.pool.as_ref().filter(|_| n >= least.max(2)) {
+        if let Some(pool) = self.pool.as_ref().filter(|_| n >= least) {
             use rayon::prelude::*;
             let pieces = (pool.current_num_threads() * PIECES_PER_THREAD).min(n.max(1));
             let piece = |k: usize| k * n / pieces..(k + 1) * n / pieces;

@@ -116,9 +116,6 @@ pub(crate) fn potential_energy(
     -0.5 * g * terms.iter().sum::<f64>()
 }
 
-/// `sum(lists, i)` for every body i of `bodies`, in the tree's order, with `lists` what
-/// i's leaf feels: the leaves are shared out among `workers`' threads, each leaf walked
-/// once, and the results kept in order (the same for any number of threads).
 /// Leaves from which a tree's sums are shared out among threads: each leaf's walk and
 /// sums cost some 30 µs in the 20,000-star cluster, so even a small tree pays for the
 /// pool (the item count that cheap lists are split from, [`crate::parallel::MIN_ITEMS`],
@@ -126,6 +123,9 @@ pub(crate) fn potential_energy(
 /// 13.3 steps per second on one thread and on two).
 pub(crate) const SPLIT_LEAVES: usize = 32;
 
+/// `sum(lists, i)` for every body i of `bodies`, in the tree's order, with `lists` what
+/// i's leaf feels: the leaves are shared out among `workers`' threads, each leaf walked
+/// once, and the results kept in order (the same for any number of threads).
 fn per_body<T: Send>(
     theta: f64,
     bodies: &[usize],

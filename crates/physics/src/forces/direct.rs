@@ -3,9 +3,10 @@
 //!
 //! Each pair is visited once (the force on j is minus the force on i). The bodies are
 //! copied into structure-of-arrays form, and for each body i its partners j > i are
-//! taken two groups of [`LANES`] at a time, in the widest vectors the processor has:
-//! `pulp` compiles the loop for AVX-512, AVX2 and SSE4.2 and picks at run time (simd128
-//! in the browser, plain arithmetic elsewhere). Every lane does the same IEEE 754
+//! taken two groups of [`LANES`] at a time, in vectors: `pulp` compiles the loop for
+//! AVX-512, AVX2 and SSE4.2, and [`dispatch`] picks at run time (AVX2 on Intel's
+//! processors, the widest elsewhere; simd128 in the browser, plain arithmetic
+//! elsewhere). Every lane does the same IEEE 754
 //! operations — a square root, a shared division, no reciprocal-square-root estimate
 //! (whose bits differ between processors), no fused multiply-add — and the lanes'
 //! partial sums are combined in a fixed order. So the result is the same bits on every
@@ -208,16 +209,49 @@ fn pull(i: (f64, f64, f64, f64, f64), j: (f64, f64, f64, f64, f64), softening2: 
     (dx * s, dy * s)
 }
 
-/// The symmetric pair loop over the pairs whose first body is in `rows`, in the widest
-/// vectors the processor has (chosen at run time by `pulp`).
+/// The symmetric pair loop over the pairs whose first body is in `rows`, in the vectors
+/// [`dispatch`] picks.
 fn pairs(b: &Bodies, real: usize, rows: std::ops::Range<usize>, fx: &mut [f64], fy: &mut [f64]) {
-    Arch::new().dispatch(Rows {
+    dispatch(Rows {
         b,
         real,
         range: rows,
         fx,
         fy,
     });
+}
+
+/// Runs `work` in the vectors that sum pairs fastest on this processor: AVX2 on Intel's,
+/// which lower their clock for heavy 512-bit arithmetic while taking square roots and
+/// divisions no faster per lane in 512 bits than in 256 (the pair loop's bottleneck:
+/// 9.6–9.7e8 pairs a second in AVX2 against 8.8–8.9e8 in AVX-512 on an Intel Xeon,
+/// `bench --scene cloud --particles 1000 --threads 1`, alternating); elsewhere the widest
+/// the processor has (AMD's cores keep their clock at 512 bits), chosen by `pulp`. Every
+/// instruction set gives the same bits (`every_instruction_set_gives_the_same_bits`), so
+/// the choice changes only the speed.
+#[inline]
+pub(super) fn dispatch<W: WithSimd>(work: W) -> W::Output {
+    #[cfg(target_arch = "x86_64")]
+    if is_intel()
+        && let Some(v3) = pulp::x86::V3::try_new()
+    {
+        return Simd::vectorize(v3, work);
+    }
+    Arch::new().dispatch(work)
+}
+
+/// Whether the processor is Intel's (its CPUID vendor string), asked once.
+#[cfg(target_arch = "x86_64")]
+fn is_intel() -> bool {
+    static INTEL: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *INTEL.get_or_init(|| {
+        let vendor = std::arch::x86_64::__cpuid(0);
+        let bytes: Vec<u8> = [vendor.ebx, vendor.edx, vendor.ecx]
+            .iter()
+            .flat_map(|word| word.to_le_bytes())
+            .collect();
+        bytes == b"GenuineIntel"
+    })
 }
 
 /// [`pairs`]' work, for `pulp` to compile once per instruction set.
@@ -449,6 +483,27 @@ mod tests {
         }
         let dispatched = padded(&b, |padded, n, fx, fy| pairs(padded, n, 0..n, fx, fy));
         assert_eq!(dispatched, plain);
+    }
+
+    /// On an Intel processor with AVX2 the pair loop runs in AVX2 (see [`dispatch`]);
+    /// elsewhere in what `pulp` picks.
+    #[test]
+    fn intel_processors_sum_in_avx2() {
+        struct Width;
+        impl WithSimd for Width {
+            type Output = &'static str;
+            #[inline(always)]
+            fn with_simd<S: Simd>(self, _: S) -> &'static str {
+                std::any::type_name::<S>()
+            }
+        }
+        let chosen = dispatch(Width);
+        #[cfg(target_arch = "x86_64")]
+        if is_intel() && pulp::x86::V3::try_new().is_some() {
+            assert_eq!(chosen, std::any::type_name::<pulp::x86::V3>());
+            return;
+        }
+        assert_eq!(chosen, Arch::new().dispatch(Width));
     }
 
     /// The plain loop the kernel replaced: one pair at a time, in order, with the

@@ -31,7 +31,7 @@
 
 use glam::DVec2;
 
-use pulp::{Arch, Simd, WithSimd};
+use pulp::{Simd, WithSimd};
 
 use super::direct::{LANES, lanes, sum_lanes};
 use crate::parallel::Workers;
@@ -361,7 +361,7 @@ impl Interactions {
     /// Σ mⱼ (xⱼ − xᵢ)/|xⱼ − xᵢ|³ over the other bodies, approximated (per kg and per G):
     /// a far cell's monopole and quadrupole, the near bodies one at a time.
     fn acceleration(&self, p: DVec2, softening2: f64) -> DVec2 {
-        Arch::new().dispatch(Sum {
+        super::direct::dispatch(Sum {
             lists: self,
             p,
             softening2,
@@ -372,14 +372,13 @@ impl Interactions {
     /// Σ mⱼ / |xⱼ − xᵢ| over the other bodies, approximated like [`Self::acceleration`]:
     /// a far cell's monopole and quadrupole, M/|D| + (DᵀQD)/(2|D|⁵) (per kg and per G).
     fn inverse_distance_sum(&self, p: DVec2, softening2: f64) -> f64 {
-        Arch::new()
-            .dispatch(Sum {
-                lists: self,
-                p,
-                softening2,
-                potential: true,
-            })
-            .x
+        super::direct::dispatch(Sum {
+            lists: self,
+            p,
+            softening2,
+            potential: true,
+        })
+        .x
     }
 }
 

@@ -9,15 +9,19 @@
 //!
 //! Each contact's normal and effective mass are fixed for the solve (they change
 //! negligibly within it), so a sweep costs a dot product per contact. The rows are laid
-//! out for the sweep: particle indices, normal, inverse masses and accumulated impulse
-//! side by side, pairs and surface contacts in two arrays, so the inner loop touches
-//! nothing else. Pairs are swept before surfaces, each with the result of sweeping them
-//! in ascending order, as the touching lists are (in an order that gives the same bits
-//! and lets the processor overlap rows, [`Schedule`], the rows copied into it before the
-//! warm starts): the result does not depend on anything but the scene.
+//! out for the sweep: the pairs column by column, taken several at a time in vectors
+//! ([`columns`]), the surface contacts (a few) as rows of particle, normal, inverse mass
+//! and accumulated impulse side by side, so the inner loops touch nothing else. Pairs
+//! are swept before surfaces, each with the result of sweeping them in ascending order,
+//! as the touching lists are (in an order that gives the same bits and lets the
+//! processor overlap rows, [`Schedule`], the rows built or copied into it before the warm
+//! starts): the result does not depend on anything but the scene.
+
+mod columns;
 
 use glam::DVec2;
 
+use self::columns::PairColumns;
 use super::obstacles::Obstacle;
 use super::{separation, smaller};
 use crate::state::State;
@@ -261,11 +265,10 @@ pub(crate) struct RestingSolver {
     last_surfaces: Vec<((u32, u32), f64)>,
     last_step: f64,
     /// The rows, in the order the sweeps take them ([`Schedule`]).
-    pairs: Vec<PairRow>,
+    pairs: PairColumns,
     surfaces: Vec<SurfaceRow>,
     schedule: Schedule,
     /// Scratch: the rows as built, in the touching lists' order.
-    built_pairs: Vec<PairRow>,
     built_surfaces: Vec<SurfaceRow>,
 }
 
@@ -273,10 +276,9 @@ impl RestingSolver {
     /// Frees the rows and their schedule, which every solve builds again; the last
     /// impulses stay.
     pub fn drop_scratch(&mut self) {
-        self.pairs = Vec::new();
+        self.pairs = PairColumns::default();
         self.surfaces = Vec::new();
         self.schedule = Schedule::default();
-        self.built_pairs = Vec::new();
         self.built_surfaces = Vec::new();
     }
 
@@ -305,28 +307,38 @@ impl RestingSolver {
         let (position, velocity) = (&state.position, &mut state.velocity);
         let w = touching.inverse_mass;
         let mut changed = false;
-        self.built_pairs.clear();
+        // The schedule first, from the touching lists: each pair row is built straight
+        // into its place in the columns.
+        self.schedule.order(
+            velocity.len(),
+            touching.pairs.iter().copied(),
+            touching.surfaces.iter().map(|&(p, _)| (p, p)),
+        );
+        self.pairs.resize(touching.pairs.len());
         let mut last_pairs = Remembered::new(&self.last_pairs);
-        for &(i, j) in touching.pairs {
+        for (&(i, j), &place) in touching.pairs.iter().zip(&self.schedule.pair_places) {
             let (a, b) = (i as usize, j as usize);
             let (distance, normal) = separation(position[b] - position[a]);
             let radius = (touching.radius[a], touching.radius[b]);
             let mut solved = Accumulator::new(w[a] + w[b]);
             // Warm start: last step's impulse, scaled to this step (applied below).
             solved.impulse = last_pairs.impulse((i, j)) * warm;
-            self.built_pairs.push(PairRow {
-                i,
-                j,
-                normal,
-                inverse_mass_i: w[a],
-                inverse_mass_j: w[b],
-                solved,
-                reach: radius.0 + radius.1 - ALLOWED_OVERLAP * smaller(radius.0, radius.1),
-                bend: if distance > 0.0 { 0.5 / distance } else { 0.0 },
-                // CORRECTION / (w[a] + w[b]) to the bit, one division fewer: CORRECTION
-                // is a power of two.
-                correction: CORRECTION * solved.mass,
-            });
+            self.pairs.set(
+                place as usize,
+                &PairRow {
+                    i,
+                    j,
+                    normal,
+                    inverse_mass_i: w[a],
+                    inverse_mass_j: w[b],
+                    solved,
+                    reach: radius.0 + radius.1 - ALLOWED_OVERLAP * smaller(radius.0, radius.1),
+                    bend: if distance > 0.0 { 0.5 / distance } else { 0.0 },
+                    // CORRECTION / (w[a] + w[b]) to the bit, one division fewer: CORRECTION
+                    // is a power of two.
+                    correction: CORRECTION * solved.mass,
+                },
+            );
         }
         self.built_surfaces.clear();
         let mut last_surfaces = Remembered::new(&self.last_surfaces);
@@ -345,26 +357,18 @@ impl RestingSolver {
                 reach: at.dot(normal) + radius * (1.0 - ALLOWED_OVERLAP) - distance,
             });
         }
-        self.schedule.order(
-            velocity.len(),
-            self.built_pairs.iter().map(|r| (r.i, r.j)),
-            self.built_surfaces.iter().map(|r| (r.particle, r.particle)),
-        );
-        arrange(&self.built_pairs, &self.schedule.pairs, &mut self.pairs);
         arrange(
             &self.built_surfaces,
             &self.schedule.surfaces,
             &mut self.surfaces,
         );
-        changed |= warm_start(&mut self.pairs, velocity, resting_speed, |r| {
-            is_struck(r.i as usize) || is_struck(r.j as usize)
-        });
+        changed |= self.pairs.warm_start(velocity, resting_speed, &is_struck);
         changed |= warm_start(&mut self.surfaces, velocity, resting_speed, |r| {
             is_struck(r.particle as usize)
         });
         let tolerance = 1e-4 * resting_speed.max(1e-9);
         for _ in 0..ITERATIONS {
-            let pairs = sweep(&mut self.pairs, velocity);
+            let pairs = self.pairs.sweep(&self.schedule.pair_levels, velocity);
             let surfaces = sweep(&mut self.surfaces, velocity);
             let largest = match (pairs, surfaces) {
                 (None, None) => break,
@@ -379,8 +383,9 @@ impl RestingSolver {
         // Remembered by key, ascending: each row back in its place in the touching lists.
         self.last_pairs.clear();
         self.last_pairs.resize(self.pairs.len(), ((0, 0), 0.0));
-        for (row, &k) in self.pairs.iter().zip(&self.schedule.pairs) {
-            self.last_pairs[k as usize] = ((row.i, row.j), row.solved.impulse);
+        let rows = &self.pairs;
+        for (row, &k) in self.schedule.pairs.iter().enumerate() {
+            self.last_pairs[k as usize] = ((rows.i[row], rows.j[row]), rows.impulse[row]);
         }
         self.last_surfaces.clear();
         self.last_surfaces
@@ -407,18 +412,7 @@ impl RestingSolver {
     fn correct_overlaps(&self, position: &mut [DVec2]) -> bool {
         let mut changed = false;
         for _ in 0..POSITION_SWEEPS {
-            let mut moved = false;
-            for row in &self.pairs {
-                let (i, j) = (row.i as usize, row.j as usize);
-                let offset = position[j] - position[i];
-                let across = row.normal.perp_dot(offset);
-                let excess = row.reach - (offset.dot(row.normal) + across * across * row.bend);
-                let excess = if excess > 0.0 { excess } else { 0.0 };
-                let shift = row.normal * (excess * row.correction);
-                position[i] -= shift * row.inverse_mass_i;
-                position[j] += shift * row.inverse_mass_j;
-                moved |= excess * row.correction > 0.0;
-            }
+            let mut moved = self.pairs.correct(&self.schedule.pair_levels, position);
             for row in &self.surfaces {
                 let p = row.particle as usize;
                 let excess = row.reach - position[p].dot(row.normal);
@@ -459,6 +453,11 @@ fn arrange<R: Copy>(built: &[R], order: &[u32], rows: &mut Vec<R>) {
 struct Schedule {
     pairs: Vec<u32>,
     surfaces: Vec<u32>,
+    /// Where each level of the pairs ends in `pairs` (four rows of a level at a time
+    /// have no particle in common, [`columns`]).
+    pair_levels: Vec<u32>,
+    /// Each pair's place in that order, in the lists' order (`pairs` inverted).
+    pair_places: Vec<u32>,
     levels: Levels,
 }
 
@@ -472,6 +471,12 @@ impl Schedule {
         surfaces: impl Iterator<Item = (u32, u32)>,
     ) {
         self.levels.order(n, pairs, &mut self.pairs);
+        self.pair_levels.clone_from(&self.levels.count);
+        self.pair_places.clear();
+        self.pair_places.resize(self.pairs.len(), 0);
+        for (place, &k) in (0_u32..).zip(&self.pairs) {
+            self.pair_places[k as usize] = place;
+        }
         self.levels.order(n, surfaces, &mut self.surfaces);
     }
 }
@@ -687,16 +692,18 @@ mod tests {
     }
 
     /// Warm starts and velocity sweeps over a random tangle of rows taken in the
-    /// [`Schedule`]'s order give the same bits as taken in ascending order: 60 particles
-    /// of random masses (a tenth of them fixed), 400 distinct pairs drawn at random (so
-    /// that many rows share particles, in every pattern) and 30 surface rows, warm
-    /// starts (some rows cold, some left out as blows) and eight sweeps each way. The pairs fall into far fewer levels than rows, and no level has
-    /// two rows with a particle in common (a row made to wait for one of its particles
-    /// only, or to leave its particles ready at its own level, fails it).
+    /// [`Schedule`]'s order, the pairs in columns and four (two in WebAssembly) rows of a
+    /// level at a time ([`columns`]), give the same bits as the rows taken one at a time
+    /// in ascending order: 60 particles of random masses (a tenth of them fixed), 400
+    /// distinct pairs drawn at random (so that many rows share particles, in every
+    /// pattern) and 30 surface rows, warm starts (some rows cold, some left out as blows)
+    /// and eight sweeps each way. The pairs fall into far fewer levels than rows, and no
+    /// level has two rows with a particle in common (a row made to wait for one of its
+    /// particles only, or to leave its particles ready at its own level, fails it).
     #[test]
     fn the_schedule_gives_the_bits_of_ascending_order() {
         let n = 60_u32;
-        let (velocity, mut pairs, mut surfaces) = random_tangle(n);
+        let (velocity, mut pairs, surfaces) = random_tangle(n);
         let mut schedule = Schedule::default();
         schedule.order(
             n as usize,
@@ -704,58 +711,117 @@ mod tests {
             surfaces.iter().map(|r| (r.particle, r.particle)),
         );
         assert_levels_overlap_rows(n as usize, &pairs, &schedule.pairs);
-        // Swept in the lists' order, and arranged in the schedule's; the impulses are
-        // compared in the lists' order.
         // Warm starts first (a seventh of the particles struck, so that some rows are
-        // blows left out), then the sweeps.
+        // blows left out), then the sweeps; the impulses compared in the lists' order.
         let struck = |p: u32| p % 7 == 2;
-        let run = |pairs: &mut [PairRow], surfaces: &mut [SurfaceRow], order: (&[u32], &[u32])| {
-            let mut v = velocity.clone();
-            warm_start(pairs, &mut v, 0.3, |r| struck(r.i) || struck(r.j));
-            warm_start(surfaces, &mut v, 0.3, |r| struck(r.particle));
-            for _ in 0..8 {
-                sweep(pairs, &mut v);
-                sweep(surfaces, &mut v);
-            }
-            let mut impulses = vec![0; pairs.len() + surfaces.len()];
-            for (row, &k) in pairs.iter().zip(order.0) {
-                impulses[k as usize] = row.solved.impulse.to_bits();
-            }
-            for (row, &k) in surfaces.iter().zip(order.1) {
+        let bits = |v: &[DVec2]| -> Vec<u64> {
+            v.iter()
+                .flat_map(|v| [v.x.to_bits(), v.y.to_bits()])
+                .collect()
+        };
+        let impulses = |pairs: Vec<f64>, surfaces: &[SurfaceRow], order: &[u32]| {
+            let mut impulses: Vec<u64> = pairs.iter().map(|i| i.to_bits()).collect();
+            impulses.resize(pairs.len() + surfaces.len(), 0);
+            for (row, &k) in surfaces.iter().zip(order) {
                 impulses[pairs.len() + k as usize] = row.solved.impulse.to_bits();
             }
-            let bits: Vec<u64> = v
-                .iter()
-                .flat_map(|v| [v.x.to_bits(), v.y.to_bits()])
-                .collect();
-            (bits, impulses)
+            impulses
         };
-        let blows = |pairs: &[PairRow]| pairs.iter().filter(|r| r.solved.mass == 0.0).count();
-        let (mut pairs_arranged, mut surfaces_arranged) = (Vec::new(), Vec::new());
-        arrange(&pairs, &schedule.pairs, &mut pairs_arranged);
-        arrange(&surfaces, &schedule.surfaces, &mut surfaces_arranged);
-        let ascending = (
-            (0_u32..).take(pairs.len()).collect::<Vec<_>>(),
-            (0_u32..).take(surfaces.len()).collect::<Vec<_>>(),
-        );
+        // One at a time, in ascending order.
         let (before, zero) = (
-            blows(&pairs),
+            pairs.iter().filter(|r| r.solved.mass == 0.0).count(),
             pairs.iter().filter(|r| r.solved.impulse == 0.0).count(),
         );
-        let expected = run(&mut pairs, &mut surfaces, (&ascending.0, &ascending.1));
-        // Some rows are left out as blows and some start cold, so both branches are met.
-        assert!(
-            blows(&pairs) > before + 20,
-            "{} blows",
-            blows(&pairs) - before
+        let mut ascending_surfaces = surfaces.clone();
+        let mut v = velocity.clone();
+        let mut columns = PairColumns::default();
+        columns.resize(pairs.len());
+        for (k, row) in pairs.iter().enumerate() {
+            columns.set(schedule.pair_places[k] as usize, row);
+        }
+        warm_start(&mut pairs, &mut v, 0.3, |r| struck(r.i) || struck(r.j));
+        warm_start(&mut ascending_surfaces, &mut v, 0.3, |r| struck(r.particle));
+        for _ in 0..8 {
+            sweep(&mut pairs, &mut v);
+            sweep(&mut ascending_surfaces, &mut v);
+        }
+        let ascending_order: Vec<u32> = (0_u32..).take(surfaces.len()).collect();
+        let expected = (
+            bits(&v),
+            impulses(
+                pairs.iter().map(|r| r.solved.impulse).collect(),
+                &ascending_surfaces,
+                &ascending_order,
+            ),
         );
+        // Some rows are left out as blows and some start cold, so both branches are met.
+        let blows = pairs.iter().filter(|r| r.solved.mass == 0.0).count();
+        assert!(blows > before + 20, "{} blows", blows - before);
         assert!(zero > 20, "{zero} rows without a last impulse");
-        let scheduled = run(
-            &mut pairs_arranged,
-            &mut surfaces_arranged,
-            (&schedule.pairs, &schedule.surfaces),
+        // In the schedule's order, the pairs in columns.
+        let mut arranged_surfaces = Vec::new();
+        arrange(&surfaces, &schedule.surfaces, &mut arranged_surfaces);
+        let mut v = velocity.clone();
+        columns.warm_start(&mut v, 0.3, |p| p % 7 == 2); // `struck`, by index
+        warm_start(&mut arranged_surfaces, &mut v, 0.3, |r| struck(r.particle));
+        for _ in 0..8 {
+            columns.sweep(&schedule.pair_levels, &mut v);
+            sweep(&mut arranged_surfaces, &mut v);
+        }
+        let mut in_lists_order = vec![0.0; pairs.len()];
+        for (place, &k) in schedule.pairs.iter().enumerate() {
+            in_lists_order[k as usize] = columns.impulse[place];
+        }
+        let scheduled = (
+            bits(&v),
+            impulses(in_lists_order, &arranged_surfaces, &schedule.surfaces),
         );
         assert!(expected == scheduled, "the scheduled sweeps differ");
+    }
+
+    /// The position sweeps over the columns, four (two in WebAssembly) rows of a level
+    /// at a time, give the bits of taking the rows one at a time: the random tangle's
+    /// 400 pairs between 60 particles placed at random in a square of 0.3 m, their
+    /// overlaps corrected by four sweeps each way (most rows overlap, and the
+    /// lanes are met: the levels hold several rows each).
+    #[test]
+    fn position_sweeps_in_lanes_give_the_bits_of_one_row_at_a_time() {
+        let n = 60_u32;
+        let (_, pairs, _) = random_tangle(n);
+        let mut random = crate::testing::uniform(11);
+        let position: Vec<DVec2> = (0..n)
+            .map(|_| DVec2::new(random(), random()) * 0.3)
+            .collect();
+        let mut schedule = Schedule::default();
+        schedule.order(
+            n as usize,
+            pairs.iter().map(|r| (r.i, r.j)),
+            std::iter::empty(),
+        );
+        let mut columns = PairColumns::default();
+        columns.resize(pairs.len());
+        for (k, row) in pairs.iter().enumerate() {
+            columns.set(schedule.pair_places[k] as usize, row);
+        }
+        let overlapping = pairs
+            .iter()
+            .filter(|r| position[r.i as usize].distance(position[r.j as usize]) < r.reach)
+            .count();
+        assert!(overlapping > 200, "{overlapping} overlapping rows");
+        let (mut lanes, mut alone) = (position.clone(), position);
+        for _ in 0..POSITION_SWEEPS {
+            assert!(columns.correct(&schedule.pair_levels, &mut lanes));
+            assert!(columns.correct_one_at_a_time(0..pairs.len(), &mut alone));
+        }
+        let bits = |p: &[DVec2]| -> Vec<u64> {
+            p.iter()
+                .flat_map(|p| [p.x.to_bits(), p.y.to_bits()])
+                .collect()
+        };
+        assert!(
+            bits(&lanes) == bits(&alone),
+            "the lanes moved the balls otherwise"
+        );
     }
 
     /// The pairs' levels: far fewer than the rows, and no two rows of a level sharing a

@@ -670,7 +670,7 @@ mod tests {
                     solved,
                     reach: 0.2,
                     bend: 2.5,
-                    correction: 0.5 / (w_i + w_j),
+                    correction: CORRECTION * solved.mass,
                 }
             })
             .collect();
@@ -741,8 +741,11 @@ mod tests {
         }
         warm_start(&mut pairs, &mut v, 0.3, |r| struck(r.i) || struck(r.j));
         warm_start(&mut ascending_surfaces, &mut v, 0.3, |r| struck(r.particle));
+        // What each sweep of the pairs says (the largest change of an approach, which
+        // the solver stops on), each way too.
+        let mut said = Vec::new();
         for _ in 0..8 {
-            sweep(&mut pairs, &mut v);
+            said.push(sweep(&mut pairs, &mut v));
             sweep(&mut ascending_surfaces, &mut v);
         }
         let ascending_order: Vec<u32> = (0_u32..).take(surfaces.len()).collect();
@@ -764,10 +767,13 @@ mod tests {
         let mut v = velocity.clone();
         columns.warm_start(&mut v, 0.3, |p| p % 7 == 2); // `struck`, by index
         warm_start(&mut arranged_surfaces, &mut v, 0.3, |r| struck(r.particle));
+        let mut said_in_lanes = Vec::new();
         for _ in 0..8 {
-            columns.sweep(&schedule.pair_levels, &mut v);
+            said_in_lanes.push(columns.sweep(&schedule.pair_levels, &mut v));
             sweep(&mut arranged_surfaces, &mut v);
         }
+        assert_eq!(said_in_lanes, said);
+        assert!(said.iter().all(|s| s.is_some_and(|largest| largest > 0.0)));
         let mut in_lists_order = vec![0.0; pairs.len()];
         for (place, &k) in schedule.pairs.iter().enumerate() {
             in_lists_order[k as usize] = columns.impulse[place];
@@ -777,6 +783,95 @@ mod tests {
             impulses(in_lists_order, &arranged_surfaces, &schedule.surfaces),
         );
         assert!(expected == scheduled, "the scheduled sweeps differ");
+    }
+
+    /// A chain of balls, each row in a level of its own (so every row is taken alone, none
+    /// in lanes): each sweep over the columns says what the rows' sweep in ascending order
+    /// says (whether any row changed, and by how much at most), sweep after sweep until
+    /// nothing changes.
+    #[test]
+    fn rows_taken_alone_say_what_changed() {
+        let (velocity, tangle, _) = random_tangle(60);
+        let mut pairs: Vec<PairRow> = (0_u32..)
+            .zip(tangle)
+            .take(5)
+            .map(|(k, mut row)| {
+                (row.i, row.j) = (k, k + 1);
+                row
+            })
+            .collect();
+        let mut schedule = Schedule::default();
+        schedule.order(60, pairs.iter().map(|r| (r.i, r.j)), std::iter::empty());
+        assert_eq!(schedule.pair_levels.len(), pairs.len(), "a level a row");
+        let mut columns = PairColumns::default();
+        columns.resize(pairs.len());
+        for (k, row) in pairs.iter().enumerate() {
+            columns.set(schedule.pair_places[k] as usize, row);
+        }
+        let (mut alone, mut in_columns) = (velocity.clone(), velocity);
+        let mut said = Vec::new();
+        for _ in 0..30 {
+            let expected = sweep(&mut pairs, &mut alone);
+            assert_eq!(
+                columns.sweep(&schedule.pair_levels, &mut in_columns),
+                expected
+            );
+            said.push(expected);
+        }
+        assert!(
+            said.first().is_some_and(Option::is_some),
+            "nothing to solve"
+        );
+        assert!(
+            said.last().is_some_and(Option::is_none),
+            "never settled: {said:?}"
+        );
+    }
+
+    /// Four pairs of balls in one level (taken in one vector), each pair flying apart
+    /// with an impulse left from the last step: the sweep takes each impulse back to
+    /// zero, and the largest change it reports is the largest of those falls, as the rows
+    /// taken one at a time report it (a fall is a negative change: its size counts).
+    #[test]
+    fn a_sweep_in_lanes_measures_falling_impulses() {
+        let mut pairs: Vec<PairRow> = (0..4_u32)
+            .map(|k| {
+                let mut solved = Accumulator::new(2.0);
+                solved.impulse = 0.5 + f64::from(k);
+                PairRow {
+                    i: 2 * k,
+                    j: 2 * k + 1,
+                    normal: DVec2::X,
+                    inverse_mass_i: 1.0,
+                    inverse_mass_j: 1.0,
+                    solved,
+                    reach: 0.2,
+                    bend: 2.5,
+                    correction: CORRECTION * solved.mass,
+                }
+            })
+            .collect();
+        // Apart at 10 m/s: far more than any impulse here can stop.
+        let velocity: Vec<DVec2> = (0..8)
+            .map(|p| DVec2::new(if p % 2 == 0 { -5.0 } else { 5.0 }, 0.0))
+            .collect();
+        let mut schedule = Schedule::default();
+        schedule.order(8, pairs.iter().map(|r| (r.i, r.j)), std::iter::empty());
+        assert_eq!(schedule.pair_levels, [4], "one level of four rows");
+        let mut columns = PairColumns::default();
+        columns.resize(pairs.len());
+        for (k, row) in pairs.iter().enumerate() {
+            columns.set(schedule.pair_places[k] as usize, row);
+        }
+        let (mut alone, mut in_lanes) = (velocity.clone(), velocity);
+        let expected = sweep(&mut pairs, &mut alone);
+        // The largest fall, 3.5 N·s, over the pair's 1/2 kg: 7 m/s.
+        assert_eq!(expected, Some(7.0));
+        assert_eq!(
+            columns.sweep(&schedule.pair_levels, &mut in_lanes),
+            expected
+        );
+        assert!(columns.impulse.iter().all(|&impulse| impulse == 0.0));
     }
 
     /// The position sweeps over the columns, four (two in WebAssembly) rows of a level
@@ -808,7 +903,7 @@ mod tests {
             .filter(|r| position[r.i as usize].distance(position[r.j as usize]) < r.reach)
             .count();
         assert!(overlapping > 200, "{overlapping} overlapping rows");
-        let (mut lanes, mut alone) = (position.clone(), position);
+        let (mut lanes, mut alone) = (position.clone(), position.clone());
         for _ in 0..POSITION_SWEEPS {
             assert!(columns.correct(&schedule.pair_levels, &mut lanes));
             assert!(columns.correct_one_at_a_time(0..pairs.len(), &mut alone));
@@ -822,6 +917,13 @@ mod tests {
             bits(&lanes) == bits(&alone),
             "the lanes moved the balls otherwise"
         );
+        // With every reach far below the distances, nothing overlaps: nothing moves, and
+        // both say so.
+        columns.reach.fill(-1e3);
+        let mut lanes = position.clone();
+        assert!(!columns.correct(&schedule.pair_levels, &mut lanes));
+        assert!(!columns.correct_one_at_a_time(0..pairs.len(), &mut lanes));
+        assert!(bits(&lanes) == bits(&position), "balls apart moved");
     }
 
     /// The pairs' levels: far fewer than the rows, and no two rows of a level sharing a

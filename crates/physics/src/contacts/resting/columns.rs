@@ -6,7 +6,9 @@
 //! of them can be taken at once: their particles' velocities (or positions) gathered
 //! into vectors, x in one and y in another, each lane doing the operations one row alone
 //! does, in the same order (no fused multiply-add), and scattered back. The result is
-//! the bits of taking the rows one at a time (`the_schedule_gives_the_bits_of_ascending_order`,
+//! the bits of taking the rows one at a time, and each sweep reports the same largest
+//! change (`the_schedule_gives_the_bits_of_ascending_order`,
+//! `a_sweep_in_lanes_measures_falling_impulses`,
 //! `position_sweeps_in_lanes_give_the_bits_of_one_row_at_a_time`; in the browser, the
 //! end-to-end test's ball pit against the desktop's); a level's last rows, fewer than a
 //! vector, are taken one at a time. Each row is built straight into its place in the

@@ -70,6 +70,8 @@ impl Accumulator {
 }
 
 /// A touching pair in the solver: particles `i < j`, the normal from `i` towards `j`.
+/// Built one at a time and set into the [`PairColumns`] the sweeps take; as a [`Row`] it
+/// is also swept alone, the arithmetic the columns' lanes are tested against.
 #[derive(Clone, Copy, Debug)]
 struct PairRow {
     i: u32,

@@ -305,7 +305,11 @@ impl pulp::WithSimd for CorrectInLanes<'_> {
                     j,
                     position,
                 );
-                shifted = avx._mm256_or_pd(shifted, avx._mm256_cmp_pd::<30>(share, zero));
+                // share > 0, one row's test.
+                shifted = avx._mm256_or_pd(
+                    shifted,
+                    avx._mm256_cmp_pd::<{ core::arch::x86_64::_CMP_GT_OQ }>(share, zero),
+                );
                 k += 4;
             }
             moved |= c.correct_one_at_a_time(k..end, position);
@@ -399,7 +403,11 @@ impl pulp::WithSimd for InLanes<'_> {
                 let changed_by = avx
                     ._mm256_andnot_pd(sign, avx._mm256_mul_pd(change, avx._mm256_add_pd(wi, wj)));
                 largest = avx._mm256_max_pd(changed_by, largest);
-                changed = avx._mm256_or_pd(changed, avx._mm256_cmp_pd::<4>(change, zero));
+                // change != 0, one row's test (a NaN counts).
+                changed = avx._mm256_or_pd(
+                    changed,
+                    avx._mm256_cmp_pd::<{ core::arch::x86_64::_CMP_NEQ_UQ }>(change, zero),
+                );
                 k += 4;
             }
             c.rows_one_at_a_time(k..end, velocity, &mut sums);

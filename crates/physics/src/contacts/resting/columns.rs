@@ -143,11 +143,10 @@ impl PairColumns {
             );
         }
         #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
-        return pairs_of_rows::sweep(self, levels, velocity);
-        #[cfg_attr(
-            all(target_arch = "wasm32", target_feature = "simd128"),
-            expect(unreachable_code, reason = "WebAssembly takes two rows at a time")
-        )]
+        {
+            pairs_of_rows::sweep(self, levels, velocity)
+        }
+        #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
         {
             let _ = levels;
             let mut sums = Sums::default();
@@ -200,11 +199,10 @@ impl PairColumns {
             );
         }
         #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
-        return pairs_of_rows::correct(self, levels, position);
-        #[cfg_attr(
-            all(target_arch = "wasm32", target_feature = "simd128"),
-            expect(unreachable_code, reason = "WebAssembly takes two rows at a time")
-        )]
+        {
+            pairs_of_rows::correct(self, levels, position)
+        }
+        #[cfg(not(all(target_arch = "wasm32", target_feature = "simd128")))]
         {
             let _ = levels;
             self.correct_one_at_a_time(0..self.len(), position)

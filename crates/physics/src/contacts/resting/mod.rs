@@ -164,7 +164,8 @@ impl Row for SurfaceRow {
 /// out, its effective mass zeroed; any other applies its impulse. Returns whether any
 /// did.
 ///
-/// Done over the rows arranged in the schedule's order, not as they are built: each row's
+/// The surface rows' (the pairs' is [`PairColumns::warm_start`], the same arithmetic),
+/// done over the rows arranged in the schedule's order, not as they are built: each row's
 /// test reads the velocities the rows before it with a particle in common left, so in
 /// the lists' order, where most rows share a particle with the one before, each waited
 /// for the last (measured: 24 µs of the 40 µs that building the settled 1,000-ball
@@ -433,7 +434,8 @@ impl RestingSolver {
 
 /// `built` in `order`, into `rows`: the sweeps then walk the rows front to back, with no
 /// index to look up and each row next to the one before it in memory (the pit's rows,
-/// some 200 kB, were taken in a scattered order eight times a step).
+/// some 200 kB, were taken in a scattered order eight times a step). The surface rows;
+/// the pair rows are built straight into their place ([`PairColumns::set`]).
 fn arrange<R: Copy>(built: &[R], order: &[u32], rows: &mut Vec<R>) {
     rows.clear();
     rows.extend(order.iter().map(|&k| built[k as usize]));

@@ -161,6 +161,24 @@ impl Workers {
 mod tests {
     use super::*;
 
+    /// Pieces of uneven cost, mapped on 1, 2 and 3 threads: the results in the order of
+    /// the pieces, whichever thread ran each (50 times
+    /// over, for the threads to take them in different orders).
+    #[test]
+    fn mapped_pieces_come_back_in_order_for_any_thread_count() {
+        let work = |k: usize| {
+            (0..(k % 3 + 1) * 20_000)
+                .fold(k as u64, |a, i| a.wrapping_mul(31).wrapping_add(i as u64))
+        };
+        let expected: Vec<u64> = (0..8).map(work).collect();
+        for threads in [1, 2, 3] {
+            let workers = Workers::new(threads);
+            for _ in 0..50 {
+                assert_eq!(workers.map(8, work), expected, "{threads} threads");
+            }
+        }
+    }
+
     /// Squares of 0..20,000 (enough to be split), gathered in pieces on 1, 2 and 3 threads: always the same list.
     #[test]
     fn pieces_join_in_order_for_any_thread_count() {

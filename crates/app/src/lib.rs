@@ -943,6 +943,8 @@ impl App {
 
     /// The whole app, one frame.
     pub fn ui(&mut self, ui: &mut Ui) {
+        // The run back from the steps taken while the last frame was drawn.
+        let stepped_ahead = self.runner.catch_up();
         if std::mem::take(&mut self.forget_entries) {
             inspector::forget_entries(ui.ctx());
         }
@@ -950,8 +952,12 @@ impl App {
         let real_dt = f64::from(ui.input(|i| i.unstable_dt));
         self.measure_frame(ui);
         let time_scale = self.document.scene().simulation.time_scale;
-        self.runner
-            .advance(real_dt, time_scale, self.canvas.overlays.trails);
+        self.runner.advance_after(
+            real_dt,
+            time_scale,
+            self.canvas.overlays.trails,
+            stepped_ahead,
+        );
         self.time_stopwatch();
         if let Some(recording) = &self.runner.recording {
             let now = ui.input(|i| i.time);
@@ -1295,6 +1301,10 @@ impl App {
         }
         if self.quitting {
             ui.ctx().send_viewport_cmd(egui::ViewportCommand::Close);
+        } else {
+            // The frame is built: the physics steps on while it is drawn.
+            let time_scale = self.document.scene().simulation.time_scale;
+            self.runner.step_ahead(time_scale);
         }
     }
 
@@ -1427,6 +1437,8 @@ pub fn run_native(app: App) -> eframe::Result {
     if let Some(language) = app.launch.language {
         i18n::set_language(language);
     }
+    let mut app = app;
+    app.runner.ahead = true;
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_inner_size([1280.0, 800.0])

@@ -126,11 +126,12 @@ impl Timeline {
 }
 
 #[cfg(test)]
-mod tests {
+pub(crate) mod tests {
     use super::*;
     use physics::DVec2;
 
-    fn bits(simulation: &Simulation) -> Vec<u64> {
+    /// The bits of a simulation's positions and velocities (also the run loop's tests').
+    pub(crate) fn bits(simulation: &Simulation) -> Vec<u64> {
         let bits = |v: &DVec2| [v.x.to_bits(), v.y.to_bits()];
         simulation
             .positions()

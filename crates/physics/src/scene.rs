@@ -634,6 +634,17 @@ impl Scene {
         self.particles.iter().position(|p| p.name == name)
     }
 
+    /// Every particle's index by name, the first of a repeated name (as
+    /// [`Self::particle_index`] finds it): for looking up many names at once, where a
+    /// search each would cost springs × particles comparisons.
+    pub fn particle_indices(&self) -> std::collections::HashMap<&str, usize> {
+        let mut indices = std::collections::HashMap::with_capacity(self.particles.len());
+        for (i, particle) in self.particles.iter().enumerate() {
+            indices.entry(particle.name.as_str()).or_insert(i);
+        }
+        indices
+    }
+
     /// Where an end is at the scene's start, metres; `None` for a particle that does
     /// not exist.
     pub fn end_position(&self, end: &Endpoint) -> Option<DVec2> {

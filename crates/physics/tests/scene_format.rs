@@ -488,3 +488,25 @@ fn particles_lie_inside_the_bounds_up_to_a_press_into_a_wall() {
         );
     }
 }
+
+/// The table of particles by name gives each name the index a search by name finds: the
+/// first particle of a repeated name (which the scene's checks report), and none for a
+/// name no particle has.
+#[test]
+fn the_table_of_names_finds_what_a_search_finds() {
+    let scene = physics::Scene::new()
+        .with_particle(physics::Particle::new("a", 1.0))
+        .with_particle(physics::Particle::new("b", 1.0))
+        .with_particle(physics::Particle::new("a", 2.0))
+        .with_particle(physics::Particle::new("c", 1.0));
+    let names = scene.particle_indices();
+    for name in ["a", "b", "c", "d"] {
+        assert_eq!(
+            names.get(name).copied(),
+            scene.particle_index(name),
+            "{name}"
+        );
+    }
+    assert_eq!(names.get("a"), Some(&0));
+    assert_eq!(names.len(), 3);
+}

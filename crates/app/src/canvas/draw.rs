@@ -3,7 +3,7 @@
 //! placed so they do not collide, and the preview of a gesture in progress.
 
 use egui::{Align2, Color32, FontId, Pos2, Rect, Shape, Stroke, Vec2, epaint::PathStroke};
-use physics::{DVec2, Endpoint, Ramp, Scene, Spring, TieKind};
+use physics::{DVec2, Endpoint, Ramp, Scene, TieKind};
 
 use super::tools::Drag;
 use super::view::{format_metres, nice_length};
@@ -162,8 +162,8 @@ impl Canvas {
                 }
             }
         }
-        for (i, spring) in scene.springs.iter().enumerate() {
-            let Some((a, b)) = spring_ends(scene, spring, &frame.positions) else {
+        for (i, (spring, ends)) in scene.springs.iter().zip(&frame.spring_ends).enumerate() {
+            let Some((a, b)) = *ends else {
                 continue;
             };
             let selected = selection == Some(Selection::Spring(i));
@@ -178,8 +178,8 @@ impl Canvas {
                 }
             }
         }
-        for (i, tie) in scene.ties.iter().enumerate() {
-            let Some((a, b)) = ends(scene, &tie.from, &tie.to, &frame.positions) else {
+        for (i, (tie, ends)) in scene.ties.iter().zip(&frame.tie_ends).enumerate() {
+            let Some((a, b)) = *ends else {
                 continue;
             };
             let selected = selection == Some(Selection::Tie(i));
@@ -333,26 +333,18 @@ fn place_labels(painter: &egui::Painter, mut labels: Vec<(bool, Pos2, &str)>, in
     }
 }
 
-/// Where a spring's ends are, given the particles' positions.
-pub(super) fn spring_ends(
-    scene: &Scene,
-    spring: &Spring,
-    positions: &[DVec2],
-) -> Option<(DVec2, DVec2)> {
-    ends(scene, &spring.from, &spring.to, positions)
-}
-
-/// Where two ends (of a spring, rod or string) are, given the particles' positions.
+/// Where two ends (of a spring, rod or string) are, given the particles' positions and
+/// their indices by name ([`Scene::particle_indices`]).
 pub(super) fn ends(
-    scene: &Scene,
+    names: &std::collections::HashMap<&str, usize>,
     from: &Endpoint,
     to: &Endpoint,
     positions: &[DVec2],
 ) -> Option<(DVec2, DVec2)> {
     let end = |e: &Endpoint| match e {
-        Endpoint::Particle(name) => scene
-            .particle_index(name)
-            .and_then(|k| positions.get(k).copied()),
+        Endpoint::Particle(name) => names
+            .get(name.as_str())
+            .and_then(|&k| positions.get(k).copied()),
         Endpoint::Point(p) => Some(p.to_dvec2()),
     };
     Some((end(from)?, end(to)?))

@@ -188,6 +188,33 @@ struct Frame {
     positions: Vec<DVec2>,
     velocities: Vec<DVec2>,
     accelerations: Option<Vec<DVec2>>,
+    /// Where each spring's ends are, and each rod's or string's: `None` for an end
+    /// naming no particle. Found once a frame, every name looked up in one table (a
+    /// search by name for each end cost springs × particles comparisons a frame).
+    spring_ends: Vec<Option<(DVec2, DVec2)>>,
+    tie_ends: Vec<Option<(DVec2, DVec2)>>,
+}
+
+impl Frame {
+    /// A frame of `positions` and `velocities` of `scene`'s particles, its ends found.
+    fn new(
+        scene: &Scene,
+        positions: Vec<DVec2>,
+        velocities: Vec<DVec2>,
+        accelerations: Option<Vec<DVec2>>,
+    ) -> Self {
+        let names = scene.particle_indices();
+        let ends = |from, to| draw::ends(&names, from, to, &positions);
+        let spring_ends = scene.springs.iter().map(|s| ends(&s.from, &s.to)).collect();
+        let tie_ends = scene.ties.iter().map(|t| ends(&t.from, &t.to)).collect();
+        Self {
+            positions,
+            velocities,
+            accelerations,
+            spring_ends,
+            tie_ends,
+        }
+    }
 }
 
 impl Canvas {
@@ -408,33 +435,31 @@ impl Canvas {
             && let Some((positions, velocities)) =
                 runner.recording.as_ref().and_then(Recording::last_state)
         {
-            return Frame {
-                positions,
-                velocities,
-                accelerations: None,
-            };
+            return Frame::new(scene, positions, velocities, None);
         }
         if let Some(simulation) = &runner.simulation {
             let needs_acceleration = self.overlays.acceleration || self.overlays.force;
-            Frame {
-                positions: simulation.positions().to_vec(),
-                velocities: simulation.velocities().to_vec(),
-                accelerations: needs_acceleration.then(|| simulation.accelerations()),
-            }
+            Frame::new(
+                scene,
+                simulation.positions().to_vec(),
+                simulation.velocities().to_vec(),
+                needs_acceleration.then(|| simulation.accelerations()),
+            )
         } else {
-            Frame {
-                positions: scene
+            Frame::new(
+                scene,
+                scene
                     .particles
                     .iter()
                     .map(|p| p.position.to_dvec2())
                     .collect(),
-                velocities: scene
+                scene
                     .particles
                     .iter()
                     .map(Particle::initial_velocity)
                     .collect(),
-                accelerations: None,
-            }
+                None,
+            )
         }
     }
 }

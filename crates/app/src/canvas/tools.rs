@@ -77,15 +77,15 @@ impl Canvas {
                 return Some(Selection::Ramp(i));
             }
         }
-        for (i, spring) in scene.springs.iter().enumerate() {
-            if let Some((a, b)) = super::draw::spring_ends(scene, spring, &frame.positions)
+        for (i, ends) in frame.spring_ends.iter().enumerate() {
+            if let Some((a, b)) = *ends
                 && segment_distance(world, a, b) <= 2.0 * tolerance
             {
                 return Some(Selection::Spring(i));
             }
         }
-        for (i, tie) in scene.ties.iter().enumerate() {
-            if let Some((a, b)) = super::draw::ends(scene, &tie.from, &tie.to, &frame.positions)
+        for (i, ends) in frame.tie_ends.iter().enumerate() {
+            if let Some((a, b)) = *ends
                 && segment_distance(world, a, b) <= 2.0 * tolerance
             {
                 return Some(Selection::Tie(i));

@@ -51,6 +51,7 @@ impl Scene {
     pub fn validate(&self) -> Vec<Problem> {
         let mut check = Checker {
             scene: self,
+            names: self.particle_indices(),
             problems: Vec::new(),
         };
         check.world();
@@ -166,10 +167,18 @@ pub enum Rule {
 
 struct Checker<'a> {
     scene: &'a Scene,
+    /// The scene's particles by name ([`Scene::particle_indices`]): a scene with S
+    /// springs and N particles would otherwise cost S × N comparisons to check.
+    names: std::collections::HashMap<&'a str, usize>,
     problems: Vec<Problem>,
 }
 
 impl Checker<'_> {
+    /// The index of the particle called `name`, as [`Scene::particle_index`] finds it.
+    fn particle_index(&self, name: &str) -> Option<usize> {
+        self.names.get(name).copied()
+    }
+
     fn report(&mut self, section: Section, field: &'static str, reason: &str) {
         let message = format!("{}: {reason}", self.scene.describe(section));
         self.problems.push(Problem {
@@ -334,7 +343,6 @@ impl Checker<'_> {
             let fixed = |end: &Endpoint| match end {
                 Endpoint::Point(_) => true,
                 Endpoint::Particle(name) => self
-                    .scene
                     .particle_index(name)
                     .is_none_or(|p| self.scene.particles[p].fixed),
             };
@@ -364,7 +372,7 @@ impl Checker<'_> {
     fn ends(&mut self, s: Section, kind: &str, from: &Endpoint, to: &Endpoint) {
         for (field, end) in [("from", from), ("to", to)] {
             if let Endpoint::Particle(name) = end
-                && self.scene.particle_index(name).is_none()
+                && self.particle_index(name).is_none()
             {
                 self.report(
                     s,
@@ -400,9 +408,7 @@ impl Checker<'_> {
             for (field, text) in axes {
                 match Quantity::parse(text) {
                     Err(reason) => self.report(s, field, &format!("{field}: {reason}")),
-                    Ok(Quantity::Particle(name, _))
-                        if self.scene.particle_index(&name).is_none() =>
-                    {
+                    Ok(Quantity::Particle(name, _)) if self.particle_index(&name).is_none() => {
                         self.report(
                             s,
                             field,
@@ -451,7 +457,7 @@ impl Checker<'_> {
             self.number(s, "width", Rule::Positive, width);
         }
         if let Some(Follow::Particle(name)) = &view.follow
-            && self.scene.particle_index(name).is_none()
+            && self.particle_index(name).is_none()
         {
             self.report(s, "follow", &say("scene-follow-unknown", &[("name", name)]));
         }

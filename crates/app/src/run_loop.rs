@@ -320,8 +320,8 @@ impl Runner {
 
     /// Steps on, on another thread, while the app draws the frame just built: up to what
     /// the next frame will owe if it is as long as the last, until the next frame calls
-    /// [`Self::catch_up`] (which waits for the step under way) or a frame's most
-    /// physics is spent. Drawing (tessellation and painting, after the frame is built)
+    /// [`Self::catch_up`] (which waits for the step under way), or for 0.1 s at most
+    /// when no frame comes. Drawing (tessellation and painting, after the frame is built)
     /// and physics then share the frame instead of taking turns. Only where the runner
     /// is asked to ([`Self::ahead`]: the desktop app) and threads exist; elsewhere
     /// nothing. The steps are the same steps in the same order, so the run is the same,
@@ -353,11 +353,12 @@ impl Runner {
 
     /// Whether the physics steps on while frames are drawn: where asked and threads
     /// exist, and while steps are short. The next frame waits for the step under way, so
-    /// long steps would stretch every frame: the 10,000-ball pit's crash (5 to 20 ms a
-    /// step on two cores that llvmpipe's drawing also uses) ran at 16 frames a second
-    /// instead of 27, with no faster physics, while the 1,000-ball pit (0.4 ms a step)
-    /// went from 0.6× to 0.96× real time at the same frame rate (measured under Xvfb,
-    /// `--measure-frames 300`, beside the build without it).
+    /// long steps would stretch every frame: the 10,000-ball pit's crash (7 ms a step
+    /// and more, on two cores that llvmpipe's drawing also uses) ran at 16 frames a
+    /// second instead of 27, with no faster physics, while the 1,000-ball pit (0.4 ms a
+    /// step) went from 0.5–0.7× to 0.96–1.00× real time at 27–33 frames a second
+    /// against 30 (measured under Xvfb, `--measure-frames 300`, beside the build without
+    /// it; on a busier machine 24–26 against 29: the README's eighteenth-session block).
     fn steps_ahead(&self) -> bool {
         self.ahead
             && cfg!(not(target_arch = "wasm32"))

@@ -275,6 +275,12 @@ impl ForceModel {
             || self.surface_contacts.iter().any(|c| c.friction > 0.0)
     }
 
+    /// Whether an acceleration may change with the velocities at fixed positions: a damped
+    /// spring or friction, or a rod or string (whose pull holds the centripetal v²/L).
+    pub fn depends_on_velocity(&self) -> bool {
+        self.dissipates() || !self.constraints.is_empty()
+    }
+
     /// Σ ½ m v² over the moving particles, joules.
     pub fn kinetic_energy(&self, v: &[DVec2]) -> f64 {
         v.iter()

@@ -18,6 +18,15 @@ fn gravity_only() -> World {
     }
 }
 
+/// No field and no pair forces: bodies move only as their ties make them.
+fn weightless() -> World {
+    World {
+        gravitation: false,
+        electrostatics: false,
+        ..World::weightless()
+    }
+}
+
 /// K(k), the complete elliptic integral of the first kind, by the arithmetic–geometric
 /// mean: K = π / (2 AGM(1, √(1 − k²))), to rounding after a handful of iterations.
 fn elliptic_k(k: f64) -> f64 {
@@ -195,14 +204,21 @@ fn a_double_pendulum_conserves_energy_to_the_integrators_order() {
     );
 }
 
-/// A ball on a 1 m string, started at the bottom at √(3.5 g L): not fast enough to go
-/// over the top (that takes √(5 g L)). The tension m v²/L + m g cos φ (φ from the
+/// A ball on a string of length L, started at the bottom at √(3.5 g L): not fast enough to
+/// go over the top (that takes √(5 g L)). The tension m v²/L + m g cos φ (φ from the
 /// downward vertical) reaches zero where cos φ = (2 g L − v₀²)/(3 g L) = −½, at 120°,
-/// with v² = g L / 2. From there the ball is a projectile until it is 1 m from the
-/// pivot again, where the string snaps taut (restitution 0: the radial speed is taken).
+/// with v² = g L / 2. From there the ball is a projectile until it is L from the pivot
+/// again, where the string snaps taut (restitution 0: the radial speed is taken). At
+/// 1 m and at 2 m (the `string-circle` example's length, where a slack instant found
+/// only at the step's end shows most: the string would push for the rest of the step).
 #[test]
 fn a_string_goes_slack_where_its_tension_vanishes_and_snaps_taut_where_the_parabola_meets_it() {
-    let length = 1.0;
+    for length in [1.0, 2.0] {
+        string_goes_slack_and_snaps_taut(length);
+    }
+}
+
+fn string_goes_slack_and_snaps_taut(length: f64) {
     let v0 = (3.5 * G * length).sqrt();
     let scene = Scene::new()
         .with_world(gravity_only())
@@ -224,9 +240,12 @@ fn a_string_goes_slack_where_its_tension_vanishes_and_snaps_taut_where_the_parab
         let s = t - t_slack;
         p_slack + v_slack * s + DVec2::new(0.0, -0.5 * G * s * s)
     };
-    // Where the parabola is 1 m from the pivot again: bisection on the closed form.
+    // Where the parabola is L from the pivot again: bisection on the closed form.
     let (mut lo, mut hi) = (t_slack + 1e-3, t_slack + 2.0);
-    assert!(flight(lo).length() < length && flight(hi).length() > length);
+    assert!(
+        flight(lo).length() < length && flight(hi).length() > length,
+        "the bracket holds the taut instant"
+    );
     for _ in 0..200 {
         let mid = 0.5 * (lo + hi);
         if flight(mid).length() < length {
@@ -236,12 +255,36 @@ fn a_string_goes_slack_where_its_tension_vanishes_and_snaps_taut_where_the_parab
         }
     }
     let t_taut = 0.5 * (lo + hi);
-    // In flight: on the parabola to 1e-6 m, the string slack (no tension).
+    // A microsecond before the slack instant the string still pulls; a microsecond after
+    // it carries nothing and the ball falls freely: no tension at all, the acceleration g
+    // to rounding (a string let go only at the step's end would still push here).
+    let before = simulation_at(&scene, t_slack - 1e-6);
+    assert!(
+        before.tensions()[0] > 0.0,
+        "L = {length}: still pulling before the slack instant: {} N",
+        before.tensions()[0]
+    );
+    let after = simulation_at(&scene, t_slack + 1e-6);
+    assert_eq!(
+        after.tensions()[0].to_bits(),
+        0.0_f64.to_bits(),
+        "L = {length}: slack just after"
+    );
+    let fall = after.accelerations()[0] - DVec2::new(0.0, -G);
+    assert!(
+        fall.length() < 1e-12,
+        "L = {length}: at t_slack + 1 µs the acceleration is off g by {fall}"
+    );
+    // In flight: on the parabola to 1e-9 m (rk4's error over the circular part is some
+    // 1e-12 m; the slack instant is located to rounding), the string slack.
     for fraction in [0.1, 0.5, 0.9] {
         let t = t_slack + fraction * (t_taut - t_slack);
         let simulation = simulation_at(&scene, t);
         let miss = simulation.positions()[0].distance(flight(t));
-        assert!(miss < 1e-6, "at t = {t} s, {miss:e} m off the parabola");
+        assert!(
+            miss < 1e-9,
+            "L = {length}: at t = {t} s, {miss:e} m off the parabola"
+        );
         assert!(simulation.tensions()[0].abs() < 1e-12, "slack in flight");
     }
     // Taut at the instant the geometry says, to 1e-9 s: just before, the ball still
@@ -655,5 +698,103 @@ fn a_string_at_full_length_snaps_taut_at_the_start_of_the_run() {
             v.distance(DVec2::new(1.0, 0.25)) < 1e-9,
             "t = {t}: moving at {v}"
         );
+    }
+}
+
+/// Two free bodies of 1 kg and 3 kg on a 1 m rod, no forces. Started with the light end
+/// moving along the rod at 1 m/s and the heavy one at rest, the rod takes the motion
+/// along it out as an inelastic blow: both ends move on at the centre of mass's speed,
+/// 1 × 1 / (1 + 3) = 0.25 m/s, the momentum 1 kg·m/s kept (weighting the two ends equally
+/// would give 0.5 m/s each and double it). Then the centre of mass moves on uniformly.
+/// Both ways round, so neither end's weight can hide the other's. To 1e-12.
+#[test]
+fn a_rod_between_unequal_masses_keeps_the_momentum_and_the_centre_of_mass() {
+    for reversed in [false, true] {
+        let (light, heavy) = (
+            Particle::new("light", 1.0)
+                .radius(0.05)
+                .velocity([1.0, 0.0]),
+            Particle::new("heavy", 3.0)
+                .radius(0.05)
+                .position([1.0, 0.0]),
+        );
+        let rod = if reversed {
+            Tie::rod("rod", "heavy", "light", 1.0)
+        } else {
+            Tie::rod("rod", "light", "heavy", 1.0)
+        };
+        let scene = Scene::new()
+            .with_world(weightless())
+            .with_particle(light)
+            .with_particle(heavy)
+            .with_tie(rod);
+        let mut simulation = start(&scene);
+        for (i, v) in simulation.velocities().iter().enumerate() {
+            assert!(
+                v.distance(DVec2::new(0.25, 0.0)) < 1e-12,
+                "reversed {reversed}: end {i} starts at {v} m/s, not the centre of mass's 0.25"
+            );
+        }
+        let centre = |s: &Simulation| (s.positions()[0] + s.positions()[1] * 3.0) / 4.0;
+        run_to(&mut simulation, 10.0);
+        let momentum = simulation.diagnostics().momentum;
+        assert!(
+            momentum.distance(DVec2::new(1.0, 0.0)) < 1e-12,
+            "reversed {reversed}: momentum {momentum}"
+        );
+        let drift = centre(&simulation).distance(DVec2::new(0.75 + 2.5, 0.0));
+        assert!(
+            drift < 1e-12,
+            "reversed {reversed}: the centre of mass is {drift:e} m off"
+        );
+    }
+}
+
+/// A dumbbell of 1 kg and 3 kg on a 1 m rod spinning at 2 rad/s about its centre of mass,
+/// which sits still at the origin (the light end 0.75 m from it, the heavy 0.25 m). Over
+/// 10 s (over three turns, 10,000 projections) the centre of mass stays put to 1e-12 m
+/// and the momentum at 0 to 1e-12 kg·m/s; each end keeps its circle and its speed. A
+/// projection weighted wrongly moves the centre a little at every step (by 2e-3 m).
+#[test]
+fn a_spinning_dumbbell_of_unequal_masses_keeps_its_centre_of_mass_still() {
+    let omega = 2.0;
+    let scene = Scene::new()
+        .with_world(weightless())
+        .with_particle(
+            Particle::new("light", 1.0)
+                .radius(0.05)
+                .position([-0.75, 0.0])
+                .velocity([0.0, -0.75 * omega]),
+        )
+        .with_particle(
+            Particle::new("heavy", 3.0)
+                .radius(0.05)
+                .position([0.25, 0.0])
+                .velocity([0.0, 0.25 * omega]),
+        )
+        .with_tie(Tie::rod("rod", "light", "heavy", 1.0));
+    let mut simulation = start(&scene);
+    for k in 1..=100 {
+        run_to(&mut simulation, 0.1 * f64::from(k));
+        let x = simulation.positions();
+        let centre = (x[0] + x[1] * 3.0) / 4.0;
+        assert!(
+            centre.length() < 1e-12,
+            "t = {}: the centre of mass is at {centre}",
+            simulation.time()
+        );
+        let momentum = simulation.diagnostics().momentum;
+        assert!(momentum.length() < 1e-12, "momentum {momentum}");
+        for (i, radius) in [(0, 0.75), (1, 0.25)] {
+            assert!(
+                (x[i].length() - radius).abs() < 1e-12,
+                "end {i} off its circle"
+            );
+            let speed = simulation.velocities()[i].length();
+            assert!(
+                (speed - radius * omega).abs() < 1e-9,
+                "end {i} at {speed} m/s"
+            );
+        }
     }
 }

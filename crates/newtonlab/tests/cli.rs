@@ -331,9 +331,10 @@ fn json_scenes_run_too() {
     );
 }
 
-/// `validate` reproduces the paper's section 4 within the default 1e-6, writes the report
-/// and the five figures, and fails (exit 1, naming what failed) when the tolerance is
-/// tighter than rounding allows.
+/// `validate` reproduces the paper's section 4 within the default 1e-6 and every later
+/// group within its stated tolerances, summarises each group first, writes the report
+/// and the figures, and fails (exit 1, naming what failed) when the tolerance is tighter
+/// than rounding allows.
 #[test]
 fn validate_passes_writes_a_report_and_fails_an_impossible_tolerance() {
     let dir = tempdir::Dir::new();
@@ -353,9 +354,41 @@ fn validate_passes_writes_a_report_and_fails_an_impossible_tolerance() {
         );
     }
     assert!(text.contains("checks within the tolerance"), "{text}");
+    let summary = text.find("\nsummary ").expect("a summary");
+    let tables = summary + text[summary..].find("\n\n").expect("the summary ends");
+    for group in [
+        "paper",
+        "rods",
+        "strings",
+        "integrators",
+        "tree",
+        "softening",
+        "ledger",
+        "friction",
+        "saved-state",
+    ] {
+        // After the summary, each group's tables (the paper's are its sections 4.1–4.7).
+        let heading = if group == "paper" { "4.1" } else { group };
+        assert!(
+            text[tables..].contains(&format!("\n{heading} ")),
+            "{group}: summarised first, then its table"
+        );
+        assert!(
+            text[summary..]
+                .lines()
+                .any(|l| l.trim_start().starts_with(group) && l.ends_with("pass")),
+            "{group} passes in the summary"
+        );
+    }
     let report = std::fs::read_to_string(dir.path.join("report.md")).expect("report.md written");
     assert!(report.contains("## 4.7"), "the report has every table");
+    assert!(
+        report.contains("## saved-state"),
+        "the later groups' tables too"
+    );
     for figure in [
+        "string-flight.png",
+        "convergence.png",
         "spring-b0.png",
         "spring-b0.25.png",
         "spring-b0.5.png",
@@ -369,6 +402,23 @@ fn validate_passes_writes_a_report_and_fails_an_impossible_tolerance() {
         );
         assert!(report.contains(figure), "{figure} linked from the report");
     }
+    let only = newtonlab(&["validate", "--only", "rods", "--only", "softening"]);
+    assert!(only.status.success(), "{}", stderr(&only));
+    let text = stdout(&only);
+    assert!(
+        text.contains("\nrods ") && text.contains("\nsoftening "),
+        "{text}"
+    );
+    assert!(
+        !text.contains("\n4.2 ") && !text.contains("\ntree "),
+        "only those: {text}"
+    );
+    let unknown = newtonlab(&["validate", "--only", "rod"]);
+    assert_eq!(
+        unknown.status.code(),
+        Some(2),
+        "an unknown group is bad input"
+    );
     let output = newtonlab(&["validate", "--tolerance", "1e-18"]);
     assert_eq!(
         output.status.code(),

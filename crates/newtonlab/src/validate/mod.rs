@@ -1,13 +1,20 @@
-//! `newtonlab validate`: the paper's section 4 reproduced against theory. Each experiment
-//! runs built-in scenes and prints the paper's table with simulation, theory and error
-//! columns; with `--out DIR` it also writes `DIR/report.md` and the paper's figures as
-//! PNG. Exit 0 when every error is within the tolerance, 1 otherwise, listing the misses.
+//! `newtonlab validate`: every physical claim against theory, in groups. `paper` is the
+//! paper's section 4 (its tables, with simulation, theory and error columns); the other
+//! groups hold what NewtonLab added since (rods, strings, the integrators' orders, the
+//! tree, softening, the energy ledger, friction, saved states) to closed forms or to
+//! computations written here apart from the simulation's code, each check to a tolerance
+//! stated beside it. A summary of every group's worst error comes first. With `--out DIR`
+//! it also writes `DIR/report.md` and the figures as PNG. Exit 0 when every error is
+//! within its tolerance, 1 otherwise, listing the misses.
 
+mod books;
 mod experiments;
+mod methods;
 mod paper_method;
 mod plots;
 mod report;
 mod theory;
+mod ties;
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -19,9 +26,86 @@ pub(crate) struct ValidateArgs {
     /// Also write report.md and the figures (PNG) into this directory.
     #[arg(long, value_name = "DIR")]
     out: Option<PathBuf>,
-    /// The largest error allowed, relative to the quantity's scale.
+    /// The largest error allowed in the paper's experiments, relative to the quantity's
+    /// scale (the other groups state their own).
     #[arg(long, value_name = "X", default_value_t = 1e-6)]
     tolerance: f64,
+    /// Run only these groups (repeatable); all of them when left out.
+    #[arg(long, value_name = "GROUP", value_enum)]
+    only: Vec<Group>,
+}
+
+/// A group of checks, named as `--only` takes it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum Group {
+    Paper,
+    Rods,
+    Strings,
+    Integrators,
+    Tree,
+    Softening,
+    Ledger,
+    Friction,
+    SavedState,
+}
+
+impl Group {
+    const ALL: [Self; 9] = [
+        Self::Paper,
+        Self::Rods,
+        Self::Strings,
+        Self::Integrators,
+        Self::Tree,
+        Self::Softening,
+        Self::Ledger,
+        Self::Friction,
+        Self::SavedState,
+    ];
+
+    fn name(self) -> &'static str {
+        match self {
+            Self::Paper => "paper",
+            Self::Rods => "rods",
+            Self::Strings => "strings",
+            Self::Integrators => "integrators",
+            Self::Tree => "tree",
+            Self::Softening => "softening",
+            Self::Ledger => "ledger",
+            Self::Friction => "friction",
+            Self::SavedState => "saved-state",
+        }
+    }
+
+    /// What the group proves, in one line.
+    fn statement(self) -> &'static str {
+        match self {
+            Self::Paper => {
+                "the paper's section 4 (kinematics, collision, ramps, springs, inverse-square bounces) against closed forms"
+            }
+            Self::Rods => {
+                "a rod pendulum keeps the elliptic-integral period at any amplitude; rods between unequal masses keep momentum and the centre of mass"
+            }
+            Self::Strings => {
+                "a string goes slack where its tension vanishes, the ball flies on the parabola, and the string snaps taut where the parabola meets its length"
+            }
+            Self::Integrators => {
+                "each integrator converges at its order: halving the step divides the error by 2^order"
+            }
+            Self::Tree => {
+                "the Barnes–Hut tree's forces and potential energy agree with the direct sum"
+            }
+            Self::Softening => {
+                "both pair laws are softened alike in the motion, the energy and the probe"
+            }
+            Self::Ledger => {
+                "the energy ledger books what damping, friction and impacts take; the books close"
+            }
+            Self::Friction => {
+                "friction on ramps: g(sin θ − μ cos θ), held while tan θ ≤ μ, stopping at v₀²/2μg"
+            }
+            Self::SavedState => "a saved state reopens and continues its run",
+        }
+    }
 }
 
 pub(crate) fn validate(args: &ValidateArgs) -> Result<(), Failure> {
@@ -41,28 +125,52 @@ pub(crate) fn validate(args: &ValidateArgs) -> Result<(), Failure> {
     }
     let mut report = report::Report::new(args.tolerance);
     let mut figures = Vec::new();
-    experiments::processing_time(&mut report)?;
-    experiments::kinematics(&mut report)?;
-    experiments::collision(&mut report)?;
-    experiments::ramps(&mut report)?;
-    experiments::springs(&mut report, &mut figures)?;
-    experiments::inverse_square(&mut report, &mut figures)?;
-    paper_method::paper_method(&mut report, &mut figures)?;
-
+    let groups: Vec<Group> = Group::ALL
+        .into_iter()
+        .filter(|g| args.only.is_empty() || args.only.contains(g))
+        .collect();
+    for &group in &groups {
+        report.group = group.name();
+        let (report, figures) = (&mut report, &mut figures);
+        match group {
+            Group::Paper => {
+                experiments::processing_time(report)?;
+                experiments::kinematics(report)?;
+                experiments::collision(report)?;
+                experiments::ramps(report)?;
+                experiments::springs(report, figures)?;
+                experiments::inverse_square(report, figures)?;
+                paper_method::paper_method(report, figures)?;
+            }
+            Group::Rods => ties::rods(report)?,
+            Group::Strings => ties::strings(report, figures)?,
+            Group::Integrators => methods::integrators(report, figures)?,
+            Group::Tree => methods::tree(report)?,
+            Group::Softening => methods::softening(report)?,
+            Group::Ledger => books::ledger(report)?,
+            Group::Friction => books::friction(report)?,
+            Group::SavedState => books::saved_state(report)?,
+        }
+    }
+    let statements: Vec<(&str, &str)> = groups.iter().map(|g| (g.name(), g.statement())).collect();
+    let overview = report.groups(&statements);
     let summary = report.summary();
     #[expect(clippy::print_stdout, reason = "the command's report")]
     {
         println!(
-            "NewtonLab against the paper's experiments (section 4){}",
+            "NewtonLab against theory: the paper's experiments (section 4) and every claim since{}{}",
+            report::Report::render_text(&overview),
             report.to_text()
         );
         println!("\n{summary}");
     }
     if let Some(directory) = &args.out {
         let mut markdown = format!(
-            "# NewtonLab validation report\n\nThe experiments of the paper's section 4, run by `newtonlab validate`, \
-             each against a closed-form result. Tolerance {:e}.\n{}",
+            "# NewtonLab validation report\n\nRun by `newtonlab validate`: the experiments of the paper's section 4 \
+             (tolerance {:e}) and every claim since, in groups, each check against a closed-form result \
+             or a computation written apart from the simulation's, to the tolerance stated beside it.\n{}{}",
             args.tolerance,
+            report::Report::render_markdown(&overview),
             report.to_markdown()
         );
         markdown.push_str("\n## Figures\n\n");

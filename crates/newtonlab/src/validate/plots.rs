@@ -7,20 +7,51 @@ use std::path::Path;
 use plotters::prelude::*;
 use plotters::style::FontStyle;
 
-/// One quantity against time, simulated and theoretical.
+/// One quantity against time (or another variable), simulated and theoretical.
 pub(crate) struct Panel {
+    /// The horizontal axis's label.
+    pub x_label: &'static str,
     pub label: &'static str,
     pub simulated: Vec<(f64, f64)>,
     pub theory: Vec<(f64, f64)>,
+    /// Where each curve after the first begins (indices into both lists): several curves
+    /// drawn in one panel, not joined.
+    pub breaks: Vec<usize>,
 }
 
 impl Panel {
+    /// A quantity against time.
     pub fn new(label: &'static str) -> Self {
+        Self::against("time t (s)", label)
+    }
+
+    /// A quantity against the variable `x_label` names.
+    pub fn against(x_label: &'static str, label: &'static str) -> Self {
         Self {
+            x_label,
             label,
             simulated: Vec::new(),
             theory: Vec::new(),
+            breaks: Vec::new(),
         }
+    }
+
+    /// Starts a new curve: the next point is not joined to the last.
+    pub fn new_curve(&mut self) {
+        if !self.simulated.is_empty() {
+            self.breaks.push(self.simulated.len());
+        }
+    }
+
+    /// Each curve's points of `points` (the simulated or the theory list).
+    fn curves<'a>(&self, points: &'a [(f64, f64)]) -> impl Iterator<Item = &'a [(f64, f64)]> {
+        let starts = std::iter::once(0).chain(self.breaks.iter().copied());
+        let ends = self
+            .breaks
+            .iter()
+            .copied()
+            .chain(std::iter::once(points.len()));
+        starts.zip(ends).map(move |(a, b)| &points[a.min(b)..b])
     }
 
     pub fn add(&mut self, t: f64, simulated: f64, theory: f64) {
@@ -66,24 +97,37 @@ pub(crate) fn draw(figure: &Figure, directory: &Path) -> Result<(), String> {
         .map_err(|e| problem(&e))?;
     let areas = root.split_evenly((2, 1));
     for (area, panel) in areas.iter().zip(&figure.panels) {
-        let (t_max, (low, high)) = extent(panel);
+        let ((t_min, t_max), (low, high)) = extent(panel);
         let mut chart = ChartBuilder::on(area)
             .margin(12)
             .x_label_area_size(40)
             .y_label_area_size(70)
-            .build_cartesian_2d(0.0..t_max, low..high)
+            .build_cartesian_2d(t_min..t_max, low..high)
             .map_err(|e| problem(&e))?;
         chart
             .configure_mesh()
-            .x_desc("time t (s)")
+            .x_desc(panel.x_label)
             .y_desc(panel.label)
             .label_style(("sans-serif", 15))
             .draw()
             .map_err(|e| problem(&e))?;
         let theory_colour = RGBColor(240, 160, 60);
+        for curve in panel.curves(&panel.theory).skip(1) {
+            chart
+                .draw_series(LineSeries::new(
+                    curve.iter().copied(),
+                    theory_colour.stroke_width(5),
+                ))
+                .map_err(|e| problem(&e))?;
+        }
         chart
             .draw_series(LineSeries::new(
-                panel.theory.iter().copied(),
+                panel
+                    .curves(&panel.theory)
+                    .next()
+                    .unwrap_or_default()
+                    .iter()
+                    .copied(),
                 theory_colour.stroke_width(5),
             ))
             .map_err(|e| problem(&e))?
@@ -92,9 +136,22 @@ pub(crate) fn draw(figure: &Figure, directory: &Path) -> Result<(), String> {
                 PathElement::new(vec![(x, y), (x + 20, y)], theory_colour.stroke_width(5))
             });
         let simulated_colour = RGBColor(40, 90, 200);
+        for curve in panel.curves(&panel.simulated).skip(1) {
+            chart
+                .draw_series(LineSeries::new(
+                    curve.iter().copied(),
+                    simulated_colour.stroke_width(1),
+                ))
+                .map_err(|e| problem(&e))?;
+        }
         chart
             .draw_series(LineSeries::new(
-                panel.simulated.iter().copied(),
+                panel
+                    .curves(&panel.simulated)
+                    .next()
+                    .unwrap_or_default()
+                    .iter()
+                    .copied(),
                 simulated_colour.stroke_width(1),
             ))
             .map_err(|e| problem(&e))?
@@ -113,10 +170,17 @@ pub(crate) fn draw(figure: &Figure, directory: &Path) -> Result<(), String> {
     root.present().map_err(|e| problem(&e))
 }
 
-/// The time range and a padded value range of a panel.
-fn extent(panel: &Panel) -> (f64, (f64, f64)) {
+/// The horizontal range (from 0 when nothing is negative) and a padded value range of a
+/// panel.
+fn extent(panel: &Panel) -> ((f64, f64), (f64, f64)) {
     let all = panel.simulated.iter().chain(&panel.theory);
-    let t_max = all.clone().map(|p| p.0).fold(0.0, f64::max).max(1e-9);
+    let t_min = all.clone().map(|p| p.0).fold(0.0, f64::min);
+    let t_max = all
+        .clone()
+        .map(|p| p.0)
+        .fold(0.0, f64::max)
+        .max(t_min + 1e-9);
+    let t_max = (t_min, t_max);
     let (low, high) = all
         .map(|p| p.1)
         .filter(|y| y.is_finite())

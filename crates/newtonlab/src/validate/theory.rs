@@ -148,6 +148,44 @@ impl RadialFall {
     }
 }
 
+/// K(k), the complete elliptic integral of the first kind, by the arithmetic–geometric
+/// mean: K = π / (2 AGM(1, √(1 − k²))), to rounding after a handful of iterations.
+pub(crate) fn elliptic_k(k: f64) -> f64 {
+    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
+    for _ in 0..30 {
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+    }
+    PI / (2.0 * a)
+}
+
+/// The period of a pendulum of length `length` released at rest `amplitude` radians from
+/// the downward vertical: 4 √(L/g) K(sin(θ₀/2)).
+pub(crate) fn pendulum_period(length: f64, g: f64, amplitude: f64) -> f64 {
+    4.0 * (length / g).sqrt() * elliptic_k((amplitude / 2.0).sin())
+}
+
+/// Simpson's rule for ∫ f over [a, b] with `n` (even) intervals.
+pub(crate) fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, n: u32) -> f64 {
+    let h = (b - a) / f64::from(n);
+    let inner: f64 = (1..n)
+        .map(|k| f(a + h * f64::from(k)) * if k % 2 == 1 { 4.0 } else { 2.0 })
+        .sum();
+    (f(a) + f(b) + inner) * h / 3.0
+}
+
+/// The interval [lo, hi] narrowed by bisection to where `f` turns from false to true.
+pub(crate) fn bisect(f: impl Fn(f64) -> bool, (mut lo, mut hi): (f64, f64)) -> f64 {
+    for _ in 0..200 {
+        let mid = 0.5 * (lo + hi);
+        if f(mid) {
+            hi = mid;
+        } else {
+            lo = mid;
+        }
+    }
+    0.5 * (lo + hi)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

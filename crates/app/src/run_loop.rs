@@ -353,12 +353,9 @@ impl Runner {
 
     /// Whether the physics steps on while frames are drawn: where asked and threads
     /// exist, and while steps are short. The next frame waits for the step under way, so
-    /// long steps would stretch every frame: the 10,000-ball pit's crash (7 ms a step
-    /// and more, on two cores that llvmpipe's drawing also uses) ran at 16 frames a
-    /// second instead of 27, with no faster physics, while the 1,000-ball pit (0.4 ms a
-    /// step) went from 0.5–0.7× to 0.96–1.00× real time at 27–33 frames a second
-    /// against 30 (measured under Xvfb, `--measure-frames 300`, beside the build without
-    /// it; on a busier machine 24–26 against 29: the README's eighteenth-session block).
+    /// long steps would stretch every frame: with steps of several milliseconds on two
+    /// cores that the software renderer also uses, frames fall without faster physics
+    /// (docs/performance.md has the figures).
     fn steps_ahead(&self) -> bool {
         self.ahead
             && cfg!(not(target_arch = "wasm32"))

@@ -189,7 +189,7 @@ fn direct_sum(scene: &Scene, positions: &[DVec2]) -> (Vec<DVec2>, f64) {
 
 /// The Barnes–Hut tree (opening angle 0.5) on a cluster of 3,000 bodies, exact and
 /// softened: its forces against the direct sum (normalised RMS error under 1e-3, the
-/// median body's under 2e-3, the worst under 2e-2: the accuracy the README states) and its
+/// median body's under 2e-3, the worst under 2e-2: the accuracy docs/physics.md states) and its
 /// potential energy within 1e-4.
 pub(crate) fn tree(report: &mut Report) -> Outcome {
     let mut rows = Vec::new();

@@ -1,0 +1,267 @@
+//! Editing: placing, typing, undoing, dragging, tying.
+
+use egui::{Key, Modifiers};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use newtonlab_app::{Action, App, Selection};
+use physics::{DVec2, Graph, Particle, Scene, TieKind, World};
+
+use crate::common::{click_canvas, csv_rows, harness, one_ball, play_frames};
+
+#[test]
+fn clicking_the_canvas_places_a_particle_where_clicked() {
+    let mut harness = harness(App::new(one_ball()));
+    harness.get_by_label("Particle").click();
+    harness.run();
+    let rect = harness.state().canvas.rect;
+    let at = rect.center() + egui::vec2(60.0, -40.0);
+    click_canvas(&mut harness, at);
+    let app = harness.state();
+    assert_eq!(
+        app.document.scene().particles.len(),
+        2,
+        "a particle was added"
+    );
+    let placed = app.document.scene().particles[1].position.to_dvec2();
+    // On the grid of a tenth of the drawn grid's spacing (Alt places freely).
+    let step = newtonlab_app::canvas::nice_length(80.0 / app.canvas.view.pixels_per_metre) / 10.0;
+    let expected = (app.canvas.view.to_world(rect, at) / step).round() * step;
+    assert!(
+        placed.distance(expected) < 1e-9,
+        "placed at {placed}, clicked at {expected}"
+    );
+    assert_eq!(
+        app.selection,
+        Some(Selection::Particle(1)),
+        "the new particle is selected"
+    );
+    assert!(app.document.is_dirty(), "the document has unsaved changes");
+    assert!(
+        app.title().contains('●'),
+        "the title marks them: {}",
+        app.title()
+    );
+}
+
+#[test]
+fn an_invalid_mass_is_refused_with_a_reason_and_a_valid_one_applied() {
+    let mut harness = harness(App::new(one_ball()));
+    harness.state_mut().selection = Some(Selection::Particle(0));
+    harness.run();
+    let field = harness.get_by_label("mass");
+    field.focus();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.get_by_label("mass").type_text("-2");
+    harness.key_press(Key::Enter);
+    harness.run();
+    harness.get_by_label_contains("mass must be greater than 0, got -2");
+    assert_eq!(
+        harness.state().document.scene().particles[0].mass,
+        1.0,
+        "not applied"
+    );
+
+    harness.get_by_label("mass").focus();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.get_by_label("mass").type_text("2.5");
+    harness.key_press(Key::Enter);
+    harness.run();
+    assert_eq!(
+        harness.state().document.scene().particles[0].mass,
+        2.5,
+        "applied"
+    );
+    assert!(
+        harness.query_by_label_contains("mass must be").is_none(),
+        "the error is gone"
+    );
+}
+
+#[test]
+fn undo_and_redo_with_the_keyboard() {
+    let mut harness = harness(App::new(one_ball()));
+    harness.get_by_label("Particle").click();
+    harness.run();
+    let centre = harness.state().canvas.rect.center();
+    for k in 0..3 {
+        click_canvas(&mut harness, centre + egui::vec2(40.0 * k as f32, 30.0));
+    }
+    assert_eq!(
+        harness.state().document.scene().particles.len(),
+        4,
+        "three added"
+    );
+    for expected in [3, 2, 1] {
+        harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+        harness.run();
+        assert_eq!(
+            harness.state().document.scene().particles.len(),
+            expected,
+            "undo"
+        );
+    }
+    assert!(!harness.state().document.is_dirty(), "back to the original");
+    harness.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::Z);
+    harness.run();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Y);
+    harness.run();
+    assert_eq!(
+        harness.state().document.scene().particles.len(),
+        3,
+        "two redone"
+    );
+}
+
+/// Dragging a velocity arrow's tip sets the velocity, even when the pointer moves far
+/// at once (the gesture starts where the button went down).
+#[test]
+fn dragging_the_arrow_tip_sets_the_velocity() {
+    let mut harness = harness(App::new(one_ball()));
+    let app = harness.state();
+    let rect = app.canvas.rect;
+    let tip = app.canvas.view.to_screen(rect, DVec2::new(0.5, 0.0));
+    let end = tip + egui::vec2(60.0, -40.0);
+    // Where the pointer ends, in the view before the gesture (a pan would move it).
+    let expected = app.canvas.view.to_world(rect, end) / 0.5;
+    harness.hover_at(tip);
+    harness.run();
+    harness.drag_at(tip);
+    harness.run();
+    harness.hover_at(end);
+    harness.run();
+    harness.drop_at(end);
+    harness.run();
+    let app = harness.state();
+    let velocity = app.document.scene().particles[0].velocity.to_dvec2();
+    assert!(
+        velocity.distance(expected) < 1e-6,
+        "velocity {velocity}, expected {expected}"
+    );
+    assert_eq!(
+        app.document.undo_label(),
+        Some("set velocity"),
+        "one undo step"
+    );
+}
+
+/// The Rod tool makes a pendulum: a drag from a ball to empty space above it ties the
+/// ball to a fixed point there with a rod as long as the drag, and Play swings it on
+/// that length; the rod's tension can be graphed. The String tool makes a string the
+/// same way.
+#[test]
+fn the_rod_and_string_tools_tie_a_particle_to_a_point() {
+    let scene = Scene::new()
+        .with_world(World {
+            gravitation: false,
+            ..World::default()
+        })
+        .with_particle(Particle::new("ball", 1.0).radius(0.2).velocity([1.0, 0.0]));
+    let mut harness = harness(App::new(scene));
+    let drag = |harness: &mut Harness<'_, App>, tool: &str, offset: egui::Vec2| {
+        harness.get_by_label(tool).click();
+        harness.run();
+        let app = harness.state();
+        let rect = app.canvas.rect;
+        let ball = app.canvas.view.to_screen(rect, DVec2::ZERO);
+        let end = ball + offset;
+        let anchor = app.canvas.view.to_world(rect, end);
+        harness.hover_at(ball);
+        harness.run();
+        harness.drag_at(ball);
+        harness.run();
+        harness.hover_at(end);
+        harness.run();
+        harness.drop_at(end);
+        harness.run();
+        anchor
+    };
+    let anchor = drag(&mut harness, "Rod", egui::vec2(30.0, -120.0));
+    let ties = &harness.state().document.scene().ties;
+    assert_eq!(ties.len(), 1, "a rod was added");
+    assert_eq!(
+        (ties[0].name.as_str(), ties[0].kind),
+        ("rod1", TieKind::Rod)
+    );
+    let length = ties[0].length;
+    assert!(
+        (length - anchor.length()).abs() < 1e-9,
+        "as long as the drag: {length}"
+    );
+    harness.state_mut().document.apply("graph", |scene| {
+        scene.graphs.push(Graph::against_time(["rod1.tension"]));
+    });
+    play_frames(&mut harness, 4);
+    let app = harness.state();
+    let simulation = app.runner.simulation.as_ref().expect("running");
+    let swung = simulation.positions()[0];
+    assert!(swung.length() > 0.0, "it moved: {swung}");
+    let pivot = app
+        .document
+        .scene()
+        .end_position(&app.document.scene().ties[0].to)
+        .expect("a fixed point");
+    assert!(
+        (swung.distance(pivot) - length).abs() < 1e-9,
+        "on the rod's length: {} m of {length} m",
+        swung.distance(pivot)
+    );
+    let (header, rows) = csv_rows(app, 0);
+    assert!(header.contains("rod1.tension"), "{header}");
+    assert!(rows.iter().all(|row| row[1] > 0.0), "the rod pulls");
+    harness.get_by_label("Reset").click();
+    harness.run();
+    drag(&mut harness, "String", egui::vec2(-150.0, -150.0));
+    let ties = &harness.state().document.scene().ties;
+    assert_eq!(ties.len(), 2, "a string was added");
+    assert_eq!(
+        (ties[1].name.as_str(), ties[1].kind),
+        ("string1", TieKind::String)
+    );
+}
+
+/// A value typed with a unit or as arithmetic is converted to SI: 250 g is a mass of
+/// 0.25 kg, 30 km/h a velocity of 8.33 m/s, 2*pi a number; a unit of the wrong kind is
+/// refused with the units that fit.
+#[test]
+fn typed_units_and_arithmetic_become_si_numbers() {
+    let mut harness = harness(App::new(one_ball()));
+    harness.state_mut().selection = Some(Selection::Particle(0));
+    harness.run();
+    let mut type_into = |label: &str, text: &str| {
+        harness.get_by_label(label).focus();
+        harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+        harness.get_by_label(label).type_text(text);
+        harness.key_press(Key::Enter);
+        harness.run();
+    };
+    type_into("mass", "250 g");
+    type_into("velocity x", "30 km/h");
+    type_into("radius", "sqrt(2)/2 m");
+    type_into("charge", "5 kg");
+    let particle = &harness.state().document.scene().particles[0];
+    assert!(
+        (particle.mass - 0.25).abs() < 1e-15,
+        "mass {}",
+        particle.mass
+    );
+    let v = particle.velocity.to_dvec2();
+    assert!((v.x - 30.0 / 3.6).abs() < 1e-12, "velocity {v}");
+    assert!((particle.radius - std::f64::consts::FRAC_1_SQRT_2).abs() < 1e-15);
+    assert_eq!(
+        particle.charge.to_bits(),
+        0.0_f64.to_bits(),
+        "5 kg is no charge"
+    );
+    harness.get_by_label_contains("µC");
+}
+
+/// A new scene has no pairwise gravitation; every action is reachable from the menus
+/// with its shortcut shown.
+#[test]
+fn a_new_scene_has_no_pairwise_gravitation() {
+    let mut harness = harness(App::new(one_ball()));
+    harness.state_mut().perform(Action::New);
+    harness.run();
+    assert!(!harness.state().document.scene().world.gravitation);
+    assert_eq!(harness.state().title(), "untitled — NewtonLab");
+}

@@ -1,0 +1,220 @@
+//! Files: save and open, a broken file, the examples, autosave and recovery, a file changed on disk.
+
+use egui::{Key, Modifiers};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use newtonlab_app::App;
+use physics::Scene;
+
+use crate::common::{example_scene, harness, one_ball};
+
+#[test]
+fn save_then_open_round_trips_a_scene() {
+    let folder = std::env::temp_dir().join(format!("newtonlab-app-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let folder_text = folder.to_string_lossy().into_owned();
+    let mut scene = example_scene("newtons-cradle");
+    scene.particles[2].charge = 1.25e-7;
+    let mut harness = harness(App::new(scene.clone()));
+
+    harness.get_by_label("File").click();
+    harness.run();
+    harness.get_by_label_contains("Save As…").click();
+    harness.run();
+    let replace = |harness: &mut Harness<'_, App>, label: &str, text: &str| {
+        harness.get_by_label(label).focus();
+        harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+        harness.get_by_label(label).type_text(text);
+        harness.run();
+    };
+    replace(&mut harness, "folder", &folder_text);
+    replace(&mut harness, "file name", "cradle.toml");
+    harness.get_by_label("Save").click();
+    harness.run();
+    let path = folder.join("cradle.toml");
+    assert!(path.exists(), "saved to {}", path.display());
+    assert!(
+        !harness.state().document.is_dirty(),
+        "saved: no unsaved changes"
+    );
+    assert_eq!(
+        harness.state().title(),
+        "cradle.toml — NewtonLab",
+        "the title names the file"
+    );
+
+    // Change the scene, then open the file again: first confirm discarding the change.
+    harness
+        .state_mut()
+        .document
+        .apply("test change", |s| s.particles.clear());
+    harness.get_by_label("File").click();
+    harness.run();
+    harness.get_by_label_contains("Open…").click();
+    harness.run();
+    harness.get_by_label("Discard changes").click();
+    harness.run();
+    replace(&mut harness, "folder", &folder_text);
+    replace(&mut harness, "file name", "cradle.toml");
+    harness.get_by_label("Open").click();
+    harness.run();
+    let mut reopened = harness.state().document.scene().clone();
+    assert!(
+        reopened.view.is_some(),
+        "the camera is saved as the scene's view"
+    );
+    reopened.view.clone_from(&scene.view);
+    assert_eq!(reopened, scene, "the scene came back unchanged");
+    std::fs::remove_dir_all(&folder).ok();
+}
+
+#[test]
+fn a_broken_file_shows_the_same_messages_as_check() {
+    let folder = std::env::temp_dir().join(format!("newtonlab-broken-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let path = folder.join("broken.toml");
+    std::fs::write(
+        &path,
+        "version = 1\n[[particle]]\nname = \"B\"\nmass = -2\nposition = [0, 0]\n",
+    )
+    .unwrap();
+    let mut harness = harness(App::new(one_ball()));
+    harness.state_mut().open_path(&path.to_string_lossy());
+    harness.run();
+    let expected = format!(
+        "{}:4:8: particle 'B': mass must be greater than 0, got -2",
+        path.display()
+    );
+    harness.get_by_label_contains(&expected);
+    assert_eq!(
+        harness.state().document.scene(),
+        &one_ball(),
+        "the open scene is kept"
+    );
+    std::fs::remove_dir_all(&folder).ok();
+}
+
+#[test]
+fn the_examples_menu_opens_a_built_in_scene_after_asking_about_unsaved_changes() {
+    let mut harness = harness(App::new(one_ball()));
+    harness
+        .state_mut()
+        .document
+        .apply("change", |s| s.particles[0].mass = 3.0);
+    harness.get_by_label("Examples").click();
+    harness.run();
+    harness
+        .get_by_label("Two-ball collision (paper 4.3)")
+        .click();
+    harness.run();
+    assert_eq!(
+        harness.state().document.scene().particles.len(),
+        1,
+        "not yet: it asks first"
+    );
+    harness.get_by_label("Cancel").click();
+    harness.run();
+    assert_eq!(
+        harness.state().document.scene().particles[0].mass,
+        3.0,
+        "cancelled: the change is kept"
+    );
+    harness.get_by_label("Examples").click();
+    harness.run();
+    harness
+        .get_by_label("Two-ball collision (paper 4.3)")
+        .click();
+    harness.run();
+    harness.get_by_label("Discard changes").click();
+    harness.run();
+    let scene = harness.state().document.scene();
+    assert_eq!(
+        scene.name.as_deref(),
+        Some("Two-ball collision (paper 4.3)"),
+        "the example is open"
+    );
+    assert_eq!(scene.particles.len(), 2, "its two balls");
+    assert_eq!(
+        harness.state().title(),
+        "Two-ball collision (paper 4.3) — NewtonLab",
+        "titled by the example, not \"untitled\""
+    );
+}
+
+/// Unsaved work survives a crash: it is copied to the data directory while it has
+/// unsaved changes; an app started afterwards (the first one never closed: as after a
+/// kill) offers it back, and recovering gives the same scene, unsaved, with its file.
+#[test]
+fn unsaved_work_is_recovered_after_a_crash() {
+    use newtonlab_app::autosave::Autosave;
+    let dir = std::env::temp_dir().join(format!("newtonlab-autosave-{}", std::process::id()));
+    std::fs::remove_dir_all(&dir).ok();
+    let mut first = harness(App::new(one_ball()).with_autosave(Autosave::in_dir(&dir, 0.0)));
+    first
+        .state_mut()
+        .document
+        .apply("change", |s| s.particles[0].mass = 7.5);
+    first.state_mut().document.path = Some("/lessons/ball.toml".to_owned());
+    first.run();
+    let edited = first.state().document.scene().clone();
+    drop(first); // killed: nothing runs on the way out
+
+    let mut second = harness(App::new(Scene::new()).with_autosave(Autosave::in_dir(&dir, 0.0)));
+    second.get_by_label_contains("that were not saved. Recover them?");
+    second.get_by_label("Recover").click();
+    second.run();
+    let app = second.state();
+    assert_eq!(app.document.scene(), &edited, "the work is back");
+    assert!(app.document.is_dirty(), "and still unsaved");
+    assert_eq!(app.document.path.as_deref(), Some("/lessons/ball.toml"));
+
+    // Saving it (here: marking it saved) removes the copy.
+    second
+        .state_mut()
+        .document
+        .mark_saved("/tmp/ball.toml".to_owned());
+    second.run();
+    assert!(
+        Autosave::in_dir(&dir, 0.0).find().is_none(),
+        "no copy once saved"
+    );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// A file changed on disk since it was opened is not overwritten without asking.
+#[test]
+fn a_file_changed_on_disk_is_not_silently_overwritten() {
+    let dir = std::env::temp_dir().join(format!("newtonlab-disk-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let path = dir.join("ball.toml");
+    std::fs::write(&path, one_ball().to_toml()).unwrap();
+    let path_text = path.to_string_lossy().into_owned();
+    let mut harness = harness(App::new(Scene::new()));
+    harness.state_mut().open_path(&path_text);
+    harness.run();
+    // Someone else changes the file (a different length, so the change shows at once).
+    std::fs::write(
+        &path,
+        format!("{}\n# edited elsewhere\n", one_ball().to_toml()),
+    )
+    .unwrap();
+    harness
+        .state_mut()
+        .document
+        .apply("change", |s| s.particles[0].mass = 2.0);
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::S);
+    harness.run();
+    harness.get_by_label_contains("has changed on disk since it was opened");
+    assert!(
+        std::fs::read_to_string(&path)
+            .unwrap()
+            .contains("edited elsewhere"),
+        "not overwritten yet"
+    );
+    harness.get_by_label("Overwrite").click();
+    harness.run();
+    let saved = Scene::from_toml(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    assert_eq!(saved.particles[0].mass, 2.0, "overwritten when asked");
+    assert!(!harness.state().document.is_dirty());
+    std::fs::remove_dir_all(&dir).ok();
+}

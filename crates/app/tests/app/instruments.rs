@@ -1,0 +1,192 @@
+//! The instruments: tape measure, probe, field view, stopwatch, protractor.
+
+use egui::{Key, Pos2};
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use newtonlab_app::App;
+use physics::{DVec2, Particle, Scene, World};
+
+use crate::common::{click_canvas, example_scene, harness, play_frames, small_ball};
+
+/// The tape measure: M takes it up; a drag from empty space to a ball lays it, the end
+/// on the ball holding to it; its reading is the distance and direction between its
+/// ends, and follows the ball when it moves. P takes up the probe, placed at the view's
+/// centre for the keyboard, moved a grid step by an arrow key, and put where clicked.
+#[test]
+fn the_tape_measure_follows_a_ball_and_the_probe_reads_the_field_where_it_is() {
+    use newtonlab_app::canvas::{Instrument, Mark, tape_reading};
+    let mut harness = harness(App::new(small_ball()));
+    harness.key_press(Key::M);
+    harness.run();
+    assert_eq!(
+        harness.state().canvas.instruments.active,
+        Some(Instrument::Tape)
+    );
+    let app = harness.state();
+    let rect = app.canvas.rect;
+    let ball = app.canvas.view.to_screen(rect, DVec2::ZERO);
+    let start = ball + egui::vec2(-150.0, 100.0);
+    let from = app.canvas.view.to_world(rect, start);
+    harness.hover_at(start);
+    harness.run();
+    harness.drag_at(start);
+    harness.run();
+    harness.hover_at(ball);
+    harness.run();
+    harness.drop_at(ball);
+    harness.run();
+    let tape = harness.state().canvas.instruments.tape.expect("laid");
+    assert_eq!(
+        tape.0,
+        Mark::Point(from),
+        "the first end where the drag began"
+    );
+    assert_eq!(tape.1, Mark::Particle(0), "the second end on the ball");
+    let (length, angle) = tape_reading(tape, &[DVec2::ZERO]).expect("a reading");
+    assert!((length - from.length()).abs() < 1e-12, "{length} m");
+    let expected = (-from.y).atan2(-from.x).to_degrees();
+    assert!(
+        (angle - expected).abs() < 1e-9,
+        "{angle}° against {expected}°"
+    );
+    play_frames(&mut harness, 4);
+    let app = harness.state();
+    let moved = app
+        .runner
+        .simulation
+        .as_ref()
+        .expect("running")
+        .positions()
+        .to_vec();
+    let (length, _) = tape_reading(tape, &moved).expect("a reading");
+    assert!(
+        (length - from.distance(moved[0])).abs() < 1e-12,
+        "follows the ball"
+    );
+    assert!(moved[0].x > 0.3, "the ball moved: {}", moved[0]);
+    assert!(tape_reading(tape, &moved).expect("a reading").0 > 0.0);
+
+    harness.key_press(Key::P);
+    harness.run();
+    let instruments = &harness.state().canvas.instruments;
+    assert_eq!(
+        instruments.active,
+        Some(Instrument::Probe),
+        "P takes up the probe"
+    );
+    let centre = harness.state().canvas.view.center;
+    assert_eq!(instruments.probe, Some(centre), "at the view's centre");
+    harness.key_press(Key::ArrowRight);
+    harness.run();
+    let probe = harness.state().canvas.instruments.probe.expect("placed");
+    assert!(
+        probe.x > centre.x && (probe.y - centre.y).abs() < 1e-12,
+        "moved right: {probe}"
+    );
+    let rect = harness.state().canvas.rect;
+    let at = rect.center() + egui::vec2(40.0, 30.0);
+    let world = harness.state().canvas.view.to_world(rect, at);
+    click_canvas(&mut harness, at);
+    assert_eq!(
+        harness.state().canvas.instruments.probe,
+        Some(world),
+        "where clicked"
+    );
+    harness.key_press(Key::P);
+    harness.run();
+    assert_eq!(
+        harness.state().canvas.instruments.active,
+        None,
+        "P again puts it away"
+    );
+}
+
+/// The Measure menu turns the electric field view on, and the canvas draws it.
+#[test]
+fn the_measure_menu_turns_on_the_field_view() {
+    let scene = example_scene("charged-pair");
+    let mut harness = harness(App::new(scene));
+    harness.get_by_label("Measure").click();
+    harness.run();
+    harness.get_by_label_contains("Electric field view").click();
+    harness.run();
+    assert_eq!(
+        harness.state().canvas.instruments.field_view,
+        Some(newtonlab_app::FieldKind::Electric)
+    );
+}
+
+/// The stopwatch (T), set to start at one impact and stop at the next, times a ball's
+/// bounce on the floor: between two elastic impacts it flies 2 √(2h/g) (0.5997 s for a
+/// drop of h = 0.441 m; impacts are located to 1e-9 s, and 1e-8 s allows the rounding).
+#[test]
+fn the_stopwatch_times_a_bounce_between_two_impacts() {
+    use newtonlab_app::stopwatch::{State, Trigger};
+    let world = World {
+        gravitation: false,
+        electrostatics: false,
+        bounds: Some(physics::Bounds {
+            min: [-5.0, 0.0].into(),
+            max: [5.0, 10.0].into(),
+        }),
+        ..World::default()
+    };
+    let scene = Scene::new().with_world(world).with_particle(
+        Particle::new("ball", 1.0)
+            .radius(0.1)
+            .position([0.0, 0.541]),
+    );
+    let mut harness = harness(App::new(scene));
+    harness.key_press(Key::T);
+    harness.run();
+    assert!(harness.state().stopwatch.shown, "T shows it");
+    {
+        let watch = &mut harness.state_mut().stopwatch;
+        watch.start_on = Trigger::Impact;
+        watch.stop_on = Trigger::Impact;
+    }
+    harness.get_by_label("Start").click();
+    harness.run();
+    assert_eq!(harness.state().stopwatch.state, State::Armed);
+    play_frames(&mut harness, 12);
+    let watch = &harness.state().stopwatch;
+    assert_eq!(watch.state, State::Stopped, "stopped by the second impact");
+    let flight = 2.0 * (2.0 * 0.441 / 9.81_f64).sqrt();
+    assert!(
+        (watch.reading - flight).abs() < 1e-8,
+        "{} s, theory {flight} s",
+        watch.reading
+    );
+}
+
+/// The protractor (A): a drag lays the vertex and the first arm, a second drag the
+/// second arm; it reads the angle between them.
+#[test]
+fn the_protractor_reads_the_angle_between_its_arms() {
+    use newtonlab_app::canvas::protractor_reading;
+    let mut harness = harness(App::new(small_ball()));
+    harness.key_press(Key::A);
+    harness.run();
+    let rect = harness.state().canvas.rect;
+    let vertex = rect.center() + egui::vec2(-300.0, 200.0);
+    let (first, second) = (
+        vertex + egui::vec2(200.0, 0.0),
+        vertex + egui::vec2(100.0, -100.0),
+    );
+    let drag = |harness: &mut Harness<'_, App>, from: Pos2, to: Pos2| {
+        harness.hover_at(from);
+        harness.run();
+        harness.drag_at(from);
+        harness.run();
+        harness.hover_at(to);
+        harness.run();
+        harness.drop_at(to);
+        harness.run();
+    };
+    drag(&mut harness, vertex, first);
+    drag(&mut harness, vertex, second);
+    let protractor = harness.state().canvas.instruments.protractor.expect("laid");
+    assert!(protractor.2.is_some(), "both arms");
+    let angle = protractor_reading(protractor, &[DVec2::ZERO]).expect("a reading");
+    assert!((angle - 45.0).abs() < 1e-9, "{angle}°");
+}

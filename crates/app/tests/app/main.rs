@@ -1,0 +1,17 @@
+//! The app driven as a user would, through its accessibility tree (`egui_kittest)`: no GPU,
+//! no display. Each test clicks, types and presses keys, then checks the app's state.
+
+#![expect(
+    clippy::float_cmp,
+    reason = "typed values and paused clocks are compared exactly"
+)]
+
+mod common;
+mod editing;
+mod files;
+mod instruments;
+mod keyboard;
+mod languages;
+mod readouts;
+mod run_controls;
+mod timeline;

@@ -1,0 +1,144 @@
+//! Readouts and graphs: the whole run recorded, impacts marked and listed, the energy ledger.
+
+use egui_kittest::kittest::Queryable;
+use newtonlab_app::{App, plots};
+use physics::{Of, Particle, Quantity, Scene, World};
+
+use crate::common::{csv_rows, dropped_ball, harness, impacts_of, play_frames, played};
+
+/// Switching the x axis, adding a series after the run and resetting all keep the whole
+/// run: the export has a row at t = 0 and rows at the simulation's own instants (every
+/// 5 ms at dt = 1 ms), each on the closed-form free fall y = 10 − g t²/2 (rk4 is exact
+/// for constant acceleration: 1e-9 m is rounding).
+#[test]
+fn graphs_keep_the_whole_run_through_axis_changes_late_series_and_reset() {
+    let mut harness = harness(App::new(dropped_ball()));
+    play_frames(&mut harness, 5);
+    let samples = harness.state().runner.recording.as_ref().unwrap().len();
+    assert!(samples > 50, "recorded while running: {samples}");
+
+    // A phase plot against y, then back to time: nothing is lost.
+    harness.get_by_label("Use as x axis").click();
+    harness.run();
+    assert_eq!(harness.state().document.scene().graphs[0].x, "ball.y");
+    harness.get_by_label("use time").click();
+    harness.run();
+    // A series added after the run has data from t = 0.
+    harness.get_by_label("total_energy (J)").click();
+    harness.run();
+    harness.get_by_label("Reset").click();
+    harness.run();
+    assert!(harness.state().runner.simulation.is_none(), "reset");
+
+    let (header, rows) = csv_rows(harness.state(), 0);
+    assert_eq!(header, "t (s),ball.y (m),total_energy (J)");
+    assert_eq!(rows.len(), samples, "every sample, after reset too");
+    let start_energy = 1.0 * 9.81 * 10.0;
+    for (k, row) in rows.iter().enumerate() {
+        let t = row[0];
+        assert!(
+            (t - 0.005 * k as f64).abs() < 1e-9,
+            "row {k} at the instant {t}"
+        );
+        let y = 10.0 - 0.5 * 9.81 * t * t;
+        assert!(
+            (row[1] - y).abs() < 1e-9,
+            "y({t}) = {}, expected {y}",
+            row[1]
+        );
+        assert!((row[2] - start_energy).abs() < 1e-9, "energy at {t}");
+    }
+    assert!(
+        harness.query_by_label("Export CSV…").is_some(),
+        "export stays available after Reset"
+    );
+
+    // The next Play starts a new recording.
+    play_frames(&mut harness, 2);
+    let again = harness.state().runner.recording.as_ref().unwrap().len();
+    assert!(again < samples, "a new run: {again} samples");
+}
+
+/// An impact is marked on the graphs of the particles it involves, at its instant: two
+/// balls of radius 0.5 m, 5 m apart, one at 2 m/s, touch at t = (5 − 1)/2 = 2 s (the
+/// impact is located to 1e-9 s); a graph of a third ball has no mark.
+#[test]
+fn impacts_are_marked_on_the_graphs_of_the_particles_they_involve() {
+    let ball = |name: &str, x: f64| {
+        let mut p = Particle::new(name, 1.0).position([x, 0.0]);
+        p.radius = 0.5;
+        p
+    };
+    let scene = Scene::new()
+        .with_world(World::weightless())
+        .with_particle(ball("A", 0.0).velocity([2.0, 0.0]))
+        .with_particle(ball("B", 5.0))
+        .with_particle(ball("C", 0.0).position([0.0, 10.0]));
+    let mut harness = harness(App::new(scene));
+    play_frames(&mut harness, 30);
+    let recording = harness.state().runner.recording.as_ref().unwrap();
+    let of = |name: &str| vec![Quantity::Particle(name.to_owned(), Of::Vx)];
+    for involved in ["A", "B"] {
+        let marks = plots::impact_marks(recording, &of(involved));
+        assert_eq!(marks.len(), 1, "one impact for {involved}: {marks:?}");
+        assert!((marks[0] - 2.0).abs() < 1e-9, "at t = 2 s: {}", marks[0]);
+    }
+    assert!(
+        plots::impact_marks(recording, &of("C")).is_empty(),
+        "C is not involved"
+    );
+}
+
+/// The readouts keep the energy books while the damped spring plays: damping has taken
+/// E₀ − E(t) of the closed form (x − 10 = 5 e^(−γt)(cos ωt + (γ/ω) sin ωt), γ = 0.125,
+/// ω² = 1 − γ²), to 1e-9 J, and the panel shows it beside the numerical error.
+#[test]
+fn the_readouts_show_what_damping_took_and_the_numerical_error() {
+    let harness = played("spring-damped-light", 8);
+    harness.get_by_label("taken by damping (J)");
+    harness.get_by_label("numerical error");
+    let simulation = harness.state().runner.simulation.as_ref().expect("playing");
+    let t = simulation.time();
+    assert!(t > 0.5, "it played: t = {t}");
+    let (gamma, omega) = (0.125_f64, (1.0_f64 - 0.125 * 0.125).sqrt());
+    let decay = 5.0 * (-gamma * t).exp();
+    let stretch = decay * ((omega * t).cos() + gamma / omega * (omega * t).sin());
+    let v = -decay * (gamma * gamma + omega * omega) / omega * (omega * t).sin();
+    let lost = 12.5 - 0.5 * v * v - 0.5 * stretch * stretch;
+    let ledger = simulation.ledger().expect("the app keeps the ledger");
+    assert!(
+        (ledger.damping - lost).abs() < 1e-9,
+        "t = {t}: damping took {} J, theory {lost} J",
+        ledger.damping
+    );
+    harness.get_by_label("Energy bars");
+}
+
+/// The impact list: after the paper's 4.3 collision (equal 1 kg masses, A at 20 m/s,
+/// impact parameter 0.53 × the sum of the radii: approach u = 20 √(1 − 0.53²) along the normal,
+/// impulse μ (1 + e) u = u with μ = ½ kg and e = 1, nothing lost) the list has one row,
+/// which shows that impulse; a click on its time goes back to it.
+#[test]
+fn the_impact_list_shows_each_impact_with_its_impulse() {
+    let mut harness = played("collision", 4);
+    harness.get_by_label("Impacts (1)").click();
+    harness.run();
+    let impulse = 20.0 * (1.0_f64 - 0.53 * 0.53).sqrt();
+    let impacts = impacts_of(&harness);
+    assert_eq!(impacts.len(), 1);
+    assert!((impacts[0].impulse - impulse).abs() < 1e-9, "{impacts:?}");
+    harness.get_by_label(&newtonlab_app::format::number(impacts[0].impulse));
+    harness.get_by_label("impulse (N·s)");
+    // A click on its time shows the run at the step the impact ends, its instant within.
+    let time = impacts[0].time;
+    harness
+        .get_by_label(&newtonlab_app::format::number(time))
+        .click();
+    harness.run();
+    let shown = harness.state().time();
+    let step = harness.state().document.scene().simulation.time_step;
+    assert!(
+        shown >= time && shown - time < step,
+        "shown at {shown} s, the impact at {time} s"
+    );
+}

@@ -468,6 +468,27 @@ impl World {
             ..Self::default()
         }
     }
+
+    /// The uniform field of the default world (g = 9.81 m/s² down) and no pair forces:
+    /// a classroom's world, where bodies fall and nothing attracts.
+    #[must_use]
+    pub fn gravity_only() -> Self {
+        Self {
+            gravitation: false,
+            electrostatics: false,
+            ..Self::default()
+        }
+    }
+
+    /// No uniform field and no pair forces: bodies move only as springs, ties, contacts
+    /// and their own applied accelerations make them.
+    #[must_use]
+    pub fn no_forces() -> Self {
+        Self {
+            gravity: Vector::ZERO,
+            ..Self::gravity_only()
+        }
+    }
 }
 
 impl Default for World {

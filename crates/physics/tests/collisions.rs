@@ -12,14 +12,6 @@ fn load(name: &str) -> Scene {
         .expect("the example loads")
 }
 
-fn no_forces() -> World {
-    World {
-        gravitation: false,
-        electrostatics: false,
-        ..World::weightless()
-    }
-}
-
 /// Table 4.3: equal masses, A at 20 m/s, impact parameter b = 0.53 (rA + rB). With the
 /// contact normal n = (√(1 − 0.53²), 0.53), A' = v − (v·n) n = (5.618, −8.989) and
 /// B' = (v·n) n = (14.382, 8.989), the paper's values to its 3 decimals; momentum and
@@ -218,7 +210,7 @@ fn assert_only_the_last_ball_leaves(simulation: &Simulation, tolerance: f64) {
 /// at 2 m/s and the rest stay still (momentum and energy allow nothing else).
 #[test]
 fn newtons_cradle_passes_the_blow_to_the_last_ball() {
-    let mut scene = Scene::new().with_world(no_forces());
+    let mut scene = Scene::new().with_world(World::no_forces());
     for i in 0..5 {
         let velocity = if i == 0 { [2.0, 0.0] } else { [0.0, 0.0] };
         scene = scene.with_particle(
@@ -248,14 +240,12 @@ fn newtons_cradle_passes_the_blow_to_the_last_ball() {
 /// (x, vx). Gravity sets the resting speed, 2 g h = 0.01962 m/s at the 1 ms step.
 fn balls_on_a_floor(restitution: f64, balls: &[(f64, f64)]) -> Scene {
     let mut scene = Scene::new().with_world(World {
-        gravitation: false,
-        electrostatics: false,
         restitution,
         bounds: Some(Bounds {
             min: Vector::cartesian(-20.0, 0.0),
             max: Vector::cartesian(20.0, 10.0),
         }),
-        ..World::default()
+        ..World::gravity_only()
     });
     for (i, &(x, vx)) in balls.iter().enumerate() {
         scene = scene.with_particle(
@@ -330,7 +320,7 @@ fn no_tunnelling_at_any_time_step() {
     for time_step in [1e-4, 1e-3, 0.01, 0.1, 1.0] {
         for (start, velocity, expected) in cases {
             let scene = Scene::new()
-                .with_world(no_forces())
+                .with_world(World::no_forces())
                 .with_integrator(Integrator::Rk4, time_step)
                 .with_ramp(Ramp::new("thin", [-1.0, 0.0], [1.0, 0.0]).thickness(0.01))
                 .with_particle(
@@ -359,7 +349,7 @@ fn no_tunnelling_at_any_time_step() {
 /// leaves at (−0.8 × 7, 3); half a second later it is at (9.5 − 5.6 × 0.5, 3 + 3 × 1.5).
 #[test]
 fn bounds_reflect_with_the_world_restitution() {
-    let mut world = no_forces();
+    let mut world = World::no_forces();
     world.restitution = 0.8;
     world.bounds = Some(physics::Bounds {
         min: [0.0, 0.0].into(),
@@ -407,7 +397,7 @@ fn impacts_chained_inside_one_step_are_each_at_their_instant() {
 /// `particles`, weightless in the box from (−10, −5) to (6, 5), run through one step of
 /// `h` seconds of rk4; their impacts are at the instants `theory`, to 1e-12 s.
 fn one_step_in_a_box(h: f64, particles: &[Particle], theory: &[f64]) -> Simulation {
-    let mut world = no_forces();
+    let mut world = World::no_forces();
     world.bounds = Some(Bounds {
         min: [-10.0, -5.0].into(),
         max: [6.0, 5.0].into(),
@@ -473,7 +463,7 @@ fn a_ball_struck_inside_a_step_meets_a_fixed_ball_in_the_same_step() {
 #[test]
 fn two_balls_placed_at_one_point_are_pushed_apart() {
     let scene = Scene::new()
-        .with_world(no_forces())
+        .with_world(World::no_forces())
         .with_integrator(Integrator::Rk4, 1e-3)
         .with_particle(Particle::new("A", 1.0).position([1.0, 2.0]))
         .with_particle(Particle::new("B", 1.0).position([1.0, 2.0]));
@@ -529,7 +519,7 @@ fn a_ball_turned_by_a_wall_meets_the_far_wall_in_the_same_step_without_collision
 
 /// No forces, no collisions between particles, and walls from `min` to `max`.
 fn without_collisions(min: [f64; 2], max: [f64; 2]) -> World {
-    let mut world = no_forces();
+    let mut world = World::no_forces();
     world.collisions = false;
     world.bounds = Some(Bounds {
         min: min.into(),
@@ -563,7 +553,7 @@ fn assert_states(simulation: &Simulation, expected: &[(DVec2, DVec2)]) {
 /// ball leaves at 2 m/s and the others stay still, to 1e-8.
 #[test]
 fn newtons_cradle_passes_the_blow_on_when_the_balls_attract() {
-    let mut world = no_forces();
+    let mut world = World::no_forces();
     world.gravitation = true;
     let mut scene = Scene::new().with_world(world);
     for i in 0..5 {
@@ -596,7 +586,7 @@ fn balls_set_moving_inside_a_step_meet_far_from_where_they_started() {
             .velocity(velocity)
     };
     let scene = Scene::new()
-        .with_world(no_forces())
+        .with_world(World::no_forces())
         .with_integrator(Integrator::Rk4, 2.0)
         .with_particle(ball("A", [-3.0, 0.0], [5.0, 0.0]))
         .with_particle(ball("B", [0.0, 0.0], [0.0, 0.0]))
@@ -636,14 +626,12 @@ fn balls_set_moving_inside_a_step_meet_far_from_where_they_started() {
 /// y = 0 up to `height`.
 fn box_with_a_floor(height: f64) -> World {
     World {
-        gravitation: false,
-        electrostatics: false,
         restitution: 0.5,
         bounds: Some(physics::Bounds {
             min: [-1.0, 0.0].into(),
             max: [1.0, height].into(),
         }),
-        ..World::default()
+        ..World::gravity_only()
     }
 }
 
@@ -704,10 +692,8 @@ fn a_column_of_unequal_balls_stands_still() {
 /// 0.2 m (a peg), under gravity, with the world's `restitution`.
 fn ball_over_peg(height: f64, restitution: f64) -> Scene {
     let world = World {
-        gravitation: false,
-        electrostatics: false,
         restitution,
-        ..World::default()
+        ..World::gravity_only()
     };
     Scene::new()
         .with_world(world)

@@ -16,10 +16,8 @@ fn scenes() -> impl Strategy<Value = Scene> {
     );
     (2..=30_usize, proptest::collection::vec(particle, 30)).prop_map(|(n, particles)| {
         let world = World {
-            gravitation: false,
-            electrostatics: false,
             restitution: 1.0,
-            ..World::weightless()
+            ..World::no_forces()
         };
         let mut scene = Scene::new().with_world(world);
         for (k, &(mass, radius, vx, vy, jx, jy)) in particles.iter().take(n).enumerate() {

@@ -9,11 +9,7 @@ const G: f64 = 9.81;
 /// A 6 m ramp at `angle` degrees centred on the origin, 0.1 m thick, and a 0.25 m ball at
 /// rest touching its top face at the middle.
 fn ball_on_ramp(angle: f64, friction: f64) -> Scene {
-    let world = World {
-        gravitation: false,
-        electrostatics: false,
-        ..World::default()
-    };
+    let world = World::gravity_only();
     ball_on_ramp_in(world, angle, friction)
 }
 
@@ -184,11 +180,7 @@ fn bounce_off_ramp(start: DVec2, velocity: DVec2) -> (f64, DVec2) {
 /// [`bounce_off_ramp`] off any ramp of thickness 0.2 m.
 fn bounce_off(ramp: Ramp, start: DVec2, velocity: DVec2) -> (f64, DVec2) {
     let scene = Scene::new()
-        .with_world(World {
-            gravitation: false,
-            electrostatics: false,
-            ..World::weightless()
-        })
+        .with_world(World::no_forces())
         .with_ramp(ramp.thickness(0.2).restitution(1.0))
         .with_particle(
             Particle::new("ball", 1.0)
@@ -260,11 +252,7 @@ fn a_ball_bounces_off_a_round_post() {
 /// the surface" it is 1.1e-6 m in).
 #[test]
 fn a_ball_caught_by_a_ramp_lies_still_under_every_integrator() {
-    let world = World {
-        gravitation: false,
-        electrostatics: false,
-        ..World::default()
-    };
+    let world = World::gravity_only();
     for integrator in [
         physics::Integrator::Rk4,
         physics::Integrator::Verlet,
@@ -303,11 +291,9 @@ fn a_ball_sliding_off_a_ramps_end_falls_on_its_parabola_under_verlet() {
     let (radius, half_thickness, g) = (0.1, 0.01, 9.81);
     let reach = radius + half_thickness;
     let world = World {
-        gravitation: false,
-        electrostatics: false,
         restitution: 0.0,
         bounds: None,
-        ..World::default()
+        ..World::gravity_only()
     };
     let scene = Scene::new()
         .with_world(world)

@@ -584,10 +584,8 @@ fn a_free_ball_struck_by_a_coupled_one_is_followed_through_the_step() {
 fn on_an_elastic_floor(restitution: f64) -> Scene {
     Scene::new()
         .with_world(World {
-            gravitation: false,
-            electrostatics: false,
             restitution,
-            ..World::default()
+            ..World::gravity_only()
         })
         .with_ramp(
             Ramp::new("floor", [-5.0, 0.0], [5.0, 0.0])
@@ -645,14 +643,12 @@ fn dropped_on_a_sprung_ball(
 fn a_coupled_ball_struck_hard_into_its_floor_bounces_off_it() {
     let (radius, d, g) = (0.1, 0.2, 9.81);
     let scene = Scene::new().with_world(World {
-        gravitation: false,
-        electrostatics: false,
         restitution: 1.0,
         bounds: Some(Bounds {
             min: [-5.0, 0.0].into(),
             max: [5.0, 10.0].into(),
         }),
-        ..World::default()
+        ..World::gravity_only()
     });
     let scene = dropped_on_a_sprung_ball(scene, (1.0, 1.0), 1.0, (radius, d));
     let mut simulation = Simulation::new(&scene).unwrap();
@@ -831,14 +827,12 @@ fn a_sprung_ball_on_the_floor_stays_on_it_through_its_impacts() {
     let radius = 0.1;
     let scene = Scene::new()
         .with_world(World {
-            gravitation: false,
-            electrostatics: false,
             restitution: 1.0,
             bounds: Some(Bounds {
                 min: [-0.2 - radius, 0.0].into(),
                 max: [0.2 + radius, 10.0].into(),
             }),
-            ..World::default()
+            ..World::gravity_only()
         })
         .with_particle(
             Particle::new("ball", 1.0)

@@ -9,24 +9,6 @@ use physics::{DVec2, Integrator, Particle, Scene, SceneFormat, Simulation, Tie, 
 
 const G: f64 = 9.81;
 
-/// Gravity down, nothing else.
-fn gravity_only() -> World {
-    World {
-        gravitation: false,
-        electrostatics: false,
-        ..World::default()
-    }
-}
-
-/// No field and no pair forces: bodies move only as their ties make them.
-fn weightless() -> World {
-    World {
-        gravitation: false,
-        electrostatics: false,
-        ..World::weightless()
-    }
-}
-
 /// K(k), the complete elliptic integral of the first kind, by the arithmetic–geometric
 /// mean: K = π / (2 AGM(1, √(1 − k²))), to rounding after a handful of iterations.
 fn elliptic_k(k: f64) -> f64 {
@@ -61,7 +43,7 @@ fn pendulum_of(length: f64, angle: f64, mass: f64, reversed: bool) -> Scene {
         Tie::rod("rod", [0.0, 0.0], "bob", length)
     };
     Scene::new()
-        .with_world(gravity_only())
+        .with_world(World::gravity_only())
         .with_particle(
             Particle::new("bob", mass)
                 .radius(0.1)
@@ -140,7 +122,7 @@ fn simulation_at(scene: &Scene, t: f64) -> Simulation {
 fn double_pendulum_energy_error(lower_angle: f64, time_step: f64) -> f64 {
     let (sin, cos) = lower_angle.to_radians().sin_cos();
     let scene = Scene::new()
-        .with_world(gravity_only())
+        .with_world(World::gravity_only())
         .with_particle(Particle::new("A", 1.0).radius(0.1).position([1.0, 0.0]))
         .with_particle(
             Particle::new("B", 1.0)
@@ -221,7 +203,7 @@ fn a_string_goes_slack_where_its_tension_vanishes_and_snaps_taut_where_the_parab
 fn string_goes_slack_and_snaps_taut(length: f64) {
     let v0 = (3.5 * G * length).sqrt();
     let scene = Scene::new()
-        .with_world(gravity_only())
+        .with_world(World::gravity_only())
         .with_particle(
             Particle::new("ball", 1.0)
                 .radius(0.05)
@@ -359,7 +341,7 @@ fn rods_book_no_work_and_a_snapping_string_books_what_it_takes() {
     assert!(residual.abs() < 1e-9, "residual {residual:e} J");
 
     let scene = Scene::new()
-        .with_world(gravity_only())
+        .with_world(World::gravity_only())
         .with_particle(Particle::new("ball", 2.0).radius(0.05).position([0.6, 0.0]))
         .with_tie(Tie::string("string", [0.0, 0.0], "ball", 1.0));
     let mut simulation = start(&scene);
@@ -480,7 +462,7 @@ fn bad_rods_and_strings_are_refused_with_reasons() {
         .with_tie(Tie::rod("b", [1.0, -1.0], "A", 1.0))
         .with_tie(Tie::rod("c", [0.0, 0.0], "A", 1.0));
     assert!(pinned.validate().is_empty(), "{:?}", pinned.validate());
-    let mut simulation = start(&pinned.with_world(gravity_only()));
+    let mut simulation = start(&pinned.with_world(World::gravity_only()));
     run_to(&mut simulation, 1.0);
     assert!(
         simulation.positions()[0].distance(DVec2::new(0.0, -1.0)) < 1e-12,
@@ -545,7 +527,7 @@ fn a_pendulum_bouncing_off_a_wall_at_the_bottom_swings_back_to_its_release() {
     let theta = angle.to_radians();
     let release = DVec2::new(length * theta.sin(), -length * theta.cos());
     let scene = Scene::new()
-        .with_world(gravity_only())
+        .with_world(World::gravity_only())
         .with_particle(Particle::new("bob", 1.0).radius(radius).position(release))
         .with_tie(Tie::rod("rod", [0.0, 0.0], "bob", length))
         .with_ramp(Ramp::new("wall", [-radius, -1.5], [-radius, -0.5]).thickness(0.0));
@@ -566,7 +548,7 @@ fn a_pendulum_bouncing_off_a_wall_at_the_bottom_swings_back_to_its_release() {
 fn a_string_with_restitution_throws_the_ball_back_and_goes_slack() {
     let e = 0.5;
     let scene = Scene::new()
-        .with_world(gravity_only())
+        .with_world(World::gravity_only())
         .with_particle(Particle::new("ball", 2.0).radius(0.05).position([0.6, 0.0]))
         .with_tie(Tie::string("string", [0.0, 0.0], "ball", 1.0).restitution(e));
     let t_snap = (2.0 * 0.8 / G).sqrt();
@@ -590,7 +572,7 @@ fn a_string_with_restitution_throws_the_ball_back_and_goes_slack() {
 #[test]
 fn a_rod_puts_its_ends_at_its_length_at_the_start() {
     let scene = Scene::new()
-        .with_world(gravity_only())
+        .with_world(World::gravity_only())
         .with_particle(
             Particle::new("bob", 1.0)
                 .radius(0.1)
@@ -618,7 +600,7 @@ fn a_rod_puts_its_ends_at_its_length_at_the_start() {
 #[test]
 fn a_triple_pendulum_keeps_its_energy_and_its_lengths() {
     let scene = Scene::new()
-        .with_world(gravity_only())
+        .with_world(World::gravity_only())
         .with_particle(Particle::new("A", 1.0).radius(0.001).position([1.0, 0.0]))
         .with_particle(Particle::new("B", 1.0).radius(0.001).position([2.0, 0.0]))
         .with_particle(Particle::new("C", 1.0).radius(0.001).position([3.0, 0.0]))
@@ -661,11 +643,7 @@ fn a_triple_pendulum_keeps_its_energy_and_its_lengths() {
 fn a_string_at_full_length_snaps_taut_at_the_start_of_the_run() {
     let scene = |restitution: f64| {
         Scene::new()
-            .with_world(World {
-                gravitation: false,
-                electrostatics: false,
-                ..World::weightless()
-            })
+            .with_world(World::no_forces())
             .with_particle(
                 Particle::new("ball", 1.5)
                     .radius(0.05)
@@ -724,7 +702,7 @@ fn a_rod_between_unequal_masses_keeps_the_momentum_and_the_centre_of_mass() {
             Tie::rod("rod", "light", "heavy", 1.0)
         };
         let scene = Scene::new()
-            .with_world(weightless())
+            .with_world(World::no_forces())
             .with_particle(light)
             .with_particle(heavy)
             .with_tie(rod);
@@ -759,7 +737,7 @@ fn a_rod_between_unequal_masses_keeps_the_momentum_and_the_centre_of_mass() {
 fn a_spinning_dumbbell_of_unequal_masses_keeps_its_centre_of_mass_still() {
     let omega = 2.0;
     let scene = Scene::new()
-        .with_world(weightless())
+        .with_world(World::no_forces())
         .with_particle(
             Particle::new("light", 1.0)
                 .radius(0.05)

@@ -2,7 +2,7 @@
 //! oscillator, friction's work and a pile's books; friction on ramps against the inclined
 //! plane; a saved state continued against the run it was saved from.
 
-use physics::{Integrator, Particle, Ramp, Scene, Simulation, Vector, World};
+use physics::{Integrator, Particle, Ramp, Scene, Simulation, World};
 
 use super::experiments::{Outcome, load, start, step_to};
 use super::report::{Report, Table, bound, error, value};
@@ -10,15 +10,6 @@ use super::theory::DampedOscillator;
 use crate::Failure;
 
 const G: f64 = 9.81;
-
-/// Gravity down, no pair forces.
-fn falling() -> World {
-    let mut world = World::weightless();
-    world.gravity = Vector::cartesian(0.0, -G);
-    world.gravitation = false;
-    world.electrostatics = false;
-    world
-}
 
 fn ledger_of(simulation: &Simulation) -> Result<physics::Ledger, Failure> {
     simulation
@@ -29,7 +20,7 @@ fn ledger_of(simulation: &Simulation) -> Result<physics::Ledger, Failure> {
 /// A 2 kg block sliding at 3 m/s on a level floor with μ = 0.5.
 fn sliding_block() -> Scene {
     Scene::new()
-        .with_world(falling())
+        .with_world(World::gravity_only())
         .with_ramp(
             Ramp::new("floor", [-50.0, 0.0], [50.0, 0.0])
                 .thickness(0.0)
@@ -160,7 +151,7 @@ pub(crate) fn friction(report: &mut Report) -> Outcome {
         let normal = along.perp();
         let radius = 0.1;
         let scene = Scene::new()
-            .with_world(falling())
+            .with_world(World::gravity_only())
             .with_ramp(
                 Ramp::new(
                     "ramp",

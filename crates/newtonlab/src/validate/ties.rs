@@ -10,15 +10,6 @@ use super::theory;
 
 const G: f64 = 9.81;
 
-/// Gravity down (or none), no pair forces.
-fn world(gravity: f64) -> World {
-    let mut world = World::weightless();
-    world.gravity = physics::Vector::cartesian(0.0, -gravity);
-    world.gravitation = false;
-    world.electrostatics = false;
-    world
-}
-
 /// The tangential velocity and acceleration of a bob circling the origin.
 fn tangential(simulation: &Simulation) -> (f64, f64) {
     let x = simulation.positions()[0];
@@ -55,7 +46,7 @@ fn pendulum_periods(report: &mut Report, rows: &mut Vec<Vec<String>>) -> Outcome
     for amplitude in [10.0_f64, 45.0, 90.0, 120.0, 170.0] {
         let theta = amplitude.to_radians();
         let scene = Scene::new()
-            .with_world(world(G))
+            .with_world(World::gravity_only())
             .with_particle(
                 Particle::new("bob", 1.0)
                     .radius(0.05)
@@ -89,7 +80,7 @@ fn pendulum_periods(report: &mut Report, rows: &mut Vec<Vec<String>>) -> Outcome
 fn unequal_masses(report: &mut Report, rows: &mut Vec<Vec<String>>) -> Outcome {
     let dumbbell = |light: Particle, heavy: Particle| {
         Scene::new()
-            .with_world(world(0.0))
+            .with_world(World::no_forces())
             .with_particle(light)
             .with_particle(heavy)
             .with_tie(Tie::rod("rod", "light", "heavy", 1.0))
@@ -223,7 +214,7 @@ pub(crate) fn strings(report: &mut Report, figures: &mut Vec<Figure>) -> Outcome
     let length = 2.0_f64;
     let v0 = (3.5 * G * length).sqrt();
     let scene = Scene::new()
-        .with_world(world(G))
+        .with_world(World::gravity_only())
         .with_particle(
             Particle::new("ball", 1.0)
                 .radius(0.15)

@@ -2,8 +2,7 @@
 //! the app's language ("At 1.234 s, b1 hit the wall."), at most one every two seconds of
 //! real time however many impacts there are, with how many came since the last sentence.
 //! The status line shows the sentence in a polite live region, which screen readers read
-//! when it changes without moving the focus (the issue on accessibility: events while
-//! playing, rate-limited). A spring at full stretch (its length at a maximum between the
+//! when it changes without moving the focus; rate-limited so that speech keeps up. A spring at full stretch (its length at a maximum between the
 //! recording's samples) is an event too: "At 0.785 s, spring s1 is at full stretch,
 //! 1.5 m." Whichever came last is said.
 

@@ -1,6 +1,5 @@
 //! What the app remembers from one session to the next: the text size, the high-contrast
-//! theme and the language (the issue on accessibility: "remembered the next time the app
-//! starts"). On the desktop a small TOML file, `settings.toml` in the data directory
+//! theme and the language (so a user who needs them sets them once). On the desktop a small TOML file, `settings.toml` in the data directory
 //! (`~/.local/share/newtonlab` on Linux; `NEWTONLAB_DATA_DIR` overrides it), written
 //! atomically; in the browser, its local storage. An app made by `App::new` (the tests)
 //! keeps none until it is given a file. A file that does not read (hand-edited,

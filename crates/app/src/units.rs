@@ -136,7 +136,7 @@ mod tests {
         (a - b).abs() <= 1e-12 * b.abs().max(1.0)
     }
 
-    /// The examples, and the units of each kind of field.
+    /// The examples the guide gives, and the units of each kind of field.
     #[test]
     fn numbers_arithmetic_and_units_become_si() {
         let cases = [

@@ -54,7 +54,7 @@ mod tempdir {
     }
 }
 
-/// The acceptance command: the undamped spring for 20 s sampled every 0.1 s, and
+/// The README's example command: the undamped spring for 20 s sampled every 0.1 s, and
 /// its x against the closed form 10 + 5 cos t.
 #[test]
 fn run_prints_the_undamped_spring_as_csv() {

@@ -110,9 +110,8 @@ impl Path {
         // From the curve's own start and with no kick (every path as the step begins, a
         // thousand of them a step in the pit): the points themselves. The general case
         // below gives the same numbers (a split at 0, and kicks of zero), but its
-        // arithmetic was 8 % of the time of impact (`bench --scene pit --particles 1000
-        // --seconds 1 --threads 1`: 55.4–57.0 → 50.9–51.7 µs a step, three alternating
-        // pairs); it can differ only in the sign of a zero.
+        // arithmetic is a measurable share of the time of impact (`bench --scene pit`);
+        // it can differ only in the sign of a zero.
         #[expect(
             clippy::float_cmp,
             reason = "exactly the curve's start: no split at all"

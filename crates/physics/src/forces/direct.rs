@@ -22,10 +22,8 @@
 //! ([`BLOCKED_FROM`]), each block into its own buffer, the buffers added in a fixed
 //! order: bit-identical for any number of threads.
 //!
-//! Measured with `newtonlab bench --scene cloud --particles 2000 --threads 1`:
-//! 1.05–1.14e9 pairs per second against 4.1e8 for the SSE2 kernel it replaced (the
-//! `wide` crate's four-lane vectors), in the same session; the divider is the
-//! bottleneck, hence the shared division.
+//! The divider is the bottleneck (`newtonlab bench --scene cloud`), hence the shared
+//! division; docs/performance.md has the rates per machine.
 
 // pulp compiles `with_simd` once per instruction set, and what it calls gets that
 // instruction set only when inlined into it.

@@ -88,9 +88,9 @@ struct Scratch {
 /// is of order (jerk) δ³, some 1e-21 m for δ = 1e-7 s at the 1 ms step, far below the
 /// integrator's own error over a step (of order (ωh)⁵ of the motion). Newton's corrections
 /// to an impact's instant are of order 1e-10 s (the largest in the mixed scene of 1,000
-/// balls over 0.8 s: 2.9e-10 s, 3e-7 of the step), and each used to be a whole
-/// integration of the coupled system: `bench --scene mixed --particles 1000 --seconds
-/// 0.8` 1,520–1,593 → 1,909 steps per second, 10,000 balls over 0.6 s 65–66 → 74.
+/// balls over 0.8 s: 2.9e-10 s, 3e-7 of the step), and integrating the coupled system
+/// again for each would cost a whole integration (a fifth of the mixed scene's steps,
+/// `bench --scene mixed`).
 const CARRIED: f64 = 1e-4;
 
 impl CoupledSystem {

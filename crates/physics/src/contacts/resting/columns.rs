@@ -14,13 +14,9 @@
 //! vector, are taken one at a time. Each row is built straight into its place in the
 //! columns (the schedule is found first, from the touching lists).
 //!
-//! Measured (`bench --scene pit --threads 1`, an Intel Xeon, alternating with the build
-//! before): the settled 1,000-ball pile's eight velocity sweeps 40.5 → 29.3 µs a step
-//! (temporary clocks), its resting solver 97 → 85–88 µs, the pit over 0 to 3 s 4,272–
-//! 4,296 → 4,393–4,417 steps a second; the 10,000-ball pit over 0 to 3 s 274–275 → 297–
-//! 299 (its resting solver 1,000 → 726–735 µs a step). In WebAssembly (`benches/wasm`,
-//! 1,000 balls, 0 to 3 s) 2,750–2,756 → 2,889–2,907, where the same columns swept one
-//! row at a time had been 6 % slower than the rows they replaced.
+//! Why lanes: a settled pile's velocity sweeps are most of the resting solver's time,
+//! and four rows at once cut them by about a quarter (docs/performance.md). Columns
+//! swept one row at a time would be slower than rows, so the lanes are what pays.
 
 // pulp compiles `with_simd` once per instruction set, and what it calls gets that
 // instruction set only when inlined into it.

@@ -32,7 +32,7 @@
 //! off by order h³ (1.8e-6 of it on the stiff spring of `restitution_paths.rs`), and on the
 //! quintic through the ends' accelerations too, by rk4's error in the end position
 //! divided by h (2.2e-7). Newton's method finds the instant on the motion's own curve, so
-//! the gap closes there exactly as before; the step still ends at the integrator's state
+//! the gap closes there exactly; the step still ends at the integrator's state
 //! plus the departures.
 //!
 //! So an impact of a coupled particle costs a few passes over what it pulls instead of
@@ -41,8 +41,8 @@
 //! Measured against closed forms (a ball on a spring
 //! rattling between walls, up to four impacts a step: instants and speeds to 1e-13; a
 //! stiff spring's impact at ωh = 0.1 as near the truth as integrating to the instant) and
-//! by the energy ledger of a pile of charged and sprung balls (the residual as before:
-//! 1.9e-9, 5.5e-10, 6.0e-11, 1.3e-11 of E₀ at 2, 1, 0.5 and 0.25 ms steps). Without γ
+//! by the energy ledger of a pile of charged and sprung balls (the residual the
+//! integrator's own: 1.9e-9, 5.5e-10, 6.0e-11, 1.3e-11 of E₀ at 2, 1, 0.5 and 0.25 ms steps). Without γ
 //! the rattling ball's speeds were off by 2e-9 (its test fails, and the spring-pulled
 //! ball's); without β the pile's residual was 4.7 times larger (2.6e-9: its test fails);
 //! without α, 1,400 times.
@@ -64,10 +64,9 @@
 //! surface that held it loses the surface's support for the rest of the step
 //! ([`Motion::release`]): without that it would float, some 1e-6 m high after the step
 //! (`a_coupled_ball_sent_off_its_floor_by_a_blow_flies_as_thrown_up`, exact to 1e-20 m
-//! with it). Such a blow used to end the step at its instant, so that the next step's
-//! start passed it on: a whole pass through the pipeline each, 294 of the 1,894 passes
-//! of the mixed scene of 1,000 balls over 1.6 s; the mixed scene now runs 34–87 % faster
-//! at 900 to 1,200 balls.
+//! with it). Ending the step at such a blow instead, for the next step's start to pass
+//! it on, would cost a whole pass through the pipeline each (in the mixed scene of 1,000
+//! balls, one pass in six).
 //!
 //! Where the series is no description of the motion, the answer is not used. A step
 //! whose springs turn their ends by (ω h)² > 1e-2 integrates its coupled impacts again
@@ -473,8 +472,8 @@ impl Motion {
             }
             // |x| + |y|, no shorter than the length and without its square root (four
             // a member and impact, for every member a blow answers): it only decides
-            // when the search measures whether a path moved ([`Contacts::restart_path`]).
-            // The mixed scene of 1,000 balls, its coupled impacts 77 → 70 µs a step.
+            // when the search measures whether a path moved ([`Contacts::restart_path`]),
+            // so a bound is enough and cheaper than the length.
             self.moved[k] += (size.x.abs() + size.y.abs()) * powers.span[n];
         }
     }

@@ -5,7 +5,7 @@
 //! the program (and the web page) that carries it.
 
 use crate::scene::Scene;
-use crate::scene::format::LoadError;
+use crate::scene::error::LoadError;
 
 /// A built-in scene.
 #[derive(Clone, Copy, Debug)]

@@ -97,8 +97,9 @@ pub use field::{FieldReadout, field_at};
 pub use glam::DVec2;
 pub use integrators::{Integrator, UnknownIntegrator};
 pub use profile::{Clock, Profile, Stage};
+pub use scene::error::{LoadError, Problem};
 pub use scene::fields;
-pub use scene::format::{LoadError, Problem, SceneFormat};
+pub use scene::format::SceneFormat;
 pub use scene::{
     Bounds, Color, Endpoint, FieldRef, Follow, Graph, Of, PairForces, Particle, Quantity, Ramp,
     Rule, Scene, Section, Settings, Spring, Tie, TieKind, Total, Vector, View, World, check_value,

@@ -6,6 +6,7 @@
 //! into runtime state; [`Scene::validate`] lists everything wrong with one.
 
 mod edit;
+pub mod error;
 pub mod fields;
 pub mod format;
 mod presentation;
@@ -16,8 +17,9 @@ use glam::DVec2;
 /// numbers are written by the caller as files write them.
 pub(crate) use newtonlab_i18n::tr_text as say;
 
+pub use error::{FieldRef, Section};
 pub use presentation::{Follow, Graph, Of, Quantity, Total, View};
-pub use validate::{FieldRef, Rule, Section, check_value};
+pub use validate::{Rule, check_value};
 
 /// A 2D vector as the user typed it: Cartesian `[x, y]` or polar
 /// `{ magnitude, angle }` with the angle in degrees counter-clockwise from +x.

@@ -32,7 +32,7 @@ use crate::diagnostics::{self, Diagnostics, ParticleReadout};
 use crate::forces::ForceModel;
 use crate::integrators::{self, Integrator, Workspace};
 use crate::profile::{Clock, Profile, Profiler, Stage};
-use crate::scene::format::LoadError;
+use crate::scene::error::LoadError;
 use crate::scene::{Particle, Scene, Vector};
 use crate::state::State;
 

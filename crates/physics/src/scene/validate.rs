@@ -5,43 +5,9 @@
 
 use std::collections::HashMap;
 
+use super::error::{FieldRef, Problem, Section};
 use super::fields::{self, Field, Kind, Value};
-use super::format::Problem;
 use super::{Color, Endpoint, Follow, Quantity, Scene, Vector, say, say_numbers};
-
-/// A part of the scene that a problem belongs to.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Section {
-    /// The top level of the file (`version`, `name`, `description`).
-    Root,
-    /// `[world]`.
-    World,
-    /// `[simulation]`.
-    Simulation,
-    /// The particle at this index, in file order.
-    Particle(usize),
-    /// The spring at this index.
-    Spring(usize),
-    /// The rod or string at this index of [`Scene::ties`].
-    Tie(usize),
-    /// The ramp at this index.
-    Ramp(usize),
-    /// The graph at this index (`[[graph]]`).
-    Graph(usize),
-    /// `[view]`.
-    View,
-}
-
-/// A field of a section: where a problem is, for the app's inspector and for locating
-/// the problem in a file.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub struct FieldRef {
-    /// The section.
-    pub section: Section,
-    /// The key, as written in the scene format (`"mass"`, `"natural_length"`); empty for
-    /// the section as a whole.
-    pub field: &'static str,
-}
 
 /// How far into a wall of the bounds a particle may start, as a fraction of its radius.
 const WALL_OVERLAP: f64 = 0.1;

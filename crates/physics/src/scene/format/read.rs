@@ -1,0 +1,619 @@
+//! Reading a scene from the parse tree: every unknown key, wrong type and missing field
+//! noted with its place, then the scene's own checks, and "did you mean" for a misspelt key.
+
+use std::collections::{HashMap, HashSet};
+use std::ops::Range;
+
+use super::VERSION;
+use super::tree::{Entry, Node, Span, Value, line_column};
+use crate::Integrator;
+use crate::scene::error::{FieldRef, LoadError, Problem, Section};
+use crate::scene::fields::{self, Field, Kind, Value as FieldValue};
+use crate::scene::validate;
+use crate::scene::{
+    Bounds, Color, Endpoint, Follow, Graph, PairForces, Particle, Ramp, Scene, Settings, Spring,
+    Tie, TieKind, Vector, View, World, say,
+};
+
+pub(super) struct Reader<'t> {
+    pub(super) text: &'t str,
+    pub(super) problems: Vec<(Span, Problem)>,
+    /// Where each field's value stands, to place validation problems.
+    pub(super) spans: HashMap<FieldRef, Range<usize>>,
+    /// Fields that already have a problem: validation would only repeat it.
+    pub(super) failed: HashSet<FieldRef>,
+}
+
+/// One table being read: which keys were used, for reporting unknown ones.
+pub(super) struct Table<'n> {
+    pub(super) entries: &'n [Entry],
+    /// Where the table starts, for problems about keys it lacks.
+    pub(super) span: Span,
+    pub(super) used: Vec<bool>,
+    pub(super) section: Section,
+    pub(super) label: String,
+}
+
+impl<'n> Table<'n> {
+    pub(super) fn get(&mut self, key: &str) -> Option<&'n Node> {
+        let index = self.entries.iter().position(|e| e.key == key)?;
+        self.used[index] = true;
+        Some(&self.entries[index].node)
+    }
+}
+
+pub(super) const ROOT_KEYS: &[&str] = &[
+    "version",
+    "name",
+    "description",
+    "world",
+    "simulation",
+    "particle",
+    "spring",
+    "rod",
+    "string",
+    "ramp",
+    "graph",
+    "view",
+];
+pub(super) const GRAPH_KEYS: &[&str] = &["title", "x", "y"];
+pub(super) const VIEW_KEYS: &[&str] = &["center", "width", "follow"];
+
+impl<'t> Reader<'t> {
+    pub(super) fn new(text: &'t str) -> Self {
+        Self {
+            text,
+            problems: Vec::new(),
+            spans: HashMap::new(),
+            failed: HashSet::new(),
+        }
+    }
+
+    pub(super) fn problem(&mut self, span: Span, field: Option<FieldRef>, message: String) {
+        if let Some(field) = field {
+            self.failed.insert(field);
+        }
+        let (line, column) = match &span {
+            Some(span) => {
+                let (line, column) = line_column(self.text, span.start);
+                (Some(line), Some(column))
+            }
+            None => (None, None),
+        };
+        self.problems.push((
+            span,
+            Problem {
+                message,
+                line,
+                column,
+                field,
+            },
+        ));
+    }
+
+    /// Opens `node` as a table, or reports that it is not one.
+    pub(super) fn table<'n>(
+        &mut self,
+        node: &'n Node,
+        section: Section,
+        label: String,
+    ) -> Option<Table<'n>> {
+        if let Value::Table(entries) = &node.value {
+            Some(Table {
+                entries,
+                span: node.span.clone(),
+                used: vec![false; entries.len()],
+                section,
+                label,
+            })
+        } else {
+            let kind = node.value.kind();
+            self.problem(
+                node.span.clone(),
+                None,
+                say("scene-not-a-table", &[("label", &label), ("got", &kind)]),
+            );
+            None
+        }
+    }
+
+    /// Reports the keys of `table` that were never read.
+    pub(super) fn close(&mut self, table: &Table<'_>, known: &[&str]) {
+        for (entry, used) in table.entries.iter().zip(&table.used) {
+            if !used {
+                let hint = closest(&entry.key, known).map_or_else(
+                    || say("scene-keys-here", &[("keys", &known.join(", "))]),
+                    |k| say("scene-did-you-mean", &[("key", k)]),
+                );
+                let message = say(
+                    "scene-unknown-key",
+                    &[
+                        ("label", &table.label),
+                        ("key", &entry.key),
+                        ("hint", &hint),
+                    ],
+                );
+                self.problem(entry.key_span.clone(), None, message);
+            }
+        }
+    }
+
+    /// Reads `key` with `read`, remembering its span; `None` when absent or invalid.
+    pub(super) fn field<T>(
+        &mut self,
+        table: &mut Table<'_>,
+        key: &'static str,
+        read: impl FnOnce(&Node) -> Result<T, String>,
+    ) -> Option<T> {
+        let node = table.get(key)?;
+        let field = FieldRef {
+            section: table.section,
+            field: key,
+        };
+        if let Some(span) = &node.span {
+            self.spans.insert(field, span.clone());
+        }
+        match read(node) {
+            Ok(value) => Some(value),
+            Err(reason) => {
+                let message = format!("{}: {key} {reason}", table.label);
+                self.problem(node.span.clone(), Some(field), message);
+                None
+            }
+        }
+    }
+
+    pub(super) fn required<T>(
+        &mut self,
+        table: &mut Table<'_>,
+        key: &'static str,
+        read: impl FnOnce(&Node) -> Result<T, String>,
+        placeholder: T,
+    ) -> T {
+        if table.entries.iter().any(|e| e.key == key) {
+            return self.field(table, key, read).unwrap_or(placeholder);
+        }
+        let field = FieldRef {
+            section: table.section,
+            field: key,
+        };
+        let message = say("scene-required", &[("label", &table.label), ("key", key)]);
+        self.problem(table.span.clone(), Some(field), message);
+        placeholder
+    }
+
+    pub(super) fn scene(&mut self, root: &Node) -> Scene {
+        let mut scene = Scene::default();
+        let Some(mut top) = self.table(root, Section::Root, say("scene-the-whole", &[])) else {
+            return scene;
+        };
+        top.label = say("scene-the-scene", &[]);
+        if top.entries.iter().any(|e| e.key == "version") {
+            let version = self.field(&mut top, "version", read_number);
+            #[expect(
+                clippy::float_cmp,
+                reason = "version numbers are small integers, exact in f64"
+            )]
+            let supported = version.is_none_or(|v| v == VERSION as f64);
+            if let Some(version) = version.filter(|_| !supported) {
+                let field = FieldRef {
+                    section: Section::Root,
+                    field: "version",
+                };
+                let span = self.spans.get(&field).cloned();
+                self.problem(
+                    span,
+                    None,
+                    say(
+                        "scene-version-unsupported",
+                        &[
+                            ("version", &version.to_string()),
+                            ("supported", &VERSION.to_string()),
+                        ],
+                    ),
+                );
+            }
+        } else {
+            self.problem(None, None, say("scene-version-required", &[]));
+        }
+        scene.name = self.field(&mut top, "name", read_text);
+        scene.description = self.field(&mut top, "description", read_text);
+        if let Some(node) = top.get("world") {
+            scene.world = self.world(node);
+        }
+        if let Some(node) = top.get("simulation") {
+            scene.simulation = self.settings(node);
+        }
+        for (i, node) in self.items(&mut top, "particle").iter().enumerate() {
+            let particle = self.particle(node, i);
+            scene.particles.push(particle);
+        }
+        for (i, node) in self.items(&mut top, "spring").iter().enumerate() {
+            let spring = self.spring(node, i);
+            scene.springs.push(spring);
+        }
+        for kind in [TieKind::Rod, TieKind::String] {
+            for (i, node) in self.items(&mut top, kind.as_str()).iter().enumerate() {
+                let tie = self.tie(node, kind, i, &scene);
+                scene.ties.push(tie);
+            }
+        }
+        for (i, node) in self.items(&mut top, "ramp").iter().enumerate() {
+            let ramp = self.ramp(node, i);
+            scene.ramps.push(ramp);
+        }
+        for (i, node) in self.items(&mut top, "graph").iter().enumerate() {
+            let graph = self.graph(node, i);
+            scene.graphs.push(graph);
+        }
+        if let Some(node) = top.get("view") {
+            scene.view = Some(self.view(node));
+        }
+        self.close(&top, ROOT_KEYS);
+        scene
+    }
+
+    /// The entries of an array of tables such as `[[particle]]`.
+    pub(super) fn items<'n>(&mut self, top: &mut Table<'n>, key: &str) -> &'n [Node] {
+        match top.get(key) {
+            None => &[],
+            Some(Node {
+                value: Value::Array(items),
+                ..
+            }) => items,
+            Some(node) => {
+                self.problem(
+                    node.span.clone(),
+                    None,
+                    say(
+                        "scene-not-a-list",
+                        &[("key", key), ("got", &node.value.kind())],
+                    ),
+                );
+                &[]
+            }
+        }
+    }
+
+    /// Reads every field of `fields` present in `t` into `target`; a required one that
+    /// is missing is a problem (and `target` keeps its placeholder).
+    pub(super) fn fields<T>(&mut self, t: &mut Table<'_>, fields: &[Field<T>], target: &mut T) {
+        for f in fields {
+            let read = |node: &Node| read_value(f.kind, node);
+            let value = if f.default.is_none() {
+                self.required(t, f.key, |node| read(node).map(Some), None)
+            } else {
+                self.field(t, f.key, read)
+            };
+            if let Some(value) = value {
+                (f.set)(target, value);
+            }
+        }
+    }
+
+    pub(super) fn world(&mut self, node: &Node) -> World {
+        let mut world = World::default();
+        if let Some(mut t) = self.table(node, Section::World, "[world]".to_owned()) {
+            self.fields(&mut t, fields::WORLD, &mut world);
+            self.close(&t, &fields::keys(&[], fields::WORLD));
+        }
+        world
+    }
+
+    pub(super) fn settings(&mut self, node: &Node) -> Settings {
+        let mut settings = Settings::default();
+        if let Some(mut t) = self.table(node, Section::Simulation, "[simulation]".to_owned()) {
+            self.fields(&mut t, fields::SIMULATION, &mut settings);
+            self.close(&t, &fields::keys(&[], fields::SIMULATION));
+        }
+        settings
+    }
+
+    /// Opens the table of an object and reads its name, which labels its messages.
+    pub(super) fn object<'n>(
+        &mut self,
+        node: &'n Node,
+        kind: &str,
+        section: Section,
+        index: usize,
+    ) -> Option<(Table<'n>, String)> {
+        // Particles, springs and ramps are named by their initial (p1, s1, r1); rods and
+        // strings in full (rod1, string1), which would clash with ramps and springs.
+        let default_name = match kind {
+            "rod" | "string" => format!("{kind}{}", index + 1),
+            _ => format!("{}{}", &kind[..1], index + 1),
+        };
+        let mut t = self.table(node, section, validate::numbered(kind, index))?;
+        let name = self
+            .field(&mut t, "name", read_text)
+            .unwrap_or(default_name);
+        if !name.is_empty() {
+            t.label = say("scene-named", &[("kind", kind), ("name", &name)]);
+        }
+        Some((t, name))
+    }
+
+    pub(super) fn particle(&mut self, node: &Node, index: usize) -> Particle {
+        // Placeholders for required fields: a missing one is reported, never used.
+        let mut particle = Particle::new(format!("p{}", index + 1), 1.0);
+        if let Some((mut t, name)) = self.object(node, "particle", Section::Particle(index), index)
+        {
+            particle.name = name;
+            self.fields(&mut t, fields::PARTICLE, &mut particle);
+            self.close(&t, &fields::keys(&["name"], fields::PARTICLE));
+        }
+        particle
+    }
+
+    pub(super) fn spring(&mut self, node: &Node, index: usize) -> Spring {
+        let placeholder = || Endpoint::Point(Vector::ZERO);
+        let mut spring = Spring::new(
+            format!("s{}", index + 1),
+            placeholder(),
+            placeholder(),
+            0.0,
+            0.0,
+        );
+        if let Some((mut t, name)) = self.object(node, "spring", Section::Spring(index), index) {
+            spring.name = name;
+            self.fields(&mut t, fields::SPRING, &mut spring);
+            self.close(&t, &fields::keys(&["name"], fields::SPRING));
+        }
+        spring
+    }
+
+    /// A rod or a string, the `index`-th of its kind; `scene` holds the particles read so
+    /// far, which give a length left out of the file.
+    pub(super) fn tie(&mut self, node: &Node, kind: TieKind, index: usize, scene: &Scene) -> Tie {
+        let placeholder = || Endpoint::Point(Vector::ZERO);
+        let mut tie = Tie::rod(String::new(), placeholder(), placeholder(), 1.0);
+        tie.kind = kind;
+        let section = Section::Tie(scene.ties.len());
+        if let Some((mut t, name)) = self.object(node, kind.as_str(), section, index) {
+            let fields = fields::tie_fields(kind);
+            let has_length = t.entries.iter().any(|e| e.key == "length");
+            tie.name = name;
+            self.fields(&mut t, fields, &mut tie);
+            self.close(&t, &fields::keys(&["name"], fields));
+            if !has_length && let Some(distance) = scene.distance(&tie.from, &tie.to) {
+                tie.length = distance;
+            }
+        }
+        tie
+    }
+
+    pub(super) fn ramp(&mut self, node: &Node, index: usize) -> Ramp {
+        let mut ramp = Ramp::new(format!("r{}", index + 1), Vector::ZERO, Vector::ZERO);
+        if let Some((mut t, name)) = self.object(node, "ramp", Section::Ramp(index), index) {
+            ramp.name = name;
+            self.fields(&mut t, fields::RAMP, &mut ramp);
+            self.close(&t, &fields::keys(&["name"], fields::RAMP));
+        }
+        ramp
+    }
+
+    pub(super) fn graph(&mut self, node: &Node, index: usize) -> Graph {
+        let mut graph = Graph::against_time(Vec::<String>::new());
+        let Some(mut t) = self.table(
+            node,
+            Section::Graph(index),
+            validate::numbered("graph", index),
+        ) else {
+            return graph;
+        };
+        graph.title = self.field(&mut t, "title", read_text);
+        if let Some(title) = &graph.title {
+            t.label = say("scene-named", &[("kind", "graph"), ("name", title)]);
+        }
+        if let Some(x) = self.field(&mut t, "x", read_text) {
+            graph.x = x;
+        }
+        graph.y = self.required(&mut t, "y", read_text_list, Vec::new());
+        self.close(&t, GRAPH_KEYS);
+        graph
+    }
+
+    pub(super) fn view(&mut self, node: &Node) -> View {
+        let mut view = View::default();
+        let Some(mut t) = self.table(node, Section::View, "[view]".to_owned()) else {
+            return view;
+        };
+        view.center = self
+            .field(&mut t, "center", read_vector)
+            .map(Vector::to_dvec2);
+        view.width = self.field(&mut t, "width", read_number);
+        view.follow = self
+            .field(&mut t, "follow", read_text)
+            .map(|text| Follow::parse(&text));
+        self.close(&t, VIEW_KEYS);
+        view
+    }
+
+    /// Adds the validation problems (with positions) to the reading problems and returns
+    /// the scene if there are none.
+    pub(super) fn finish(mut self, scene: Scene) -> Result<Scene, LoadError> {
+        for mut problem in scene.validate() {
+            let Some(field) = problem.field else { continue };
+            if self.failed.contains(&field) {
+                continue;
+            }
+            let span = self.spans.get(&field).cloned();
+            if let Some(span) = &span {
+                let (line, column) = line_column(self.text, span.start);
+                problem.line = Some(line);
+                problem.column = Some(column);
+            }
+            self.problems.push((span, problem));
+        }
+        if self.problems.is_empty() {
+            return Ok(scene);
+        }
+        // File order; problems without a position (missing keys) last, in reading order.
+        self.problems
+            .sort_by_key(|(span, _)| span.as_ref().map_or(usize::MAX, |s| s.start));
+        Err(LoadError {
+            problems: self.problems.into_iter().map(|(_, p)| p).collect(),
+        })
+    }
+}
+
+pub(super) fn read_number(node: &Node) -> Result<f64, String> {
+    match node.value {
+        Value::Number(x) if x.is_finite() => Ok(x),
+        Value::Number(x) => Err(say("scene-must-be-finite", &[("got", &x.to_string())])),
+        ref other => Err(say("scene-must-be-number", &[("got", &other.kind())])),
+    }
+}
+
+pub(super) fn read_bool(node: &Node) -> Result<bool, String> {
+    match node.value {
+        Value::Bool(b) => Ok(b),
+        ref other => Err(say("scene-must-be-bool", &[("got", &other.kind())])),
+    }
+}
+
+pub(super) fn read_text(node: &Node) -> Result<String, String> {
+    match &node.value {
+        Value::Text(text) => Ok(text.clone()),
+        other => Err(say("scene-must-be-text", &[("got", &other.kind())])),
+    }
+}
+
+/// Reads a value of `kind`.
+pub(super) fn read_value(kind: Kind, node: &Node) -> Result<FieldValue, String> {
+    Ok(match kind {
+        Kind::Number(_) => FieldValue::Number(read_number(node)?),
+        Kind::Vector => FieldValue::Vector(read_vector(node)?),
+        Kind::Bool => FieldValue::Bool(read_bool(node)?),
+        Kind::Endpoint => FieldValue::Endpoint(read_endpoint(node)?),
+        Kind::Integrator => FieldValue::Integrator(read_integrator(node)?),
+        Kind::PairForces => FieldValue::PairForces(read_pair_forces(node)?),
+        Kind::Color => FieldValue::Color(Some(read_color(node)?)),
+        Kind::Bounds => FieldValue::Bounds(Some(read_bounds(node)?)),
+    })
+}
+
+pub(super) fn read_text_list(node: &Node) -> Result<Vec<String>, String> {
+    let wrong = |got: String| say("scene-must-be-quantities", &[("got", &got)]);
+    match &node.value {
+        Value::Array(items) => items
+            .iter()
+            .map(|item| read_text(item).map_err(|_| wrong(item.value.kind())))
+            .collect(),
+        other => Err(wrong(other.kind())),
+    }
+}
+
+/// The two ways to write a vector, as messages show them (the file's own syntax).
+pub(super) const VECTOR_FORMS: [(&str, &str); 2] = [
+    ("cartesian", "[x, y]"),
+    ("polar", "{ magnitude = m, angle = degrees }"),
+];
+
+pub(super) fn read_vector(node: &Node) -> Result<Vector, String> {
+    let wrong = |id, arg: (&str, &str)| say(id, &[VECTOR_FORMS[0], VECTOR_FORMS[1], arg]);
+    match &node.value {
+        Value::Array(items) => match items.as_slice() {
+            [x, y] => Ok(Vector::cartesian(read_number(x)?, read_number(y)?)),
+            _ => Err(wrong(
+                "scene-vector-length",
+                ("count", &items.len().to_string()),
+            )),
+        },
+        Value::Table(entries) => {
+            let get = |key: &str| entries.iter().find(|e| e.key == key).map(|e| &e.node);
+            if let Some(extra) = entries
+                .iter()
+                .find(|e| e.key != "magnitude" && e.key != "angle")
+            {
+                return Err(wrong("scene-vector-extra", ("key", &extra.key)));
+            }
+            match (get("magnitude"), get("angle")) {
+                (Some(m), Some(a)) => Ok(Vector::polar(
+                    read_number(m).map_err(|e| format!("magnitude {e}"))?,
+                    read_number(a).map_err(|e| format!("angle {e}"))?,
+                )),
+                _ => Err(wrong("scene-vector-polar", ("got", ""))),
+            }
+        }
+        other => Err(wrong("scene-vector-got", ("got", &other.kind()))),
+    }
+}
+
+pub(super) fn read_bounds(node: &Node) -> Result<Bounds, String> {
+    let wrong = |id, arg: (&str, &str)| say(id, &[("form", "{ min = [x, y], max = [x, y] }"), arg]);
+    let Value::Table(entries) = &node.value else {
+        return Err(wrong("scene-bounds-got", ("got", &node.value.kind())));
+    };
+    if let Some(extra) = entries.iter().find(|e| e.key != "min" && e.key != "max") {
+        return Err(wrong("scene-bounds-extra", ("key", &extra.key)));
+    }
+    let get = |key: &str| entries.iter().find(|e| e.key == key).map(|e| &e.node);
+    match (get("min"), get("max")) {
+        (Some(min), Some(max)) => Ok(Bounds {
+            min: read_vector(min).map_err(|e| format!("min {e}"))?,
+            max: read_vector(max).map_err(|e| format!("max {e}"))?,
+        }),
+        _ => Err(wrong("scene-bounds-both", ("got", ""))),
+    }
+}
+
+pub(super) fn read_endpoint(node: &Node) -> Result<Endpoint, String> {
+    match &node.value {
+        Value::Text(name) => Ok(Endpoint::Particle(name.clone())),
+        Value::Array(_) | Value::Table(_) => read_vector(node)
+            .map(Endpoint::Point)
+            .map_err(|e| say("scene-endpoint-point", &[("reason", &e)])),
+        other => Err(say("scene-endpoint-got", &[("got", &other.kind())])),
+    }
+}
+
+pub(super) fn read_integrator(node: &Node) -> Result<Integrator, String> {
+    let name = read_text(node)?;
+    name.parse().map_err(|_| {
+        let names: Vec<&str> = Integrator::ALL.iter().map(|i| i.as_str()).collect();
+        say(
+            "scene-not-integrator",
+            &[("name", &name), ("names", &names.join(", "))],
+        )
+    })
+}
+
+pub(super) fn read_pair_forces(node: &Node) -> Result<PairForces, String> {
+    let name = read_text(node)?;
+    PairForces::ALL
+        .into_iter()
+        .find(|mode| mode.as_str() == name)
+        .ok_or_else(|| say("scene-not-pair-forces", &[("name", &name)]))
+}
+
+pub(super) fn read_color(node: &Node) -> Result<Color, String> {
+    let text = read_text(node)?;
+    Color::parse_hex(&text).ok_or_else(|| say("scene-not-colour", &[("text", &text)]))
+}
+
+/// The known key closest to a misspelt one, if it is close enough to be a typo.
+pub(super) fn closest<'k>(key: &str, known: &[&'k str]) -> Option<&'k str> {
+    known
+        .iter()
+        .map(|k| (edit_distance(key, k), *k))
+        .filter(|(d, k)| *d <= 2.max(k.len() / 4))
+        .min_by_key(|(d, _)| *d)
+        .map(|(_, k)| k)
+}
+
+/// Levenshtein distance, for "did you mean" hints.
+pub(super) fn edit_distance(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut previous = row[0];
+        row[0] = i + 1;
+        for (j, cb) in b.iter().enumerate() {
+            let substitution = previous + usize::from(ca != *cb);
+            previous = row[j + 1];
+            row[j + 1] = substitution.min(row[j] + 1).min(row[j + 1] + 1);
+        }
+    }
+    row[b.len()]
+}

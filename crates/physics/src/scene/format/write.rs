@@ -1,0 +1,264 @@
+//! Writing a scene: TOML and JSON in the same schema, each field in table order.
+
+use std::fmt::Write as _;
+
+use super::VERSION;
+use crate::scene::fields::{self, Field, Value as FieldValue};
+use crate::scene::{Bounds, Endpoint, Scene, Vector};
+
+impl Scene {
+    /// The scene as a TOML scene file.
+    pub fn to_toml(&self) -> String {
+        let mut out = String::new();
+        for section in self.document() {
+            let _ = match section.header {
+                Header::Root => Ok(()),
+                Header::Table(name) => write!(out, "\n[{name}]\n"),
+                Header::ArrayItem(name) => write!(out, "\n[[{name}]]\n"),
+            };
+            for (key, value) in &section.entries {
+                let _ = writeln!(out, "{key} = {}", value.to_toml());
+            }
+        }
+        out
+    }
+
+    /// The scene as a JSON scene file.
+    pub fn to_json(&self) -> String {
+        use serde_json::{Map, Value};
+        let mut root = Map::new();
+        for section in self.document() {
+            let entries: Map<String, Value> = section
+                .entries
+                .iter()
+                .map(|(key, value)| ((*key).to_owned(), value.to_json()))
+                .collect();
+            match section.header {
+                Header::Root => root.extend(entries),
+                Header::Table(name) => {
+                    root.insert(name.to_owned(), Value::Object(entries));
+                }
+                Header::ArrayItem(name) => {
+                    let list = root
+                        .entry(name.to_owned())
+                        .or_insert_with(|| Value::Array(Vec::new()));
+                    if let Value::Array(list) = list {
+                        list.push(Value::Object(entries));
+                    }
+                }
+            }
+        }
+        let mut text = serde_json::to_string_pretty(&Value::Object(root)).unwrap_or_default();
+        text.push('\n');
+        text
+    }
+
+    /// The scene as sections of key–value pairs: one description that both writers
+    /// render, so TOML and JSON can never disagree on the schema.
+    fn document(&self) -> Vec<OutSection> {
+        let mut root = vec![("version", Out::Integer(VERSION))];
+        if let Some(name) = &self.name {
+            root.push(("name", Out::Text(name.clone())));
+        }
+        if let Some(description) = &self.description {
+            root.push(("description", Out::Text(description.clone())));
+        }
+        let world = out_fields(fields::WORLD, &self.world);
+        let simulation = out_fields(fields::SIMULATION, &self.simulation);
+        let mut sections = vec![
+            OutSection {
+                header: Header::Root,
+                entries: root,
+            },
+            OutSection {
+                header: Header::Table("world"),
+                entries: world,
+            },
+            OutSection {
+                header: Header::Table("simulation"),
+                entries: simulation,
+            },
+        ];
+        let objects = self
+            .particles
+            .iter()
+            .map(|p| ("particle", &p.name, out_fields(fields::PARTICLE, p)))
+            .chain(
+                self.springs
+                    .iter()
+                    .map(|s| ("spring", &s.name, out_fields(fields::SPRING, s))),
+            )
+            .chain(self.ties.iter().map(|t| {
+                (
+                    t.kind.as_str(),
+                    &t.name,
+                    out_fields(fields::tie_fields(t.kind), t),
+                )
+            }))
+            .chain(
+                self.ramps
+                    .iter()
+                    .map(|r| ("ramp", &r.name, out_fields(fields::RAMP, r))),
+            );
+        for (kind, name, entries) in objects {
+            let mut named = vec![("name", Out::Text(name.clone()))];
+            named.extend(entries);
+            sections.push(OutSection {
+                header: Header::ArrayItem(kind),
+                entries: named,
+            });
+        }
+        sections.extend(self.presentation());
+        sections
+    }
+
+    /// The app's part of the scene: `[[graph]]` and `[view]`.
+    fn presentation(&self) -> Vec<OutSection> {
+        let mut sections = Vec::new();
+        for graph in &self.graphs {
+            let mut entries = Vec::new();
+            if let Some(title) = &graph.title {
+                entries.push(("title", Out::Text(title.clone())));
+            }
+            entries.push(("x", Out::Text(graph.x.clone())));
+            entries.push(("y", Out::TextList(graph.y.clone())));
+            sections.push(OutSection {
+                header: Header::ArrayItem("graph"),
+                entries,
+            });
+        }
+        if let Some(view) = &self.view {
+            let mut entries = Vec::new();
+            if let Some(center) = view.center {
+                entries.push(("center", Out::Vector(Vector::Cartesian(center))));
+            }
+            if let Some(width) = view.width {
+                entries.push(("width", Out::Number(width)));
+            }
+            if let Some(follow) = &view.follow {
+                entries.push(("follow", Out::Text(follow.as_str().to_owned())));
+            }
+            sections.push(OutSection {
+                header: Header::Table("view"),
+                entries,
+            });
+        }
+        sections
+    }
+}
+
+/// A section's fields as written: every field in table order, optional ones only when
+/// set.
+/// Keys added to version 1 after files were first written: a writer leaves each out
+/// while it holds its default, so a file saved without using it reads, and is written,
+/// exactly as before the key existed.
+pub(super) const WRITTEN_WHEN_USED: &[&str] = &["softening", "collisions"];
+
+pub(super) fn out_fields<T>(fields: &[Field<T>], target: &T) -> Vec<(&'static str, Out)> {
+    fields
+        .iter()
+        .filter_map(|f| {
+            let out = match (f.get)(target) {
+                FieldValue::Number(x) => Out::Number(x),
+                FieldValue::Vector(v) => Out::Vector(v),
+                FieldValue::Bool(b) => Out::Bool(b),
+                FieldValue::Endpoint(Endpoint::Particle(name)) => Out::Text(name),
+                FieldValue::Endpoint(Endpoint::Point(point)) => Out::Vector(point),
+                FieldValue::Integrator(method) => Out::Text(method.as_str().to_owned()),
+                FieldValue::PairForces(mode) => Out::Text(mode.as_str().to_owned()),
+                FieldValue::Color(color) => Out::Text(color?.to_hex()),
+                FieldValue::Bounds(bounds) => Out::Bounds(bounds?),
+            };
+            let unused = WRITTEN_WHEN_USED.contains(&f.key) && f.default == Some(&out.to_toml());
+            (!unused).then_some((f.key, out))
+        })
+        .collect()
+}
+
+pub(super) enum Header {
+    Root,
+    Table(&'static str),
+    ArrayItem(&'static str),
+}
+
+pub(super) struct OutSection {
+    pub(super) header: Header,
+    pub(super) entries: Vec<(&'static str, Out)>,
+}
+
+pub(super) enum Out {
+    Integer(i64),
+    Number(f64),
+    Bool(bool),
+    Text(String),
+    TextList(Vec<String>),
+    Vector(Vector),
+    Bounds(Bounds),
+}
+
+/// A TOML float that parses back to the same `f64`: Rust's `Debug` for `f64` is the
+/// shortest round-tripping form and always has a `.` or an exponent, as TOML requires.
+pub(super) fn toml_float(x: f64) -> String {
+    format!("{x:?}")
+}
+
+pub(super) fn toml_vector(v: Vector) -> String {
+    match v {
+        Vector::Cartesian(v) => format!("[{}, {}]", toml_float(v.x), toml_float(v.y)),
+        Vector::Polar { magnitude, angle } => format!(
+            "{{ magnitude = {}, angle = {} }}",
+            toml_float(magnitude),
+            toml_float(angle)
+        ),
+    }
+}
+
+pub(super) fn json_vector(v: Vector) -> serde_json::Value {
+    match v {
+        Vector::Cartesian(v) => serde_json::json!([v.x, v.y]),
+        Vector::Polar { magnitude, angle } => {
+            serde_json::json!({ "magnitude": magnitude, "angle": angle })
+        }
+    }
+}
+
+impl Out {
+    fn to_toml(&self) -> String {
+        match self {
+            Self::Integer(i) => i.to_string(),
+            Self::Number(x) => toml_float(*x),
+            Self::Bool(b) => b.to_string(),
+            Self::Text(text) => toml::Value::String(text.clone()).to_string(),
+            Self::TextList(list) => {
+                let items: Vec<String> = list
+                    .iter()
+                    .map(|t| toml::Value::String(t.clone()).to_string())
+                    .collect();
+                format!("[{}]", items.join(", "))
+            }
+            Self::Vector(v) => toml_vector(*v),
+            Self::Bounds(b) => format!(
+                "{{ min = {}, max = {} }}",
+                toml_vector(b.min),
+                toml_vector(b.max)
+            ),
+        }
+    }
+
+    fn to_json(&self) -> serde_json::Value {
+        match self {
+            Self::Integer(i) => (*i).into(),
+            Self::Number(x) => (*x).into(),
+            Self::Bool(b) => (*b).into(),
+            Self::Text(text) => text.clone().into(),
+            Self::TextList(list) => list.clone().into(),
+            Self::Vector(v) => json_vector(*v),
+            Self::Bounds(b) => {
+                serde_json::json!({ "min": json_vector(b.min), "max": json_vector(b.max) })
+            }
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------
+// The parsed tree.

@@ -1,0 +1,162 @@
+//! Pictures of the canvas, the window's title, and the frame-rate measurement of
+//! `--measure-frames`.
+
+use crate::App;
+use crate::files::Pending;
+#[cfg(not(target_arch = "wasm32"))]
+use crate::files::Purpose;
+use crate::i18n::{Arg, tr_with};
+use crate::{picture, platform};
+use egui::Ui;
+use web_time::Instant;
+
+impl App {
+    /// Asks for a screenshot when a picture was asked for, and turns the screenshot into
+    /// a PNG of the part wanted when it arrives.
+    pub(crate) fn take_picture(&mut self, ui: &Ui) {
+        if let Some(subject) = self.picture_asked.take() {
+            self.picture_awaited = Some((subject, picture::request(ui.ctx())));
+        }
+        let Some((subject, slot)) = &self.picture_awaited else {
+            return;
+        };
+        let (subject, Some(image)) = (*subject, picture::take(slot)) else {
+            return;
+        };
+        self.picture_awaited = None;
+        let rect = match subject {
+            picture::Subject::Canvas => self.canvas.rect,
+            picture::Subject::Graph(g) => self
+                .graphs
+                .rects
+                .get(g)
+                .copied()
+                .unwrap_or(egui::Rect::NOTHING),
+        };
+        match picture::png_of(&image, rect, ui.ctx().pixels_per_point()) {
+            Ok(bytes) => {
+                self.picture_ready = Some(bytes);
+                #[cfg(not(target_arch = "wasm32"))]
+                self.files
+                    .ask(Purpose::ExportPng, None, subject.file_name());
+                #[cfg(target_arch = "wasm32")]
+                self.save_picture(subject.file_name());
+            }
+            Err(message) => self.notify(message),
+        }
+    }
+
+    /// Writes the picture waiting to `path` (on the web: downloads it).
+    pub(crate) fn save_picture(&mut self, path: &str) {
+        let Some(bytes) = self.picture_ready.take() else {
+            return;
+        };
+        #[cfg(not(target_arch = "wasm32"))]
+        let written = platform::write_bytes(path, &bytes);
+        #[cfg(target_arch = "wasm32")]
+        let written = platform::web::download_bytes(path, &bytes, "image/png");
+        match written {
+            Ok(()) => self.notify(tr_with(
+                "notice-picture-saved",
+                &[("path", Arg::Text(path))],
+            )),
+            Err(message) => self.notify(message),
+        }
+    }
+
+    /// The window's title, and closing it: never with unsaved changes unconfirmed.
+    pub(crate) fn window(&mut self, ui: &Ui) {
+        let title = self.title();
+        if title != self.shown_title {
+            ui.ctx()
+                .send_viewport_cmd(egui::ViewportCommand::Title(title.clone()));
+            self.shown_title = title;
+        }
+        let close_requested = ui.input(|i| i.viewport().close_requested());
+        if close_requested && self.document.is_dirty() && !self.quitting {
+            ui.ctx()
+                .send_viewport_cmd(egui::ViewportCommand::CancelClose);
+            self.files.confirm = Some(Pending::Quit);
+        }
+        if self.quitting {
+            ui.ctx().send_viewport_cmd(egui::ViewportCommand::Close);
+        } else {
+            // The frame is built: the physics steps on while it is drawn.
+            let time_scale = self.document.scene().simulation.time_scale;
+            self.runner.step_ahead(time_scale);
+        }
+    }
+
+    /// In measuring mode, records frame times and, when enough are in, reports and closes.
+    pub(crate) fn measure_frame(&mut self, ui: &Ui) {
+        let Some(frames) = self.launch.measure_frames else {
+            return;
+        };
+        let now = Instant::now();
+        if let Some(last) = self.last_frame.replace(now)
+            && self.runner.playing
+        {
+            self.frame_times
+                .push(now.duration_since(last).as_secs_f64());
+            // The speed over the whole measurement, from its first frame.
+            self.measured_from.get_or_insert((now, self.time()));
+        }
+        ui.ctx().request_repaint();
+        if let Some(every) = self.launch.report_every.filter(|&e| e > 0)
+            && !self.frame_times.is_empty()
+            && self.frame_times.len().is_multiple_of(every)
+        {
+            let window = &self.frame_times[self.frame_times.len() - every..];
+            let mean = window.iter().sum::<f64>() / window.len() as f64;
+            #[expect(
+                clippy::print_stdout,
+                reason = "the measurement is the output of this mode"
+            )]
+            {
+                println!(
+                    "frames {}-{}: mean {:.1} ms; t = {:.1} s simulated, physics {:.2}× real time",
+                    self.frame_times.len() - every + 1,
+                    self.frame_times.len(),
+                    mean * 1000.0,
+                    self.time(),
+                    self.runner.achieved,
+                );
+            }
+        }
+        if self.frame_times.len() >= frames {
+            let mut times = self.frame_times.clone();
+            times.sort_by(f64::total_cmp);
+            let mean = times.iter().sum::<f64>() / times.len() as f64;
+            #[expect(
+                clippy::cast_possible_truncation,
+                clippy::cast_sign_loss,
+                reason = "an index within the list"
+            )]
+            let percentile = |p: f64| times[((times.len() - 1) as f64 * p).round() as usize];
+            let speed = self
+                .measured_from
+                .map_or(self.runner.achieved, |(from, t)| {
+                    (self.time() - t) / now.duration_since(from).as_secs_f64()
+                });
+            #[expect(
+                clippy::print_stdout,
+                reason = "the measurement is the output of this mode"
+            )]
+            {
+                println!(
+                    "{} frames of {} with {} particles: mean {:.1} ms ({:.1} frames per second), median {:.1} ms, 95th percentile {:.1} ms; physics {:.2}× real time",
+                    times.len(),
+                    self.document.title(),
+                    self.document.scene().particles.len(),
+                    mean * 1000.0,
+                    1.0 / mean,
+                    percentile(0.5) * 1000.0,
+                    percentile(0.95) * 1000.0,
+                    speed,
+                );
+            }
+            self.launch.measure_frames = None;
+            self.quitting = true;
+        }
+    }
+}

@@ -1,0 +1,281 @@
+//! The menu bar and the keyboard shortcuts: every command a menu item or a key gives,
+//! as an [`Action`].
+
+use crate::action::Action;
+use crate::canvas::{FieldKind, Instrument};
+use crate::i18n;
+use crate::i18n::{Arg, tr, tr_with};
+#[cfg(target_arch = "wasm32")]
+use crate::web;
+use crate::{App, edit_words};
+use crate::{action, picture, settings, toolbar};
+use egui::Ui;
+
+impl App {
+    #[expect(clippy::too_many_lines, reason = "the four menus, item by item")]
+    pub(crate) fn menu(&mut self, ui: &mut Ui) -> Option<Action> {
+        let mut action = None;
+        let ctx = ui.ctx().clone();
+        let mut item = |ui: &mut Ui, label: &str, hint: &str, does: Action, enabled: bool| {
+            let shortcut = does.shortcut_text(&ctx);
+            let mut button = egui::Button::new(label);
+            if !shortcut.is_empty() {
+                button = button.shortcut_text(shortcut);
+            }
+            if ui
+                .add_enabled(enabled, button)
+                .on_hover_text(hint)
+                .clicked()
+            {
+                action = Some(does);
+            }
+        };
+        egui::MenuBar::new().ui(ui, |ui| {
+            ui.menu_button(tr("menu-file"), |ui| {
+                item(ui, &tr("menu-new"), &tr("menu-new-hint"), Action::New, true);
+                item(
+                    ui,
+                    &tr("menu-open"),
+                    &tr("menu-open-hint"),
+                    Action::Open,
+                    true,
+                );
+                item(
+                    ui,
+                    &tr("menu-save"),
+                    &tr("menu-save-hint"),
+                    Action::Save,
+                    true,
+                );
+                item(
+                    ui,
+                    &tr("menu-save-canvas"),
+                    &tr("menu-save-canvas-hint"),
+                    Action::ExportPicture(picture::Subject::Canvas),
+                    true,
+                );
+                item(
+                    ui,
+                    &tr("menu-save-as"),
+                    &tr("menu-save-as-hint"),
+                    Action::SaveAs,
+                    true,
+                );
+                #[cfg(target_arch = "wasm32")]
+                if ui
+                    .button(tr("menu-copy-link"))
+                    .on_hover_text(tr("menu-copy-link-hint"))
+                    .clicked()
+                {
+                    self.files.message = Some(match web::copy_link(self.document.scene()) {
+                        Ok(_) => tr("menu-link-copied"),
+                        Err(reason) => reason,
+                    });
+                }
+            })
+            .response
+            .on_hover_text(tr("menu-file-hint"));
+            ui.menu_button(tr("menu-edit"), |ui| {
+                let editable = self.runner.simulation.is_none();
+                let undo = self.document.undo_label().map_or(tr("menu-undo"), |l| {
+                    tr_with("menu-undo-what", &[("what", Arg::Text(&edit_words(l)))])
+                });
+                let can_undo = editable && self.document.undo_label().is_some();
+                item(ui, &undo, &tr("menu-undo-hint"), Action::Undo, can_undo);
+                let redo = self.document.redo_label().map_or(tr("menu-redo"), |l| {
+                    tr_with("menu-redo-what", &[("what", Arg::Text(&edit_words(l)))])
+                });
+                let can_redo = editable && self.document.redo_label().is_some();
+                item(ui, &redo, &tr("menu-redo-hint"), Action::Redo, can_redo);
+                let can_delete = editable && self.selection.is_some();
+                item(
+                    ui,
+                    &tr("menu-delete"),
+                    &tr("menu-delete-hint"),
+                    Action::Delete,
+                    can_delete,
+                );
+            })
+            .response
+            .on_hover_text(tr("menu-edit-hint"));
+            ui.menu_button(tr("menu-examples"), |ui| {
+                for (name, title) in example_titles() {
+                    item(
+                        ui,
+                        title,
+                        &format!("example:{name}"),
+                        Action::Example(name),
+                        true,
+                    );
+                }
+            })
+            .response
+            .on_hover_text(tr("menu-examples-hint"));
+            ui.menu_button(tr("menu-view"), |ui| {
+                item(ui, &tr("menu-fit"), &tr("menu-fit-hint"), Action::Fit, true);
+                let tick = |on: bool| if on { "• " } else { "" };
+                item(
+                    ui,
+                    &format!("{}{}", tick(self.panels.inspector), tr("menu-inspector")),
+                    &tr("menu-inspector-hint"),
+                    Action::ToggleInspector,
+                    true,
+                );
+                item(
+                    ui,
+                    &format!("{}{}", tick(self.panels.graphs), tr("menu-graphs")),
+                    &tr("menu-graphs-hint"),
+                    Action::ToggleGraphs,
+                    true,
+                );
+                item(
+                    ui,
+                    &format!("{}{}", tick(self.panels.projector), tr("menu-projector")),
+                    &tr("menu-projector-hint"),
+                    Action::ToggleProjector,
+                    true,
+                );
+                ui.menu_button(tr("menu-follow"), |ui| {
+                    toolbar::follow_menu(ui, &mut self.canvas, &self.document);
+                })
+                .response
+                .on_hover_text(tr("menu-follow-hint"));
+                ui.menu_button(tr("menu-language"), |ui| {
+                    for language in i18n::Language::ALL {
+                        let chosen = i18n::language() == language;
+                        if ui.selectable_label(chosen, language.name()).clicked() {
+                            i18n::set_language(language);
+                            self.settings.language = Some(language.code().to_owned());
+                            self.keep_settings();
+                        }
+                    }
+                })
+                .response
+                .on_hover_text(tr("menu-language-hint"));
+                ui.menu_button(tr("menu-text-size"), |ui| {
+                    for size in settings::TEXT_SIZES {
+                        let chosen = (self.settings.text_size - size).abs() < 1e-3;
+                        let label = format!("{:.0} %", size * 100.0);
+                        if ui.selectable_label(chosen, label).clicked() {
+                            self.settings.text_size = size;
+                            self.keep_settings();
+                        }
+                    }
+                })
+                .response
+                .on_hover_text(tr("menu-text-size-hint"));
+                if ui
+                    .checkbox(&mut self.settings.high_contrast, tr("menu-high-contrast"))
+                    .on_hover_text(tr("menu-high-contrast-hint"))
+                    .changed()
+                {
+                    self.keep_settings();
+                }
+            })
+            .response
+            .on_hover_text(tr("menu-view-hint"));
+            ui.menu_button(tr("menu-measure"), |ui| {
+                let instruments = &self.canvas.instruments;
+                let tick = |on: bool| if on { "• " } else { "" };
+                for instrument in [Instrument::Tape, Instrument::Probe, Instrument::Protractor] {
+                    item(
+                        ui,
+                        &format!(
+                            "{}{}",
+                            tick(instruments.active == Some(instrument)),
+                            instrument.label()
+                        ),
+                        &instrument.hint(),
+                        Action::Instrument(instrument),
+                        true,
+                    );
+                }
+                for (kind, name) in [
+                    (None, tr("menu-no-field")),
+                    (Some(FieldKind::Electric), tr("menu-electric-field")),
+                    (
+                        Some(FieldKind::Gravitational),
+                        tr("menu-gravitational-field"),
+                    ),
+                ] {
+                    item(
+                        ui,
+                        &format!("{}{name}", tick(instruments.field_view == kind)),
+                        &tr("menu-field-hint"),
+                        Action::FieldView(kind),
+                        true,
+                    );
+                }
+                item(
+                    ui,
+                    &format!("{}{}", tick(self.stopwatch.shown), tr("menu-stopwatch")),
+                    &tr("menu-stopwatch-hint"),
+                    Action::ToggleStopwatch,
+                    true,
+                );
+                item(
+                    ui,
+                    &tr("menu-clear-measurements"),
+                    &tr("menu-clear-measurements-hint"),
+                    Action::ClearMeasurements,
+                    instruments.tape.is_some()
+                        || instruments.probe.is_some()
+                        || instruments.protractor.is_some(),
+                );
+            })
+            .response
+            .on_hover_text(tr("menu-measure-hint"));
+            ui.menu_button(tr("menu-help"), |ui| {
+                item(
+                    ui,
+                    &tr("menu-keys"),
+                    &tr("menu-keys-hint"),
+                    Action::ToggleHelp,
+                    true,
+                );
+            });
+        });
+        action
+    }
+
+    /// The actions whose shortcuts were pressed this frame. Bare keys are left to a
+    /// focused control (a text field types them, a button takes Space and Enter), except
+    /// on the canvas, whose own keys are others (`canvas/keyboard.rs`).
+    pub(crate) fn shortcuts(ui: &Ui, canvas: Option<egui::Id>) -> Vec<Action> {
+        // A pass egui discards (to lay out again) sees the same keys once more: Space
+        // would play and pause at once. Shortcuts act in the first pass only.
+        if ui.ctx().current_pass_index() > 0 {
+            return Vec::new();
+        }
+        let focused = ui.ctx().memory(egui::Memory::focused);
+        let typing = focused.is_some() && focused != canvas;
+        ui.input_mut(|i| {
+            action::SHORTCUTS
+                .iter()
+                .filter(|(shortcut, _)| !(typing && Action::is_plain(shortcut)))
+                .filter(|(shortcut, _)| i.consume_shortcut(shortcut))
+                .map(|(_, action)| *action)
+                .collect()
+        })
+    }
+}
+
+/// Every built-in scene's name and title, read once: the menu is drawn every frame it is
+/// open, and parsing a thousand-ball scene each time would make it stutter.
+fn example_titles() -> &'static [(&'static str, String)] {
+    static TITLES: std::sync::OnceLock<Vec<(&'static str, String)>> = std::sync::OnceLock::new();
+    TITLES.get_or_init(|| {
+        physics::EXAMPLES
+            .iter()
+            .map(|e| {
+                (
+                    e.name,
+                    e.scene()
+                        .ok()
+                        .and_then(|s| s.name)
+                        .unwrap_or_else(|| e.name.to_owned()),
+                )
+            })
+            .collect()
+    })
+}

@@ -1,0 +1,98 @@
+//! The status line: what the app says to the user, the run's speed and time, and the
+//! live region a screen reader hears.
+
+use crate::App;
+use crate::action::Action;
+use crate::i18n;
+use crate::i18n::{Arg, tr, tr_with};
+use egui::Ui;
+
+impl App {
+    pub(crate) fn status(&self, ui: &mut Ui) -> Option<Action> {
+        let mut action = None;
+        ui.horizontal(|ui| {
+            ui.monospace(format!("t = {:.4} s", self.time()));
+            ui.separator();
+            if let Some(failure) = &self.runner.failure {
+                if ui
+                    .button(tr("failure-reset"))
+                    .on_hover_text(tr("toolbar-reset-hint"))
+                    .clicked()
+                {
+                    action = Some(Action::Reset);
+                }
+                ui.colored_label(
+                    egui::Color32::from_rgb(200, 30, 30),
+                    format!("stopped: {failure}; showing the last good state"),
+                );
+                return;
+            }
+            let time_scale = self.document.scene().simulation.time_scale;
+            match (self.runner.playing, self.runner.shortfall(time_scale)) {
+                (true, Some(fraction)) => {
+                    let (ratio, real) = (
+                        i18n::decimal(fraction, 2),
+                        i18n::decimal(self.runner.achieved, 2),
+                    );
+                    ui.colored_label(
+                        egui::Color32::from_rgb(190, 110, 0),
+                        tr_with(
+                            "status-behind",
+                            &[("ratio", Arg::Text(&ratio)), ("real", Arg::Text(&real))],
+                        ),
+                    );
+                }
+                (true, None) => {
+                    let real = i18n::decimal(self.runner.achieved, 2);
+                    ui.label(tr_with("status-real-time", &[("real", Arg::Text(&real))]));
+                }
+                (false, _) if self.runner.simulation.is_some() => {
+                    ui.label(tr("status-paused"));
+                }
+                (false, _) => {
+                    ui.label(tr("status-editing"));
+                }
+            }
+            ui.separator();
+            ui.label(tr_with(
+                "status-physics-time",
+                &[(
+                    "ms",
+                    Arg::Text(&i18n::decimal(self.runner.physics_per_frame * 1000.0, 1)),
+                )],
+            ))
+            .on_hover_text(tr("status-physics-time-hint"));
+            ui.separator();
+            let frame = ui.input(|i| i.stable_dt);
+            ui.label(tr_with(
+                "status-frame-time",
+                &[(
+                    "ms",
+                    Arg::Text(&i18n::decimal(f64::from(frame) * 1000.0, 1)),
+                )],
+            ));
+            ui.separator();
+            let scene = self.document.scene();
+            #[expect(clippy::cast_precision_loss, reason = "counts of objects")]
+            let count = |n: usize| Arg::Number(n as f64);
+            ui.label(tr_with(
+                "status-objects",
+                &[
+                    ("particles", count(scene.particles.len())),
+                    ("springs", count(scene.springs.len())),
+                    ("ties", count(scene.ties.len())),
+                    ("ramps", count(scene.ramps.len())),
+                ],
+            ));
+            if !self.announcer.text.is_empty() {
+                ui.separator();
+                let said = ui.label(&self.announcer.text);
+                // A polite live region: read when it changes, the focus left where it is.
+                ui.ctx().accesskit_node_builder(said.id, |node| {
+                    node.set_live(egui::accesskit::Live::Polite);
+                });
+            }
+        });
+        action
+    }
+}

@@ -32,6 +32,7 @@ use glam::DVec2;
 
 use crate::forces::spring::End;
 use crate::scene::{Scene, Section, TieKind};
+use crate::tuning::{FULL_LENGTH, PROJECTION_ITERATIONS, PROJECTION_TOLERANCE};
 
 /// A link in runtime form.
 #[derive(Clone, Copy, Debug)]
@@ -100,12 +101,6 @@ pub(crate) struct Constraints {
     /// Links joined through a moving particle, solved together; each ascending.
     islands: Vec<Vec<usize>>,
 }
-
-/// How close to its length a string must be to count as at full length, relative.
-pub(crate) const FULL_LENGTH: f64 = 1e-9;
-/// Position projection: done when every |C| / L² is below this.
-const PROJECTION_TOLERANCE: f64 = 1e-15;
-const PROJECTION_ITERATIONS: usize = 50;
 
 impl Constraints {
     /// The links of a valid scene, with `w` each particle's 1/m.

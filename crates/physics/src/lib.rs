@@ -90,6 +90,7 @@ mod simulation;
 mod state;
 #[cfg(test)]
 mod testing;
+mod tuning;
 
 pub use diagnostics::{Diagnostics, Energy, ParticleReadout};
 pub use examples::{EXAMPLES, Example, example};

@@ -11,19 +11,9 @@
 
 use std::ops::Range;
 
-/// Pieces per thread: enough that an uneven piece does not leave a thread idle.
+use crate::tuning::MIN_ITEMS;
 #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
-const PIECES_PER_THREAD: usize = 4;
-/// Fewer items than this run on the calling thread: waking the pool costs more than it
-/// saves (measured: with 1,000 balls two threads were 20 % slower than one). It also
-/// decides whether a step of that many particles runs inside the pool at all. On two
-/// shared cores 4,096 was too few: the 10,000-ball pit, 0 to 1 s, ran 10 % slower on two
-/// threads than on one (1,154–1,176 steps per second against 1,282–1,293), and as fast as
-/// on one from 16,384 (1,282–1,293), while the 4.1 table's 10,000 balls ran the same
-/// either way (`bench --scene pit --particles 10000 --seconds 1 --threads 2`, `--scene
-/// mixed`; an Intel Xeon, 2026-11-24). A Barnes–Hut tree's leaves, dear items, are split
-/// from far fewer (`tree::SPLIT_LEAVES`).
-pub(crate) const MIN_ITEMS: usize = 16_384;
+use crate::tuning::PIECES_PER_THREAD;
 
 /// The threads a simulation may use.
 #[derive(Clone, Debug, Default)]

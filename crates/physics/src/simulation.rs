@@ -411,7 +411,7 @@ impl Simulation {
         // Run on a thread of the pool when a step has work to share out: see
         // `Workers::inside` (entering the pool costs about 30 µs, which a small scene's
         // step does not win back).
-        let shares = self.forces.shares_pairs() || self.state.len() >= crate::parallel::MIN_ITEMS;
+        let shares = self.forces.shares_pairs() || self.state.len() >= crate::tuning::MIN_ITEMS;
         if shares && self.contacts.workers.threads() > 1 {
             let workers = self.contacts.workers.clone();
             return workers.inside(|| self.step_to_here(time));

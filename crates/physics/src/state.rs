@@ -5,6 +5,7 @@
 //! loops read only these arrays and the force model's per-particle constants, so they
 //! stream through memory without loading bookkeeping they never use.
 
+use crate::tuning::RUNAWAY;
 use glam::DVec2;
 
 /// Positions and velocities at one instant.
@@ -34,6 +35,3 @@ impl State {
             .position(|(&x, &v)| !bounded(x) || !bounded(v))
     }
 }
-
-/// See [`State::first_non_finite`].
-const RUNAWAY: f64 = 1e150;

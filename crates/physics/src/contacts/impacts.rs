@@ -23,6 +23,7 @@ use super::{
 use crate::forces::ForceModel;
 use crate::profile::{Profiler, Stage};
 use crate::state::State;
+use crate::tuning::{APART, RESTART};
 
 /// The impact search's state through one step.
 #[derive(Clone, Debug, Default)]
@@ -165,18 +166,6 @@ pub(crate) fn hermite_position(
         + x1 * (3.0 * s2 - 2.0 * s3)
         + v1 * (span * (s3 - s2))
 }
-
-/// Bodies of a coupled impact this fraction of their reach apart at its refined instant
-/// are not touching: the refinement stops within 1e-12 of the reach for a real contact.
-const APART: f64 = 1e-6;
-
-/// A coupled particle's path is searched again after an impact of the coupled system
-/// only if it moved by more than this fraction of its radius: far below the touching
-/// band ([`TOUCHING`]), so a kept path can only miss an impact that grazes deeper than
-/// the band by less than this, which the resting solver then holds. Coupled impacts are
-/// measured and applied on the integrated state, never on a path, so a kept path moves
-/// no instant of contact.
-const RESTART: f64 = 1e-9;
 
 /// The coupled particles' integrated state at an instant inside the step: what a coupled
 /// impact is measured and applied on.

@@ -68,23 +68,8 @@ use crate::forces::ForceModel;
 use crate::parallel::Workers;
 use crate::scene::Scene;
 use crate::state::State;
+use crate::tuning::{FAT_RADII, FAT_STEPS, FAT_TRAVEL_RADII, TOUCHING};
 
-/// Contact closer than this fraction of the reach (sum of radii, or radius plus half a
-/// ramp's thickness) counts as touching.
-const TOUCHING: f64 = 1e-6;
-/// A particle's fat box (see [`Proxies`]) is its box grown by this fraction of its radius
-/// and by its travel over this many steps: a resting pile keeps its fat boxes for many
-/// steps, and a ball in flight gets a new one every few. (Half a radius against a
-/// quarter: 10,000 falling balls rebuilt the grid half as often, 0.53 against 0.43
-/// thousand steps per second; the 1,000-ball pit is the same either way.)
-const FAT_RADII: f64 = 0.5;
-const FAT_STEPS: f64 = 4.0;
-/// The travel added to a fat box is at most this many radii: tiny, fast bodies (stars of
-/// 0.1 µm at 30 m/s and 5 ms steps) would otherwise get boxes hundreds of thousands of
-/// radii wide, and a dense cluster millions of candidate pairs (the broad phase took
-/// half of a step of the 20,000-star cluster). Balls in a pit never reach it (4 steps of
-/// 10 m/s at 1 ms is 0.4 radii of 0.1 m).
-const FAT_TRAVEL_RADII: f64 = 2.0;
 /// What hits what.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub(crate) enum Impact {

@@ -25,9 +25,7 @@
 use glam::DVec2;
 
 use super::obstacles::Shape;
-
-/// Depth of subdivision: the contact instant is found to 2⁻⁴⁴ ≈ 6e-14 of the step.
-const MAX_DEPTH: u32 = 44;
+use crate::tuning::{MAX_DEPTH, STRAIGHT};
 
 /// A region a particle's centre may enter, given as gap functions: the centre is inside
 /// when every gap is ≤ 0.
@@ -229,10 +227,6 @@ pub(crate) fn earliest_entry(region: &Region, path: &[DVec2; 4]) -> Option<f64> 
     }
     search(region, path, 0.0, 1.0, 0)
 }
-
-/// How far, as a fraction of the reach, a path may bend off a straight line and still be
-/// taken as one by [`straight_entry`].
-const STRAIGHT: f64 = 1e-12;
 
 /// The earliest entry into the disc of `reach` about the origin of a path that is a
 /// straight line travelled at constant speed to within [`STRAIGHT`] of the reach (two

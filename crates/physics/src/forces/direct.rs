@@ -36,16 +36,11 @@ use glam::DVec2;
 use pulp::{Arch, Simd, WithSimd};
 
 use crate::parallel::Workers;
+use crate::tuning::{BLOCKED_FROM, BLOCKS};
 
 /// Partners per group: one AVX-512 vector. The grouping, not the hardware, fixes the
 /// order of the sums.
 pub(crate) const LANES: usize = 8;
-
-/// From this many bodies on, the pairs are summed in [`BLOCKS`] blocks of rows, each
-/// into its own force buffer, the buffers added in block order: the threads take blocks,
-/// and the bits do not depend on how many threads there are. Fewer bodies are one block.
-const BLOCKED_FROM: usize = 256;
-const BLOCKS: usize = 8;
 
 /// The bodies of one sum in structure-of-arrays form.
 #[derive(Clone, Default)]

@@ -149,7 +149,7 @@ impl ForceModel {
             None => direct::is_blocked(self.interacting.len()),
             Some(_) => {
                 direct::is_blocked(self.charged.len())
-                    || self.interacting.len() >= tree::SPLIT_LEAVES * tree::LEAF
+                    || self.interacting.len() >= crate::tuning::SPLIT_LEAVES * crate::tuning::LEAF
             }
         }
     }

@@ -34,12 +34,7 @@ use pulp::{Simd, WithSimd};
 
 use super::direct::{LANES, lanes, sum_lanes};
 use crate::parallel::Workers;
-
-/// Bodies per leaf: below this a square is summed directly. 32 against 16 or 64: the
-/// fewest walks for near sums the lanes make cheap (measured at 10,000 and 100,000).
-pub(crate) const LEAF: usize = 32;
-/// Deepest square: bodies closer than 2⁻⁴⁸ of the whole extent share a leaf.
-const DEPTH: u32 = 48;
+use crate::tuning::{LEAF, SPLIT_LEAVES, TREE_DEPTH};
 
 struct Node {
     /// The square: lower-left corner and side, metres.
@@ -114,13 +109,6 @@ pub(crate) fn potential_energy(
     // Each pair is counted from both ends.
     -0.5 * g * terms.iter().sum::<f64>()
 }
-
-/// Leaves from which a tree's sums are shared out among threads: each leaf's walk and
-/// sums cost some 30 µs in the 20,000-star cluster, so even a small tree pays for the
-/// pool (the item count that cheap lists are split from, [`crate::parallel::MIN_ITEMS`],
-/// left every tree below 131,000 bodies on one thread: the 20,000-star cluster ran at
-/// 13.3 steps per second on one thread and on two).
-pub(crate) const SPLIT_LEAVES: usize = 32;
 
 /// `sum(lists, i)` for every body i of `bodies`, in the tree's order, with `lists` what
 /// i's leaf feels: the leaves are shared out among `workers`' threads, each leaf walked
@@ -209,7 +197,7 @@ impl Tree {
             end,
             quarters: None,
         });
-        if end - start <= LEAF || depth >= DEPTH {
+        if end - start <= LEAF || depth >= TREE_DEPTH {
             let (mut total, mut moment) = (0.0, DVec2::ZERO);
             for &i in &self.order[start..end] {
                 total += mass[i];

@@ -40,6 +40,7 @@ use crate::profile::Stage;
 use crate::state::State;
 
 use super::{Simulation, refine_instant};
+use crate::tuning::CARRIED;
 
 /// The coupled particles as a system of their own.
 #[derive(Clone, Debug)]
@@ -81,17 +82,6 @@ struct Scratch {
     /// The members' state through the trial step ([`Simulation::split_trial_step`]).
     trial: State,
 }
-
-/// How near (a fraction of the step) an instant must be to the last one the coupled
-/// system was integrated to for its state to be carried there by its acceleration
-/// instead of integrated again: x + v δ + a δ²/2, v + a δ. The rest of that Taylor series
-/// is of order (jerk) δ³, some 1e-21 m for δ = 1e-7 s at the 1 ms step, far below the
-/// integrator's own error over a step (of order (ωh)⁵ of the motion). Newton's corrections
-/// to an impact's instant are of order 1e-10 s (the largest in the mixed scene of 1,000
-/// balls over 0.8 s: 2.9e-10 s, 3e-7 of the step), and integrating the coupled system
-/// again for each would cost a whole integration (a fifth of the mixed scene's steps,
-/// `bench --scene mixed`).
-const CARRIED: f64 = 1e-4;
 
 impl CoupledSystem {
     /// The coupled system of a simulation's particles, or `None` when there is none or

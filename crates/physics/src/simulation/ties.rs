@@ -5,11 +5,8 @@
 use glam::DVec2;
 
 use super::Simulation;
-use crate::constraints::FULL_LENGTH;
-
-/// A string event is located to this many seconds (the bracket's width).
-const EVENT_TIME_TOLERANCE: f64 = 1e-12;
-const EVENT_ITERATIONS: usize = 100;
+use crate::tuning::FULL_LENGTH;
+use crate::tuning::{EVENT_ITERATIONS, EVENT_TIME_TOLERANCE};
 
 impl Simulation {
     /// At construction: the positions and velocities projected onto the rods (and onto

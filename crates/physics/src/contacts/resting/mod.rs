@@ -25,24 +25,7 @@ use self::columns::PairColumns;
 use super::obstacles::Obstacle;
 use super::{separation, smaller};
 use crate::state::State;
-
-/// Overlap tolerated between resting particles before positions are corrected, as a
-/// fraction of the smaller radius; well under the 1 % a user could notice.
-const ALLOWED_OVERLAP: f64 = 1e-3;
-/// Fraction of the excess overlap corrected per position sweep: gentle enough not to pop
-/// a pile. A power of two (a row's share is this times its effective mass, to the bit).
-const CORRECTION: f64 = 0.5;
-/// Position sweeps per step.
-const POSITION_SWEEPS: usize = 4;
-/// Most velocity sweeps (the solver stops earlier when no contact approaches). The
-/// warm start carries a pile's weight from step to step, so the sweeps of one step only
-/// pass on what changed in it; the position correction after them keeps overlaps
-/// bounded. Measured on the 1,000-ball pit (`tests/ball_pit.rs`): with 16 sweeps the
-/// largest overlap was 1.77 % of a radius while crashing and 0.41 % at rest; with 8,
-/// 0.98 % and 0.67 %, and the solver costs 27 % less (`bench --scene pit`). In a
-/// settling pile the sweeps never meet the convergence tolerance below (new contacts
-/// start without a warm start every step), so the count is what the solver costs.
-const ITERATIONS: usize = 8;
+use crate::tuning::{ALLOWED_OVERLAP, CORRECTION, POSITION_SWEEPS, RESTING_SWEEPS};
 
 /// What every row of the solver accumulates.
 #[derive(Clone, Copy, Debug)]
@@ -370,7 +353,7 @@ impl RestingSolver {
             is_struck(r.particle as usize)
         });
         let tolerance = 1e-4 * resting_speed.max(1e-9);
-        for _ in 0..ITERATIONS {
+        for _ in 0..RESTING_SWEEPS {
             let pairs = self.pairs.sweep(&self.schedule.pair_levels, velocity);
             let surfaces = sweep(&mut self.surfaces, velocity);
             let largest = match (pairs, surfaces) {

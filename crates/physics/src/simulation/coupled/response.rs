@@ -99,6 +99,7 @@ use crate::state::State;
 
 use super::super::{Simulation, refine_instant};
 use super::{Scratch, catch_on_surfaces, write_members};
+use crate::tuning::{PASSES, STIFF, TRUSTED};
 
 /// The coupled particles' motion through one step: the integrator's, between its two
 /// ends, and each particle's departure from it since the impacts applied so far.
@@ -632,18 +633,6 @@ fn holds(acceleration: DVec2, normal: DVec2) -> bool {
     acceleration.dot(normal) <= 1e-9 * acceleration.length()
 }
 
-/// The largest fifth-order term of an answer, over the rest of the step, that leaves the
-/// series trusted, as a fraction of the kick's displacement: the terms left out are that
-/// term times the step over the pull's time scale, smaller again. A harder blow (a stiff
-/// spring near the step's stability limit, a strong pull varying over the blow's own
-/// path) ends the step at its impact, and the next step integrates on from there.
-const TRUSTED: f64 = 1e-6;
-
-/// The largest (ω S)² — the first answer's acceleration over the rest of the step S per
-/// unit kick, J S² — that leaves the series trusted: beyond it the pull turns the motion
-/// within the step (ω S = 0.1), and the step ends at the impact instead.
-const STIFF: f64 = 1e-2;
-
 /// The members an impact involves (none for a particle outside the coupled system).
 fn involved(impact: Impact, local: &[Option<u32>]) -> [Option<usize>; 2] {
     match impact {
@@ -874,10 +863,6 @@ fn answer_blow(
     }
     (trusted, written, rests)
 }
-
-/// The most strikes one blow passes on at its instant inside the step ([`pass_on`]);
-/// beyond them the step ends there, and the next step's start passes on the rest.
-const PASSES: usize = 1024;
 
 /// Passes on at once, at the instant `time` of an impact inside a step of `h`, what it
 /// leaves closing on what it touches: `struck` (members, with their velocities before the

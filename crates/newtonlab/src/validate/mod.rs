@@ -89,7 +89,7 @@ impl Group {
                 "a string goes slack where its tension vanishes, the ball flies on the parabola, and the string snaps taut where the parabola meets its length"
             }
             Self::Integrators => {
-                "each integrator converges at its order: halving the step divides the error by 2^order"
+                "each integrator converges at its order (halving the step divides the error by 2^order); the symplectic ones keep a bounded energy error"
             }
             Self::Tree => {
                 "the Barnes–Hut tree's forces and potential energy agree with the direct sum"

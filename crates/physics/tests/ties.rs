@@ -211,17 +211,8 @@ fn string_goes_slack_and_snaps_taut(length: f64) {
                 .velocity([v0, 0.0]),
         )
         .with_tie(Tie::string("string", [0.0, 0.0], "ball", length));
-    // Closed form of the circular part: dt = L dφ / v(φ), v² = v0² − 2 g L (1 − cos φ).
-    let phi_slack = (-0.5_f64).acos();
-    let speed = |phi: f64| (v0 * v0 - 2.0 * G * length * (1.0 - phi.cos())).sqrt();
-    let t_slack = simpson(|phi| length / speed(phi), 0.0, phi_slack, 200_000);
-    let (sin, cos) = phi_slack.sin_cos();
-    let p_slack = DVec2::new(length * sin, -length * cos);
-    let v_slack = DVec2::new(cos, sin) * speed(phi_slack);
-    let flight = |t: f64| {
-        let s = t - t_slack;
-        p_slack + v_slack * s + DVec2::new(0.0, -0.5 * G * s * s)
-    };
+    // Slack at cos φ = (2 g L − v0²)/(3 g L) = −½, 120°, then the parabola.
+    let (t_slack, flight) = slack_flight(length, v0);
     // Where the parabola is L from the pivot again: bisection on the closed form.
     let (mut lo, mut hi) = (t_slack + 1e-3, t_slack + 2.0);
     assert!(

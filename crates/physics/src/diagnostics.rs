@@ -1,6 +1,6 @@
 //! What can be measured at an instant: energies by kind, momentum, and per-particle
 //! readouts. Conventions (`docs/scene-format.md`): uniform field and applied acceleration
-//! −m (g + a)·r, spring k (L − L0)²/2, gravitation −G m1 m2 / r, Coulomb k q1 q2 / r.
+//! −m (g + a)·r, spring k (L − L0)²/2, gravitation −G m1 m2 / r, Coulomb k q1 q2 / r (softened: [`crate::forces::pair`]).
 //!
 //! Fixed particles have no kinetic energy or momentum and no potential energy in the
 //! uniform field (they never move, so it would be a constant); pairs in which both are
@@ -8,7 +8,7 @@
 
 use glam::DVec2;
 
-use crate::forces::{ForceModel, coulomb, gravitation, uniform};
+use crate::forces::{ForceModel, pair, uniform};
 use crate::state::State;
 
 /// Energies at an instant, joules.
@@ -100,9 +100,11 @@ pub(crate) fn measure(forces: &ForceModel, state: &State) -> Diagnostics {
             }
             let r = forces.pair_distance(state.position[i], state.position[j]);
             if forces.tree.is_none() {
-                energy.gravitation += gravitation::potential(g, forces.mass[i], forces.mass[j], r);
+                energy.gravitation +=
+                    pair::gravitation_potential(g, forces.mass[i], forces.mass[j], r);
             }
-            energy.electrostatic += coulomb::potential(k, forces.charge[i], forces.charge[j], r);
+            energy.electrostatic +=
+                pair::coulomb_potential(k, forces.charge[i], forces.charge[j], r);
         }
     }
     Diagnostics {
@@ -136,7 +138,7 @@ fn tree_gravitation(forces: &ForceModel, state: &State, g: f64, theta: f64) -> f
     for (n, &i) in fixed.iter().enumerate() {
         for &j in &fixed[n + 1..] {
             let r = forces.pair_distance(x[i], x[j]);
-            both_fixed += gravitation::potential(g, forces.mass[i], forces.mass[j], r);
+            both_fixed += pair::gravitation_potential(g, forces.mass[i], forces.mass[j], r);
         }
     }
     all - both_fixed
@@ -200,8 +202,8 @@ pub(crate) fn potential_change(forces: &ForceModel, before: &[DVec2], after: &[D
             }
             let pair = |x: &[DVec2]| {
                 let r = forces.pair_distance(x[i], x[j]);
-                gravitation::potential(g, forces.mass[i], forces.mass[j], r)
-                    + coulomb::potential(k, forces.charge[i], forces.charge[j], r)
+                pair::gravitation_potential(g, forces.mass[i], forces.mass[j], r)
+                    + pair::coulomb_potential(k, forces.charge[i], forces.charge[j], r)
             };
             change += pair(after) - pair(before);
         }

@@ -4,7 +4,7 @@
 
 use glam::DVec2;
 
-use crate::forces::{coulomb, gravitation};
+use crate::forces::pair;
 use crate::scene::Scene;
 
 /// The fields at one point.
@@ -45,23 +45,25 @@ pub fn field_at(scene: &Scene, positions: &[DVec2], point: DVec2) -> FieldReadou
     } else {
         0.0
     };
-    // Softened as the pair laws are: √(r² + ε²), the plain distance without.
     let softening2 = world.softening * world.softening;
     for (particle, &x) in scene.particles.iter().zip(positions) {
-        let d = x - point;
-        let r = (d.length_squared() + softening2).sqrt();
+        // The laws the particles feel ([`pair`]), on a unit test mass and a unit test
+        // charge at `point`.
+        let r = pair::distance(point, x, softening2);
         if r == 0.0 {
             continue;
         }
-        // The laws the particles feel, with a unit test mass and a unit test charge.
-        let r3 = r * r * r;
+        let d = x - point;
         if g != 0.0 {
-            readout.gravity += d * (gravitation::strength(g, particle.mass, 1.0) / r3);
-            readout.gravitational_potential += gravitation::potential(g, particle.mass, 1.0, r);
+            let c = pair::pair_strength(g, 0.0, (1.0, 0.0), (particle.mass, 0.0));
+            readout.gravity += pair::force(d, c, softening2);
+            readout.gravitational_potential +=
+                pair::gravitation_potential(g, 1.0, particle.mass, r);
         }
         if k != 0.0 && particle.charge != 0.0 {
-            readout.electric -= d * (coulomb::strength(k, particle.charge, 1.0) / r3);
-            readout.electric_potential += coulomb::potential(k, particle.charge, 1.0, r);
+            let c = pair::pair_strength(0.0, k, (0.0, 1.0), (0.0, particle.charge));
+            readout.electric += pair::force(d, c, softening2);
+            readout.electric_potential += pair::coulomb_potential(k, 1.0, particle.charge, r);
         }
     }
     readout

@@ -1,5 +1,5 @@
-//! The direct sum of gravitation and Coulomb over every pair of a set of bodies, laid out
-//! for SIMD.
+//! The direct sum of gravitation and Coulomb ([`super::pair`]'s laws) over every pair of
+//! a set of bodies, laid out for SIMD.
 //!
 //! Each pair is visited once (the force on j is minus the force on i). The bodies are
 //! copied into structure-of-arrays form, and for each body i its partners j > i are
@@ -35,6 +35,7 @@
 use glam::DVec2;
 use pulp::{Arch, Simd, WithSimd};
 
+use super::pair;
 use crate::parallel::Workers;
 use crate::tuning::{BLOCKED_FROM, BLOCKS};
 
@@ -194,10 +195,10 @@ fn blocks(n: usize) -> Vec<usize> {
 #[inline]
 fn pull(i: (f64, f64, f64, f64, f64), j: (f64, f64, f64, f64, f64), softening2: f64) -> (f64, f64) {
     let ((xi, yi, gmi, kqi, moves_i), (xj, yj, mj, qj, moves_j)) = (i, j);
+    let plain = pulp::Scalar::new();
     let (dx, dy) = (xj - xi, yj - yi);
-    let r2 = dx * dx + dy * dy + softening2;
-    let strength = gmi * mj - kqi * qj;
-    let s = strength / (r2 * r2.sqrt());
+    let r2 = pair::softened_square(plain, dx, dy, softening2);
+    let s = pair::strength(plain, gmi, mj, kqi, qj) / pair::cube(plain, r2);
     let s = if moves_i + moves_j > 0.0 { s } else { 0.0 };
     (dx * s, dy * s)
 }
@@ -363,15 +364,15 @@ fn geometry<S: Simd, const FIXED: bool>(
 ) -> (S::f64s, S::f64s, S::f64s, S::f64s) {
     let dx = simd.sub_f64s(lanes::<S>(&b.x, j)[k], xi);
     let dy = simd.sub_f64s(lanes::<S>(&b.y, j)[k], yi);
-    let r2 = simd.add_f64s(
-        simd.add_f64s(simd.mul_f64s(dx, dx), simd.mul_f64s(dy, dy)),
-        simd.splat_f64s(b.softening2),
+    let r2 = pair::softened_square(simd, dx, dy, simd.splat_f64s(b.softening2));
+    let strength = pair::strength(
+        simd,
+        gmi,
+        lanes::<S>(&b.mass, j)[k],
+        kqi,
+        lanes::<S>(&b.charge, j)[k],
     );
-    let strength = simd.sub_f64s(
-        simd.mul_f64s(gmi, lanes::<S>(&b.mass, j)[k]),
-        simd.mul_f64s(kqi, lanes::<S>(&b.charge, j)[k]),
-    );
-    let cube = simd.mul_f64s(r2, simd.sqrt_f64s(r2));
+    let cube = pair::cube(simd, r2);
     if FIXED {
         let moves = simd.add_f64s(moves_i, lanes::<S>(&b.moves, j)[k]);
         let moving = simd.greater_than_f64s(moves, simd.splat_f64s(0.0));

@@ -1,11 +1,11 @@
 //! The smooth forces: everything that depends only on positions and velocities at an
-//! instant (impacts are impulses, handled by the contact code). One file per law; this
+//! instant (impacts are impulses, handled by the contact code). One file per law (the
+//! two pair laws share [`pair`]; [`direct`] and [`tree`] are two ways to sum them); this
 //! module owns the per-particle constants they read and sums them into accelerations.
 
-pub(crate) mod coulomb;
 pub(crate) mod direct;
-pub(crate) mod gravitation;
 pub(crate) mod normal;
+pub(crate) mod pair;
 mod response;
 pub(crate) mod spring;
 pub(crate) mod tree;
@@ -122,7 +122,7 @@ impl ForceModel {
     /// The distance the pair laws read between points `a` and `b`: √(r² + ε²), the
     /// plain distance when there is no softening (the same bits).
     pub fn pair_distance(&self, a: DVec2, b: DVec2) -> f64 {
-        (a.distance_squared(b) + self.softening2).sqrt()
+        pair::distance(a, b, self.softening2)
     }
 
     pub fn is_fixed(&self, i: usize) -> bool {

@@ -14,6 +14,7 @@
 
 use glam::DVec2;
 
+use super::pair;
 use super::spring::End;
 use super::{ForceModel, SpringLink};
 
@@ -28,7 +29,10 @@ impl ForceModel {
         self.interacting
             .iter()
             .filter(move |&&j| interacts && j != k)
-            .map(move |&j| (j, g * mk * self.mass[j] - coulomb * qk * self.charge[j]))
+            .map(move |&j| {
+                let c = pair::pair_strength(g, coulomb, (mk, qk), (self.mass[j], self.charge[j]));
+                (j, c)
+            })
             .filter(|&(_, c)| c != 0.0)
     }
 
@@ -72,9 +76,7 @@ impl ForceModel {
     /// laws and the springs alone give particle `k`.
     pub fn free_acceleration_of(&self, x: &[DVec2], v: &[DVec2], k: usize) -> DVec2 {
         let pairs = self.pair_partners(k).fold(DVec2::ZERO, |force, (j, c)| {
-            let d = x[j] - x[k];
-            let r2 = d.length_squared() + self.softening2;
-            force + d * (c / (r2 * r2.sqrt()))
+            force + pair::force(x[j] - x[k], c, self.softening2)
         });
         let springs = self
             .spring_partners(k)
@@ -130,10 +132,7 @@ impl ForceModel {
     pub fn displacement_change(&self, x: &[DVec2], k: usize, delta: DVec2, out: &mut [DVec2]) {
         let mut own = DVec2::ZERO;
         let moved = x[k] + delta;
-        let law = |d: DVec2| {
-            let r2 = d.length_squared() + self.softening2;
-            d / (r2 * r2.sqrt())
-        };
+        let law = |d: DVec2| pair::per_unit_strength(d, self.softening2);
         for (j, c) in self.pair_partners(k) {
             // The force on k from j is c d / r³ with d = x_j − x_k; on j, its opposite.
             let change = (law(x[j] - moved) - law(x[j] - x[k])) * c;
@@ -164,8 +163,9 @@ impl ForceModel {
 /// A pair law's M w for a partner `d` away (M = I/r³ − 3 d dᵀ/r⁵, r² = d² + ε²), per
 /// unit strength.
 fn pair_matrix(d: DVec2, softening2: f64, w: DVec2) -> DVec2 {
-    let r2 = d.length_squared() + softening2;
-    (w - d * (3.0 * d.dot(w) / r2)) / (r2 * r2.sqrt())
+    let plain = pulp::Scalar::new();
+    let r2 = pair::softened_square(plain, d.x, d.y, softening2);
+    (w - d * (3.0 * d.dot(w) / r2)) / pair::cube(plain, r2)
 }
 
 /// A spring's M w at positions `x` (M = k ((1 − L0/L) I + (L0/L) u uᵀ)).

@@ -33,6 +33,7 @@ use glam::DVec2;
 use pulp::{Simd, WithSimd};
 
 use super::direct::{LANES, lanes, sum_lanes};
+use super::pair;
 use crate::parallel::Workers;
 use crate::tuning::{LEAF, SPLIT_LEAVES, TREE_DEPTH};
 
@@ -461,7 +462,7 @@ fn far_term<S: Simd>(
     let splat = |value| simd.splat_f64s(value);
     let dx = sub(cx, splat(p.x));
     let dy = sub(cy, splat(p.y));
-    let r2 = add(add(mul(dx, dx), mul(dy, dy)), splat(softening2));
+    let r2 = pair::softened_square(simd, dx, dy, splat(softening2));
     let (qdx, qdy) = (add(mul(xx, dx), mul(xy, dy)), add(mul(xy, dx), mul(yy, dy)));
     let dqd = add(mul(dx, qdx), mul(dy, qdy));
     let inverse_r2 = simd.div_f64s(splat(1.0), r2);
@@ -497,13 +498,12 @@ fn near_term<S: Simd>(
     let dy = simd.sub_f64s(by, simd.splat_f64s(p.y));
     let d2 = simd.add_f64s(simd.mul_f64s(dx, dx), simd.mul_f64s(dy, dy));
     let other = simd.greater_than_f64s(d2, zero);
-    let r2 = simd.add_f64s(d2, simd.splat_f64s(softening2));
-    let r = simd.sqrt_f64s(r2);
+    let r2 = pair::softened_square(simd, dx, dy, simd.splat_f64s(softening2));
     if potential {
-        let value = simd.div_f64s(m, r);
+        let value = simd.div_f64s(m, simd.sqrt_f64s(r2));
         return (simd.select_f64s(other, value, zero), zero);
     }
-    let s = simd.div_f64s(m, simd.mul_f64s(r2, r));
+    let s = simd.div_f64s(m, pair::cube(simd, r2));
     let s = simd.select_f64s(other, s, zero);
     (simd.mul_f64s(dx, s), simd.mul_f64s(dy, s))
 }

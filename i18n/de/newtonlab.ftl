@@ -101,6 +101,7 @@ status-behind = läuft mit { $ratio }× der gewünschten Geschwindigkeit ({ $rea
 status-real-time = { $real }× Echtzeit
 status-paused = angehalten
 status-editing = Bearbeiten
+status-stopped = angehalten: { $failure }; gezeigt wird der letzte gültige Zustand
 
 ## Keys (F1)
 keys-title = Tasten
@@ -505,6 +506,7 @@ edit-set = { $what } ändern
 edit-add-graph = Graph hinzufügen
 edit-remove-graph = Graph entfernen
 edit-add-series = Kurve hinzufügen
+edit-remove-series = Kurve entfernen
 edit-set-x-axis = x-Achse ändern
 edit-set-time-scale = Zeitmaßstab ändern
 edit-set-integrator = Integrator ändern
@@ -536,6 +538,8 @@ graph-x-axis-now = x-Achse: { $quantity }
 graph-remove-series-hint = Diese Kurve entfernen
 impacts-go-to-hint = Den Lauf bei diesem Stoß zeigen
 units-comes-to = es ergibt { $value }
+units-not-a-number = „{ $text }“ ist keine Zahl: { $reason }; schreiben Sie eine Zahl oder eine Rechnung wie 2*pi oder sqrt(2)/2
+units-not-a-number-unit = „{ $text }“ ist keine Zahl: { $reason }; schreiben Sie eine Zahl oder eine Rechnung wie 2*pi oder sqrt(2)/2, mit einer Einheit wie { $units }
 file-cannot-read = '{ $path }' lässt sich nicht lesen: { $error }
 file-cannot-write = '{ $path }' lässt sich nicht schreiben: { $error }
 file-cannot-read-file = '{ $path }' lässt sich nicht lesen

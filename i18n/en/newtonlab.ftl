@@ -102,6 +102,7 @@ status-behind = running at { $ratio }× of the requested speed ({ $real }× real
 status-real-time = { $real }× real time
 status-paused = paused
 status-editing = editing
+status-stopped = stopped: { $failure }; showing the last good state
 
 ## Keys (F1)
 keys-title = Keys
@@ -506,6 +507,7 @@ edit-set = set { $what }
 edit-add-graph = add graph
 edit-remove-graph = remove graph
 edit-add-series = add series
+edit-remove-series = remove series
 edit-set-x-axis = set x axis
 edit-set-time-scale = set time scale
 edit-set-integrator = set integrator
@@ -537,6 +539,8 @@ graph-x-axis-now = x axis: { $quantity }
 graph-remove-series-hint = Remove this series
 impacts-go-to-hint = Show the run at this impact
 units-comes-to = it comes to { $value }
+units-not-a-number = "{ $text }" is not a number: { $reason }; write a number or arithmetic like 2*pi or sqrt(2)/2
+units-not-a-number-unit = "{ $text }" is not a number: { $reason }; write a number or arithmetic like 2*pi or sqrt(2)/2, with a unit such as { $units }
 file-cannot-read = cannot read '{ $path }': { $error }
 file-cannot-write = cannot write '{ $path }': { $error }
 file-cannot-read-file = cannot read '{ $path }'

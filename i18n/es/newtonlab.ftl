@@ -101,6 +101,7 @@ status-behind = funcionando a { $ratio }× de la velocidad pedida ({ $real }× t
 status-real-time = { $real }× tiempo real
 status-paused = en pausa
 status-editing = edición
+status-stopped = detenido: { $failure }; se muestra el último estado válido
 
 ## Keys (F1)
 keys-title = Teclas
@@ -505,6 +506,7 @@ edit-set = cambiar { $what }
 edit-add-graph = añadir gráfica
 edit-remove-graph = quitar gráfica
 edit-add-series = añadir serie
+edit-remove-series = quitar serie
 edit-set-x-axis = cambiar el eje x
 edit-set-time-scale = cambiar la escala de tiempo
 edit-set-integrator = cambiar el integrador
@@ -536,6 +538,8 @@ graph-x-axis-now = eje x: { $quantity }
 graph-remove-series-hint = Quitar esta serie
 impacts-go-to-hint = Mostrar la ejecución en este choque
 units-comes-to = da { $value }
+units-not-a-number = «{ $text }» no es un número: { $reason }; escriba un número o una operación como 2*pi o sqrt(2)/2
+units-not-a-number-unit = «{ $text }» no es un número: { $reason }; escriba un número o una operación como 2*pi o sqrt(2)/2, con una unidad como { $units }
 file-cannot-read = no se puede leer '{ $path }': { $error }
 file-cannot-write = no se puede escribir '{ $path }': { $error }
 file-cannot-read-file = no se puede leer '{ $path }'

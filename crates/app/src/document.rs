@@ -9,12 +9,14 @@
 
 use physics::Scene;
 
+use crate::edit::Edit;
+
 #[derive(Clone, Debug)]
 pub struct Document {
     scene: Scene,
     /// (what the change was, the scene before it)
-    undo: Vec<(String, Scene)>,
-    redo: Vec<(String, Scene)>,
+    undo: Vec<(Edit, Scene)>,
+    redo: Vec<(Edit, Scene)>,
     /// The file name (a path on the desktop, a name on the web), if saved or opened.
     pub path: Option<String>,
     /// What to call a scene that has no file (an example's title).
@@ -46,19 +48,19 @@ impl Document {
         &self.scene
     }
 
-    /// Changes the scene as one undoable step named `label`.
-    pub fn apply(&mut self, label: &str, change: impl FnOnce(&mut Scene)) {
+    /// Changes the scene as one undoable step, `edit`.
+    pub fn apply(&mut self, edit: Edit, change: impl FnOnce(&mut Scene)) {
         if !self.gesture {
-            self.undo.push((label.to_owned(), self.scene.clone()));
+            self.undo.push((edit, self.scene.clone()));
         }
         change(&mut self.scene);
         self.redo.clear();
     }
 
     /// Starts a gesture: the changes until [`Self::end_gesture`] undo as one step.
-    pub fn begin_gesture(&mut self, label: &str) {
+    pub fn begin_gesture(&mut self, edit: Edit) {
         if !self.gesture {
-            self.undo.push((label.to_owned(), self.scene.clone()));
+            self.undo.push((edit, self.scene.clone()));
             self.redo.clear();
             self.gesture = true;
         }
@@ -83,13 +85,13 @@ impl Document {
     }
 
     /// What Undo would undo.
-    pub fn undo_label(&self) -> Option<&str> {
-        self.undo.last().map(|(label, _)| label.as_str())
+    pub fn undo_edit(&self) -> Option<Edit> {
+        self.undo.last().map(|&(edit, _)| edit)
     }
 
     /// What Redo would redo.
-    pub fn redo_label(&self) -> Option<&str> {
-        self.redo.last().map(|(label, _)| label.as_str())
+    pub fn redo_edit(&self) -> Option<Edit> {
+        self.redo.last().map(|&(edit, _)| edit)
     }
 
     pub fn undo(&mut self) -> bool {
@@ -169,13 +171,14 @@ impl Document {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::edit::Object;
     use physics::Particle;
 
     #[test]
     fn undo_and_redo_without_limit() {
         let mut document = Document::new(Scene::new());
         for i in 0..500 {
-            document.apply("add", |scene| {
+            document.apply(Edit::Add(Object::Particle), |scene| {
                 scene.particles.push(Particle::new(format!("p{i}"), 1.0));
             });
         }
@@ -190,9 +193,9 @@ mod tests {
     #[test]
     fn a_gesture_is_one_step_and_a_new_change_clears_redo() {
         let mut document = Document::new(Scene::new().with_particle(Particle::new("a", 1.0)));
-        document.begin_gesture("move");
+        document.begin_gesture(Edit::MoveParticle);
         for x in 0..10 {
-            document.apply("move", |scene| {
+            document.apply(Edit::MoveParticle, |scene| {
                 scene.particles[0].position = [f64::from(x), 0.0].into();
             });
         }
@@ -203,13 +206,13 @@ mod tests {
             [0.0, 0.0].into(),
             "one step"
         );
-        document.apply("rename", |scene| scene.particles[0].name = "b".into());
+        document.apply(Edit::Rename, |scene| scene.particles[0].name = "b".into());
         assert!(!document.redo(), "redo cleared by a new change");
-        document.begin_gesture("nothing");
+        document.begin_gesture(Edit::MoveRamp);
         document.end_gesture();
         assert_eq!(
-            document.undo_label(),
-            Some("rename"),
+            document.undo_edit(),
+            Some(Edit::Rename),
             "an empty gesture leaves no step"
         );
     }

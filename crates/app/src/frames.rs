@@ -119,7 +119,7 @@ impl App {
                     self.frame_times.len(),
                     mean * 1000.0,
                     self.time(),
-                    self.runner.achieved,
+                    self.runner.achieved.unwrap_or(f64::NAN),
                 );
             }
         }
@@ -135,7 +135,7 @@ impl App {
             let percentile = |p: f64| times[((times.len() - 1) as f64 * p).round() as usize];
             let speed = self
                 .measured_from
-                .map_or(self.runner.achieved, |(from, t)| {
+                .map_or(self.runner.achieved.unwrap_or(f64::NAN), |(from, t)| {
                     (self.time() - t) / now.duration_since(from).as_secs_f64()
                 });
             #[expect(

@@ -14,6 +14,7 @@ use physics::{Endpoint, FieldRef, Rule, Scene, Section, Vector, check_value};
 use crate::action::Action;
 use crate::canvas::Selection;
 use crate::document::Document;
+use crate::edit::Edit;
 use crate::format;
 use crate::i18n::{Arg, tr, tr_with};
 use crate::run_loop::Runner;
@@ -221,7 +222,7 @@ fn vector_field(
 /// problem's message otherwise.
 fn try_apply(
     document: &mut Document,
-    label: &str,
+    edit: Edit,
     field: FieldRef,
     change: impl FnOnce(&mut Scene),
 ) -> Result<(), String> {
@@ -234,7 +235,7 @@ fn try_apply(
     {
         return Err(problem.message);
     }
-    document.apply(label, |scene| *scene = candidate);
+    document.apply(edit, |scene| *scene = candidate);
     Ok(())
 }
 
@@ -247,7 +248,7 @@ pub fn ui(
     runner: &Runner,
     selection: &mut Option<Selection>,
 ) -> Option<Action> {
-    let editable = runner.simulation.is_none();
+    let editable = runner.is_editing();
     if !editable {
         live(ui, runner, *selection);
         ui.label(RichText::new(tr("inspector-running")).italics());
@@ -323,11 +324,11 @@ pub fn ui(
 
 /// The selected particle, rod or string as it is now in the run.
 fn live(ui: &mut Ui, runner: &Runner, selection: Option<Selection>) {
-    if let (Some(simulation), Some(Selection::Tie(k))) = (&runner.simulation, selection) {
+    if let (Some(simulation), Some(Selection::Tie(k))) = (runner.simulation(), selection) {
         live_tie(ui, simulation, k);
         return;
     }
-    let (Some(simulation), Some(Selection::Particle(i))) = (&runner.simulation, selection) else {
+    let (Some(simulation), Some(Selection::Particle(i))) = (runner.simulation(), selection) else {
         return;
     };
     if i >= simulation.len() {
@@ -406,7 +407,7 @@ fn name_field(
     )?;
     try_apply(
         document,
-        "rename",
+        Edit::Rename,
         FieldRef {
             section,
             field: "name",
@@ -572,7 +573,7 @@ fn table<T: Clone + 'static>(
         };
         let result = try_apply(
             document,
-            &format!("set {}", f.key),
+            Edit::Set { kind, key: f.key },
             FieldRef {
                 section,
                 field: f.key,

@@ -26,6 +26,7 @@ pub mod announcer;
 pub mod autosave;
 pub mod canvas;
 pub mod document;
+pub mod edit;
 pub mod files;
 pub mod format;
 pub mod help;
@@ -58,6 +59,7 @@ use web_time::Instant;
 pub use action::Action;
 pub use canvas::{FieldKind, Instrument, Selection, Tool};
 pub use document::Document;
+use edit::{Edit, Object};
 use files::{Choice, Files, Pending, Purpose};
 use i18n::{Arg, tr, tr_with};
 use plots::Graphs;
@@ -225,8 +227,7 @@ impl App {
     /// Simulated time, seconds (0 while editing).
     pub fn time(&self) -> f64 {
         self.runner
-            .simulation
-            .as_ref()
+            .simulation()
             .map_or(0.0, physics::Simulation::time)
     }
 
@@ -254,7 +255,7 @@ impl App {
             Action::Reset => self.reset(),
             Action::Fit => self.canvas.request_fit(),
             Action::Tool(tool) => {
-                if self.runner.simulation.is_none() {
+                if self.runner.is_editing() {
                     self.canvas.tool = tool;
                 }
             }
@@ -303,7 +304,7 @@ impl App {
     }
 
     fn refuse_while_invalid(&mut self) -> bool {
-        if self.invalid.is_empty() || self.runner.simulation.is_some() {
+        if self.invalid.is_empty() || !self.runner.is_editing() {
             return false;
         }
         let reasons = self.invalid.join("\n");
@@ -330,34 +331,34 @@ impl App {
     }
 
     pub fn undo(&mut self) {
-        if self.runner.simulation.is_none() && self.document.undo() {
+        if self.runner.is_editing() && self.document.undo() {
             self.selection = None;
         }
     }
 
     pub fn redo(&mut self) {
-        if self.runner.simulation.is_none() && self.document.redo() {
+        if self.runner.is_editing() && self.document.redo() {
             self.selection = None;
         }
     }
 
     /// Removes the selected object (and, for a particle, what refers to it).
     fn delete(&mut self) {
-        if self.runner.simulation.is_some() {
+        if !self.runner.is_editing() {
             return;
         }
         if let Some(selected) = self.selection.take() {
-            let label = match selected {
-                Selection::Particle(_) => "delete particle",
-                Selection::Spring(_) => "delete spring",
+            let edit = match selected {
+                Selection::Particle(_) => Edit::Delete(Object::Particle),
+                Selection::Spring(_) => Edit::Delete(Object::Spring),
                 Selection::Tie(i) => match self.document.scene().ties.get(i).map(|t| t.kind) {
-                    Some(physics::TieKind::String) => "delete string",
-                    _ => "delete rod",
+                    Some(physics::TieKind::String) => Edit::Delete(Object::String),
+                    _ => Edit::Delete(Object::Rod),
                 },
-                Selection::Ramp(_) => "delete ramp",
+                Selection::Ramp(_) => Edit::Delete(Object::Ramp),
             };
             self.document
-                .apply(label, |scene| scene.remove(selected.section()));
+                .apply(edit, |scene| scene.remove(selected.section()));
         }
     }
 
@@ -670,20 +671,6 @@ impl App {
 impl eframe::App for App {
     fn ui(&mut self, ui: &mut Ui, _frame: &mut eframe::Frame) {
         App::ui(self, ui);
-    }
-}
-
-/// An edit's label (`add particle`, `set mass`) in the user's language, for Undo and
-/// Redo: its message `edit-add-particle`, or for a field `set KEY` with the key as the
-/// file writes it; an edit without a message keeps its English label.
-pub(crate) fn edit_words(label: &str) -> String {
-    let id = format!("edit-{}", label.replace(' ', "-"));
-    if i18n::has(&id) {
-        return tr(&id);
-    }
-    match label.strip_prefix("set ") {
-        Some(key) => tr_with("edit-set", &[("what", Arg::Text(key))]),
-        None => label.to_owned(),
     }
 }
 

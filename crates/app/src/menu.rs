@@ -1,13 +1,13 @@
 //! The menu bar and the keyboard shortcuts: every command a menu item or a key gives,
 //! as an [`Action`].
 
+use crate::App;
 use crate::action::Action;
 use crate::canvas::{FieldKind, Instrument};
 use crate::i18n;
 use crate::i18n::{Arg, tr, tr_with};
 #[cfg(target_arch = "wasm32")]
 use crate::web;
-use crate::{App, edit_words};
 use crate::{action, picture, settings, toolbar};
 use egui::Ui;
 
@@ -76,16 +76,16 @@ impl App {
             .response
             .on_hover_text(tr("menu-file-hint"));
             ui.menu_button(tr("menu-edit"), |ui| {
-                let editable = self.runner.simulation.is_none();
-                let undo = self.document.undo_label().map_or(tr("menu-undo"), |l| {
-                    tr_with("menu-undo-what", &[("what", Arg::Text(&edit_words(l)))])
+                let editable = self.runner.is_editing();
+                let undo = self.document.undo_edit().map_or(tr("menu-undo"), |edit| {
+                    tr_with("menu-undo-what", &[("what", Arg::Text(&edit.words()))])
                 });
-                let can_undo = editable && self.document.undo_label().is_some();
+                let can_undo = editable && self.document.undo_edit().is_some();
                 item(ui, &undo, &tr("menu-undo-hint"), Action::Undo, can_undo);
-                let redo = self.document.redo_label().map_or(tr("menu-redo"), |l| {
-                    tr_with("menu-redo-what", &[("what", Arg::Text(&edit_words(l)))])
+                let redo = self.document.redo_edit().map_or(tr("menu-redo"), |edit| {
+                    tr_with("menu-redo-what", &[("what", Arg::Text(&edit.words()))])
                 });
-                let can_redo = editable && self.document.redo_label().is_some();
+                let can_redo = editable && self.document.redo_edit().is_some();
                 item(ui, &redo, &tr("menu-redo-hint"), Action::Redo, can_redo);
                 let can_delete = editable && self.selection.is_some();
                 item(

@@ -16,6 +16,7 @@ use physics::{Graph, Of, Quantity, Total};
 
 use crate::action::Action;
 use crate::document::Document;
+use crate::edit::Edit;
 use crate::format;
 use crate::i18n::{Arg, tr, tr_with};
 use crate::picture::Subject;
@@ -25,8 +26,8 @@ use crate::run_loop::Runner;
 /// Points drawn per series at most; the CSV export has every sample.
 const MAX_POINTS: usize = 4_000;
 
-/// An edit of one graph: its undo label and what it does.
-type Edit = (&'static str, Box<dyn FnOnce(&mut Graph)>);
+/// An edit of one graph: what it is, for undo, and what it does.
+type GraphEdit = (Edit, Box<dyn FnOnce(&mut Graph)>);
 
 /// The graph panel's own state: the choice being made in each "add" row.
 #[derive(Default)]
@@ -100,7 +101,7 @@ impl Graphs {
                     .timeline
                     .as_ref()
                     .and_then(|t| t.shown)
-                    .and(runner.simulation.as_ref())
+                    .and(runner.simulation())
                     .map(physics::Simulation::time);
                 if let Some(a) = self.graph(ui, document, (runner.recording.as_ref(), cursor), g) {
                     action = Some(a);
@@ -113,7 +114,7 @@ impl Graphs {
             .on_hover_text(tr("graph-add-hint"))
             .clicked()
         {
-            document.apply("add graph", |scene| {
+            document.apply(Edit::AddGraph, |scene| {
                 scene.graphs.push(Graph::against_time(Vec::<String>::new()));
             });
         }
@@ -136,7 +137,7 @@ impl Graphs {
         let names = document.scene().particle_names();
         let (x, series) = axes(graph);
         let mut action = None;
-        let mut change: Option<Edit> = None;
+        let mut change: Option<GraphEdit> = None;
         ui.horizontal(|ui| {
             ui.heading(graph.title.clone().unwrap_or_else(|| {
                 tr_with(
@@ -149,7 +150,7 @@ impl Graphs {
                 .on_hover_text(tr("graph-remove-hint"))
                 .clicked()
             {
-                change = Some(("remove graph", Box::new(|_| {})));
+                change = Some((Edit::RemoveGraph, Box::new(|_| {})));
             }
         });
         ui.horizontal_wrapped(|ui| {
@@ -187,7 +188,7 @@ impl Graphs {
                 .clicked()
                 && let Some(text) = chosen.clone()
             {
-                change = Some(("add series", Box::new(move |graph| graph.y.push(text))));
+                change = Some((Edit::AddSeries, Box::new(move |graph| graph.y.push(text))));
             }
             if ui
                 .add_enabled(chosen.is_some(), egui::Button::new(tr("graph-x-axis")))
@@ -195,7 +196,7 @@ impl Graphs {
                 .clicked()
                 && let Some(text) = chosen
             {
-                change = Some(("set x axis", Box::new(move |graph| graph.x = text)));
+                change = Some((Edit::SetXAxis, Box::new(move |graph| graph.x = text)));
             }
         });
         let ties: Vec<Quantity> = document
@@ -218,7 +219,7 @@ impl Graphs {
                     .clicked()
                 {
                     let text = quantity.to_string();
-                    change = Some(("add series", Box::new(move |graph| graph.y.push(text))));
+                    change = Some((Edit::AddSeries, Box::new(move |graph| graph.y.push(text))));
                 }
             }
         });
@@ -233,7 +234,10 @@ impl Graphs {
                     .on_hover_text(tr("graph-use-time-hint"))
                     .clicked()
                 {
-                    change = Some(("set x axis", Box::new(|graph| "t".clone_into(&mut graph.x))));
+                    change = Some((
+                        Edit::SetXAxis,
+                        Box::new(|graph| "t".clone_into(&mut graph.x)),
+                    ));
                 }
             }
             for (k, q) in series.iter().enumerate() {
@@ -243,7 +247,7 @@ impl Graphs {
                     .clicked()
                 {
                     change = Some((
-                        "remove series",
+                        Edit::RemoveSeries,
                         Box::new(move |graph| {
                             graph.y.remove(k);
                         }),
@@ -253,7 +257,7 @@ impl Graphs {
         });
         if let Some((what, edit)) = change {
             document.apply(what, |scene| {
-                if what == "remove graph" {
+                if what == Edit::RemoveGraph {
                     scene.graphs.remove(g);
                 } else {
                     edit(&mut scene.graphs[g]);
@@ -364,7 +368,7 @@ pub fn impact_marks(recording: &Recording, series: &[Quantity]) -> Vec<f64> {
 /// values after a failure.
 fn readouts(ui: &mut Ui, runner: &Runner) {
     ui.heading(tr("readout-heading"));
-    let energy = match (&runner.simulation, &runner.failure, &runner.recording) {
+    let energy = match (runner.simulation(), &runner.failure, &runner.recording) {
         (Some(_), Some(_), Some(recording)) => {
             ui.label(tr("readout-failed"));
             let get = |t| recording.last_total(t).unwrap_or(f64::NAN);
@@ -402,8 +406,7 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
     // unaccounted, the numerical error (the integrator's, and the position correction
     // of piles), as a share of the energy at Play (in joules when that was 0).
     let ledger = runner
-        .simulation
-        .as_ref()
+        .simulation()
         .and_then(physics::Simulation::ledger)
         .unwrap_or_default();
     let residual_joules = energy.total + ledger.total() - start;
@@ -432,8 +435,7 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
             rows.push((tr("readout-friction"), format::number(ledger.friction)));
             rows.push((tr("readout-impacts"), format::number(ledger.impacts)));
             if runner
-                .simulation
-                .as_ref()
+                .simulation()
                 .is_some_and(|s| !s.tie_names().is_empty())
             {
                 // Listed so that nobody looks for them: constraints do no work.

@@ -23,7 +23,7 @@ impl App {
                 }
                 ui.colored_label(
                     egui::Color32::from_rgb(200, 30, 30),
-                    format!("stopped: {failure}; showing the last good state"),
+                    tr_with("status-stopped", &[("failure", Arg::Text(failure))]),
                 );
                 return;
             }
@@ -32,7 +32,7 @@ impl App {
                 (true, Some(fraction)) => {
                     let (ratio, real) = (
                         i18n::decimal(fraction, 2),
-                        i18n::decimal(self.runner.achieved, 2),
+                        i18n::decimal(fraction * time_scale, 2),
                     );
                     ui.colored_label(
                         egui::Color32::from_rgb(190, 110, 0),
@@ -43,10 +43,11 @@ impl App {
                     );
                 }
                 (true, None) => {
-                    let real = i18n::decimal(self.runner.achieved, 2);
+                    // Before the first measurement, the speed asked for.
+                    let real = i18n::decimal(self.runner.achieved.unwrap_or(time_scale), 2);
                     ui.label(tr_with("status-real-time", &[("real", Arg::Text(&real))]));
                 }
-                (false, _) if self.runner.simulation.is_some() => {
+                (false, _) if !self.runner.is_editing() => {
                     ui.label(tr("status-paused"));
                 }
                 (false, _) => {
@@ -58,7 +59,12 @@ impl App {
                 "status-physics-time",
                 &[(
                     "ms",
-                    Arg::Text(&i18n::decimal(self.runner.physics_per_frame * 1000.0, 1)),
+                    Arg::Text(
+                        &self
+                            .runner
+                            .physics_per_frame
+                            .map_or_else(|| "–".to_owned(), |t| i18n::decimal(t * 1000.0, 1)),
+                    ),
                 )],
             ))
             .on_hover_text(tr("status-physics-time-hint"));

@@ -2,6 +2,7 @@
 
 use crate::App;
 use crate::action::Action;
+use crate::edit::Edit;
 use crate::i18n::{Arg, tr, tr_with};
 use crate::recording::Recording;
 use crate::{canvas, format, stopwatch};
@@ -19,8 +20,7 @@ impl App {
         let (end, shown) = (timeline.end, timeline.shown);
         let step = self
             .runner
-            .simulation
-            .as_ref()
+            .simulation()
             .map_or(0.0, physics::Simulation::time_step);
         ui.horizontal(|ui| {
             let back = ui
@@ -72,19 +72,19 @@ impl App {
 
     /// Turns the moment shown into the scene's initial conditions (undoable).
     pub(crate) fn edit_from_here(&mut self) {
-        let Some(simulation) = &self.runner.simulation else {
+        let Some(simulation) = self.runner.simulation() else {
             return;
         };
         let saved = simulation.saved_state(self.document.scene());
         self.runner.reset();
         self.document
-            .apply("edit from here", |scene| *scene = saved);
+            .apply(Edit::EditFromHere, |scene| *scene = saved);
         self.selection = None;
     }
 
     /// Lets the stopwatch see the run's events since the last frame.
     pub(crate) fn time_stopwatch(&mut self) {
-        let Some(simulation) = &self.runner.simulation else {
+        let Some(simulation) = self.runner.simulation() else {
             self.stopwatch.forget_run();
             return;
         };

@@ -7,6 +7,7 @@ use physics::{Follow, Integrator, Rule, check_value};
 use crate::action::Action;
 use crate::canvas::{Canvas, Tool};
 use crate::document::Document;
+use crate::edit::Edit;
 use crate::i18n::tr;
 use crate::run_loop::Runner;
 
@@ -24,7 +25,7 @@ pub fn ui(
     compact: bool,
 ) -> Option<Action> {
     let mut action = None;
-    let editable = runner.simulation.is_none();
+    let editable = runner.is_editing();
     let settings = document.scene().simulation.clone();
     ui.horizontal_wrapped(|ui| {
         // Projector mode keeps the run controls only: the tools, the method and the
@@ -85,10 +86,10 @@ pub fn ui(
             )
             .on_hover_text(tr("toolbar-time-scale-hint"));
         if slider.drag_started() {
-            document.begin_gesture("set time scale");
+            document.begin_gesture(Edit::SetTimeScale);
         }
         if slider.changed() && time_scale.to_bits() != settings.time_scale.to_bits() {
-            document.apply("set time scale", |scene| {
+            document.apply(Edit::SetTimeScale, |scene| {
                 scene.simulation.time_scale = time_scale;
             });
         }
@@ -110,7 +111,7 @@ pub fn ui(
                             .on_hover_text(method.describe())
                             .clicked()
                         {
-                            document.apply("set integrator", |scene| {
+                            document.apply(Edit::SetIntegrator, |scene| {
                                 scene.simulation.integrator = method;
                             });
                         }
@@ -143,7 +144,7 @@ pub fn ui(
             }
             match parsed {
                 Ok(v) if response.lost_focus() && v.to_bits() != settings.time_step.to_bits() => {
-                    document.apply("set time step", |scene| scene.simulation.time_step = v);
+                    document.apply(Edit::SetTimeStep, |scene| scene.simulation.time_step = v);
                 }
                 Err(reason) => {
                     ui.colored_label(egui::Color32::from_rgb(200, 30, 30), reason.clone());

@@ -60,12 +60,14 @@ pub fn parse(text: &str, si: &str) -> Result<f64, String> {
     let (expression, factor) = split_unit(text, si);
     let value = evaluate(expression).map_err(|reason| {
         let units: Vec<&str> = units(si).iter().map(|(name, _)| *name).collect();
-        let hint = if units.is_empty() {
-            String::new()
+        let words = [("text", text), ("reason", reason.as_str())];
+        if units.is_empty() {
+            crate::i18n::tr_text("units-not-a-number", &words)
         } else {
-            format!(", with a unit such as {}", units.join(", "))
-        };
-        format!("\"{text}\" is not a number: {reason}; write a number or arithmetic like 2*pi or sqrt(2)/2{hint}")
+            let units = units.join(", ");
+            let words = [words[0], words[1], ("units", units.as_str())];
+            crate::i18n::tr_text("units-not-a-number-unit", &words)
+        }
     })?;
     Ok(value * factor)
 }

@@ -605,13 +605,11 @@ impl Simulation {
     /// Adds the impacts applied in this step to the log, if one is kept.
     fn log_impacts(&mut self) {
         if let Some(log) = &mut self.impact_log {
-            let ramps = self.contacts.ramp_count();
             let w = &self.forces.inverse_mass;
             for applied in &self.contacts.applied {
                 let (particle, other) = match applied.impact {
                     Impact::Pair(i, j) => (i, ImpactTarget::Particle(j)),
-                    Impact::Obstacle(p, k) if k < ramps => (p, ImpactTarget::Ramp(k)),
-                    Impact::Obstacle(p, _) => (p, ImpactTarget::Wall),
+                    Impact::Obstacle(p, k) => (p, self.contacts.obstacle_target(k)),
                 };
                 let (u, e) = (applied.approach, applied.restitution);
                 log.push(ImpactRecord {

@@ -22,6 +22,7 @@ use super::tools::{add_link, add_ramp};
 use super::view::nice_length;
 use super::{Canvas, Frame, Selection, Tool};
 use crate::document::Document;
+use crate::edit::Edit;
 
 /// Keys read this frame while the canvas has the focus.
 #[derive(Clone, Copy, Debug, Default)]
@@ -181,12 +182,12 @@ fn cycle(scene: &Scene, selection: Option<Selection>, by: i32) -> Option<Selecti
 /// Moves the selected particle or ramp by `offset` metres, one undo step.
 fn nudge(document: &mut Document, selection: Option<Selection>, offset: DVec2) {
     match selection {
-        Some(Selection::Particle(i)) => document.apply("move particle", |scene| {
+        Some(Selection::Particle(i)) => document.apply(Edit::MoveParticle, |scene| {
             let particle = &mut scene.particles[i];
             particle.position =
                 super::keep_form(particle.position, particle.position.to_dvec2() + offset);
         }),
-        Some(Selection::Ramp(i)) => document.apply("move ramp", |scene| {
+        Some(Selection::Ramp(i)) => document.apply(Edit::MoveRamp, |scene| {
             let ramp = &mut scene.ramps[i];
             ramp.from = super::keep_form(ramp.from, ramp.from.to_dvec2() + offset);
             ramp.to = super::keep_form(ramp.to, ramp.to.to_dvec2() + offset);

@@ -298,7 +298,7 @@ impl Canvas {
         self.rect = rect;
         let frame = self.frame(document.scene(), runner);
         self.place_camera(document.scene(), &frame, runner);
-        let editable = runner.simulation.is_none();
+        let editable = runner.is_editing();
 
         // Zoom around the pointer, and pinch.
         if let Some(pointer) = response.hover_pos() {
@@ -374,7 +374,7 @@ impl Canvas {
         let rect = self.rect;
         if let Some(framing) = self.framing.take() {
             // The recent paths: the trails when drawn, and the recording's last seconds.
-            let recent = match (&runner.simulation, &runner.recording) {
+            let recent = match (runner.simulation(), &runner.recording) {
                 (Some(_), Some(recording)) => recording.recent_positions(RECENT_SECONDS),
                 _ => Vec::new(),
             };
@@ -391,7 +391,7 @@ impl Canvas {
                 }
             }
         }
-        if runner.simulation.is_none() {
+        if runner.is_editing() {
             self.followed = None;
             return;
         }
@@ -437,7 +437,7 @@ impl Canvas {
         {
             return Frame::new(scene, positions, velocities, None);
         }
-        if let Some(simulation) = &runner.simulation {
+        if let Some(simulation) = runner.simulation() {
             let needs_acceleration = self.overlays.acceleration || self.overlays.force;
             Frame::new(
                 scene,

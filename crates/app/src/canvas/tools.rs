@@ -11,6 +11,7 @@ use physics::{DVec2, Endpoint, Particle, Ramp, Scene, Spring, Tie, Vector};
 use super::view::nice_length;
 use super::{Canvas, Frame, Selection, Tool, VELOCITY_ARROW_SECONDS};
 use crate::document::Document;
+use crate::edit::{Edit, Object};
 
 /// A drag in progress.
 #[derive(Clone, Copy, Debug)]
@@ -197,16 +198,16 @@ impl Canvas {
                 None
             }
         });
-        let (drag, label, selected) = if let Some((index, _)) = velocity_tip {
+        let (drag, edit, selected) = if let Some((index, _)) = velocity_tip {
             (
                 Drag::Velocity { index },
-                "set velocity",
+                Edit::SetVelocity,
                 Selection::Particle(index),
             )
         } else if let Some((index, to)) = ramp_end {
             (
                 Drag::RampEnd { index, to },
-                "move ramp end",
+                Edit::MoveRampEnd,
                 Selection::Ramp(index),
             )
         } else {
@@ -216,19 +217,19 @@ impl Canvas {
                         index,
                         grab: at - frame.positions[index],
                     },
-                    "move particle",
+                    Edit::MoveParticle,
                     Selection::Particle(index),
                 ),
                 Some(Selection::Ramp(index)) => (
                     Drag::Ramp { index, last: at },
-                    "move ramp",
+                    Edit::MoveRamp,
                     Selection::Ramp(index),
                 ),
                 _ => return Drag::Pan,
             }
         };
         *selection = Some(selected);
-        document.begin_gesture(label);
+        document.begin_gesture(edit);
         drag
     }
 
@@ -245,7 +246,7 @@ impl Canvas {
             Some(Drag::Pan) => self.pan(delta),
             Some(Drag::Particle { index, grab }) => {
                 let (index, target) = (*index, snap(world - *grab));
-                document.apply("move particle", |scene| {
+                document.apply(Edit::MoveParticle, |scene| {
                     let particle = &mut scene.particles[index];
                     particle.position = keep_form(particle.position, target);
                 });
@@ -253,7 +254,7 @@ impl Canvas {
             Some(Drag::Ramp { index, last }) => {
                 let (index, delta) = (*index, world - *last);
                 *last = world;
-                document.apply("move ramp", |scene| {
+                document.apply(Edit::MoveRamp, |scene| {
                     let ramp = &mut scene.ramps[index];
                     ramp.from = keep_form(ramp.from, ramp.from.to_dvec2() + delta);
                     ramp.to = keep_form(ramp.to, ramp.to.to_dvec2() + delta);
@@ -261,7 +262,7 @@ impl Canvas {
             }
             Some(Drag::RampEnd { index, to }) => {
                 let (index, to) = (*index, *to);
-                document.apply("move ramp end", |scene| {
+                document.apply(Edit::MoveRampEnd, |scene| {
                     let ramp = &mut scene.ramps[index];
                     let end = if to { &mut ramp.to } else { &mut ramp.from };
                     *end = keep_form(*end, snap(world));
@@ -270,7 +271,7 @@ impl Canvas {
             Some(Drag::Velocity { index }) => {
                 let index = *index;
                 let velocity = (world - frame.positions[index]) / VELOCITY_ARROW_SECONDS;
-                document.apply("set velocity", |scene| {
+                document.apply(Edit::SetVelocity, |scene| {
                     let particle = &mut scene.particles[index];
                     particle.velocity = keep_form(particle.velocity, velocity);
                 });
@@ -328,7 +329,9 @@ impl Canvas {
         let name = document.unused_name("p");
         let mut particle = Particle::new(name, 1.0).position(position);
         particle.radius = nice_length(12.0 / self.view.pixels_per_metre).min(0.5);
-        document.apply("add particle", |scene| scene.particles.push(particle));
+        document.apply(Edit::Add(Object::Particle), |scene| {
+            scene.particles.push(particle);
+        });
         Selection::Particle(document.scene().particles.len() - 1)
     }
 }
@@ -347,29 +350,34 @@ pub(super) fn add_link(
     let from = from.as_str();
     if tool == Tool::Spring {
         let spring = Spring::new(document.unused_name("s"), from, target, 10.0, length);
-        document.apply("add spring", |scene| scene.springs.push(spring));
+        document.apply(Edit::Add(Object::Spring), |scene| {
+            scene.springs.push(spring);
+        });
         return Some(Selection::Spring(document.scene().springs.len() - 1));
     }
     if length <= 0.0 {
         return None;
     }
-    let (tie, label) = if tool == Tool::Rod {
+    let (tie, edit) = if tool == Tool::Rod {
         (
             Tie::rod(document.unused_name("rod"), from, target, length),
-            "add rod",
+            Edit::Add(Object::Rod),
         )
     } else {
         let name = document.unused_name("string");
-        (Tie::string(name, from, target, length), "add string")
+        (
+            Tie::string(name, from, target, length),
+            Edit::Add(Object::String),
+        )
     };
-    document.apply(label, |scene| scene.ties.push(tie));
+    document.apply(edit, |scene| scene.ties.push(tie));
     Some(Selection::Tie(document.scene().ties.len() - 1))
 }
 
 /// Adds a ramp from `from` to `to`.
 pub(super) fn add_ramp(document: &mut Document, from: DVec2, to: DVec2) -> Selection {
     let name = document.unused_name("r");
-    document.apply("add ramp", |scene| {
+    document.apply(Edit::Add(Object::Ramp), |scene| {
         scene.ramps.push(Ramp::new(name, from, to));
     });
     Selection::Ramp(document.scene().ramps.len() - 1)

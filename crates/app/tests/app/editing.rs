@@ -3,6 +3,7 @@
 use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
+use newtonlab_app::edit::Edit;
 use newtonlab_app::{Action, App, Selection};
 use physics::{DVec2, Graph, Particle, Scene, TieKind, World};
 
@@ -138,8 +139,8 @@ fn dragging_the_arrow_tip_sets_the_velocity() {
         "velocity {velocity}, expected {expected}"
     );
     assert_eq!(
-        app.document.undo_label(),
-        Some("set velocity"),
+        app.document.undo_edit(),
+        Some(Edit::SetVelocity),
         "one undo step"
     );
 }
@@ -187,12 +188,12 @@ fn the_rod_and_string_tools_tie_a_particle_to_a_point() {
         (length - anchor.length()).abs() < 1e-9,
         "as long as the drag: {length}"
     );
-    harness.state_mut().document.apply("graph", |scene| {
+    harness.state_mut().document.apply(Edit::AddGraph, |scene| {
         scene.graphs.push(Graph::against_time(["rod1.tension"]));
     });
     play_frames(&mut harness, 4);
     let app = harness.state();
-    let simulation = app.runner.simulation.as_ref().expect("running");
+    let simulation = app.runner.simulation().expect("running");
     let swung = simulation.positions()[0];
     assert!(swung.length() > 0.0, "it moved: {swung}");
     let pivot = app

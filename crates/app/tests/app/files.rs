@@ -4,9 +4,16 @@ use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use newtonlab_app::App;
+use newtonlab_app::edit::{Edit, Object};
 use physics::Scene;
 
 use crate::common::{example_scene, harness, one_ball};
+
+/// A mass typed in the inspector.
+const MASS: Edit = Edit::Set {
+    kind: "particle",
+    key: "mass",
+};
 
 #[test]
 fn save_then_open_round_trips_a_scene() {
@@ -47,7 +54,7 @@ fn save_then_open_round_trips_a_scene() {
     harness
         .state_mut()
         .document
-        .apply("test change", |s| s.particles.clear());
+        .apply(Edit::Delete(Object::Particle), |s| s.particles.clear());
     harness.get_by_label("File").click();
     harness.run();
     harness.get_by_label_contains("Open…").click();
@@ -100,7 +107,7 @@ fn the_examples_menu_opens_a_built_in_scene_after_asking_about_unsaved_changes()
     harness
         .state_mut()
         .document
-        .apply("change", |s| s.particles[0].mass = 3.0);
+        .apply(MASS, |s| s.particles[0].mass = 3.0);
     harness.get_by_label("Examples").click();
     harness.run();
     harness
@@ -153,7 +160,7 @@ fn unsaved_work_is_recovered_after_a_crash() {
     first
         .state_mut()
         .document
-        .apply("change", |s| s.particles[0].mass = 7.5);
+        .apply(MASS, |s| s.particles[0].mass = 7.5);
     first.state_mut().document.path = Some("/lessons/ball.toml".to_owned());
     first.run();
     let edited = first.state().document.scene().clone();
@@ -201,7 +208,7 @@ fn a_file_changed_on_disk_is_not_silently_overwritten() {
     harness
         .state_mut()
         .document
-        .apply("change", |s| s.particles[0].mass = 2.0);
+        .apply(MASS, |s| s.particles[0].mass = 2.0);
     harness.key_press_modifiers(Modifiers::COMMAND, Key::S);
     harness.run();
     harness.get_by_label_contains("has changed on disk since it was opened");

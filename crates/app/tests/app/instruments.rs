@@ -53,8 +53,7 @@ fn the_tape_measure_follows_a_ball_and_the_probe_reads_the_field_where_it_is() {
     let app = harness.state();
     let moved = app
         .runner
-        .simulation
-        .as_ref()
+        .simulation()
         .expect("running")
         .positions()
         .to_vec();

@@ -127,12 +127,7 @@ fn a_scene_built_and_run_with_the_keyboard_alone() {
     harness.run_steps(10);
     harness.key_press(Key::Space);
     harness.run();
-    let simulation = harness
-        .state()
-        .runner
-        .simulation
-        .as_ref()
-        .expect("it plays");
+    let simulation = harness.state().runner.simulation().expect("it plays");
     assert!(simulation.time() > 0.0, "Space played it");
     harness.get_by_label("total (J)");
     let energy = simulation.diagnostics().energy.total();

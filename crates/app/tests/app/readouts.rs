@@ -28,7 +28,7 @@ fn graphs_keep_the_whole_run_through_axis_changes_late_series_and_reset() {
     harness.run();
     harness.get_by_label("Reset").click();
     harness.run();
-    assert!(harness.state().runner.simulation.is_none(), "reset");
+    assert!(harness.state().runner.is_editing(), "reset");
 
     let (header, rows) = csv_rows(harness.state(), 0);
     assert_eq!(header, "t (s),ball.y (m),total_energy (J)");
@@ -97,7 +97,7 @@ fn the_readouts_show_what_damping_took_and_the_numerical_error() {
     let harness = played("spring-damped-light", 8);
     harness.get_by_label("taken by damping (J)");
     harness.get_by_label("numerical error");
-    let simulation = harness.state().runner.simulation.as_ref().expect("playing");
+    let simulation = harness.state().runner.simulation().expect("playing");
     let t = simulation.time();
     assert!(t > 0.5, "it played: t = {t}");
     let (gamma, omega) = (0.125_f64, (1.0_f64 - 0.125 * 0.125).sqrt());

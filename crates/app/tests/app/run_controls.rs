@@ -16,14 +16,7 @@ fn play_advances_time_and_pause_stops_it_and_reset_restores_the_scene() {
     assert!(t > 0.0, "simulated time advanced: {t}");
     // Real time: each test frame is 1/4 s, capped at 0.1 s of physics per frame.
     assert!((t - 0.4).abs() < 0.11, "about 4 frames' worth: {t}");
-    let moved = harness
-        .state()
-        .runner
-        .simulation
-        .as_ref()
-        .unwrap()
-        .positions()[0]
-        .x;
+    let moved = harness.state().runner.simulation().unwrap().positions()[0].x;
     assert!(
         (moved - t).abs() < 1e-9,
         "x = v t for the free ball: {moved} vs {t}"
@@ -38,7 +31,7 @@ fn play_advances_time_and_pause_stops_it_and_reset_restores_the_scene() {
     harness.get_by_label("Reset").click();
     harness.run();
     let app = harness.state();
-    assert!(app.runner.simulation.is_none(), "the simulation is gone");
+    assert!(app.runner.is_editing(), "the simulation is gone");
     assert_eq!(app.time(), 0.0, "time back to zero");
     assert_eq!(
         app.document.scene(),
@@ -71,7 +64,7 @@ fn play_is_refused_while_a_field_is_invalid() {
     harness.get_by_label("Play").click();
     harness.run();
     assert!(!harness.state().runner.playing, "not playing");
-    assert!(harness.state().runner.simulation.is_none(), "nothing built");
+    assert!(harness.state().runner.is_editing(), "nothing built");
     let message = harness.state().files.message.clone().unwrap_or_default();
     assert!(
         message.contains("mass must be greater than 0, got -2"),
@@ -104,7 +97,7 @@ fn a_failed_run_shows_its_last_good_state_and_offers_reset() {
     harness.get_by_label_contains("The run failed: the values of its last good sample.");
     harness.get_by_label("Reset the scene").click();
     harness.run();
-    assert!(harness.state().runner.simulation.is_none(), "reset");
+    assert!(harness.state().runner.is_editing(), "reset");
 }
 
 /// A scene's `[view]` follows a particle while it plays.
@@ -126,7 +119,7 @@ fn the_camera_follows_a_particle() {
     harness.get_by_label("Play").click();
     harness.run_steps(40);
     let app = harness.state();
-    let ball = app.runner.simulation.as_ref().unwrap().positions()[0];
+    let ball = app.runner.simulation().unwrap().positions()[0];
     assert!(ball.x > 50.0, "the ball went far: {ball}");
     assert!(
         app.canvas.view.center.distance(ball) < 3.0,
@@ -146,7 +139,7 @@ fn fit_frames_the_recent_path() {
     harness.key_press(Key::F);
     harness.run();
     let app = harness.state();
-    let now = app.runner.simulation.as_ref().unwrap().positions()[0];
+    let now = app.runner.simulation().unwrap().positions()[0];
     let earlier = now - DVec2::new(30.0, 0.0);
     assert!(now.x > 35.0, "the ball went on: {now}");
     for point in [now, earlier] {

@@ -2,6 +2,7 @@
 
 use egui::Key;
 use egui_kittest::kittest::Queryable;
+use newtonlab_app::edit::Edit;
 use newtonlab_app::{Action, App};
 
 use crate::common::{bits, example_scene, fresh_run, harness, play_frames};
@@ -21,7 +22,7 @@ fn the_timeline_goes_back_to_any_step_exactly_and_edits_from_there() {
     harness.key_press(Key::Comma);
     harness.run();
     let app = harness.state();
-    let shown = app.runner.simulation.as_ref().expect("shown");
+    let shown = app.runner.simulation().expect("shown");
     assert_eq!(app.runner.timeline.as_ref().unwrap().shown, Some(end - 1));
     assert!(
         bits(shown) == bits(&fresh(end - 1)),
@@ -32,7 +33,7 @@ fn the_timeline_goes_back_to_any_step_exactly_and_edits_from_there() {
     assert_eq!(harness.state().time(), 0.0, "the start");
     harness.key_press(Key::Period);
     harness.run();
-    let walked = harness.state().runner.simulation.as_ref().unwrap();
+    let walked = harness.state().runner.simulation().unwrap();
     assert!(
         bits(walked) == bits(&fresh(1)),
         "Step walks forward through the run"
@@ -40,7 +41,7 @@ fn the_timeline_goes_back_to_any_step_exactly_and_edits_from_there() {
     harness.get_by_label("Edit from here").click();
     harness.run();
     let app = harness.state();
-    assert!(app.runner.simulation.is_none(), "back to editing");
+    assert!(app.runner.is_editing(), "back to editing");
     let edited = app.document.scene();
     let expected = fresh(1);
     assert_eq!(
@@ -51,7 +52,7 @@ fn the_timeline_goes_back_to_any_step_exactly_and_edits_from_there() {
     for (particle, x) in edited.particles.iter().zip(expected.positions()) {
         assert_eq!(particle.position.to_dvec2(), *x, "{}", particle.name);
     }
-    assert_eq!(app.document.undo_label(), Some("edit from here"));
+    assert_eq!(app.document.undo_edit(), Some(Edit::EditFromHere));
     harness.state_mut().perform(Action::Undo);
     harness.run();
     assert_eq!(harness.state().document.scene(), &scene, "undone");
@@ -81,7 +82,7 @@ fn play_from_a_moment_gone_back_to_branches_the_run() {
         now > middle && now < end,
         "went on from the middle ({middle}), the old end ({end}) forgotten: {now} steps"
     );
-    let shown = runner.simulation.as_ref().expect("running");
+    let shown = runner.simulation().expect("running");
     assert!(
         bits(shown) == bits(&fresh_run(&scene, now)),
         "the same future"
@@ -97,7 +98,7 @@ fn play_from_a_moment_gone_back_to_branches_the_run() {
     play_frames(&mut harness, 2);
     let runner = &harness.state().runner;
     let steps = runner.timeline.as_ref().expect("kept").end;
-    let shown = runner.simulation.as_ref().expect("running");
+    let shown = runner.simulation().expect("running");
     assert!(
         steps > 0 && shown.time() > start,
         "played on from {start} s"

@@ -67,6 +67,7 @@ use self::surfaces::StartContacts;
 use crate::forces::ForceModel;
 use crate::parallel::Workers;
 use crate::scene::Scene;
+use crate::simulation::ImpactTarget;
 use crate::state::State;
 use crate::tuning::{FAT_RADII, FAT_STEPS, FAT_TRAVEL_RADII, TOUCHING};
 
@@ -75,7 +76,8 @@ use crate::tuning::{FAT_RADII, FAT_STEPS, FAT_TRAVEL_RADII, TOUCHING};
 pub(crate) enum Impact {
     /// Particles `i < j`.
     Pair(usize, usize),
-    /// A particle and an obstacle.
+    /// A particle and an obstacle, by its index among the contacts' obstacles (the ramps,
+    /// then the walls: [`Contacts::obstacle_target`] says which).
     Obstacle(usize, usize),
 }
 
@@ -204,9 +206,9 @@ impl Contacts {
         &self.coupled
     }
 
-    /// How many of the obstacles are ramps (the walls come after them).
-    pub fn ramp_count(&self) -> usize {
-        self.ramps
+    /// What obstacle `k` (of [`Impact::Obstacle`]) is in the scene: a ramp or a wall.
+    pub fn obstacle_target(&self, k: usize) -> ImpactTarget {
+        self.obstacles[k].target
     }
 
     /// How many of the obstacles, from the first, a particle whose reach lies in `reach`

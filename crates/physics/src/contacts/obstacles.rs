@@ -4,6 +4,7 @@
 use glam::DVec2;
 
 use crate::scene::Scene;
+use crate::simulation::ImpactTarget;
 
 /// The solid's geometry.
 #[derive(Clone, Copy, Debug)]
@@ -17,6 +18,8 @@ pub(crate) enum Shape {
 #[derive(Clone, Debug)]
 pub(crate) struct Obstacle {
     pub shape: Shape,
+    /// What it is in the scene: a ramp (by its index) or a wall of the bounds.
+    pub target: ImpactTarget,
     /// Coefficient of restitution of impacts, 0..=1.
     pub restitution: f64,
     /// Coefficient of friction, static and kinetic.
@@ -88,7 +91,9 @@ pub(crate) fn obstacles(scene: &Scene) -> Vec<Obstacle> {
     let mut obstacles: Vec<Obstacle> = scene
         .ramps
         .iter()
-        .map(|ramp| Obstacle {
+        .enumerate()
+        .map(|(k, ramp)| Obstacle {
+            target: ImpactTarget::Ramp(k),
             shape: Shape::Capsule {
                 a: ramp.from.to_dvec2(),
                 b: ramp.to.to_dvec2(),
@@ -108,6 +113,7 @@ pub(crate) fn obstacles(scene: &Scene) -> Vec<Obstacle> {
             (max, DVec2::NEG_Y),
         ] {
             obstacles.push(Obstacle {
+                target: ImpactTarget::Wall,
                 shape: Shape::HalfPlane { point, normal },
                 restitution: scene.world.restitution,
                 friction: 0.0,

@@ -528,6 +528,7 @@ mod tests {
         on_floor: u32,
     ) -> Vec<DVec2> {
         let obstacles = [Obstacle {
+            target: crate::ImpactTarget::Wall,
             shape: Shape::HalfPlane {
                 point: DVec2::new(0.0, floor),
                 normal: DVec2::Y,

@@ -1,58 +1,10 @@
 //! The command-line contract (`docs/cli.md`), exercised on the real binary.
 
+mod common;
+
 use std::process::{Command, Output};
 
-/// The binary, speaking English whatever the machine's locale (the messages follow
-/// `LC_ALL`, `LC_MESSAGES` and `LANG`; "C" names no language, so English).
-fn newtonlab(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_newtonlab"))
-        .args(args)
-        .env("LC_ALL", "C")
-        .output()
-        .expect("the binary runs")
-}
-
-fn stdout(output: &Output) -> String {
-    String::from_utf8(output.stdout.clone()).expect("UTF-8 output")
-}
-
-fn stderr(output: &Output) -> String {
-    String::from_utf8(output.stderr.clone()).expect("UTF-8 output")
-}
-
-/// A scene file in a fresh temporary directory.
-fn scene_file(name: &str, text: &str) -> (tempdir::Dir, String) {
-    let dir = tempdir::Dir::new();
-    let path = dir.path.join(name);
-    std::fs::write(&path, text).expect("the temporary directory is writable");
-    let path = path.to_string_lossy().into_owned();
-    (dir, path)
-}
-
-mod tempdir {
-    /// A directory removed when dropped.
-    pub struct Dir {
-        pub path: std::path::PathBuf,
-    }
-
-    impl Dir {
-        pub fn new() -> Self {
-            use std::sync::atomic::{AtomicU32, Ordering};
-            static COUNTER: AtomicU32 = AtomicU32::new(0);
-            let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-            let path =
-                std::env::temp_dir().join(format!("newtonlab-cli-{}-{n}", std::process::id()));
-            std::fs::create_dir_all(&path).expect("the temporary directory can be made");
-            Self { path }
-        }
-    }
-
-    impl Drop for Dir {
-        fn drop(&mut self) {
-            let _ = std::fs::remove_dir_all(&self.path);
-        }
-    }
-}
+use common::{newtonlab, scene_file, stderr, stdout, tempdir};
 
 /// The README's example command: the undamped spring for 20 s sampled every 0.1 s, and
 /// its x against the closed form 10 + 5 cos t.

@@ -1,12 +1,15 @@
 //! A thousand balls settling in a box: resting contact at scale.
 
-use physics::{Simulation, example, generated};
+mod common;
+
+use common::example_scene;
+use physics::{Simulation, generated};
 
 /// The example file is the generator's output, so the benchmark (which generates pits of
 /// any size) and the example measure the same scene.
 #[test]
 fn the_example_is_the_generated_pit() {
-    let scene = example("ball-pit").unwrap().scene().unwrap();
+    let scene = example_scene("ball-pit");
     assert_eq!(
         scene,
         generated::ball_pit(1000),
@@ -36,7 +39,7 @@ fn largest_overlap(simulation: &Simulation) -> f64 {
 /// than 1 % after 10 s (measured: 0.48 %); and the pile has come to rest.
 #[test]
 fn the_ball_pit_settles() {
-    let scene = example("ball-pit").unwrap().scene().unwrap();
+    let scene = example_scene("ball-pit");
     let mut simulation = Simulation::new(&scene).unwrap();
     let initial = simulation.diagnostics().energy.total();
     let (mut worst_rise, mut previous, mut worst_during): (f64, f64, f64) = (0.0, initial, 0.0);

@@ -1,16 +1,10 @@
 //! Impacts against the impulse formulas and the paper's tables 4.3 and 4.5, Newton's
 //! cradle, the 4.7 bounces, and tunnelling.
 
-use physics::{
-    Bounds, DVec2, Integrator, Particle, Ramp, Scene, Simulation, Vector, World, example,
-};
+mod common;
 
-fn load(name: &str) -> Scene {
-    example(name)
-        .expect("the example exists")
-        .scene()
-        .expect("the example loads")
-}
+use common::example_scene;
+use physics::{Bounds, DVec2, Integrator, Particle, Ramp, Scene, Simulation, Vector, World};
 
 /// Table 4.3: equal masses, A at 20 m/s, impact parameter b = 0.53 (rA + rB). With the
 /// contact normal n = (√(1 − 0.53²), 0.53), A' = v − (v·n) n = (5.618, −8.989) and
@@ -18,7 +12,7 @@ fn load(name: &str) -> Scene {
 /// kinetic energy conserved to 1e-12.
 #[test]
 fn paper_table_4_3() {
-    let mut simulation = Simulation::new(&load("collision")).unwrap();
+    let mut simulation = Simulation::new(&example_scene("collision")).unwrap();
     let before = simulation.diagnostics();
     simulation.step_to(1.0).unwrap();
     let (a, b) = (simulation.velocities()[0], simulation.velocities()[1]);
@@ -68,7 +62,7 @@ fn paper_table_4_3() {
 /// 10: the angle of incidence equals the angle of reflection.
 #[test]
 fn paper_table_4_5_reflections() {
-    let mut simulation = Simulation::new(&load("ramp-bounces")).unwrap();
+    let mut simulation = Simulation::new(&example_scene("ramp-bounces")).unwrap();
     // Each ball starts 3 m above its ramp's centre and touches after (3 − 0.3) / 10 s.
     simulation.step_to(0.3).unwrap();
     for (k, angle) in [-60.0_f64, -45.0, -30.0, 0.0, 30.0, 45.0, 60.0]
@@ -91,7 +85,7 @@ fn paper_table_4_5_reflections() {
 #[test]
 fn paper_4_7_bounces_return_to_the_start() {
     for (name, moving) in [("paper-gravitation", 0), ("paper-coulomb", 0)] {
-        let mut simulation = Simulation::new(&load(name)).unwrap();
+        let mut simulation = Simulation::new(&example_scene(name)).unwrap();
         let start = simulation.positions()[moving].x;
         let (mut turning_points, mut previous_vx, mut t) = (Vec::new(), 0.0, 0.0);
         while turning_points.len() < 4 && t < 60.0 {
@@ -112,7 +106,7 @@ fn paper_4_7_bounces_return_to_the_start() {
         // fall from r₀ to the contact distance r takes √(r₀³/2μ)(√(u(1−u)) + arccos √u),
         // u = r/r₀, μ = G(m₁ + m₂) or k|q₁q₂|(1/m₁ + 1/m₂). dopri5 at 1e-12 and the impact
         // search locate it to far better than 1e-9 s.
-        let scene = load(name);
+        let scene = example_scene(name);
         let fall_time = radial_fall_time(&scene);
         let mut simulation = Simulation::new(&scene).unwrap();
         simulation.record_impacts();
@@ -165,7 +159,7 @@ fn radial_fall_time(scene: &Scene) -> f64 {
 #[test]
 fn paper_4_7_with_rk4_meets_at_the_free_fall_instant_on_either_pair_sum() {
     for tree in [false, true] {
-        let mut scene = load("paper-gravitation").with_integrator(Integrator::Rk4, 1e-3);
+        let mut scene = example_scene("paper-gravitation").with_integrator(Integrator::Rk4, 1e-3);
         if tree {
             scene.simulation.pair_forces = physics::PairForces::Tree;
             scene.simulation.opening_angle = 1e-9;

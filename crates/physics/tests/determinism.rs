@@ -1,6 +1,9 @@
 //! Same scene, same bits: for any number of threads, and run after run (Box2D's and
 //! Rapier's determinism tests do the same across worker counts).
 
+mod common;
+
+use common::example_scene;
 use physics::{DVec2, Simulation, generated};
 
 /// Every coordinate of every position and velocity, as bits.
@@ -133,7 +136,7 @@ fn a_keyframe_steps_on_as_the_run_does() {
         ("newtons-cradle", 0.5),
     ];
     for (name, until) in examples {
-        let scene = physics::example(name).unwrap().scene().unwrap();
+        let scene = example_scene(name);
         let mut run = Simulation::new(&scene).unwrap();
         run.step_to(until).unwrap();
         let mut keyframe = run.keyframe();

@@ -1,11 +1,9 @@
 //! Constant-acceleration motion against x = x0 + v0 t + a t²/2 (the paper's 4.2).
 
-use physics::{DVec2, Integrator, Particle, Scene, Simulation, World, example};
+mod common;
 
-/// Relative error of `actual` against `expected`.
-fn relative(actual: f64, expected: f64) -> f64 {
-    (actual - expected).abs() / expected.abs()
-}
+use common::{example_scene, relative};
+use physics::{DVec2, Integrator, Particle, Scene, Simulation, World};
 
 fn kinematics(x0: DVec2, v0: DVec2, a: DVec2, t: f64) -> DVec2 {
     x0 + v0 * t + 0.5 * a * t * t
@@ -61,7 +59,7 @@ fn constant_acceleration_is_exact_with_verlet_rk4_and_pefrl() {
 /// formula; the paper reached 0.3–0.4 %, we require 1e-9 relative.
 #[test]
 fn paper_cartesian_table_within_1e_9() {
-    let scene = example("kinematics-cartesian").unwrap().scene().unwrap();
+    let scene = example_scene("kinematics-cartesian");
     let mut simulation = Simulation::new(&scene).unwrap();
     for t in [1.4, 2.2, 3.4, 4.5, 5.5, 6.2, 7.2, 8.1, 9.3, 10.2] {
         simulation.step_to(t).unwrap();
@@ -77,7 +75,7 @@ fn paper_cartesian_table_within_1e_9() {
 /// The paper's polar table: |r| at its times (its errors reached 1.02 %).
 #[test]
 fn paper_polar_table_within_1e_9() {
-    let scene = example("kinematics-polar").unwrap().scene().unwrap();
+    let scene = example_scene("kinematics-polar");
     let mut simulation = Simulation::new(&scene).unwrap();
     let polar = |m: f64, degrees: f64| DVec2::from_angle(degrees.to_radians()) * m;
     let (r0, v0, a) = (

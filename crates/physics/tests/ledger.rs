@@ -2,7 +2,10 @@
 //! what damping, friction and impacts take is the energy the motion lost, and the books
 //! close.
 
-use physics::{Bounds, Particle, Ramp, Scene, Simulation, Vector, World, example};
+mod common;
+
+use common::example_scene;
+use physics::{Bounds, Particle, Ramp, Scene, Simulation, Vector, World};
 
 /// The paper's damped spring (k = 1 N/m, m = 1 kg, b = 0.25 N·s/m, released 5 m out):
 /// x − 10 = 5 e^(−γt)(cos ωt + (γ/ω) sin ωt), v = −5 e^(−γt) ((γ² + ω²)/ω) sin ωt, with
@@ -13,7 +16,7 @@ use physics::{Bounds, Particle, Ramp, Scene, Simulation, Vector, World, example}
 /// was 1.1e-7); nothing goes to friction or impacts.
 #[test]
 fn damping_takes_what_the_damped_oscillator_loses() {
-    let scene = example("spring-damped-light").unwrap().scene().unwrap();
+    let scene = example_scene("spring-damped-light");
     let mut simulation = Simulation::new(&scene).unwrap();
     simulation.keep_ledger();
     let (gamma, omega) = (0.125_f64, (1.0_f64 - 0.125 * 0.125).sqrt());

@@ -2,7 +2,10 @@
 //! along a frictionless ramp at θ a particle accelerates at g sin θ; with friction μ at
 //! g (sin θ − μ cos θ) while sliding, and not at all while |tan θ| ≤ μ.
 
-use physics::{DVec2, Particle, Ramp, Scene, Simulation, World, example};
+mod common;
+
+use common::example_scene;
+use physics::{DVec2, Particle, Ramp, Scene, Simulation, World};
 
 const G: f64 = 9.81;
 
@@ -34,7 +37,7 @@ fn ball_on_ramp_in(world: World, angle: f64, friction: f64) -> Scene {
 /// ramp, to 1e-9.
 #[test]
 fn paper_table_4_4_accelerations() {
-    let scene = example("ramp-slides").unwrap().scene().unwrap();
+    let scene = example_scene("ramp-slides");
     let mut simulation = Simulation::new(&scene).unwrap();
     let start: Vec<DVec2> = simulation.positions().to_vec();
     let t = 0.5;

@@ -3,6 +3,9 @@
 //! m ü = −k u − b u̇ with u = x − L0, u(0) = 5, u̇(0) = 0, m = k = 1:
 //! u(t) = 5 e^(−γt) (cos ωt + (γ/ω) sin ωt), γ = b/2, ω = √(1 − γ²).
 
+mod common;
+
+use common::example_scene;
 use physics::{DVec2, Integrator, Simulation, example};
 
 fn analytic(b: f64, t: f64) -> f64 {
@@ -49,7 +52,7 @@ fn undamped_spring_follows_the_cosine_within_1e_9() {
 /// Peaks of the undamped spring are at t = 2πk; the paper's Euler reached 15.850.
 #[test]
 fn undamped_spring_peaks_stay_at_15() {
-    let scene = example("spring-undamped").unwrap().scene().unwrap();
+    let scene = example_scene("spring-undamped");
     let mut simulation = Simulation::new(&scene).unwrap();
     for k in 1..=3 {
         let t = 2.0 * std::f64::consts::PI * f64::from(k);
@@ -72,7 +75,7 @@ fn damped_springs_follow_the_damped_oscillator_within_1e_8() {
 /// grown by the factor (1 + 1e-6)^20000 ≈ e^0.02 ≈ 1.0202, within 1e-4.
 #[test]
 fn explicit_euler_makes_the_undamped_spring_gain_energy() {
-    let mut scene = example("spring-undamped").unwrap().scene().unwrap();
+    let mut scene = example_scene("spring-undamped");
     scene.simulation.integrator = Integrator::Euler;
     let mut simulation = Simulation::new(&scene).unwrap();
     let start = simulation.diagnostics().energy.total();
@@ -182,7 +185,7 @@ fn a_damped_spring_keeps_angular_momentum_and_settles_on_the_circle_it_predicts(
 #[test]
 fn explicit_euler_at_a_frame_step_gives_the_papers_peak() {
     let h = 1.0 / 60.0;
-    let mut scene = example("spring-undamped").unwrap().scene().unwrap();
+    let mut scene = example_scene("spring-undamped");
     scene.simulation.integrator = Integrator::Euler;
     scene.simulation.time_step = h;
     let mut simulation = Simulation::new(&scene).unwrap();
@@ -287,7 +290,7 @@ fn a_bob_on_a_spring_bounces_off_a_wall_and_retraces_its_path() {
 #[test]
 fn verlet_follows_the_damped_oscillator_to_second_order() {
     for (name, b) in [("spring-damped-light", 0.25), ("spring-damped-heavy", 0.5)] {
-        let mut scene = example(name).unwrap().scene().unwrap();
+        let mut scene = example_scene(name);
         scene.simulation.integrator = Integrator::Verlet;
         let mut simulation = Simulation::new(&scene).unwrap();
         let mut worst: f64 = 0.0;

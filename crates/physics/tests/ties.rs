@@ -5,27 +5,12 @@
 //!
 //! Every run uses rk4 at the default 1 ms step unless it says otherwise.
 
+mod common;
+
+use common::{elliptic_k, run_to, simpson, simulation_at, start};
 use physics::{DVec2, Integrator, Particle, Scene, SceneFormat, Simulation, Tie, TieKind, World};
 
 const G: f64 = 9.81;
-
-/// K(k), the complete elliptic integral of the first kind, by the arithmetic–geometric
-/// mean: K = π / (2 AGM(1, √(1 − k²))), to rounding after a handful of iterations.
-fn elliptic_k(k: f64) -> f64 {
-    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
-    for _ in 0..20 {
-        (a, b) = (0.5 * (a + b), (a * b).sqrt());
-    }
-    std::f64::consts::PI / (2.0 * a)
-}
-
-fn start(scene: &Scene) -> Simulation {
-    Simulation::new(scene).expect("the scene is valid")
-}
-
-fn run_to(simulation: &mut Simulation, t: f64) {
-    simulation.step_to(t).expect("the run stays finite");
-}
 
 /// A bob of 1 kg on a rod of `length` from the origin, released at rest `angle` degrees
 /// from the downward vertical.
@@ -108,12 +93,6 @@ fn pendulum_keeps_the_elliptic_period(mass: f64, reversed: bool) {
         (tension - mass * G * theta.cos()).abs() < 1e-9,
         "tension {tension} N at release"
     );
-}
-
-fn simulation_at(scene: &Scene, t: f64) -> Simulation {
-    let mut simulation = start(scene);
-    run_to(&mut simulation, t);
-    simulation
 }
 
 /// A double pendulum of two 1 kg bobs on 1 m rods from the origin, the upper released
@@ -276,15 +255,6 @@ fn string_goes_slack_and_snaps_taut(length: f64) {
         radial(&after)
     );
     assert!(after.tensions()[0] > 0.0, "and pulling");
-}
-
-/// Simpson's rule with `n` (even) intervals.
-fn simpson(f: impl Fn(f64) -> f64, a: f64, b: f64, n: usize) -> f64 {
-    let h = (b - a) / n as f64;
-    let inner: f64 = (1..n)
-        .map(|i| f(a + h * i as f64) * if i % 2 == 1 { 4.0 } else { 2.0 })
-        .sum();
-    (f(a) + inner + f(b)) * h / 3.0
 }
 
 /// Newton's cradle hanging on strings: five touching equal balls on 4 m strings, the

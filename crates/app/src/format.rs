@@ -32,6 +32,12 @@ pub fn number(value: f64) -> String {
     }
 }
 
+/// `value` with exactly `decimals` decimals, in the app's decimal separator: a reading
+/// whose precision is known (a located instant to the microsecond), not trimmed.
+pub fn fixed(value: f64, decimals: usize) -> String {
+    local(format!("{value:.decimals$}"))
+}
+
 /// `text` with the decimal separator of the app's language.
 fn local(text: String) -> String {
     if crate::i18n::decimal_comma() {

@@ -43,6 +43,7 @@ pub mod stopwatch;
 pub mod timeline;
 pub mod toolbar;
 pub mod units;
+pub mod watching;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
 
@@ -298,8 +299,12 @@ impl App {
         if self.refuse_while_invalid() {
             return;
         }
-        if let Err(error) = self.runner.play(self.document.scene()) {
-            self.notify(error.report("the scene cannot run"));
+        match self.runner.play(self.document.scene()) {
+            Ok(()) => {
+                let now = self.time();
+                self.stopwatch.played(now);
+            }
+            Err(error) => self.notify(error.report("the scene cannot run")),
         }
     }
 
@@ -366,6 +371,11 @@ impl App {
     /// as `label` when it has no file.
     fn replace(&mut self, scene: Scene, path: Option<String>, label: Option<String>) {
         self.runner = Runner::default();
+        // Measurements are of the scene they were taken in.
+        self.stopwatch = stopwatch::Stopwatch::shown_as(self.stopwatch.shown);
+        self.canvas.instruments.tape = None;
+        self.canvas.instruments.protractor = None;
+        self.canvas.instruments.probe = None;
         self.canvas.open(&scene);
         self.document = Document::new(scene);
         self.document.label = label;
@@ -572,6 +582,7 @@ impl App {
         let real_dt = f64::from(ui.input(|i| i.unstable_dt));
         self.measure_frame(ui);
         let time_scale = self.document.scene().simulation.time_scale;
+        self.watch_for_stopwatch();
         self.runner.advance_after(
             real_dt,
             time_scale,

@@ -12,7 +12,7 @@
 
 use egui::Ui;
 use egui_plot::{AxisHints, Legend, Line, LineStyle, Plot, PlotPoints, VLine};
-use physics::{Graph, Of, Quantity, Total};
+use physics::{Graph, LinkOf, Of, Quantity, Total};
 
 use crate::action::Action;
 use crate::document::Document;
@@ -199,19 +199,24 @@ impl Graphs {
                 change = Some((Edit::SetXAxis, Box::new(move |graph| graph.x = text)));
             }
         });
-        let ties: Vec<Quantity> = document
-            .scene()
+        // Each rod's and string's angle, length and tension; each spring's angle and length.
+        let scene = document.scene();
+        let ties = scene
             .ties
             .iter()
-            .map(|t| Quantity::Tension(t.name.clone()))
-            .collect();
+            .flat_map(|t| LinkOf::ALL.map(|of| Quantity::Link(t.name.clone(), of)));
+        let springs = scene.springs.iter().flat_map(|s| {
+            [LinkOf::Angle, LinkOf::Length].map(|of| Quantity::Link(s.name.clone(), of))
+        });
+        let links: Vec<Quantity> = ties.chain(springs).collect();
         ui.horizontal_wrapped(|ui| {
             let totals = Total::ALL.into_iter().map(Quantity::Total);
-            for quantity in totals.chain(ties) {
-                let hint = tr(if matches!(quantity, Quantity::Tension(_)) {
-                    "graph-tension-hint"
-                } else {
-                    "graph-total-hint"
+            for quantity in totals.chain(links) {
+                let hint = tr(match quantity {
+                    Quantity::Link(_, LinkOf::Tension) => "graph-tension-hint",
+                    Quantity::Link(_, LinkOf::Angle) => "graph-angle-hint",
+                    Quantity::Link(_, LinkOf::Length) => "graph-length-hint",
+                    _ => "graph-total-hint",
                 });
                 if ui
                     .small_button(label(&quantity))

@@ -9,7 +9,9 @@
 //! halves as it grows. At a 1 ms step the first samples are 5 ms apart; a two-particle
 //! scene keeps that resolution for about three hours of simulated time.
 
-use physics::{DVec2, Diagnostics, ImpactRecord, Of, Quantity, Simulation, Total};
+use physics::{
+    Anchor, DVec2, Diagnostics, ImpactRecord, Link, LinkOf, Of, Quantity, Simulation, Total,
+};
 
 /// Numbers kept at most: 32 MiB of f64.
 pub const BUDGET: usize = 1 << 22;
@@ -20,12 +22,21 @@ const PER_PARTICLE: usize = 7;
 /// System numbers per sample, after the particles'.
 const TOTALS: [Total; 5] = Total::ALL;
 
-/// Where a quantity is in a sample: a number stored, or the speed from the velocity's
-/// two components.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Where a quantity is in a sample: a number stored, the speed from the velocity's two
+/// components, or a rod's, string's or spring's angle or length from its ends.
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Column {
     Plain(usize),
     Speed(usize),
+    Link([End; 2], LinkOf),
+}
+
+/// One end of a link in a sample: a particle's position columns (x, then y), or a fixed
+/// point.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum End {
+    Sampled(usize),
+    Fixed(DVec2),
 }
 
 #[derive(Clone, Debug)]
@@ -34,6 +45,8 @@ pub struct Recording {
     names: Vec<String>,
     /// The rods and strings at Play, whose tensions follow the particles' numbers.
     ties: Vec<String>,
+    /// Every rod, string and spring at Play, by name, with its ends.
+    links: Vec<(String, [Anchor; 2])>,
     /// Numbers per sample: t, then each particle's, each tie's tension, then the totals.
     width: usize,
     /// Samples, one after another.
@@ -65,6 +78,7 @@ impl Recording {
         let mut recording = Self {
             names: simulation.names().to_vec(),
             ties: simulation.tie_names().to_vec(),
+            links: links(simulation),
             width: 1
                 + PER_PARTICLE * simulation.len()
                 + simulation.tie_names().len()
@@ -198,9 +212,19 @@ impl Recording {
                     Of::KineticEnergy => Column::Plain(first + 6),
                 }
             }
-            Quantity::Tension(name) => {
+            Quantity::Link(name, LinkOf::Tension) => {
                 let k = self.ties.iter().position(|n| n == name)?;
                 Column::Plain(1 + PER_PARTICLE * self.names.len() + k)
+            }
+            Quantity::Link(name, of) => {
+                let (_, anchors) = self.links.iter().find(|(n, _)| n == name)?;
+                Column::Link(
+                    anchors.map(|anchor| match anchor {
+                        Anchor::Particle(i) => End::Sampled(1 + PER_PARTICLE * i),
+                        Anchor::Point(p) => End::Fixed(p),
+                    }),
+                    *of,
+                )
             }
             Quantity::Total(total) => {
                 let j = TOTALS.iter().position(|t| t == total)?;
@@ -215,6 +239,18 @@ impl Recording {
         match column {
             Column::Plain(c) => row[c],
             Column::Speed(c) => row[c].hypot(row[c + 1]),
+            Column::Link(ends, of) => {
+                let [from, to] = ends.map(|end| match end {
+                    End::Sampled(c) => DVec2::new(row[c], row[c + 1]),
+                    End::Fixed(p) => p,
+                });
+                match of {
+                    LinkOf::Angle => physics::angle_from_down(to - from),
+                    LinkOf::Length => from.distance(to),
+                    // Stored as a plain column (`Self::column`).
+                    LinkOf::Tension => f64::NAN,
+                }
+            }
         }
     }
 
@@ -271,6 +307,21 @@ impl Recording {
             .checked_sub(1)
             .and_then(|k| self.value(k, &Quantity::Total(total)))
     }
+}
+
+/// Every rod, string and spring of `simulation`, by name, with its ends.
+fn links(simulation: &Simulation) -> Vec<(String, [Anchor; 2])> {
+    let ties = (0..simulation.tie_names().len()).map(Link::Tie);
+    let springs = (0..simulation.spring_names().len()).map(Link::Spring);
+    ties.chain(springs)
+        .map(|link| {
+            let name = match link {
+                Link::Tie(k) => &simulation.tie_names()[k],
+                Link::Spring(k) => &simulation.spring_names()[k],
+            };
+            (name.clone(), simulation.link_anchors(link))
+        })
+        .collect()
 }
 
 /// Particle `i`'s numbers in a sample's row.

@@ -13,6 +13,7 @@ use web_time::Instant;
 
 use crate::recording::Recording;
 use crate::timeline::Timeline;
+use crate::watching::Watching;
 
 /// The frame time the app keeps to while physics is behind: 30 frames per second.
 /// Physics gets what is left of each frame after drawing and the rest of the app
@@ -106,6 +107,8 @@ pub struct Runner {
     /// Whether the physics steps on while the app draws (desktop only: see
     /// [`Runner::step_ahead`]).
     pub ahead: bool,
+    /// The events the stopwatch waits for, located inside the steps.
+    pub watching: Option<Watching>,
 }
 
 impl Default for Runner {
@@ -128,6 +131,7 @@ impl Default for Runner {
             timeline: None,
             readout: RefCell::new(None),
             ahead: false,
+            watching: None,
         }
     }
 }
@@ -156,6 +160,17 @@ fn keep_step(
     }
 }
 
+/// One step, watching the stopwatch's events where there are any.
+fn step_watching(
+    simulation: &mut Simulation,
+    watching: &mut Option<Watching>,
+) -> Result<(), physics::SimulationError> {
+    match watching {
+        Some(watching) => watching.step(simulation),
+        None => simulation.step(),
+    }
+}
+
 /// What a run of steps came to.
 pub(crate) struct Taken {
     /// Simulated seconds.
@@ -174,11 +189,16 @@ pub(crate) struct Taken {
 /// each kept by [`keep_step`], until a step fails, `stop()` says so before a step, or a
 /// step ends past `budget` seconds of computing (so a frame always takes at least one
 /// step that is owed).
+#[expect(
+    clippy::too_many_arguments,
+    reason = "the run's parts, borrowed apart so either thread can lend them"
+)]
 fn take_steps(
     simulation: &mut Simulation,
     recording: &mut Option<Recording>,
     timeline: &mut Option<Timeline>,
     readout: &RefCell<Option<(u64, f64, Diagnostics)>>,
+    watching: &mut Option<Watching>,
     owed: &mut f64,
     budget: f64,
     stop: &dyn Fn() -> bool,
@@ -193,7 +213,7 @@ fn take_steps(
         out_of_time: false,
     };
     while *owed >= step * (1.0 - 1e-9) && !stop() {
-        if let Err(error) = simulation.step() {
+        if let Err(error) = step_watching(simulation, watching) {
             taken.failure = Some(error.to_string());
             break;
         }
@@ -321,7 +341,7 @@ impl Runner {
             return Ok(());
         }
         if let Run::Here(simulation) = &mut self.run {
-            match simulation.step() {
+            match step_watching(simulation, &mut self.watching) {
                 Ok(()) => keep_step(
                     simulation,
                     &mut self.recording,
@@ -383,6 +403,7 @@ impl Runner {
             &mut self.recording,
             &mut self.timeline,
             &self.readout,
+            &mut self.watching,
             &mut self.debt,
             budget,
             &|| false,
@@ -444,6 +465,7 @@ impl Runner {
                     recording: self.recording.take(),
                     timeline: self.timeline.take(),
                     readout: self.readout.take(),
+                    watching: self.watching.take(),
                 },
                 owed,
                 AHEAD_BUDGET,
@@ -478,6 +500,7 @@ impl Runner {
             self.recording = run.recording;
             self.timeline = run.timeline;
             self.readout = RefCell::new(run.readout);
+            self.watching = run.watching;
             if let Some(failure) = taken.failure {
                 self.failure = Some(failure);
                 self.playing = false;
@@ -589,6 +612,7 @@ mod ahead {
         pub recording: Option<Recording>,
         pub timeline: Option<Timeline>,
         pub readout: Option<(u64, f64, Diagnostics)>,
+        pub watching: Option<crate::watching::Watching>,
     }
 
     /// Steps under way on a thread of their own.
@@ -611,6 +635,7 @@ mod ahead {
                     &mut run.recording,
                     &mut run.timeline,
                     &readout,
+                    &mut run.watching,
                     &mut owed,
                     budget,
                     &|| stopped.load(Ordering::Relaxed),

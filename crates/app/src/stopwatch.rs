@@ -1,33 +1,64 @@
-//! The stopwatch: simulated time between two events, started and stopped by hand, by the
-//! next impact, or by a particle crossing the tape measure's line (a light gate).
+//! The stopwatch: simulated time between two events — pressing Play, an impact, a
+//! particle crossing the tape's line (a light gate), a typed event such as
+//! `rod.angle crosses 0 down`, or a press of Stop — each the Nth of its kind since the
+//! watch was armed, so a full period is the 1st and 3rd crossing of the vertical. In lap
+//! mode it keeps every interval of a run, with their mean.
 //!
-//! An impact's instant is the one the simulation located (to 1e-9 s). A crossing of the
-//! gate is found between two frames, its instant interpolated linearly between them: good
-//! to the motion's curvature over a frame, a few milliseconds of simulated time at most at
-//! real-time speed.
+//! Every instant is the one the simulation located: impacts to 1e-9 s, the gate and typed
+//! events inside their step to 1e-12 s (`watching.rs`), never between frames. It can be
+//! armed before Play.
 
-use physics::{DVec2, ImpactRecord};
+use physics::ImpactRecord;
+
+use crate::watching::{Cue, Wanted};
 
 /// What starts or stops the stopwatch.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Trigger {
     /// The Start and Stop buttons.
     Hand,
-    /// The next impact of any two things.
+    /// The run starting to play (a start only).
+    Play,
+    /// An impact of any two things.
     Impact,
-    /// A particle's centre crossing the tape measure's line.
+    /// A particle's centre crossing the tape measure's segment.
     Gate,
+    /// The typed event.
+    Event,
 }
 
 impl Trigger {
-    pub const ALL: [Self; 3] = [Self::Hand, Self::Impact, Self::Gate];
+    /// What may start it.
+    pub const STARTS: [Self; 5] = [
+        Self::Hand,
+        Self::Play,
+        Self::Impact,
+        Self::Gate,
+        Self::Event,
+    ];
+    /// What may stop it.
+    pub const STOPS: [Self; 4] = [Self::Hand, Self::Impact, Self::Gate, Self::Event];
 
     pub fn label(self) -> String {
         crate::i18n::tr(match self {
             Self::Hand => "stopwatch-by-hand",
-            Self::Impact => "stopwatch-next-impact",
+            Self::Play => "stopwatch-on-play",
+            Self::Impact => "stopwatch-impact",
             Self::Gate => "stopwatch-gate",
+            Self::Event => "stopwatch-event",
         })
+    }
+
+    /// Whether it comes in numbered occurrences (the first, the third).
+    pub fn counts(self) -> bool {
+        matches!(self, Self::Impact | Self::Gate | Self::Event)
+    }
+
+    fn of(cue: Cue) -> Self {
+        match cue {
+            Cue::Event => Self::Event,
+            Cue::Gate => Self::Gate,
+        }
     }
 }
 
@@ -36,7 +67,7 @@ impl Trigger {
 pub enum State {
     /// Showing the last interval (0 at first).
     Stopped,
-    /// Waiting for its start event.
+    /// Waiting for its start.
     Armed,
     /// Counting since this simulated time, seconds.
     Running(f64),
@@ -48,13 +79,30 @@ pub struct Stopwatch {
     pub shown: bool,
     pub start_on: Trigger,
     pub stop_on: Trigger,
+    /// Which occurrence of `start_on` starts it, counted from the arming (1 the first).
+    pub start_nth: u32,
+    /// Which occurrence of `stop_on` stops it, counted from the arming too, so that the
+    /// 1st and the 3rd crossing of a pendulum's vertical are a period.
+    pub stop_nth: u32,
+    /// The event `Trigger::Event` waits for, as typed.
+    pub event: String,
+    /// Whether it keeps going, a lap at every stop, until stopped by hand.
+    pub lap_mode: bool,
     pub state: State,
     /// The interval measured, seconds: the last one, or the running one so far.
     pub reading: f64,
+    /// The laps of lap mode, seconds.
+    pub laps: Vec<f64>,
+    /// Why the typed event cannot be watched, if it cannot.
+    pub problem: Option<String>,
+    /// Occurrences since the arming: of the start's kind, of the stop's kind.
+    counted: (u32, u32),
+    /// When the current lap began.
+    lap_from: f64,
     /// The impacts already seen (the recording's count).
     seen: usize,
-    /// The simulated time and positions at the last update, for the gate.
-    last: Option<(f64, Vec<DVec2>)>,
+    /// Whether a run was there at the last update.
+    had_run: bool,
 }
 
 impl Default for Stopwatch {
@@ -63,19 +111,40 @@ impl Default for Stopwatch {
             shown: false,
             start_on: Trigger::Hand,
             stop_on: Trigger::Hand,
+            start_nth: 1,
+            stop_nth: 1,
+            event: String::new(),
+            lap_mode: false,
             state: State::Stopped,
             reading: 0.0,
+            laps: Vec::new(),
+            problem: None,
+            counted: (0, 0),
+            lap_from: 0.0,
             seen: 0,
-            last: None,
+            had_run: false,
         }
     }
 }
 
 impl Stopwatch {
-    /// Start pressed at simulated time `now`: counting at once by hand, else armed.
+    /// A new stopwatch, its window `shown` or not (a new scene keeps the window, not the
+    /// reading).
+    pub fn shown_as(shown: bool) -> Self {
+        Self {
+            shown,
+            ..Self::default()
+        }
+    }
+
+    /// Start pressed at simulated time `now`: counting at once by hand, else armed (also
+    /// before Play: the run's first instants count).
     pub fn start(&mut self, now: f64) {
         self.reading = 0.0;
+        self.laps.clear();
+        self.counted = (0, 0);
         self.state = if self.start_on == Trigger::Hand {
+            self.lap_from = now;
             State::Running(now)
         } else {
             State::Armed
@@ -90,125 +159,128 @@ impl Stopwatch {
         self.state = State::Stopped;
     }
 
-    /// Back to zero, stopped.
+    /// Back to zero, stopped, its laps forgotten.
     pub fn reset(&mut self) {
         self.state = State::Stopped;
         self.reading = 0.0;
+        self.laps.clear();
     }
 
-    /// After the frame's physics: the run is at `now` with `positions`; `impacts` are all
-    /// the run's impacts so far; `gate` is the tape's line, if laid. Events since the
-    /// last update start or stop the watch at their own instants.
-    pub fn update(
-        &mut self,
-        now: f64,
-        positions: &[DVec2],
-        impacts: &[ImpactRecord],
-        gate: Option<(DVec2, DVec2)>,
-    ) {
-        if self.state == State::Stopped {
-            // Nothing to wait for: note what has happened, keep no copy of the positions.
-            self.seen = impacts.len();
-            self.last = None;
-            return;
+    /// The run started playing at simulated time `now`.
+    pub fn played(&mut self, now: f64) {
+        if self.state == State::Armed && self.start_on == Trigger::Play {
+            self.begin(now);
         }
-        let new_impacts: Vec<f64> = impacts.iter().skip(self.seen).map(|i| i.time).collect();
+    }
+
+    /// What the run must watch for it: the typed event and the gate, where they start or
+    /// stop it while it waits or runs.
+    pub fn wanted(&self, gate: Option<(physics::DVec2, physics::DVec2)>) -> Wanted {
+        let waiting = matches!(self.state, State::Armed | State::Running(_));
+        let uses = |trigger| waiting && (self.start_on == trigger || self.stop_on == trigger);
+        Wanted {
+            event: (uses(Trigger::Event) && !self.event.trim().is_empty())
+                .then(|| self.event.trim().to_owned()),
+            gate: gate.filter(|_| uses(Trigger::Gate)),
+        }
+    }
+
+    /// The mean lap, seconds, once there is one.
+    pub fn mean_lap(&self) -> Option<f64> {
+        (!self.laps.is_empty()).then(|| self.laps.iter().sum::<f64>() / self.laps.len() as f64)
+    }
+
+    /// After the frame's physics: the run is at `now`; `impacts` are all the run's
+    /// impacts so far; `cues` the gate's and the typed event's instants since the last
+    /// update. Each starts or stops the watch at its own instant, in time order.
+    pub fn update(&mut self, now: f64, impacts: &[ImpactRecord], cues: &[(Cue, f64)]) {
+        self.had_run = true;
+        let mut instants: Vec<(Trigger, f64)> = impacts
+            .iter()
+            .skip(self.seen)
+            .map(|i| (Trigger::Impact, i.time))
+            .chain(cues.iter().map(|&(cue, t)| (Trigger::of(cue), t)))
+            .collect();
         self.seen = impacts.len();
-        let mut crossings = match (&self.last, gate) {
-            (Some((then, before)), Some(line)) if *then < now => {
-                crossings(line, (*then, before), (now, positions))
-            }
-            _ => Vec::new(),
-        };
-        crossings.sort_by(f64::total_cmp);
-        let gate_used = self.start_on == Trigger::Gate || self.stop_on == Trigger::Gate;
-        self.last = gate_used.then(|| (now, positions.to_vec()));
-        let events = |trigger: Trigger| match trigger {
-            Trigger::Hand => Vec::new(),
-            Trigger::Impact => new_impacts.clone(),
-            Trigger::Gate => crossings.clone(),
-        };
-        if self.state == State::Armed
-            && let Some(&t) = events(self.start_on).first()
-        {
-            self.state = State::Running(t);
+        instants.sort_by(|a, b| a.1.total_cmp(&b.1));
+        for (trigger, t) in instants {
+            self.occurred(trigger, t);
         }
         if let State::Running(since) = self.state {
-            match events(self.stop_on).into_iter().find(|&t| t > since) {
-                Some(t) => {
+            self.reading = now - since;
+        }
+    }
+
+    /// `trigger` happened at `t`.
+    fn occurred(&mut self, trigger: Trigger, t: f64) {
+        if self.state == State::Stopped {
+            return;
+        }
+        let starts = trigger == self.start_on;
+        let stops = trigger == self.stop_on;
+        if starts {
+            self.counted.0 += 1;
+        }
+        if stops {
+            self.counted.1 += 1;
+        }
+        match self.state {
+            State::Armed if starts && self.counted.0 == self.start_nth => self.begin(t),
+            State::Running(since) if stops && t > since => {
+                let every = self.lap_every();
+                let due = self.counted.1 >= self.stop_nth
+                    && (self.counted.1 - self.stop_nth).is_multiple_of(every);
+                if !due {
+                    return;
+                }
+                if self.lap_mode {
+                    self.laps.push(t - self.lap_from);
+                    self.lap_from = t;
+                } else {
                     self.reading = t - since;
                     self.state = State::Stopped;
                 }
-                None => self.reading = now - since,
             }
+            _ => {}
         }
     }
 
-    /// Forgets the run (after Reset, or a new Play): impacts and positions start afresh.
+    fn begin(&mut self, t: f64) {
+        self.state = State::Running(t);
+        self.lap_from = t;
+    }
+
+    /// Occurrences of the stop's kind per lap: the span from the start to the stop when
+    /// one kind does both (the 1st to the 3rd crossing: every two), else every one.
+    fn lap_every(&self) -> u32 {
+        if self.start_on == self.stop_on && self.stop_nth > self.start_nth {
+            self.stop_nth - self.start_nth
+        } else {
+            1
+        }
+    }
+
+    /// Forgets the run (after Reset, or a new Play): impacts start afresh; a watch that
+    /// was running waits again for its start.
     pub fn forget_run(&mut self) {
+        if !self.had_run {
+            return;
+        }
+        self.had_run = false;
         self.seen = 0;
-        self.last = None;
+        self.counted = (0, 0);
         if matches!(self.state, State::Running(_)) {
             self.state = State::Stopped;
         }
     }
 }
 
-/// The instants at which a particle's centre crossed the segment `line` between the two
-/// samples (time, positions), interpolated linearly.
-fn crossings(line: (DVec2, DVec2), before: (f64, &[DVec2]), after: (f64, &[DVec2])) -> Vec<f64> {
-    let (a, b) = line;
-    let along = b - a;
-    if along.length_squared() == 0.0 {
-        return Vec::new();
-    }
-    let side = |x: DVec2| along.perp_dot(x - a);
-    let within = |x: DVec2| (0.0..=1.0).contains(&((x - a).dot(along) / along.length_squared()));
-    let ((t0, x0), (t1, x1)) = (before, after);
-    x0.iter()
-        .zip(x1)
-        .filter_map(|(&p, &q)| {
-            let (s0, s1) = (side(p), side(q));
-            if s0 == 0.0 || s0.signum() == s1.signum() {
-                return None;
-            }
-            let f = s0 / (s0 - s1);
-            let at = p.lerp(q, f);
-            within(at).then_some(t0 + (t1 - t0) * f)
-        })
-        .collect()
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
 
-    /// A ball falling through a horizontal gate at y = 0 between frames at 1.0 s
-    /// (y = 0.25) and 1.1 s (y = −0.75): crossing a quarter of the way, at 1.025 s.
-    #[test]
-    fn a_crossing_is_interpolated_between_frames() {
-        let gate = (DVec2::new(-1.0, 0.0), DVec2::new(1.0, 0.0));
-        let t = crossings(
-            gate,
-            (1.0, &[DVec2::new(0.0, 0.25)]),
-            (1.1, &[DVec2::new(0.0, -0.75)]),
-        );
-        assert_eq!(t.len(), 1);
-        assert!((t[0] - 1.025).abs() < 1e-12, "{t:?}");
-        // Beside the gate, no crossing.
-        let beside = crossings(
-            gate,
-            (1.0, &[DVec2::new(3.0, 0.25)]),
-            (1.1, &[DVec2::new(3.0, -0.75)]),
-        );
-        assert!(beside.is_empty());
-    }
-
-    /// Started by one impact and stopped by the next, the reading is the time between
-    /// their located instants, whatever the frames.
-    #[test]
-    fn impacts_start_and_stop_it_at_their_instants() {
-        let impact = |time| ImpactRecord {
+    fn impact(time: f64) -> ImpactRecord {
+        ImpactRecord {
             time,
             particle: 0,
             other: physics::ImpactTarget::Wall,
@@ -216,26 +288,81 @@ mod tests {
             normal_speed_before: 1.0,
             normal_speed_after: 1.0,
             kinetic_energy_lost: 0.0,
-        };
+        }
+    }
+
+    /// Started by one impact and stopped by the next, the reading is the time between
+    /// their located instants, whatever the frames.
+    #[test]
+    fn impacts_start_and_stop_it_at_their_instants() {
         let mut watch = Stopwatch {
             start_on: Trigger::Impact,
             stop_on: Trigger::Impact,
+            stop_nth: 2,
             ..Stopwatch::default()
         };
         watch.start(0.0);
         assert_eq!(watch.state, State::Armed);
-        let x = [DVec2::ZERO];
-        watch.update(0.5, &x, &[], None);
-        watch.update(1.0, &x, &[impact(0.8125)], None);
+        watch.update(0.5, &[], &[]);
+        watch.update(1.0, &[impact(0.8125)], &[]);
         assert_eq!(watch.state, State::Running(0.8125));
-        watch.update(1.5, &x, &[impact(0.8125)], None);
-        assert!(
-            (watch.reading - 0.6875).abs() < 1e-15,
-            "running: {}",
-            watch.reading
-        );
-        watch.update(2.0, &x, &[impact(0.8125), impact(1.90625)], None);
+        watch.update(1.5, &[impact(0.8125)], &[]);
+        assert_eq!(watch.reading.to_bits(), (1.5_f64 - 0.8125).to_bits());
+        watch.update(2.0, &[impact(0.8125), impact(1.90625)], &[]);
         assert_eq!(watch.state, State::Stopped);
         assert_eq!(watch.reading.to_bits(), (1.90625_f64 - 0.8125).to_bits());
+    }
+
+    /// A full period from a gate the bob crosses twice a period: the 1st and 3rd
+    /// crossings; in lap mode every two crossings make a lap, and their mean is the
+    /// period.
+    #[test]
+    fn the_first_and_third_crossing_are_a_period_and_laps_repeat_it() {
+        let crossings: Vec<(Cue, f64)> = (0..7).map(|k| (Cue::Gate, 0.5 + f64::from(k))).collect();
+        let mut watch = Stopwatch {
+            start_on: Trigger::Gate,
+            stop_on: Trigger::Gate,
+            stop_nth: 3,
+            ..Stopwatch::default()
+        };
+        watch.start(0.0);
+        watch.update(10.0, &[], &crossings);
+        assert_eq!(watch.state, State::Stopped);
+        assert_eq!(
+            watch.reading.to_bits(),
+            2.0_f64.to_bits(),
+            "1st at 0.5, 3rd at 2.5"
+        );
+        watch.lap_mode = true;
+        watch.start(10.0);
+        let later: Vec<(Cue, f64)> = crossings.iter().map(|&(c, t)| (c, t + 10.0)).collect();
+        watch.update(20.0, &[], &later);
+        assert_eq!(watch.laps, vec![2.0, 2.0, 2.0], "laps of 2 crossings");
+        assert_eq!(watch.mean_lap(), Some(2.0));
+        assert!(
+            matches!(watch.state, State::Running(_)),
+            "until stopped by hand"
+        );
+    }
+
+    /// Armed before Play with "start on Play", it starts at the run's start.
+    #[test]
+    fn armed_before_play_it_starts_with_the_run() {
+        let mut watch = Stopwatch {
+            start_on: Trigger::Play,
+            stop_on: Trigger::Event,
+            event: "bob.vx crosses 0".to_owned(),
+            ..Stopwatch::default()
+        };
+        watch.start(0.0);
+        assert_eq!(watch.state, State::Armed);
+        assert!(
+            watch.wanted(None).event.is_some(),
+            "the event is watched while armed"
+        );
+        watch.played(0.0);
+        watch.update(1.2, &[], &[(Cue::Event, 1.0764)]);
+        assert_eq!(watch.state, State::Stopped);
+        assert_eq!(watch.reading.to_bits(), 1.0764_f64.to_bits());
     }
 }

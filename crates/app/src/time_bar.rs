@@ -5,6 +5,7 @@ use crate::action::Action;
 use crate::edit::Edit;
 use crate::i18n::{Arg, tr, tr_with};
 use crate::recording::Recording;
+use crate::watching::Watching;
 use crate::{canvas, format, stopwatch};
 use egui::Ui;
 
@@ -82,41 +83,75 @@ impl App {
         self.selection = None;
     }
 
+    /// Gives the run what the stopwatch waits for, before the frame's physics: the typed
+    /// event and the light gate (the tape's segment where it is now), watched inside
+    /// every step from here on.
+    pub(crate) fn watch_for_stopwatch(&mut self) {
+        let Some(simulation) = self.runner.simulation() else {
+            return;
+        };
+        let gate = self
+            .canvas
+            .instruments
+            .tape
+            .and_then(|tape| canvas::tape_ends(tape, simulation.positions()));
+        let wanted = self.stopwatch.wanted(gate);
+        if wanted.is_empty() {
+            self.runner.watching = None;
+            self.stopwatch.problem = None;
+            return;
+        }
+        if self.runner.watching.as_ref().map(|w| &w.wanted) == Some(&wanted) {
+            return;
+        }
+        match Watching::new(wanted, simulation) {
+            Ok(watching) => {
+                self.runner.watching = Some(watching);
+                self.stopwatch.problem = None;
+            }
+            Err(problem) => {
+                self.runner.watching = None;
+                self.stopwatch.problem = Some(problem);
+            }
+        }
+    }
+
     /// Lets the stopwatch see the run's events since the last frame.
     pub(crate) fn time_stopwatch(&mut self) {
         let Some(simulation) = self.runner.simulation() else {
             self.stopwatch.forget_run();
             return;
         };
-        let positions = simulation.positions();
-        let gate = self
-            .canvas
-            .instruments
-            .tape
-            .and_then(|tape| canvas::tape_ends(tape, positions));
+        let now = simulation.time();
+        let cues = self
+            .runner
+            .watching
+            .as_mut()
+            .map(Watching::take)
+            .unwrap_or_default();
         let impacts = self
             .runner
             .recording
             .as_ref()
             .map_or(&[][..], Recording::impacts);
-        self.stopwatch
-            .update(simulation.time(), positions, impacts, gate);
+        self.stopwatch.update(now, impacts, &cues);
     }
 
-    /// The stopwatch's window, when shown: the reading, Start/Stop and Reset, and what
-    /// starts and stops it.
+    /// The stopwatch's window, when shown: the reading (and the laps), Start/Stop and
+    /// Reset, what starts and stops it and which occurrence, the event it waits for, and
+    /// lap mode. At the canvas's lower left, clear of the readouts.
     pub(crate) fn stopwatch_window(&mut self, ui: &Ui) {
-        use stopwatch::{State, Trigger};
+        use stopwatch::State;
         let mut shown = self.stopwatch.shown;
         let now = self.time();
         egui::Window::new(tr("stopwatch-title"))
             .open(&mut shown)
             .resizable(false)
-            .default_pos(self.canvas.rect.right_top() + egui::vec2(-240.0, 12.0))
+            .default_pos(self.canvas.rect.left_bottom() + egui::vec2(12.0, -260.0))
             .show(ui.ctx(), |ui| {
                 let watch = &mut self.stopwatch;
                 ui.label(
-                    egui::RichText::new(format!("{:.4} s", watch.reading))
+                    egui::RichText::new(format!("{} s", format::fixed(watch.reading, 6)))
                         .monospace()
                         .size(22.0),
                 );
@@ -143,25 +178,88 @@ impl App {
                         watch.reset();
                     }
                 });
-                for (salt, trigger) in [
-                    ("stopwatch-start-on", &mut watch.start_on),
-                    ("stopwatch-stop-on", &mut watch.stop_on),
-                ] {
-                    ui.horizontal(|ui| {
-                        let text = ui.label(tr(salt));
-                        egui::ComboBox::from_id_salt(salt)
-                            .selected_text(trigger.label())
-                            .show_ui(ui, |ui| {
-                                for choice in Trigger::ALL {
-                                    ui.selectable_value(trigger, choice, choice.label());
-                                }
-                            })
-                            .response
-                            .labelled_by(text.id);
-                    });
-                }
+                triggers(ui, watch);
+                laps(ui, watch);
                 ui.label(egui::RichText::new(tr("stopwatch-note")).small());
             });
         self.stopwatch.shown = shown;
+    }
+}
+
+/// The stopwatch's choices: what starts and stops it, which occurrence, and the event.
+fn triggers(ui: &mut Ui, watch: &mut stopwatch::Stopwatch) {
+    use stopwatch::Trigger;
+    let rows = [
+        (
+            "stopwatch-start-on",
+            &Trigger::STARTS[..],
+            &mut watch.start_on,
+            &mut watch.start_nth,
+        ),
+        (
+            "stopwatch-stop-on",
+            &Trigger::STOPS[..],
+            &mut watch.stop_on,
+            &mut watch.stop_nth,
+        ),
+    ];
+    for (salt, choices, trigger, nth) in rows {
+        ui.horizontal(|ui| {
+            let text = ui.label(tr(salt));
+            egui::ComboBox::from_id_salt(salt)
+                .selected_text(trigger.label())
+                .show_ui(ui, |ui| {
+                    for &choice in choices {
+                        ui.selectable_value(trigger, choice, choice.label());
+                    }
+                })
+                .response
+                .labelled_by(text.id);
+            if trigger.counts() {
+                let label = ui.label(tr("stopwatch-nth"));
+                ui.add(egui::DragValue::new(nth).range(1..=999).speed(0.1))
+                    .labelled_by(label.id)
+                    .on_hover_text(tr("stopwatch-nth-hint"));
+            }
+        });
+    }
+    if watch.start_on == Trigger::Event || watch.stop_on == Trigger::Event {
+        ui.horizontal(|ui| {
+            let label = ui.label(tr("stopwatch-event-label"));
+            ui.add(
+                egui::TextEdit::singleline(&mut watch.event)
+                    .hint_text("rod.angle crosses 0 down")
+                    .desired_width(190.0),
+            )
+            .labelled_by(label.id)
+            .on_hover_text(tr("stopwatch-event-hint"));
+        });
+    }
+    if let Some(problem) = &watch.problem {
+        ui.colored_label(egui::Color32::from_rgb(200, 30, 30), problem);
+    }
+}
+
+/// Lap mode, and the laps with their mean.
+fn laps(ui: &mut Ui, watch: &mut stopwatch::Stopwatch) {
+    ui.checkbox(&mut watch.lap_mode, tr("stopwatch-lap-mode"))
+        .on_hover_text(tr("stopwatch-lap-mode-hint"));
+    if !watch.laps.is_empty() {
+        egui::ScrollArea::vertical()
+            .max_height(90.0)
+            .show(ui, |ui| {
+                for (k, lap) in watch.laps.iter().enumerate() {
+                    ui.monospace(format!("{:>3}  {} s", k + 1, format::fixed(*lap, 6)));
+                }
+            });
+        if let Some(mean) = watch.mean_lap() {
+            ui.monospace(tr_with(
+                "stopwatch-mean",
+                &[
+                    ("mean", Arg::Text(&format::fixed(mean, 6))),
+                    ("laps", Arg::Text(&watch.laps.len().to_string())),
+                ],
+            ));
+        }
     }
 }

@@ -21,14 +21,17 @@ pub(crate) struct RunArgs {
     /// Simulated time to run to, seconds.
     #[arg(long, value_name = "T", allow_negative_numbers = true)]
     until: f64,
-    /// Sampling interval, seconds: rows at t = 0, DT, 2·DT, … and at T.
-    #[arg(
-        long,
-        value_name = "DT",
-        default_value_t = 0.01,
-        allow_negative_numbers = true
-    )]
-    every: f64,
+    /// Sampling interval, seconds: rows at t = 0, DT, 2·DT, … and at T [default: 0.01,
+    /// or none with --events].
+    #[arg(long, value_name = "DT", allow_negative_numbers = true)]
+    every: Option<f64>,
+    /// A row at each instant EVENT happens, located inside its step to 1e-9 s or better:
+    /// `QUANTITY crosses VALUE`, optionally `up` or `down` (`Bob.vx crosses 0 down`).
+    /// May be given several times. Alone, the rows are the events'; with --every, both
+    /// kinds in time order and a last column `event` naming the event (empty on the
+    /// regular rows, which are those of a run without --events, bit for bit).
+    #[arg(long = "events", value_name = "EVENT")]
+    events: Vec<String>,
     /// Where to write the CSV; standard output when absent or `-`.
     #[arg(long, value_name = "FILE")]
     out: Option<String>,
@@ -55,12 +58,8 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
             &[("until", &args.until.to_string())],
         )));
     }
-    if !(args.every.is_finite() && args.every > 0.0) {
-        return Err(Failure::Input(say(
-            "cli-every-invalid",
-            &[("every", &args.every.to_string())],
-        )));
-    }
+    let events = events(args)?;
+    let every = every(args, &events)?;
     let scene = scene_source::load(&args.scene)?;
     let start = scene.simulation.start_time;
     if args.until < start {
@@ -76,12 +75,14 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         )));
     }
     let span = args.until - start;
-    if span / args.every > MAX_ROWS {
+    if let Some(every) = every
+        && span / every > MAX_ROWS
+    {
         return Err(Failure::Input(say(
             "cli-too-many-rows",
             &[
                 ("until", &args.until.to_string()),
-                ("every", &args.every.to_string()),
+                ("every", &every.to_string()),
                 ("rows", &MAX_ROWS.to_string()),
             ],
         )));
@@ -109,10 +110,18 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         }
         None => None,
     };
-    if let Some(note) = sampling_note(&scene.simulation, args.every) {
+    if let Some(note) = every.and_then(|every| sampling_note(&scene.simulation, every)) {
         eprintln!("{note}");
     }
-    let times = sample_times(start, args.until, args.every);
+    let watch = watch(events, &simulation)?;
+    let times = every.map_or_else(
+        || vec![start, args.until],
+        |every| sample_times(start, args.until, every),
+    );
+    let rows = Rows {
+        regular: every.is_some(),
+        watch,
+    };
     let sink: Box<dyn Write> = match args.out.as_deref() {
         None | Some("-") => Box::new(io::stdout().lock()),
         Some(path) => Box::new(std::fs::File::create(path).map_err(|error| {
@@ -123,7 +132,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         })?),
     };
     let mut out = BufWriter::new(sink);
-    let written = write_csv(&mut simulation, &times, &mut out, impacts.as_mut())
+    let written = write_csv(&mut simulation, &times, rows, &mut out, impacts.as_mut())
         .and_then(|outcome| out.flush().map(|()| outcome));
     if let Some(log) = impacts {
         log.finish()?;
@@ -141,6 +150,45 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         save_state(&simulation, &scene, path)?;
     }
     outcome
+}
+
+/// `--events`: each event as typed (trimmed) and as read.
+fn events(args: &RunArgs) -> Result<Vec<(String, physics::Event)>, Failure> {
+    args.events
+        .iter()
+        .map(|text| physics::Event::parse(text).map(|event| (text.trim().to_owned(), event)))
+        .collect::<Result<Vec<_>, String>>()
+        .map_err(|reason| Failure::Input(say("cli-event-invalid", &[("reason", &reason)])))
+}
+
+/// The sampling interval: `--every`, or 0.01 s unless there are events (then none).
+fn every(args: &RunArgs, events: &[(String, physics::Event)]) -> Result<Option<f64>, Failure> {
+    let every = match (args.every, events.is_empty()) {
+        (Some(every), _) => Some(every),
+        (None, true) => Some(0.01),
+        (None, false) => None,
+    };
+    match every {
+        Some(every) if !(every.is_finite() && every > 0.0) => Err(Failure::Input(say(
+            "cli-every-invalid",
+            &[("every", &every.to_string())],
+        ))),
+        _ => Ok(every),
+    }
+}
+
+/// The watch of `events` in `simulation`, with their names, if there are any.
+fn watch(
+    events: Vec<(String, physics::Event)>,
+    simulation: &Simulation,
+) -> Result<Option<(physics::Watch, Vec<String>)>, Failure> {
+    if events.is_empty() {
+        return Ok(None);
+    }
+    let (names, list): (Vec<String>, Vec<physics::Event>) = events.into_iter().unzip();
+    let watch = physics::Watch::new(&list, simulation)
+        .map_err(|reason| Failure::Input(say("cli-event-invalid", &[("reason", &reason)])))?;
+    Ok(Some((watch, names)))
 }
 
 /// `--save-state FILE`: the scene with the state reached, as a scene file.
@@ -215,29 +263,70 @@ fn sample_times(start: f64, until: f64, every: f64) -> Vec<f64> {
     times
 }
 
-/// Writes the header and a row per sample; a simulation failure ends the table after the
-/// last good row and becomes the outcome.
+/// What `run` writes rows of: the samples (`regular`), and the events of a watch with
+/// the names they were given.
+struct Rows {
+    regular: bool,
+    watch: Option<(physics::Watch, Vec<String>)>,
+}
+
+/// Writes the header and a row per sample and per event; a simulation failure ends the
+/// table after the last good row and becomes the outcome. Without regular rows `times`
+/// is only the start and the end.
 fn write_csv(
     simulation: &mut Simulation,
     times: &[f64],
+    mut rows: Rows,
     out: &mut impl Write,
     mut impacts: Option<&mut ImpactLog>,
 ) -> io::Result<Result<(), Failure>> {
     let ledger_start = simulation
         .ledger()
         .map(|_| simulation.diagnostics().energy.total());
+    // The `event` column only where both kinds of rows are: it tells them apart.
+    let named = rows.regular && rows.watch.is_some();
+    let mut header = simulation.csv_header();
     if ledger_start.is_some() {
-        writeln!(
-            out,
-            "{},dissipated_damping,dissipated_friction,dissipated_impacts,energy_residual",
-            simulation.csv_header()
-        )?;
-    } else {
-        writeln!(out, "{}", simulation.csv_header())?;
+        header
+            .push_str(",dissipated_damping,dissipated_friction,dissipated_impacts,energy_residual");
     }
+    if named {
+        header.push_str(",event");
+    }
+    writeln!(out, "{header}")?;
+    let row = |out: &mut dyn Write, simulation: &Simulation, event: Option<&str>| {
+        write!(out, "{}", simulation.csv_row())?;
+        if let (Some(ledger), Some(start)) = (simulation.ledger(), ledger_start) {
+            let residual = simulation.diagnostics().energy.total() + ledger.total() - start;
+            write!(
+                out,
+                ",{},{},{},{residual}",
+                ledger.damping, ledger.friction, ledger.impacts
+            )?;
+        }
+        if named {
+            write!(
+                out,
+                ",{}",
+                event.map(physics::csv_field).unwrap_or_default()
+            )?;
+        }
+        writeln!(out)
+    };
     let progress = progress_bar(times.len() as u64);
     for &t in times {
-        let stepped = simulation.step_to(t);
+        let stepped = match &mut rows.watch {
+            Some((watch, names)) => match simulation.step_to_watching(t, watch) {
+                Ok(found) => {
+                    for event in &found {
+                        row(out, &event.at, Some(&names[event.event]))?;
+                    }
+                    Ok(())
+                }
+                Err(error) => Err(error),
+            },
+            None => simulation.step_to(t),
+        };
         if let Some(log) = impacts.as_deref_mut() {
             log.write(&simulation.take_impacts());
         }
@@ -245,19 +334,8 @@ fn write_csv(
             progress.finish_and_clear();
             return Ok(Err(Failure::Simulation(error.to_string())));
         }
-        match (simulation.ledger(), ledger_start) {
-            (Some(ledger), Some(start)) => {
-                let residual = simulation.diagnostics().energy.total() + ledger.total() - start;
-                writeln!(
-                    out,
-                    "{},{},{},{},{residual}",
-                    simulation.csv_row(),
-                    ledger.damping,
-                    ledger.friction,
-                    ledger.impacts
-                )?;
-            }
-            _ => writeln!(out, "{}", simulation.csv_row())?,
+        if rows.regular {
+            row(out, simulation, None)?;
         }
         progress.inc(1);
     }

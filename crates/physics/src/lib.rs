@@ -78,6 +78,7 @@ mod contacts;
 mod csv;
 pub use csv::csv_field;
 mod diagnostics;
+mod events;
 mod examples;
 mod field;
 mod forces;
@@ -85,6 +86,7 @@ pub mod generated;
 mod integrators;
 mod parallel;
 mod profile;
+mod quantity;
 mod scene;
 mod simulation;
 mod state;
@@ -93,16 +95,18 @@ mod testing;
 mod tuning;
 
 pub use diagnostics::{Diagnostics, Energy, ParticleReadout};
+pub use events::{Direction, Event, Located, Watch};
 pub use examples::{EXAMPLES, Example, example};
 pub use field::{FieldReadout, field_at};
 pub use glam::DVec2;
 pub use integrators::{Integrator, UnknownIntegrator};
 pub use profile::{Clock, Profile, Stage};
+pub use quantity::{Anchor, Link, LinkOf, Of, Quantity, Reading, Total, angle_from_down};
 pub use scene::error::{LoadError, Problem};
 pub use scene::fields;
 pub use scene::format::SceneFormat;
 pub use scene::{
-    Bounds, Color, Endpoint, FieldRef, Follow, Graph, Of, PairForces, Particle, Quantity, Ramp,
-    Rule, Scene, Section, Settings, Spring, Tie, TieKind, Total, Vector, View, World, check_value,
+    Bounds, Color, Endpoint, FieldRef, Follow, Graph, PairForces, Particle, Ramp, Rule, Scene,
+    Section, Settings, Spring, Tie, TieKind, Vector, View, World, check_value,
 };
 pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};

@@ -18,7 +18,7 @@ use glam::DVec2;
 pub(crate) use newtonlab_i18n::tr_text as say;
 
 pub use error::{FieldRef, Section};
-pub use presentation::{Follow, Graph, Of, Quantity, Total, View};
+pub use presentation::{Follow, Graph, View};
 pub use validate::{Rule, check_value};
 
 /// A 2D vector as the user typed it: Cartesian `[x, y]` or polar

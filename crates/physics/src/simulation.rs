@@ -75,13 +75,20 @@ pub enum SimulationError {
     },
 }
 
+/// What [`Simulation::step_to_observed`] calls after each step: the state before it and
+/// after.
+pub(crate) type Observer<'a> =
+    dyn FnMut(&Simulation, &Simulation) -> Result<(), SimulationError> + Send + 'a;
+
 /// A scene in motion.
 #[derive(Clone, Debug)]
 pub struct Simulation {
     /// Shared between copies: a keyframe of the time machine does not copy them.
     names: std::sync::Arc<[String]>,
     /// The rods' and strings' names, in the order of [`Scene::ties`].
-    tie_names: Vec<String>,
+    tie_names: std::sync::Arc<[String]>,
+    /// The springs' names, in the order of [`Scene::springs`].
+    spring_names: std::sync::Arc<[String]>,
     radius: std::sync::Arc<[f64]>,
     forces: ForceModel,
     contacts: Contacts,
@@ -198,6 +205,7 @@ impl Simulation {
         let mut simulation = Self {
             names: scene.particle_names().into(),
             tie_names: scene.ties.iter().map(|t| t.name.clone()).collect(),
+            spring_names: scene.springs.iter().map(|s| s.name.clone()).collect(),
             radius: particles.iter().map(|p| p.radius).collect(),
             contacts,
             coupled,
@@ -369,6 +377,38 @@ impl Simulation {
         &self.tie_names
     }
 
+    /// The springs' names, in scene order.
+    pub fn spring_names(&self) -> &[String] {
+        &self.spring_names
+    }
+
+    /// A rod's, string's or spring's `from` and `to` ends.
+    pub fn link_anchors(&self, link: crate::quantity::Link) -> [crate::quantity::Anchor; 2] {
+        let (from, to) = match link {
+            crate::quantity::Link::Tie(k) => {
+                let tie = &self.forces.constraints.links[k];
+                (tie.from, tie.to)
+            }
+            crate::quantity::Link::Spring(k) => {
+                let spring = &self.forces.springs[k];
+                (spring.from, spring.to)
+            }
+        };
+        [from, to].map(|end| match end {
+            crate::forces::spring::End::Particle(i) => crate::quantity::Anchor::Particle(i),
+            crate::forces::spring::End::Point(p) => crate::quantity::Anchor::Point(p),
+        })
+    }
+
+    /// Where a rod's, string's or spring's `from` and `to` ends are now, metres.
+    pub fn link_ends(&self, link: crate::quantity::Link) -> (DVec2, DVec2) {
+        let [from, to] = self.link_anchors(link);
+        (
+            from.position(&self.state.position),
+            to.position(&self.state.position),
+        )
+    }
+
     /// Radii, metres.
     pub fn radii(&self) -> &[f64] {
         &self.radius
@@ -408,19 +448,34 @@ impl Simulation {
     /// When the state becomes non-finite or the adaptive integrator fails; the state is
     /// then the one at which the failure was found.
     pub fn step_to(&mut self, time: f64) -> Result<(), SimulationError> {
+        self.step_to_observed(time, None)
+    }
+
+    /// [`Self::step_to`], calling `observe(before, after)` after every step with a
+    /// [`Self::keyframe`] of the state before it (taken only when there is an observer)
+    /// and the state after. The steps are the same, with the same bits, either way.
+    pub(crate) fn step_to_observed(
+        &mut self,
+        time: f64,
+        observe: Option<&mut Observer<'_>>,
+    ) -> Result<(), SimulationError> {
         // Run on a thread of the pool when a step has work to share out: see
         // `Workers::inside` (entering the pool costs about 30 µs, which a small scene's
         // step does not win back).
         let shares = self.forces.shares_pairs() || self.state.len() >= crate::tuning::MIN_ITEMS;
         if shares && self.contacts.workers.threads() > 1 {
             let workers = self.contacts.workers.clone();
-            return workers.inside(|| self.step_to_here(time));
+            return workers.inside(|| self.step_to_here(time, observe));
         }
-        self.step_to_here(time)
+        self.step_to_here(time, observe)
     }
 
-    /// [`Self::step_to`] on the calling thread.
-    fn step_to_here(&mut self, time: f64) -> Result<(), SimulationError> {
+    /// [`Self::step_to_observed`] on the calling thread.
+    fn step_to_here(
+        &mut self,
+        time: f64,
+        mut observe: Option<&mut Observer<'_>>,
+    ) -> Result<(), SimulationError> {
         // Every loop here is bounded: dopri5 may take many more steps than the time step
         // implies (a close pass), but not ten thousand times more: that would take seconds
         // for one step, and says the time step is far too long for the motion.
@@ -444,12 +499,16 @@ impl Simulation {
                     limit,
                 });
             }
+            let before = observe.is_some().then(|| self.keyframe());
             let remaining = time - self.state.time;
             // Within a hair of the target, one step lands on it: no sliver steps.
             let last = remaining <= self.time_step * (1.0 + 1e-9);
             let taken = self.advance(if last { remaining } else { self.time_step })?;
             if last && taken >= remaining {
                 self.state.time = time;
+            }
+            if let (Some(observe), Some(before)) = (observe.as_deref_mut(), before) {
+                observe(&before, self)?;
             }
         }
         Ok(())

@@ -363,7 +363,7 @@ follow = "B"
         found,
         [
             "8:5 graph #1: y must be a list of quantities in quotes, like [\"A.x\", \"total_energy\"], got a number",
-            "11:5 graph 'energy': y: 'energy' is not a quantity: write t, NAME.x (or .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy), ROD.tension, or one of kinetic_energy, potential_energy, total_energy, momentum_x, momentum_y",
+            "11:5 graph 'energy': y: 'energy' is not a quantity: write t, NAME.x (or .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy), ROD.angle (or .length, .tension), or one of kinetic_energy, potential_energy, total_energy, momentum_x, momentum_y",
             "12:1 graph 'energy': unknown key 'colour'; the keys here are title, x, y",
             "14:9 [view]: width must be greater than 0, got -1",
             "15:10 [view]: follow: there is no particle 'B'; follow a particle's name, or \"all\"",
@@ -385,8 +385,32 @@ y = ["B.x", "A.z", "t"]
         [
             "7:5 graph #1: x: 'B.vx' names no particle; there is no particle 'B'",
             "8:5 graph #1: y: 'B.x' names no particle; there is no particle 'B'",
-            "8:5 graph #1: y: 'A.z': a particle's quantity is one of x, y, vx, vy, speed, ax, ay, kinetic_energy; a rod's or string's is tension",
+            "8:5 graph #1: y: 'A.z': a particle's quantity is one of x, y, vx, vy, speed, ax, ay, kinetic_energy; a rod's, string's or spring's is angle or length, and a rod's or string's also tension",
             "8:5 graph #1: y: time goes on the x axis (x = \"t\")",
+        ]
+    );
+    // A link's angle and length name a rod, string or spring; its tension a rod or string.
+    let found = problems(
+        r#"version = 1
+[[particle]]
+name = "A"
+mass = 1
+position = [0, -1]
+[[spring]]
+name = "s"
+from = "A"
+to = [0, 0]
+stiffness = 1
+natural_length = 1
+[[graph]]
+y = ["s.angle", "s.length", "cord.angle", "s.tension"]
+"#,
+    );
+    assert_eq!(
+        found,
+        [
+            "13:5 graph #1: y: 'cord.angle' names no rod, string or spring; there is none named 'cord'",
+            "13:5 graph #1: y: 's.tension' names no rod or string; there is none named 's'",
         ]
     );
 }

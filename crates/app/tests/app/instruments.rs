@@ -115,7 +115,7 @@ fn the_measure_menu_turns_on_the_field_view() {
     );
 }
 
-/// The stopwatch (T), set to start at one impact and stop at the next, times a ball's
+/// The stopwatch (T), set to start at the first impact and stop at the second, times a ball's
 /// bounce on the floor: between two elastic impacts it flies 2 √(2h/g) (0.5997 s for a
 /// drop of h = 0.441 m; impacts are located to 1e-9 s, and 1e-8 s allows the rounding).
 #[test]
@@ -143,6 +143,7 @@ fn the_stopwatch_times_a_bounce_between_two_impacts() {
         let watch = &mut harness.state_mut().stopwatch;
         watch.start_on = Trigger::Impact;
         watch.stop_on = Trigger::Impact;
+        watch.stop_nth = 2;
     }
     harness.get_by_label("Start").click();
     harness.run();
@@ -156,6 +157,109 @@ fn the_stopwatch_times_a_bounce_between_two_impacts() {
         "{} s, theory {flight} s",
         watch.reading
     );
+}
+
+/// The 60° pendulum on its 2 m rod (the example): a light gate laid down from the pivot
+/// (the tape's line) is crossed twice a period, so the stopwatch started on its 1st
+/// crossing and stopped on its 3rd reads a full period, 4 √(L/g) K(sin 30°) = 3.0446 s,
+/// to 1e-6 s (the crossings are located inside the step, not between frames, whose
+/// linear interpolation was off by some 1e-5 s); armed before Play.
+#[test]
+fn a_gate_through_the_pivot_times_a_full_period() {
+    use newtonlab_app::canvas::Mark;
+    use newtonlab_app::stopwatch::{State, Trigger};
+    let mut harness = harness(App::new(example_scene("pendulum")));
+    harness.key_press(Key::T);
+    harness.run();
+    {
+        let app = harness.state_mut();
+        app.canvas.instruments.tape =
+            Some((Mark::Point(DVec2::ZERO), Mark::Point(DVec2::new(0.0, -3.0))));
+        let watch = &mut app.stopwatch;
+        watch.start_on = Trigger::Gate;
+        watch.stop_on = Trigger::Gate;
+        watch.stop_nth = 3;
+    }
+    harness.get_by_label("Start").click();
+    harness.run();
+    assert_eq!(
+        harness.state().stopwatch.state,
+        State::Armed,
+        "armed before Play"
+    );
+    play_frames(&mut harness, 45);
+    let watch = &harness.state().stopwatch;
+    assert_eq!(watch.state, State::Stopped, "stopped by the third crossing");
+    let period = pendulum_period(2.0, 60.0);
+    assert!(
+        (watch.reading - period).abs() < 1e-6,
+        "{} s, theory {period} s",
+        watch.reading
+    );
+}
+
+/// Lap mode with a typed event: `rod.angle crosses 0 down` happens once a period, so
+/// every lap is a period and so is their mean (to 1e-6 s), while the watch runs on.
+#[test]
+fn laps_of_an_event_are_periods() {
+    use newtonlab_app::stopwatch::{State, Trigger};
+    let mut harness = harness(App::new(example_scene("pendulum")));
+    {
+        let watch = &mut harness.state_mut().stopwatch;
+        watch.shown = true;
+        watch.start_on = Trigger::Event;
+        watch.stop_on = Trigger::Event;
+        watch.stop_nth = 2;
+        watch.event = "rod.angle crosses 0 down".to_owned();
+        watch.lap_mode = true;
+    }
+    harness.run();
+    harness.get_by_label("Start").click();
+    harness.run();
+    play_frames(&mut harness, 100);
+    let watch = &harness.state().stopwatch;
+    assert!(matches!(watch.state, State::Running(_)), "laps run on");
+    assert!(watch.laps.len() >= 2, "{:?}", watch.laps);
+    let period = pendulum_period(2.0, 60.0);
+    for lap in watch.laps.iter().chain(watch.mean_lap().as_ref()) {
+        assert!((lap - period).abs() < 1e-6, "{lap} s, theory {period} s");
+    }
+}
+
+/// A typo in the event is shown in the window, in words, and nothing breaks.
+#[test]
+fn a_bad_event_is_named_in_the_stopwatch() {
+    use newtonlab_app::stopwatch::Trigger;
+    let mut harness = harness(App::new(example_scene("pendulum")));
+    {
+        let watch = &mut harness.state_mut().stopwatch;
+        watch.shown = true;
+        watch.start_on = Trigger::Event;
+        watch.event = "Bob.vx crosses 0".to_owned();
+    }
+    harness.run();
+    harness.get_by_label("Start").click();
+    harness.run();
+    play_frames(&mut harness, 2);
+    let problem = harness
+        .state()
+        .stopwatch
+        .problem
+        .clone()
+        .expect("a problem");
+    assert!(problem.contains("no particle named 'Bob'"), "{problem}");
+    harness.get_by_label_contains("no particle named 'Bob'");
+}
+
+/// The period of a pendulum of `length` m released at rest `amplitude` degrees from the
+/// vertical: 4 √(L/g) K(sin(θ₀/2)), K by the arithmetic–geometric mean.
+fn pendulum_period(length: f64, amplitude: f64) -> f64 {
+    let k = (amplitude.to_radians() / 2.0).sin();
+    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
+    for _ in 0..20 {
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+    }
+    4.0 * (length / 9.81).sqrt() * std::f64::consts::PI / (2.0 * a)
 }
 
 /// The protractor (A): a drag lays the vertex and the first arm, a second drag the

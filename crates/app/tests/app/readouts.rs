@@ -142,3 +142,46 @@ fn the_impact_list_shows_each_impact_with_its_impulse() {
         "shown at {shown} s, the impact at {time} s"
     );
 }
+
+/// A rod's angle and length are plotted from the run: the 60° pendulum's `rod.angle`
+/// starts at 60°, never leaves ±60° (energy is kept: 1e-6° allows rounding), and its
+/// `rod.length` stays 2 m to 1e-9; the graph's chips offer them (clicking adds them).
+#[test]
+fn a_rods_angle_and_length_are_plotted() {
+    let mut harness = played("pendulum", 30);
+    // The first graph's chips (each graph has its own).
+    for chip in ["rod.angle (°)", "rod.length (m)"] {
+        harness
+            .get_all_by_label(chip)
+            .next()
+            .expect("a chip")
+            .click();
+        harness.run();
+    }
+    let graph = &harness.state().document.scene().graphs[0];
+    assert!(graph.y.contains(&"rod.angle".to_owned()), "{:?}", graph.y);
+    let (header, rows) = csv_rows(harness.state(), 0);
+    let columns: Vec<&str> = header.split(',').collect();
+    let angle = columns
+        .iter()
+        .position(|c| c.starts_with("rod.angle"))
+        .expect("an angle column");
+    let length = columns
+        .iter()
+        .position(|c| c.starts_with("rod.length"))
+        .expect("a length column");
+    assert!(
+        (rows[0][angle] - 60.0).abs() < 1e-9,
+        "starts at {}",
+        rows[0][angle]
+    );
+    assert!(rows.len() > 100, "a run of samples");
+    for row in &rows {
+        assert!(row[angle].abs() <= 60.0 + 1e-6, "{}°", row[angle]);
+        assert!((row[length] - 2.0).abs() < 1e-9, "{} m", row[length]);
+    }
+    assert!(
+        rows.iter().any(|r| r[angle] < -59.0),
+        "it swings to the other side"
+    );
+}

@@ -8,6 +8,7 @@
 //! within its tolerance, 1 otherwise, listing the misses.
 
 mod books;
+mod events;
 mod experiments;
 mod methods;
 mod paper_method;
@@ -47,10 +48,11 @@ enum Group {
     Ledger,
     Friction,
     SavedState,
+    Events,
 }
 
 impl Group {
-    const ALL: [Self; 9] = [
+    const ALL: [Self; 10] = [
         Self::Paper,
         Self::Rods,
         Self::Strings,
@@ -60,6 +62,7 @@ impl Group {
         Self::Ledger,
         Self::Friction,
         Self::SavedState,
+        Self::Events,
     ];
 
     fn name(self) -> &'static str {
@@ -73,6 +76,7 @@ impl Group {
             Self::Ledger => "ledger",
             Self::Friction => "friction",
             Self::SavedState => "saved-state",
+            Self::Events => "events",
         }
     }
 
@@ -104,6 +108,9 @@ impl Group {
                 "friction on ramps: g(sin θ − μ cos θ), held while tan θ ≤ μ, stopping at v₀²/2μg"
             }
             Self::SavedState => "a saved state reopens and continues its run",
+            Self::Events => {
+                "events are located inside a step: a landing, a pendulum's turning points, a spring's maxima at their closed-form instants"
+            }
         }
     }
 }
@@ -150,6 +157,7 @@ pub(crate) fn validate(args: &ValidateArgs) -> Result<(), Failure> {
             Group::Ledger => books::ledger(report)?,
             Group::Friction => books::friction(report)?,
             Group::SavedState => books::saved_state(report)?,
+            Group::Events => events::events(report)?,
         }
     }
     let statements: Vec<(&str, &str)> = groups.iter().map(|g| (g.name(), g.statement())).collect();

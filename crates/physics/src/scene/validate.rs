@@ -7,7 +7,8 @@ use std::collections::HashMap;
 
 use super::error::{FieldRef, Problem, Section};
 use super::fields::{self, Field, Kind, Value};
-use super::{Color, Endpoint, Follow, Quantity, Scene, Vector, say, say_numbers};
+use super::{Color, Endpoint, Follow, Scene, Vector, say, say_numbers};
+use crate::quantity::{LinkOf, Quantity};
 
 /// How far into a wall of the bounds a particle may start, as a fraction of its radius.
 const WALL_OVERLAP: f64 = 0.1;
@@ -384,7 +385,7 @@ impl Checker<'_> {
                             ),
                         );
                     }
-                    Ok(Quantity::Tension(name))
+                    Ok(Quantity::Link(name, LinkOf::Tension))
                         if !self.scene.ties.iter().any(|t| t.name == name) =>
                     {
                         self.report(
@@ -392,6 +393,19 @@ impl Checker<'_> {
                             field,
                             &say(
                                 "scene-graph-no-tie",
+                                &[("field", field), ("text", text), ("name", &name)],
+                            ),
+                        );
+                    }
+                    Ok(Quantity::Link(name, _))
+                        if !self.scene.ties.iter().any(|t| t.name == name)
+                            && !self.scene.springs.iter().any(|t| t.name == name) =>
+                    {
+                        self.report(
+                            s,
+                            field,
+                            &say(
+                                "scene-graph-no-link",
                                 &[("field", field), ("text", text), ("name", &name)],
                             ),
                         );

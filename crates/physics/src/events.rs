@@ -1,0 +1,321 @@
+//! Events: a quantity crossing a value (`Bob.vx crosses 0 down`), located in time as
+//! exactly as impacts are, by stepping to the instant rather than interpolating samples.
+//!
+//! A [`Watch`] follows a run step by step ([`Simulation::step_to_watching`]): after each
+//! step it reads every event's quantity, and where one has crossed its value since the
+//! step began it finds the instant inside the step by integrating again from the step's
+//! start to trial instants (each a single shorter step, exactly what the integrator gives
+//! there) and closing in on the crossing by regula falsi (the Illinois variant, which
+//! keeps a bracket and never stalls on one side). It stops when the bracket is 1e-12 s
+//! wide or as narrow as f64 allows, and reports the first instant found past the
+//! crossing, with the whole state there. The run itself is not touched: it takes the same
+//! steps with the same bits as without a watch.
+//!
+//! A quantity that jumps (a velocity at an impact) crosses at the jump: the instant found
+//! is the impact's. Within one step at most one crossing of each event is seen (the first
+//! if a quantity went there and back, which needs a motion faster than the step can
+//! follow anyway). A start exactly on the value is not a crossing, nor is touching the
+//! value without passing it.
+
+use std::fmt;
+
+use crate::quantity::{Quantity, Reading};
+use crate::simulation::{Simulation, SimulationError};
+
+/// Which way a crossing must go.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Direction {
+    /// Either way.
+    Either,
+    /// From below the value to it or above.
+    Up,
+    /// From above the value to it or below.
+    Down,
+}
+
+/// `QUANTITY crosses VALUE`, optionally `up` or `down`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Event {
+    /// What crosses.
+    pub quantity: Quantity,
+    /// The value crossed, in the quantity's SI unit (degrees for an angle).
+    pub value: f64,
+    /// Which way.
+    pub direction: Direction,
+}
+
+impl Event {
+    /// Reads `QUANTITY crosses VALUE [up|down]` (`Ball.y crosses 0 down`). Whether the
+    /// object exists is the simulation's question ([`Watch::new`]).
+    ///
+    /// # Errors
+    /// What the text should have been.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        let malformed = || crate::scene::say("event-malformed", &[("text", text.trim())]);
+        let (quantity, rest) = text.trim().rsplit_once(" crosses ").ok_or_else(malformed)?;
+        let mut words = rest.split_whitespace();
+        let value = words.next().ok_or_else(malformed)?;
+        let direction = match words.next() {
+            None => Direction::Either,
+            Some("up") => Direction::Up,
+            Some("down") => Direction::Down,
+            Some(_) => return Err(malformed()),
+        };
+        if words.next().is_some() {
+            return Err(malformed());
+        }
+        let value = value
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| {
+                crate::scene::say("event-value", &[("text", text.trim()), ("value", value)])
+            })?;
+        Ok(Self {
+            quantity: Quantity::parse(quantity.trim())?,
+            value,
+            direction,
+        })
+    }
+}
+
+impl fmt::Display for Event {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{} crosses {:?}", self.quantity, self.value)?;
+        match self.direction {
+            Direction::Either => Ok(()),
+            Direction::Up => f.write_str(" up"),
+            Direction::Down => f.write_str(" down"),
+        }
+    }
+}
+
+impl std::str::FromStr for Event {
+    type Err = String;
+
+    fn from_str(text: &str) -> Result<Self, String> {
+        Self::parse(text)
+    }
+}
+
+/// An event that happened: which, and the whole state at its instant.
+#[derive(Clone, Debug)]
+pub struct Located {
+    /// Its index among the watch's events.
+    pub event: usize,
+    /// The simulation at the instant ([`Simulation::time`]), to read anything of.
+    pub at: Simulation,
+}
+
+impl Located {
+    /// The instant, seconds.
+    pub fn time(&self) -> f64 {
+        self.at.time()
+    }
+}
+
+/// Events followed through a run.
+#[derive(Clone, Debug)]
+pub struct Watch {
+    /// Each event's quantity as found in the simulation, its value and direction.
+    events: Vec<(Reading, f64, Direction)>,
+    /// Each event's quantity minus its value at the end of the last step.
+    last: Vec<f64>,
+}
+
+/// The bracket's width at which an instant counts as found, seconds.
+const FOUND: f64 = 1e-12;
+/// Trial instants per event at most: far more than regula falsi needs, but a bound.
+const MOST_TRIALS: usize = 200;
+
+impl Watch {
+    /// A watch of `events` in `simulation`, from its present state on.
+    ///
+    /// # Errors
+    /// An event names an object the simulation does not have.
+    pub fn new(events: &[Event], simulation: &Simulation) -> Result<Self, String> {
+        let events = events
+            .iter()
+            .map(|e| Ok((e.quantity.reading(simulation)?, e.value, e.direction)))
+            .collect::<Result<Vec<_>, String>>()?;
+        Ok(Self::of_readings(events, simulation))
+    }
+
+    /// A watch of `reading` crossing `value` in `direction`, for each of `events`, in
+    /// `simulation` from its present state on (readings found already, or a light gate's
+    /// [`Reading::Side`]).
+    pub fn of_readings(events: Vec<(Reading, f64, Direction)>, simulation: &Simulation) -> Self {
+        let last = events
+            .iter()
+            .map(|&(reading, value, _)| simulation.read(reading) - value)
+            .collect();
+        Self { events, last }
+    }
+
+    /// How many events it watches.
+    pub fn len(&self) -> usize {
+        self.events.len()
+    }
+
+    /// Whether it watches none.
+    pub fn is_empty(&self) -> bool {
+        self.events.is_empty()
+    }
+
+    /// Looks for crossings in the step from `before` to `after` (the run's own states)
+    /// and adds each, located, to `found`, in time order.
+    fn after_step(
+        &mut self,
+        before: &Simulation,
+        after: &Simulation,
+        found: &mut Vec<Located>,
+    ) -> Result<(), SimulationError> {
+        let first = found.len();
+        for (event, &(reading, value, direction)) in self.events.iter().enumerate() {
+            let start = self.last[event];
+            let end = after.read(reading) - value;
+            self.last[event] = end;
+            if crossed(direction, start, end) {
+                let at = locate(
+                    before,
+                    after,
+                    |s| s.read(reading) - value,
+                    |g| crossed(direction, start, g),
+                )?;
+                found.push(Located { event, at });
+            }
+        }
+        found[first..].sort_by(|a, b| a.time().total_cmp(&b.time()));
+        Ok(())
+    }
+}
+
+/// Whether a quantity (minus its value) that was `start` has crossed `direction`-wise by
+/// the time it is `now`.
+fn crossed(direction: Direction, start: f64, now: f64) -> bool {
+    let up = start < 0.0 && now >= 0.0;
+    let down = start > 0.0 && now <= 0.0;
+    match direction {
+        Direction::Either => up || down,
+        Direction::Up => up,
+        Direction::Down => down,
+    }
+}
+
+/// The first instant found inside the step from `before` to `after` at which `has`
+/// holds of `g` (it does at `after`, not at `before`), with the state there.
+fn locate(
+    before: &Simulation,
+    after: &Simulation,
+    g: impl Fn(&Simulation) -> f64,
+    has: impl Fn(f64) -> bool,
+) -> Result<Simulation, SimulationError> {
+    let (mut a, mut ga) = (before.time(), g(before));
+    let (mut b, mut gb) = (after.time(), g(after));
+    let mut at_b: Option<Simulation> = None;
+    // Which end moved last: regula falsi halves the other's weight when one end sticks.
+    let mut last_moved = 0_i8;
+    for _ in 0..MOST_TRIALS {
+        let width = b - a;
+        if width <= FOUND || width <= 4.0 * f64::EPSILON * b.abs() {
+            break;
+        }
+        let secant = (a * gb - b * ga) / (gb - ga);
+        // Never at an end nor outside (a flat or jumping quantity): then halve.
+        let t = if secant > a && secant < b {
+            secant
+        } else {
+            0.5 * (a + b)
+        };
+        if t <= a || t >= b {
+            break; // a and b are neighbouring numbers
+        }
+        let mut trial = before.keyframe();
+        trial.step_to(t)?;
+        let gt = g(&trial);
+        if has(gt) {
+            (b, gb) = (t, gt);
+            at_b = Some(trial);
+            if last_moved == 1 {
+                ga *= 0.5;
+            }
+            last_moved = 1;
+        } else {
+            (a, ga) = (t, gt);
+            if last_moved == -1 {
+                gb *= 0.5;
+            }
+            last_moved = -1;
+        }
+    }
+    Ok(at_b.unwrap_or_else(|| after.keyframe()))
+}
+
+impl Simulation {
+    /// [`Self::step_to`] `time`, the same steps with the same bits, watching `watch`'s
+    /// events: returns those that happened, each located inside its step, in time order.
+    ///
+    /// # Errors
+    /// As [`Self::step_to`]; a failure while locating an event is the run's failure there.
+    pub fn step_to_watching(
+        &mut self,
+        time: f64,
+        watch: &mut Watch,
+    ) -> Result<Vec<Located>, SimulationError> {
+        let mut found = Vec::new();
+        self.step_to_observed(
+            time,
+            Some(&mut |before: &Simulation, after: &Simulation| {
+                watch.after_step(before, after, &mut found)
+            }),
+        )?;
+        Ok(found)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn events_read_back_as_written() {
+        for text in [
+            "Bob.vx crosses 0.0",
+            "Ball.y crosses -1.5 down",
+            "rod.angle crosses 0.0 up",
+        ] {
+            let event = Event::parse(text).unwrap();
+            assert_eq!(event.to_string(), text);
+        }
+        assert_eq!(
+            Event::parse("  a b.x crosses 2 up ").unwrap().quantity,
+            Quantity::Particle("a b".to_owned(), crate::Of::X),
+            "names may hold spaces"
+        );
+        for bad in [
+            "",
+            "Bob.vx",
+            "Bob.vx crosses",
+            "Bob.vx crosses zero",
+            "Bob.vx crosses 0 sideways",
+            "Bob.vx crosses 0 up now",
+            "Bob.vx crosses inf",
+            "Bob.q crosses 0",
+        ] {
+            assert!(Event::parse(bad).is_err(), "{bad:?} refused");
+        }
+    }
+
+    #[test]
+    fn a_crossing_is_strict_at_its_start() {
+        assert!(crossed(Direction::Either, -1.0, 0.0));
+        assert!(crossed(Direction::Up, -1.0, 2.0));
+        assert!(!crossed(Direction::Up, 1.0, -2.0));
+        assert!(crossed(Direction::Down, 1.0, -2.0));
+        assert!(
+            !crossed(Direction::Either, 0.0, 1.0),
+            "from the value itself"
+        );
+        assert!(!crossed(Direction::Either, 1.0, 2.0));
+    }
+}

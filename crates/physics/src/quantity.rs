@@ -1,0 +1,437 @@
+//! The quantities a run can be asked for, by the names of `run`'s CSV columns: what
+//! graphs plot, events watch and measures read (`docs/cli.md`, "Quantities"). A
+//! [`Quantity`] names its object; [`Quantity::reading`] finds the object in a simulation
+//! once, and [`Simulation::read`] then reads the value at any state.
+
+use std::fmt;
+
+use glam::DVec2;
+
+use crate::Simulation;
+
+/// A quantity of one particle.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Of {
+    /// Position, x.
+    X,
+    /// Position, y.
+    Y,
+    /// Velocity, x.
+    Vx,
+    /// Velocity, y.
+    Vy,
+    /// |v|.
+    Speed,
+    /// Acceleration by the smooth forces, x.
+    Ax,
+    /// Acceleration by the smooth forces, y.
+    Ay,
+    /// ½ m v².
+    KineticEnergy,
+}
+
+impl Of {
+    /// Every particle quantity, in menu order.
+    pub const ALL: [Self; 8] = [
+        Self::X,
+        Self::Y,
+        Self::Vx,
+        Self::Vy,
+        Self::Speed,
+        Self::Ax,
+        Self::Ay,
+        Self::KineticEnergy,
+    ];
+
+    /// The key after the dot in `A.vx`.
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::X => "x",
+            Self::Y => "y",
+            Self::Vx => "vx",
+            Self::Vy => "vy",
+            Self::Speed => "speed",
+            Self::Ax => "ax",
+            Self::Ay => "ay",
+            Self::KineticEnergy => "kinetic_energy",
+        }
+    }
+
+    /// The SI unit.
+    pub fn unit(self) -> &'static str {
+        match self {
+            Self::X | Self::Y => "m",
+            Self::Vx | Self::Vy | Self::Speed => "m/s",
+            Self::Ax | Self::Ay => "m/s²",
+            Self::KineticEnergy => "J",
+        }
+    }
+}
+
+/// A quantity of a rod, string or spring: of the line from its `from` end to its `to` end.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum LinkOf {
+    /// The force a rod or string carries, N (pulling positive; 0 for a slack string).
+    Tension,
+    /// Degrees from the downward vertical, counter-clockwise positive, in (−180, 180]: a
+    /// pendulum's angle when the link runs from the pivot to the bob.
+    Angle,
+    /// The distance between the ends, m.
+    Length,
+}
+
+impl LinkOf {
+    /// Every link quantity, in menu order.
+    pub const ALL: [Self; 3] = [Self::Angle, Self::Length, Self::Tension];
+
+    /// The key after the dot in `rod.angle`.
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::Tension => "tension",
+            Self::Angle => "angle",
+            Self::Length => "length",
+        }
+    }
+
+    /// The SI unit (degrees for the angle, as the scene file writes angles).
+    pub fn unit(self) -> &'static str {
+        match self {
+            Self::Tension => "N",
+            Self::Angle => "°",
+            Self::Length => "m",
+        }
+    }
+}
+
+/// A quantity of the whole system.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Total {
+    /// Σ ½ m v².
+    KineticEnergy,
+    /// Every potential energy together.
+    PotentialEnergy,
+    /// Kinetic plus potential.
+    TotalEnergy,
+    /// Σ m vₓ of the moving particles.
+    MomentumX,
+    /// Σ m `v_y` of the moving particles.
+    MomentumY,
+}
+
+impl Total {
+    /// Every system quantity, in menu order.
+    pub const ALL: [Self; 5] = [
+        Self::KineticEnergy,
+        Self::PotentialEnergy,
+        Self::TotalEnergy,
+        Self::MomentumX,
+        Self::MomentumY,
+    ];
+
+    /// As written in a scene file.
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::KineticEnergy => "kinetic_energy",
+            Self::PotentialEnergy => "potential_energy",
+            Self::TotalEnergy => "total_energy",
+            Self::MomentumX => "momentum_x",
+            Self::MomentumY => "momentum_y",
+        }
+    }
+
+    /// The SI unit.
+    pub fn unit(self) -> &'static str {
+        match self {
+            Self::KineticEnergy | Self::PotentialEnergy | Self::TotalEnergy => "J",
+            Self::MomentumX | Self::MomentumY => "kg·m/s",
+        }
+    }
+}
+
+/// A quantity, with its object named.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Quantity {
+    /// Simulated time, `t`.
+    Time,
+    /// `NAME.of`.
+    Particle(String, Of),
+    /// A system quantity.
+    Total(Total),
+    /// `NAME.tension`, `NAME.angle`, `NAME.length` of a rod, string or spring.
+    Link(String, LinkOf),
+}
+
+impl Quantity {
+    /// Reads `t`, `NAME.x|y|vx|vy|speed|ax|ay|kinetic_energy`, `LINK.angle|length|tension`,
+    /// `kinetic_energy`, `potential_energy`, `total_energy`, `momentum_x` or `momentum_y`.
+    /// Whether the object exists is the scene's question ([`crate::Scene::validate`]) or
+    /// the simulation's ([`Self::reading`]).
+    ///
+    /// # Errors
+    /// What the text should have been.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        if text == "t" {
+            return Ok(Self::Time);
+        }
+        if let Some(total) = Total::ALL.into_iter().find(|t| t.key() == text) {
+            return Ok(Self::Total(total));
+        }
+        if let Some((name, key)) = text.rsplit_once('.')
+            && !name.is_empty()
+        {
+            if let Some(of) = LinkOf::ALL.into_iter().find(|of| of.key() == key) {
+                return Ok(Self::Link(name.to_owned(), of));
+            }
+            return match Of::ALL.into_iter().find(|of| of.key() == key) {
+                Some(of) => Ok(Self::Particle(name.to_owned(), of)),
+                None => Err(crate::scene::say(
+                    "scene-quantity-of-particle",
+                    &[("text", text), ("keys", &Of::ALL.map(Of::key).join(", "))],
+                )),
+            };
+        }
+        Err(crate::scene::say(
+            "scene-not-a-quantity",
+            &[
+                ("text", text),
+                ("keys", &Total::ALL.map(Total::key).join(", ")),
+            ],
+        ))
+    }
+
+    /// The unit, `s` for time.
+    pub fn unit(&self) -> &'static str {
+        match self {
+            Self::Time => "s",
+            Self::Particle(_, of) => of.unit(),
+            Self::Total(total) => total.unit(),
+            Self::Link(_, of) => of.unit(),
+        }
+    }
+
+    /// The quantity in `simulation`, its object found by name, to read at any state with
+    /// [`Simulation::read`].
+    ///
+    /// # Errors
+    /// The object it names is not there (with the names there are), or a tension is asked
+    /// of a spring.
+    pub fn reading(&self, simulation: &Simulation) -> Result<Reading, String> {
+        let find = |names: &[String], name: &str| names.iter().position(|n| n == name);
+        match self {
+            Self::Time => Ok(Reading::Time),
+            Self::Total(total) => Ok(Reading::Total(*total)),
+            Self::Particle(name, of) => find(simulation.names(), name)
+                .map(|i| Reading::Particle(i, *of))
+                .ok_or_else(|| unknown("quantity-no-particle", self, name, simulation.names())),
+            Self::Link(name, of) => {
+                if let Some(k) = find(simulation.tie_names(), name) {
+                    return Ok(Reading::Link(Link::Tie(k), *of));
+                }
+                match (find(simulation.spring_names(), name), of) {
+                    (Some(_), LinkOf::Tension) => Err(crate::scene::say(
+                        "quantity-spring-tension",
+                        &[("text", &self.to_string()), ("name", name)],
+                    )),
+                    (Some(k), _) => Ok(Reading::Link(Link::Spring(k), *of)),
+                    (None, _) => {
+                        let links: Vec<String> = simulation
+                            .tie_names()
+                            .iter()
+                            .chain(simulation.spring_names())
+                            .cloned()
+                            .collect();
+                        Err(unknown("quantity-no-link", self, name, &links))
+                    }
+                }
+            }
+        }
+    }
+}
+
+/// That `quantity` names `name`, which is not among `names`.
+fn unknown(message: &str, quantity: &Quantity, name: &str, names: &[String]) -> String {
+    let there = if names.is_empty() {
+        "—".to_owned()
+    } else {
+        names.join(", ")
+    };
+    crate::scene::say(
+        message,
+        &[
+            ("text", &quantity.to_string()),
+            ("name", name),
+            ("names", &there),
+        ],
+    )
+}
+
+impl fmt::Display for Quantity {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Time => f.write_str("t"),
+            Self::Particle(name, of) => write!(f, "{name}.{}", of.key()),
+            Self::Total(total) => f.write_str(total.key()),
+            Self::Link(name, of) => write!(f, "{name}.{}", of.key()),
+        }
+    }
+}
+
+/// A rod or string, or a spring, by its index in the scene's ties or springs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Link {
+    /// The rod or string at this index of the scene's ties.
+    Tie(usize),
+    /// The spring at this index of the scene's springs.
+    Spring(usize),
+}
+
+/// One end of a rod, string or spring.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Anchor {
+    /// The particle at this index.
+    Particle(usize),
+    /// A fixed point, metres.
+    Point(DVec2),
+}
+
+impl Anchor {
+    /// Where the end is when the particles are at `x`.
+    pub fn position(self, x: &[DVec2]) -> DVec2 {
+        match self {
+            Self::Particle(i) => x[i],
+            Self::Point(p) => p,
+        }
+    }
+}
+
+/// A [`Quantity`] with its object found in a simulation ([`Quantity::reading`]), or a
+/// particle's side of a line (a light gate's).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Reading {
+    /// Simulated time.
+    Time,
+    /// A quantity of the particle at this index.
+    Particle(usize, Of),
+    /// A quantity of the whole system.
+    Total(Total),
+    /// A quantity of a rod, string or spring.
+    Link(Link, LinkOf),
+    /// How far the particle at this index is past the line through `point` along its unit
+    /// `normal`, metres: it crosses 0 where the particle's centre crosses the line.
+    Side {
+        /// The particle's index.
+        particle: usize,
+        /// A point of the line.
+        point: DVec2,
+        /// The line's unit normal: the positive side.
+        normal: DVec2,
+    },
+}
+
+impl Simulation {
+    /// The value of `reading` in this state, in SI units (degrees for an angle).
+    /// Accelerations are the smooth forces' ([`Self::accelerations`]).
+    pub fn read(&self, reading: Reading) -> f64 {
+        match reading {
+            Reading::Time => self.time(),
+            Reading::Particle(i, of) => {
+                let (x, v) = (self.positions()[i], self.velocities()[i]);
+                match of {
+                    Of::X => x.x,
+                    Of::Y => x.y,
+                    Of::Vx => v.x,
+                    Of::Vy => v.y,
+                    Of::Speed => v.length(),
+                    Of::Ax | Of::Ay | Of::KineticEnergy => {
+                        let p = self.particle(i, &self.accelerations());
+                        match of {
+                            Of::Ax => p.acceleration.x,
+                            Of::Ay => p.acceleration.y,
+                            _ => p.kinetic_energy,
+                        }
+                    }
+                }
+            }
+            Reading::Total(total) => {
+                let d = self.diagnostics();
+                match total {
+                    Total::KineticEnergy => d.energy.kinetic,
+                    Total::PotentialEnergy => d.energy.potential(),
+                    Total::TotalEnergy => d.energy.total(),
+                    Total::MomentumX => d.momentum.x,
+                    Total::MomentumY => d.momentum.y,
+                }
+            }
+            Reading::Side {
+                particle,
+                point,
+                normal,
+            } => (self.positions()[particle] - point).dot(normal),
+            Reading::Link(link, of) => {
+                let (from, to) = self.link_ends(link);
+                let d = to - from;
+                match (of, link) {
+                    (LinkOf::Angle, _) => angle_from_down(d),
+                    (LinkOf::Length, _) => d.length(),
+                    (LinkOf::Tension, Link::Tie(k)) => self.tensions()[k],
+                    // Refused by `reading`: a spring's pull is not a tension here.
+                    (LinkOf::Tension, Link::Spring(_)) => f64::NAN,
+                }
+            }
+        }
+    }
+}
+
+/// The angle of `d` from the downward vertical, counter-clockwise positive, degrees in
+/// (−180, 180]: [`LinkOf::Angle`] of a link whose ends are `d` apart.
+pub fn angle_from_down(d: DVec2) -> f64 {
+    d.x.atan2(-d.y).to_degrees()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn quantities_read_back_as_written() {
+        for text in [
+            "t",
+            "A.x",
+            "ball 2.vy",
+            "B.kinetic_energy",
+            "total_energy",
+            "momentum_y",
+            "rod.angle",
+            "s 1.length",
+            "string.tension",
+        ] {
+            let quantity = Quantity::parse(text).unwrap();
+            assert_eq!(quantity.to_string(), text);
+        }
+        assert_eq!(
+            Quantity::parse("a.b.speed"),
+            Ok(Quantity::Particle("a.b".to_owned(), Of::Speed)),
+            "the last dot splits"
+        );
+        for bad in ["", "x", "A.z", ".x", "energy"] {
+            assert!(Quantity::parse(bad).is_err(), "{bad:?} refused");
+        }
+    }
+
+    /// The angle from the downward vertical, counter-clockwise: straight down 0°, to the
+    /// right 90° (the downward vertical turned a quarter counter-clockwise), to the left
+    /// −90°, straight up 180°.
+    #[test]
+    fn angles_are_from_the_downward_vertical_counter_clockwise() {
+        for (d, expected) in [
+            (DVec2::new(0.0, -1.0), 0.0),
+            (DVec2::new(1.0, 0.0), 90.0),
+            (DVec2::new(-1.0, 0.0), -90.0),
+            (DVec2::new(0.0, 1.0), 180.0),
+            (DVec2::new(1.0, -1.0), 45.0),
+        ] {
+            let angle = angle_from_down(d);
+            assert!((angle - expected).abs() < 1e-12, "{d}: {angle}°");
+        }
+    }
+}

@@ -45,6 +45,12 @@ pub enum Action {
     StepBack,
     /// Show this step of the run.
     GoTo(u64),
+    /// Show the selected particle's next (`true`) or previous turning point.
+    TurningPoint(bool),
+    /// Show the run's next (`true`) or previous impact.
+    Impact(bool),
+    /// Show the run at the instant of its impact number N (in the recording's list).
+    GoToImpact(usize),
     /// Make the moment shown the scene's start.
     EditFromHere,
     /// Show or hide the list of keys (F1).
@@ -76,6 +82,8 @@ pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
     (plain(Key::Space), Action::PlayPause),
     (plain(Key::Period), Action::Step),
     (plain(Key::Comma), Action::StepBack),
+    (plain(Key::CloseBracket), Action::TurningPoint(true)),
+    (plain(Key::OpenBracket), Action::TurningPoint(false)),
     (plain(Key::R), Action::Reset),
     (plain(Key::F), Action::Fit),
     (plain(Key::Num1), Action::Tool(Tool::Select)),
@@ -122,6 +130,8 @@ impl Action {
             Self::PlayPause => "key-play-pause",
             Self::Step => "key-step",
             Self::StepBack => "key-step-back",
+            Self::TurningPoint(true) => "key-next-turn",
+            Self::TurningPoint(false) => "key-previous-turn",
             Self::Reset => "key-reset",
             Self::Fit => "key-fit",
             Self::Tool(tool) => return tool.label(),

@@ -510,6 +510,7 @@ fn selected(
                 fields::tie_fields(kind),
                 (move |s| &s.ties[i], move |s| &mut s.ties[i]),
             );
+            length_warning(ui, document.scene(), i);
         }
         Some(Selection::Ramp(i)) if i < document.scene().ramps.len() => {
             problem = object(
@@ -524,6 +525,45 @@ fn selected(
         Some(_) => *selection = None,
     }
     problem
+}
+
+/// A rod or string whose ends start at another distance than its length pulls them onto
+/// its length before the first step: said, with both numbers, so a typed length that
+/// does not match the drawing is not a surprise (a string longer than the distance is
+/// slack, and says nothing).
+fn length_warning(ui: &mut Ui, scene: &Scene, i: usize) {
+    let tie = &scene.ties[i];
+    let (Some(from), Some(to)) = (scene.end_position(&tie.from), scene.end_position(&tie.to))
+    else {
+        return;
+    };
+    let distance = from.distance(to);
+    let slack = tie.kind == physics::TieKind::String && distance < tie.length;
+    if slack || (distance - tie.length).abs() <= 1e-9 * tie.length.max(1.0) {
+        return;
+    }
+    let id = if tie.kind == physics::TieKind::String {
+        "inspector-string-too-short"
+    } else {
+        "inspector-rod-length-differs"
+    };
+    ui.label(
+        RichText::new(crate::i18n::tr_with(
+            id,
+            &[
+                (
+                    "distance",
+                    crate::i18n::Arg::Text(&format::number(distance)),
+                ),
+                (
+                    "length",
+                    crate::i18n::Arg::Text(&format::number(tie.length)),
+                ),
+            ],
+        ))
+        .color(egui::Color32::from_rgb(190, 110, 0))
+        .small(),
+    );
 }
 
 /// An object's name and then its fields from the table.

@@ -21,6 +21,7 @@
 #![expect(missing_docs, reason = "an application crate; see above")]
 
 pub mod action;
+pub mod analysis;
 pub mod announcer;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod autosave;
@@ -256,6 +257,8 @@ impl App {
             Action::Reset => self.reset(),
             Action::Fit => self.canvas.request_fit(),
             Action::Tool(tool) => {
+                // A tool is chosen instead of the instrument, as one tool replaces another.
+                self.canvas.instruments.active = None;
                 if self.runner.is_editing() {
                     self.canvas.tool = tool;
                 }
@@ -280,6 +283,32 @@ impl App {
             Action::ToggleHelp => self.panels.help = !self.panels.help,
             Action::StepBack => self.runner.step_back(),
             Action::GoTo(step) => self.runner.go_to(step),
+            Action::TurningPoint(forward) => {
+                let particle = match self.selection {
+                    Some(Selection::Particle(i)) => Some(i),
+                    // With one particle, it is the one.
+                    _ => (self.document.scene().particles.len() == 1).then_some(0),
+                };
+                let found = particle.is_some_and(|i| self.runner.go_to_turning_point(i, forward));
+                if !found {
+                    self.notify(tr("timeline-no-turn"));
+                }
+            }
+            Action::GoToImpact(k) => {
+                let time = self
+                    .runner
+                    .recording
+                    .as_ref()
+                    .and_then(|r| r.impacts().get(k));
+                if let Some(time) = time.map(|impact| impact.time) {
+                    self.runner.go_to_time(time);
+                }
+            }
+            Action::Impact(forward) => {
+                if !self.runner.go_to_impact(forward) {
+                    self.notify(tr("timeline-no-impact"));
+                }
+            }
             Action::EditFromHere => self.edit_from_here(),
             Action::ClearMeasurements => {
                 self.canvas.instruments.tape = None;

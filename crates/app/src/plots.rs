@@ -554,17 +554,8 @@ fn impact_list(ui: &mut Ui, runner: &Runner, scene: &physics::Scene) -> Option<A
     let Some(recording) = &runner.recording else {
         return None;
     };
-    // With the run's keyframes, a click on an impact's time shows the step it ends.
-    let step_of = |t: f64| {
-        let (start, dt) = (scene.simulation.start_time, scene.simulation.time_step);
-        #[expect(
-            clippy::cast_possible_truncation,
-            clippy::cast_sign_loss,
-            reason = "a count of steps from the run's start"
-        )]
-        let step = ((t - start) / dt - 1e-9).ceil().max(0.0) as u64;
-        step
-    };
+    // With the run's keyframes, a click on an impact's time shows the run at its
+    // located instant.
     let can_go = runner.timeline.is_some();
     let mut action = None;
     let impacts = recording.impacts();
@@ -589,18 +580,25 @@ fn impact_list(ui: &mut Ui, runner: &Runner, scene: &physics::Scene) -> Option<A
                     .num_columns(5)
                     .striped(true)
                     .show(ui, |ui| {
-                        for label in ["t (s)", "particle", "hit", "impulse (N·s)", "lost (J)"] {
-                            ui.strong(label);
+                        for label in [
+                            "impacts-time",
+                            "impacts-particle",
+                            "impacts-hit",
+                            "impacts-impulse",
+                            "impacts-lost",
+                        ] {
+                            ui.strong(tr(label));
                         }
                         ui.end_row();
-                        for impact in &impacts[rows] {
+                        let first = rows.start;
+                        for (k, impact) in impacts[rows].iter().enumerate() {
                             let other = match impact.other {
                                 physics::ImpactTarget::Particle(j) => name(j).to_owned(),
                                 physics::ImpactTarget::Ramp(k) => scene
                                     .ramps
                                     .get(k)
-                                    .map_or_else(|| "a ramp".to_owned(), |r| r.name.clone()),
-                                physics::ImpactTarget::Wall => "wall".to_owned(),
+                                    .map_or_else(|| tr("impacts-a-ramp"), |r| r.name.clone()),
+                                physics::ImpactTarget::Wall => tr("impacts-wall"),
                             };
                             let time = ui
                                 .add_enabled(
@@ -613,7 +611,7 @@ fn impact_list(ui: &mut Ui, runner: &Runner, scene: &physics::Scene) -> Option<A
                                 )
                                 .on_hover_text(tr("impacts-go-to-hint"));
                             if time.clicked() {
-                                action = Some(Action::GoTo(step_of(impact.time)));
+                                action = Some(Action::GoToImpact(first + k));
                             }
                             ui.label(name(impact.particle));
                             ui.label(other);

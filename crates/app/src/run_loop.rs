@@ -545,6 +545,92 @@ impl Runner {
         self.trails.iter_mut().for_each(VecDeque::clear);
     }
 
+    /// Shows the run at the instant `time` exactly (paused): the state stepped to it from
+    /// the step before. The slider shows that step.
+    pub fn go_to_time(&mut self, time: f64) {
+        self.pause();
+        let Some(timeline) = &mut self.timeline else {
+            return;
+        };
+        if timeline.live.is_none() {
+            timeline.live = self.run.take();
+        }
+        let Some(end_time) = timeline.live.as_ref().map(Simulation::time) else {
+            return;
+        };
+        if time >= end_time {
+            let end = timeline.end;
+            self.go_to(end);
+            return;
+        }
+        if let Some((step, state)) = timeline.state_at_time(time) {
+            timeline.shown = Some(step);
+            self.run = Run::Here(state);
+        }
+        self.trails.iter_mut().for_each(VecDeque::clear);
+    }
+
+    /// The simulated time of the run's newest state.
+    pub fn end_time(&self) -> Option<f64> {
+        let timeline = self.timeline.as_ref()?;
+        match (&timeline.live, timeline.shown) {
+            (Some(live), _) => Some(live.time()),
+            (None, _) => self.simulation().map(Simulation::time),
+        }
+    }
+
+    /// Goes to the next (`forward`) or previous turning point of particle `i`: an instant
+    /// where its velocity's x or y component passes through 0, located inside its step.
+    /// Returns whether there was one in the run.
+    pub fn go_to_turning_point(&mut self, i: usize, forward: bool) -> bool {
+        let (Some(now), Some(end), Some(timeline)) = (
+            self.simulation().map(Simulation::time),
+            self.end_time(),
+            &self.timeline,
+        ) else {
+            return false;
+        };
+        let zero = |of| {
+            (
+                physics::Reading::Particle(i, of),
+                0.0,
+                physics::Direction::Either,
+            )
+        };
+        let events = [zero(physics::Of::Vx), zero(physics::Of::Vy)];
+        match timeline.event_near(&events, now, forward, end) {
+            Some(t) => {
+                self.go_to_time(t);
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// Goes to the next (`forward`) or previous impact of the run, at its located instant.
+    /// Returns whether there was one.
+    pub fn go_to_impact(&mut self, forward: bool) -> bool {
+        let (Some(now), Some(recording)) =
+            (self.simulation().map(Simulation::time), &self.recording)
+        else {
+            return false;
+        };
+        let margin = 1e-9;
+        let impacts = recording.impacts().iter().map(|i| i.time);
+        let found = if forward {
+            impacts.filter(|&t| t > now + margin).reduce(f64::min)
+        } else {
+            impacts.filter(|&t| t < now - margin).reduce(f64::max)
+        };
+        match found {
+            Some(t) => {
+                self.go_to_time(t);
+                true
+            }
+            None => false,
+        }
+    }
+
     /// One step back in the run.
     pub fn step_back(&mut self) {
         if let Some(timeline) = &self.timeline {

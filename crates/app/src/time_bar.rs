@@ -34,16 +34,37 @@ impl App {
                 action = Some(Action::StepBack);
             }
             let mut at = shown.unwrap_or(end);
-            ui.spacing_mut().slider_width = (ui.available_width() - 420.0).max(120.0);
+            ui.spacing_mut().slider_width = (ui.available_width() - 300.0).max(120.0);
             let slider = ui
                 .add(egui::Slider::new(&mut at, 0..=end.max(1)).show_value(false))
                 .on_hover_text(tr("timeline-slider-hint"));
             if slider.changed() {
                 action = Some(Action::GoTo(at));
             }
+            // A click on the slider's track goes there, as a drag does.
+            if slider.clicked()
+                && let Some(pointer) = slider.interact_pointer_pos()
+            {
+                let rail = slider.rect;
+                let fraction =
+                    f64::from(((pointer.x - rail.left()) / rail.width()).clamp(0.0, 1.0));
+                #[expect(
+                    clippy::cast_possible_truncation,
+                    clippy::cast_sign_loss,
+                    clippy::cast_precision_loss,
+                    reason = "a step of the run, from a fraction of their count"
+                )]
+                let clicked = (fraction * end as f64).round() as u64;
+                action = Some(Action::GoTo(clicked));
+            }
             let start = self.document.scene().simulation.start_time;
             #[expect(clippy::cast_precision_loss, reason = "a count of steps")]
             let (now, last) = (start + at as f64 * step, start + end as f64 * step);
+            // The instant shown exactly (an event's, between steps), else the step's.
+            let now = self
+                .runner
+                .simulation()
+                .map_or(now, physics::Simulation::time);
             ui.label(tr_with(
                 "timeline-time",
                 &[
@@ -51,7 +72,44 @@ impl App {
                     ("last", Arg::Text(&format::number(last))),
                 ],
             ));
-            if shown.is_some() {
+        });
+        action.or_else(|| self.jumps_row(ui, shown.map(|_| end)))
+    }
+
+    /// The jumps to turning points and impacts, a typed instant, and at a moment gone
+    /// back to (`gone_back`: the run's end) the way back to the end and Edit from here: the
+    /// time bar's second row.
+    fn jumps_row(&mut self, ui: &mut Ui, gone_back: Option<u64>) -> Option<Action> {
+        let mut action = None;
+        ui.horizontal(|ui| {
+            for (label, hint, jump) in [
+                (
+                    "timeline-previous-turn",
+                    "timeline-turn-hint",
+                    Action::TurningPoint(false),
+                ),
+                (
+                    "timeline-next-turn",
+                    "timeline-turn-hint",
+                    Action::TurningPoint(true),
+                ),
+                (
+                    "timeline-previous-impact",
+                    "timeline-impact-hint",
+                    Action::Impact(false),
+                ),
+                (
+                    "timeline-next-impact",
+                    "timeline-impact-hint",
+                    Action::Impact(true),
+                ),
+            ] {
+                if ui.small_button(tr(label)).on_hover_text(tr(hint)).clicked() {
+                    action = Some(jump);
+                }
+            }
+            self.time_field(ui);
+            if let Some(end) = gone_back {
                 if ui
                     .button(tr("timeline-to-end"))
                     .on_hover_text(tr("timeline-to-end-hint"))
@@ -69,6 +127,27 @@ impl App {
             }
         });
         action
+    }
+
+    /// A field to type an instant of the run into (`1.5`, `1500 ms`); Enter goes there.
+    fn time_field(&mut self, ui: &mut Ui) {
+        let id = egui::Id::unique("timeline go to");
+        let mut text: String = ui.data(|d| d.get_temp(id)).unwrap_or_default();
+        let label = ui.label(tr("timeline-go-to"));
+        let response = ui
+            .add(egui::TextEdit::singleline(&mut text).desired_width(64.0))
+            .labelled_by(label.id)
+            .on_hover_text(tr("timeline-go-to-hint"));
+        ui.data_mut(|d| d.insert_temp(id, text.clone()));
+        if response.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
+            match crate::units::parse(&text, "s") {
+                Ok(time) => {
+                    self.runner.go_to_time(time);
+                    ui.data_mut(|d| d.remove::<String>(id));
+                }
+                Err(reason) => self.notify(reason),
+            }
+        }
     }
 
     /// Turns the moment shown into the scene's initial conditions (undoable).

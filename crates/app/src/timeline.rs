@@ -116,6 +116,74 @@ impl Timeline {
         Some(simulation)
     }
 
+    /// The run's state at the instant `time` (within the run), exactly there: the last
+    /// step at or before it, stepped on to `time` (a step cut short, as `step_to` cuts
+    /// the last step of a run). With the step it was reached from. `None` outside the run
+    /// or if stepping failed.
+    pub fn state_at_time(&self, time: f64) -> Option<(u64, Simulation)> {
+        let (at, keyframe) = self
+            .keyframes
+            .iter()
+            .rev()
+            .find(|(_, k)| k.time() <= time)?;
+        let mut simulation = keyframe.clone();
+        let mut step = *at;
+        while step < self.end && simulation.time() + simulation.time_step() <= time {
+            simulation.step().ok()?;
+            step += 1;
+        }
+        if simulation.time() < time {
+            simulation.step_to(time).ok()?;
+        }
+        let _ = simulation.take_impacts();
+        Some((step, simulation))
+    }
+
+    /// The first instant after `after` (if `forward`) or the last before it at which one
+    /// of `events` happens, located inside its step, within the run; `None` if none does.
+    /// Searched from keyframes: forward from the one at or before `after` to the run's
+    /// end, backward in spans that double from there towards the start.
+    pub fn event_near(
+        &self,
+        events: &[(physics::Reading, f64, physics::Direction)],
+        after: f64,
+        forward: bool,
+        end_time: f64,
+    ) -> Option<f64> {
+        // Not the instant itself: a turning point shown is not the next one.
+        let margin = 1e-9;
+        let located = |from: &Simulation, until: f64| -> Vec<f64> {
+            let mut simulation = from.clone();
+            let mut watch = physics::Watch::of_readings(events.to_vec(), &simulation);
+            simulation
+                .step_to_watching(until, &mut watch)
+                .map(|found| found.iter().map(physics::Located::time).collect())
+                .unwrap_or_default()
+        };
+        let before = self
+            .keyframes
+            .iter()
+            .rposition(|(_, k)| k.time() <= after)?;
+        if forward {
+            let from = &self.keyframes[before].1;
+            return located(from, end_time)
+                .into_iter()
+                .find(|&t| t > after + margin);
+        }
+        let mut span = 1;
+        loop {
+            let first = before.saturating_sub(span);
+            let from = &self.keyframes[first].1;
+            let found = located(from, after)
+                .into_iter()
+                .rfind(|&t| t < after - margin);
+            if found.is_some() || first == 0 {
+                return found;
+            }
+            span *= 2;
+        }
+    }
+
     /// Forgets everything after `step`: the run goes on from there as a new branch.
     pub fn truncate(&mut self, step: u64) {
         self.keyframes.retain(|(at, _)| *at <= step);

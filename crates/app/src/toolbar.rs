@@ -5,7 +5,7 @@ use egui::Ui;
 use physics::{Follow, Integrator, Rule, check_value};
 
 use crate::action::Action;
-use crate::canvas::{Canvas, Tool};
+use crate::canvas::{Canvas, Instrument, Tool};
 use crate::document::Document;
 use crate::edit::Edit;
 use crate::i18n::tr;
@@ -30,10 +30,11 @@ pub fn ui(
     ui.horizontal_wrapped(|ui| {
         // Projector mode keeps the run controls only: the tools, the method and the
         // overlays are for preparing a lesson, not for showing it.
+        let measuring = canvas.instruments.active;
         ui.add_enabled_ui(editable, |ui| {
             for tool in Tool::ALL.into_iter().filter(|_| !compact) {
                 if ui
-                    .selectable_label(canvas.tool == tool, tool.label())
+                    .selectable_label(canvas.tool == tool && measuring.is_none(), tool.label())
                     .on_hover_text(tool.hint())
                     .clicked()
                 {
@@ -41,6 +42,7 @@ pub fn ui(
                 }
             }
         });
+
         ui.separator();
         // One width for the three, the widest label's in this language: the row does not
         // re-wrap when Play becomes Pause.
@@ -120,42 +122,61 @@ pub fn ui(
                 .response
                 .labelled_by(label.id)
                 .on_hover_text(tr("toolbar-integrator-hint"));
-            let id = egui::Id::unique("toolbar time step");
-            let mut text: String = ui
-                .data(|d| d.get_temp(id))
-                .unwrap_or_else(|| settings.time_step.to_string());
-            let label = ui.label("dt");
-            let response = ui
-                .add(egui::TextEdit::singleline(&mut text).desired_width(70.0))
-                .labelled_by(label.id)
-                .on_hover_text(tr("toolbar-time-step-hint"));
-            ui.label("s");
-            let parsed = text
-                .trim()
-                .parse::<f64>()
-                .map_err(|_| "not a number".to_owned())
-                .and_then(|v| {
-                    check_value(Rule::Positive, &tr("field-simulation-time-step"), v).map(|()| v)
-                });
-            if response.has_focus() || parsed.is_err() {
-                ui.data_mut(|d| d.insert_temp(id, text.clone()));
-            } else {
-                ui.data_mut(|d| d.remove::<String>(id));
-            }
-            match parsed {
-                Ok(v) if response.lost_focus() && v.to_bits() != settings.time_step.to_bits() => {
-                    document.apply(Edit::SetTimeStep, |scene| scene.simulation.time_step = v);
+            // The step, its field and its unit wrap as one.
+            ui.horizontal(|ui| {
+                let id = egui::Id::unique("toolbar time step");
+                let mut text: String = ui
+                    .data(|d| d.get_temp(id))
+                    .unwrap_or_else(|| settings.time_step.to_string());
+                let label = ui.label("dt");
+                let response = ui
+                    .add(egui::TextEdit::singleline(&mut text).desired_width(70.0))
+                    .labelled_by(label.id)
+                    .on_hover_text(tr("toolbar-time-step-hint"));
+                ui.label("s");
+                let parsed = text
+                    .trim()
+                    .parse::<f64>()
+                    .map_err(|_| "not a number".to_owned())
+                    .and_then(|v| {
+                        check_value(Rule::Positive, &tr("field-simulation-time-step"), v)
+                            .map(|()| v)
+                    });
+                if response.has_focus() || parsed.is_err() {
+                    ui.data_mut(|d| d.insert_temp(id, text.clone()));
+                } else {
+                    ui.data_mut(|d| d.remove::<String>(id));
                 }
-                Err(reason) => {
-                    ui.colored_label(egui::Color32::from_rgb(200, 30, 30), reason.clone());
+                match parsed {
+                    Ok(v)
+                        if response.lost_focus() && v.to_bits() != settings.time_step.to_bits() =>
+                    {
+                        document.apply(Edit::SetTimeStep, |scene| scene.simulation.time_step = v);
+                    }
+                    Err(reason) => {
+                        ui.colored_label(egui::Color32::from_rgb(200, 30, 30), reason.clone());
+                    }
+                    _ => {}
                 }
-                _ => {}
-            }
+            });
         });
         ui.separator();
         let overlays = &mut canvas.overlays;
         if !compact {
             overlays_ui(ui, overlays);
+            // The instruments are tools too (usable while a run plays): one of them or
+            // one editing tool is chosen, and the bar shows which.
+            ui.separator();
+            for instrument in [Instrument::Tape, Instrument::Protractor, Instrument::Probe] {
+                if ui
+                    .selectable_label(measuring == Some(instrument), instrument.label())
+                    .on_hover_text(instrument.hint())
+                    .clicked()
+                {
+                    action = Some(Action::Instrument(instrument));
+                }
+            }
+            ui.separator();
         }
         if ui
             .button(tr("menu-fit"))

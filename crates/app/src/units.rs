@@ -93,17 +93,35 @@ fn split_unit<'t>(text: &'t str, si: &str) -> (&'t str, f64) {
     (text, 1.0)
 }
 
-/// An arithmetic expression's value.
+/// The functions and constants arithmetic may name (`exmex`'s, as people write them).
+const KNOWN_WORDS: [&str; 17] = [
+    "sqrt", "cbrt", "sin", "cos", "tan", "asin", "acos", "atan", "exp", "ln", "log10", "abs", "pi",
+    "Pi", "PI", "tau", "e",
+];
+
+/// An arithmetic expression's value. An angle in degrees inside a function's brackets
+/// is turned into radians, which the functions read: `sin(30 deg)`, `cos(45°)`.
+///
+/// # Errors
+/// What is wrong with it, in plain words.
 fn evaluate(expression: &str) -> Result<f64, String> {
+    if let Ok(value) = expression.trim().parse::<f64>() {
+        return Ok(value);
+    }
+    let expression = powers_of_ten(&degrees_in_brackets(expression));
+    if let Some(reason) = plain_reason(&expression) {
+        return Err(reason);
+    }
     // exmex names π PI, τ TAU and e E; people write pi and tau.
-    let spelled: String = words(expression)
+    let spelled: String = words(&expression)
         .map(|word| match word {
             "pi" | "Pi" => "PI",
             "tau" => "TAU",
             other => other,
         })
         .collect();
-    let value = exmex::eval_str::<f64>(&spelled).map_err(|e| e.msg().to_owned())?;
+    let value = exmex::eval_str::<f64>(&spelled)
+        .map_err(|_| crate::i18n::tr_text("units-unreadable", &[]))?;
     if value.is_finite() {
         Ok(value)
     } else {
@@ -112,6 +130,104 @@ fn evaluate(expression: &str) -> Result<f64, String> {
             &[("value", &value.to_string())],
         ))
     }
+}
+
+/// `expression` with each number written with a power of ten (`2e-3`, `1.5E6`) in
+/// brackets as a product, which the arithmetic reads: `(2*10^(-3))`.
+fn powers_of_ten(expression: &str) -> String {
+    let chars: Vec<char> = expression.chars().collect();
+    let mut out = String::new();
+    let mut i = 0;
+    while i < chars.len() {
+        let starts_number = chars[i].is_ascii_digit()
+            && (i == 0 || !(chars[i - 1].is_alphanumeric() || chars[i - 1] == '.'));
+        if !starts_number {
+            out.push(chars[i]);
+            i += 1;
+            continue;
+        }
+        let mut end = i;
+        while end < chars.len() && (chars[end].is_ascii_digit() || chars[end] == '.') {
+            end += 1;
+        }
+        let mantissa: String = chars[i..end].iter().collect();
+        let mut exponent_end = end + 1;
+        if end < chars.len() && matches!(chars[end], 'e' | 'E') {
+            if exponent_end < chars.len() && matches!(chars[exponent_end], '+' | '-') {
+                exponent_end += 1;
+            }
+            let digits_from = exponent_end;
+            while exponent_end < chars.len() && chars[exponent_end].is_ascii_digit() {
+                exponent_end += 1;
+            }
+            if exponent_end > digits_from {
+                let exponent: String = chars[end + 1..exponent_end].iter().collect();
+                for part in ["(", &mantissa, "*10^(", &exponent, "))"] {
+                    out.push_str(part);
+                }
+                i = exponent_end;
+                continue;
+            }
+        }
+        out.push_str(&mantissa);
+        i = end;
+    }
+    out
+}
+
+/// `expression` with each angle in degrees that ends a function's argument (`30 deg)`,
+/// `45°)`) written in radians.
+fn degrees_in_brackets(expression: &str) -> String {
+    let mut out = expression.to_owned();
+    for unit in ["deg", "°"] {
+        let mut from = 0;
+        while let Some(found) = out[from..].find(unit) {
+            let at = from + found;
+            let after = &out[at + unit.len()..];
+            let closes = after.trim_start().starts_with([')', ',']);
+            let before = out[..at].trim_end();
+            let follows_a_number =
+                before.ends_with(|c: char| c.is_ascii_digit() || c == '.' || c == ')');
+            if closes && follows_a_number {
+                out.replace_range(at..at + unit.len(), "*(pi/180)");
+                from = at + "*(pi/180)".len();
+            } else {
+                from = at + unit.len();
+            }
+        }
+    }
+    out
+}
+
+/// Why `expression` cannot be arithmetic, in plain words, where that can be told before
+/// reading it: empty, brackets that do not match, an operator at the end, or a word that
+/// is no function, constant or unit of the field.
+fn plain_reason(expression: &str) -> Option<String> {
+    let say = |id: &str, args: &[(&str, &str)]| Some(crate::i18n::tr_text(id, args));
+    let trimmed = expression.trim();
+    if trimmed.is_empty() {
+        return say("units-empty", &[]);
+    }
+    let mut depth = 0_i32;
+    for c in trimmed.chars() {
+        depth += match c {
+            '(' => 1,
+            ')' => -1,
+            _ => 0,
+        };
+        if depth < 0 {
+            break;
+        }
+    }
+    if depth != 0 {
+        return say("units-brackets", &[]);
+    }
+    if trimmed.ends_with(['+', '-', '*', '/', '^']) {
+        return say("units-ends-with-operator", &[]);
+    }
+    words(trimmed)
+        .find(|w| w.starts_with(char::is_alphabetic) && !KNOWN_WORDS.contains(w))
+        .and_then(|word| say("units-unknown-word", &[("word", word)]))
 }
 
 /// `text` cut into runs of letters and runs of everything else, in order.
@@ -159,6 +275,11 @@ mod tests {
             ("1 min", "s", 60.0),
             ("9.81 m/s^2", "m/s²", 9.81),
             ("12 m/s", "m/s", 12.0),
+            ("sin(30 deg)", "", 0.5),
+            ("cos(60°)", "", 0.5),
+            ("2*sin(30deg) m", "m", 1.0),
+            ("1.5e3 g", "kg", 1.5),
+            ("2e-3*5 s", "s", 0.01),
         ];
         for (text, si, expected) in cases {
             let value = parse(text, si).unwrap_or_else(|e| panic!("{text}: {e}"));
@@ -188,5 +309,19 @@ mod tests {
                 .contains("km"),
             "names the units"
         );
+        // In plain words, not the parser's.
+        for (text, says) in [
+            ("(2+3", "brackets"),
+            ("2*", "operator"),
+            ("sinn(1)", "'sinn'"),
+            ("2 3", "cannot be read"),
+        ] {
+            let error = parse(text, "").expect_err(text);
+            assert!(error.contains(says), "{text}: {error}");
+            assert!(
+                !error.contains("node") && !error.contains("ops"),
+                "{text}: {error}"
+            );
+        }
     }
 }

@@ -312,9 +312,17 @@ impl super::Canvas {
         };
         let pointer = response.interact_pointer_pos();
         let world = pointer.map(|p| self.view.to_world(rect, p));
+        // An end laid on a particle holds to it; elsewhere it snaps to a fixed point or a
+        // ramp's end near it (a pivot is met exactly), unless Alt is held.
+        let free = ui.input(|i| i.modifiers.alt);
         let mark = |canvas: &Self, at: Pos2| match canvas.particle_at(rect, scene, positions, at) {
-            Some(i) => Mark::Particle(i),
-            None => Mark::Point(canvas.view.to_world(rect, at)),
+            Some(i) if !free => Mark::Particle(i),
+            _ => Mark::Point(
+                canvas
+                    .anchor_near(rect, scene, at)
+                    .filter(|_| !free)
+                    .unwrap_or_else(|| canvas.view.to_world(rect, at)),
+            ),
         };
         match instrument {
             Instrument::Tape => {
@@ -372,10 +380,17 @@ impl super::Canvas {
             }
             Instrument::Probe => self.place_probe(ui, response, world),
         }
-        // The keyboard, where no other widget has the focus, in the first pass only (a
-        // pass egui discards sees the same keys again).
+        // Escape puts the instrument away, as it leaves any mode, where no text field
+        // takes the key.
         let focused = response.has_focus();
-        if keys_are_free(ui, focused) && ui.ctx().current_pass_index() == 0 {
+        if keys_are_free(ui, focused) && ui.input(|i| i.key_pressed(egui::Key::Escape)) {
+            self.instruments.active = None;
+            return;
+        }
+        // The keyboard while the canvas has the focus, in the first pass only (a pass egui
+        // discards sees the same keys again): Enter in a field elsewhere, which gives up
+        // its focus as it is pressed, must not lay the tape.
+        if focused && ui.ctx().current_pass_index() == 0 {
             self.instrument_keys(ui, (instrument, focused), positions, selection);
         }
     }

@@ -149,13 +149,13 @@ impl Canvas {
             self.drag_to(response.drag_delta(), world, &snap, document, frame);
         }
         if response.drag_stopped_by(egui::PointerButton::Primary) {
-            self.release(rect, document, frame, selection);
+            self.release(rect, document, frame, selection, free);
         }
         if response.clicked_by(egui::PointerButton::Primary) {
             let at = response.interact_pointer_pos().unwrap_or(pointer);
             match self.tool {
                 Tool::Particle => {
-                    let position = snap(self.view.to_world(rect, at));
+                    let position = self.snapped(rect, document.scene(), at, free);
                     *selection = Some(self.add_particle(document, position));
                 }
                 _ => *selection = self.hit(rect, document.scene(), frame, at),
@@ -166,6 +166,63 @@ impl Canvas {
     /// The snapping grid: a tenth of the drawn grid's spacing.
     pub(super) fn snap_step(&self) -> f64 {
         nice_length(80.0 / self.view.pixels_per_metre) / 10.0
+    }
+
+    /// The fixed point of the scene nearest the screen point `at`, within 10 pixels: a
+    /// rod's, string's or spring's fixed end, or a ramp's end. What a point laid by hand
+    /// snaps to before the grid (Alt frees it), so a pivot is met exactly.
+    pub(super) fn anchor_near(
+        &self,
+        rect: Rect,
+        scene: &physics::Scene,
+        at: Pos2,
+    ) -> Option<DVec2> {
+        let world = self.view.to_world(rect, at);
+        let reach = 10.0 / self.view.pixels_per_metre;
+        let fixed = |end: &Endpoint| match end {
+            Endpoint::Point(p) => Some(p.to_dvec2()),
+            Endpoint::Particle(_) => None,
+        };
+        let links = scene
+            .springs
+            .iter()
+            .flat_map(|s| [fixed(&s.from), fixed(&s.to)])
+            .chain(
+                scene
+                    .ties
+                    .iter()
+                    .flat_map(|t| [fixed(&t.from), fixed(&t.to)]),
+            )
+            .flatten();
+        let ramps = scene
+            .ramps
+            .iter()
+            .flat_map(|r| [r.from.to_dvec2(), r.to.to_dvec2()]);
+        links
+            .chain(ramps)
+            .map(|p| (p.distance(world), p))
+            .filter(|&(d, _)| d <= reach)
+            .min_by(|a, b| a.0.total_cmp(&b.0))
+            .map(|(_, p)| p)
+    }
+
+    /// Where a point laid by hand at the screen point `at` goes: on a fixed point or a
+    /// ramp's end near it, else on the grid; where the pointer is with Alt (`free`).
+    pub(super) fn snapped(
+        &self,
+        rect: Rect,
+        scene: &physics::Scene,
+        at: Pos2,
+        free: bool,
+    ) -> DVec2 {
+        let world = self.view.to_world(rect, at);
+        if free {
+            return world;
+        }
+        self.anchor_near(rect, scene, at).unwrap_or_else(|| {
+            let step = self.snap_step();
+            (world / step).round() * step
+        })
     }
 
     /// Select: a press on a velocity arrow's tip, a ramp's end, a particle or a ramp
@@ -290,17 +347,19 @@ impl Canvas {
         document: &mut Document,
         frame: &Frame,
         selection: &mut Option<Selection>,
+        free: bool,
     ) {
         let tolerance = 8.0 / self.view.pixels_per_metre;
         match self.drag.take() {
             Some(Drag::NewLink { from, tip, tool }) => {
                 let scene = document.scene();
-                let target = match self.hit(rect, scene, frame, self.view.to_screen(rect, tip)) {
+                let at = self.view.to_screen(rect, tip);
+                let target = match self.hit(rect, scene, frame, at) {
                     Some(Selection::Particle(to)) if to != from => {
                         Endpoint::Particle(scene.particles[to].name.clone())
                     }
                     Some(Selection::Particle(_)) => return,
-                    _ => Endpoint::Point(tip.into()),
+                    _ => Endpoint::Point(self.snapped(rect, scene, at, free).into()),
                 };
                 let length = match &target {
                     Endpoint::Particle(name) => scene

@@ -165,7 +165,10 @@ fn the_rod_and_string_tools_tie_a_particle_to_a_point() {
         let rect = app.canvas.rect;
         let ball = app.canvas.view.to_screen(rect, DVec2::ZERO);
         let end = ball + offset;
-        let anchor = app.canvas.view.to_world(rect, end);
+        // The fixed end lands on the snapping grid, a tenth of the drawn grid's spacing.
+        let step =
+            newtonlab_app::canvas::nice_length(80.0 / app.canvas.view.pixels_per_metre) / 10.0;
+        let anchor = (app.canvas.view.to_world(rect, end) / step).round() * step;
         harness.hover_at(ball);
         harness.run();
         harness.drag_at(ball);
@@ -184,6 +187,16 @@ fn the_rod_and_string_tools_tie_a_particle_to_a_point() {
         ("rod1", TieKind::Rod)
     );
     let length = ties[0].length;
+    let pivot = harness
+        .state()
+        .document
+        .scene()
+        .end_position(&ties[0].to)
+        .expect("a fixed point");
+    assert!(
+        pivot.distance(anchor) < 1e-12,
+        "on the grid: {pivot}, not {anchor}"
+    );
     assert!(
         (length - anchor.length()).abs() < 1e-9,
         "as long as the drag: {length}"
@@ -265,4 +278,18 @@ fn a_new_scene_has_no_pairwise_gravitation() {
     harness.run();
     assert!(!harness.state().document.scene().world.gravitation);
     assert_eq!(harness.state().title(), "untitled — NewtonLab");
+}
+
+/// A rod typed 1 m long on a bob placed 0.9 m from its pivot is flagged in the
+/// inspector with both numbers (the rod pulls the bob onto its length at the start).
+#[test]
+fn a_rod_longer_than_its_ends_are_apart_is_flagged() {
+    let scene = Scene::new()
+        .with_world(World::gravity_only())
+        .with_particle(Particle::new("bob", 1.0).radius(0.05).position([0.0, -0.9]))
+        .with_tie(physics::Tie::rod("rod", [0.0, 0.0], "bob", 1.0));
+    let mut harness = harness(App::new(scene));
+    harness.state_mut().selection = Some(Selection::Tie(0));
+    harness.run();
+    harness.get_by_label_contains("0.9 m apart at the start, not 1 m");
 }

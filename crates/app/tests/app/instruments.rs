@@ -198,6 +198,77 @@ fn a_gate_through_the_pivot_times_a_full_period() {
     );
 }
 
+/// The tape measure is a tool like the others, and its ends snap to the scene's fixed
+/// points: laid by a drag from 4 pixels off the pendulum's pivot, its first end is the
+/// pivot exactly, and as a light gate from there straight down it times a full period
+/// (the 1st to the 3rd crossing) to 1e-6 s of the elliptic integral's. Choosing the
+/// Particle tool puts the tape measure away; so does Escape.
+#[test]
+fn a_tape_laid_by_hand_snaps_to_the_pivot_and_times_a_period() {
+    use newtonlab_app::canvas::Mark;
+    use newtonlab_app::stopwatch::{State, Trigger};
+    let mut harness = harness(App::new(example_scene("pendulum")));
+    harness.get_by_label("Tape measure").click();
+    harness.run();
+    assert_eq!(
+        harness.state().canvas.instruments.active,
+        Some(newtonlab_app::Instrument::Tape),
+        "the tool bar chooses it"
+    );
+    let (rect, view) = (harness.state().canvas.rect, harness.state().canvas.view);
+    let pivot = view.to_screen(rect, DVec2::ZERO);
+    let below = view.to_screen(rect, DVec2::new(0.0, -3.0));
+    let (from, to) = (pivot + egui::vec2(3.0, -2.5), below);
+    harness.hover_at(from);
+    harness.run();
+    harness.drag_at(from);
+    harness.run();
+    harness.hover_at(to);
+    harness.run();
+    harness.drop_at(to);
+    harness.run();
+    let tape = harness.state().canvas.instruments.tape.expect("laid");
+    assert_eq!(tape.0, Mark::Point(DVec2::ZERO), "snapped to the pivot");
+    {
+        let watch = &mut harness.state_mut().stopwatch;
+        watch.shown = true;
+        watch.start_on = Trigger::Gate;
+        watch.stop_on = Trigger::Gate;
+        watch.stop_nth = 3;
+    }
+    harness.run();
+    harness.get_by_label("Start").click();
+    harness.run();
+    play_frames(&mut harness, 45);
+    let watch = &harness.state().stopwatch;
+    assert_eq!(watch.state, State::Stopped);
+    let period = pendulum_period(2.0, 60.0);
+    assert!(
+        (watch.reading - period).abs() < 1e-6,
+        "{} s against {period} s",
+        watch.reading
+    );
+    harness.get_by_label("Reset").click();
+    harness.run();
+    harness.get_by_label("Particle").click();
+    harness.run();
+    assert_eq!(
+        harness.state().canvas.instruments.active,
+        None,
+        "a tool leaves the tape"
+    );
+    assert_eq!(harness.state().canvas.tool, newtonlab_app::Tool::Particle);
+    harness.get_by_label("Tape measure").click();
+    harness.run();
+    harness.key_press(Key::Escape);
+    harness.run();
+    assert_eq!(
+        harness.state().canvas.instruments.active,
+        None,
+        "Escape leaves it"
+    );
+}
+
 /// Lap mode with a typed event: `rod.angle crosses 0 down` happens once a period, so
 /// every lap is a period and so is their mean (to 1e-6 s), while the watch runs on.
 #[test]

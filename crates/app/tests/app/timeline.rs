@@ -108,3 +108,98 @@ fn play_from_a_moment_gone_back_to_branches_the_run() {
         "the branch goes on as the run did, bit for bit"
     );
 }
+
+/// The time machine jumps to events at their located instants: on the 60° pendulum
+/// (period 4 √(L/g) K(sin 30°) with L = 2 m), from the start "turn »" shows the bob's
+/// turning points: T/4 (the bottom, where its vertical velocity turns), T/2 (the end of
+/// the swing, at rest to 1e-6 m/s), 3T/4, each to 1e-8 s; "« turn" goes back to T/2; a
+/// typed instant is shown exactly; a click on the slider's track goes there.
+#[test]
+fn the_time_machine_jumps_to_turning_points_and_typed_instants() {
+    let mut harness = harness(App::new(example_scene("pendulum")));
+    play_frames(&mut harness, 40);
+    harness.state_mut().perform(Action::GoTo(0));
+    harness.run();
+    let k = 0.5_f64; // sin 30°
+    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
+    for _ in 0..20 {
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+    }
+    let period = 4.0 * (2.0 / 9.81_f64).sqrt() * std::f64::consts::PI / (2.0 * a);
+    let shown = |harness: &egui_kittest::Harness<'_, App>| {
+        let simulation = harness.state().runner.simulation().expect("shown");
+        (simulation.time(), simulation.velocities()[0].length())
+    };
+    // One particle in the scene: it is the one, selected or not. Its velocity's y passes
+    // through 0 at the bottom (T/4) and both components at the ends (T/2).
+    for (label, expected, at_rest) in [
+        ("turn »", period / 4.0, false),
+        ("turn »", period / 2.0, true),
+        ("turn »", 3.0 * period / 4.0, false),
+        ("« turn", period / 2.0, true),
+    ] {
+        harness.get_by_label(label).click();
+        harness.run();
+        let (t, speed) = shown(&harness);
+        assert!(
+            (t - expected).abs() < 1e-8,
+            "{label}: {t} s, theory {expected} s"
+        );
+        if at_rest {
+            assert!(speed < 1e-6, "{label}: at rest ({speed} m/s)");
+        }
+    }
+    let field = harness.get_by_label("go to");
+    field.click();
+    harness.run();
+    harness.get_by_label("go to").type_text("1.25");
+    harness.run();
+    harness.key_press(Key::Enter);
+    harness.run();
+    assert_eq!(
+        shown(&harness).0.to_bits(),
+        1.25_f64.to_bits(),
+        "the typed instant"
+    );
+    // The time machine's slider: the wider of the two (the tool bar has the time scale's).
+    let rail = harness
+        .get_all_by_role(egui::accesskit::Role::Slider)
+        .map(|slider| slider.rect())
+        .max_by(|a, b| a.width().total_cmp(&b.width()))
+        .expect("a slider");
+    let quarter = egui::pos2(rail.left() + rail.width() / 4.0, rail.center().y);
+    harness.hover_at(quarter);
+    harness.run();
+    harness.drag_at(quarter);
+    harness.run();
+    harness.drop_at(quarter);
+    harness.run();
+    let timeline = harness.state().runner.timeline.as_ref().expect("kept");
+    let at = timeline.shown.expect("gone back");
+    let quarter_step = timeline.end / 4;
+    assert!(
+        at.abs_diff(quarter_step) <= timeline.end / 50,
+        "{at} of {}",
+        timeline.end
+    );
+}
+
+/// "impact »" lands on the located instant of the next impact, not on the step after it.
+#[test]
+fn the_time_machine_lands_on_an_impacts_instant() {
+    let mut harness = harness(App::new(example_scene("collision")));
+    play_frames(&mut harness, 10);
+    let impacts = crate::common::impacts_of(&harness);
+    assert!(!impacts.is_empty(), "the balls met");
+    harness.state_mut().perform(Action::GoTo(0));
+    harness.run();
+    harness.get_by_label("impact »").click();
+    harness.run();
+    let t = harness.state().runner.simulation().expect("shown").time();
+    assert_eq!(
+        t.to_bits(),
+        impacts[0].time.to_bits(),
+        "{t} against {}",
+        impacts[0].time
+    );
+}

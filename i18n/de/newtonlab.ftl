@@ -184,7 +184,9 @@ graph-use-time-hint = Wieder über der Zeit zeichnen
 graph-export-csv = CSV exportieren…
 graph-export-csv-hint = Alle aufgezeichneten Proben der Größen dieses Diagramms als CSV-Datei speichern
 graph-save-png = PNG speichern…
-graph-save-png-hint = Ein Bild dieses Diagramms speichern, wie es zu sehen ist
+graph-save-png-hint = Diesen Graphen als druckbare Abbildung speichern: 1200 × 800 Pixel, mit Titel, Achsen, Zahlen, Einheiten und Legende
+graph-save-svg = SVG speichern…
+graph-save-svg-hint = Diesen Graphen als druckbare Abbildung im SVG-Format speichern: sie lässt sich beliebig skalieren
 graph-press-play = Start drücken: das Diagramm füllt sich vom Beginn des Laufs an.
 
 ## Announcements for screen readers
@@ -250,6 +252,10 @@ stopwatch-start = Start
 stopwatch-reset = Stoppuhr zurücksetzen
 stopwatch-start-on = starten
 stopwatch-stop-on = anhalten
+stopwatch-period-at-gate = Periode an der Schranke
+stopwatch-period-at-gate-hint = Start beim 1. Durchgang durch das Maßband, Halt beim 3.: eine volle Periode eines Pendels, das durch eine Schranke an seiner Aufhängung schwingt
+stopwatch-between-impacts = zwischen Stößen
+stopwatch-between-impacts-hint = Start beim 1. Stoß, Halt beim 2.: der Flug eines Sprungs
 stopwatch-nth = Nr.
 stopwatch-nth-hint = Das wievielte Auftreten, ab Start gezählt: eine volle Periode eines Pendels ist der 1. und der 3. Durchgang durch die Senkrechte
 stopwatch-event-label = Ereignis
@@ -286,6 +292,7 @@ file-title-open = Eine Szene öffnen
 file-title-save = Die Szene speichern
 file-title-csv = Den Graphen als CSV exportieren
 file-title-png = Das Bild als PNG speichern
+file-title-svg = Die Abbildung als SVG speichern
 file-folder = Ordner
 file-folder-hint = Der Ordner
 file-parent = .. (übergeordneter Ordner)
@@ -570,6 +577,22 @@ graph-particle-hint = Das Teilchen, dessen Größe hinzukommt
 graph-quantity = Größe
 graph-quantity-hint = Die Größe, die hinzukommt
 graph-tension-hint = Die Kraft zeichnen, die diese Stange oder dieser Faden trägt (Zug ist positiv)
+graph-marks = Extrema und Nullstellen
+graph-marks-hint = Maxima, Minima und Nulldurchgänge jeder Kurve markieren, aus den Abtastwerten gelesen (eine Parabel durch die drei Werte um jedes Extremum), und die Periode aus aufeinanderfolgenden Maxima angeben
+graph-fit = Anpassung
+graph-fit-hint = Jede Kurve nach der Methode der kleinsten Quadrate an ein Modell anpassen: seine Parameter mit ihren Standardunsicherheiten, die Kurve gestrichelt
+graph-fit-none = keine
+graph-fit-line = Gerade a + b x
+graph-fit-parabola = Parabel a + b x + c x²
+graph-fit-sine = Sinus A sin(ω x + φ) + c
+graph-fit-decay = Abklingen A e^(−x/τ) + c
+graph-fit-result = { $quantity }, { $model }: { $parameters } (mittlere Abweichung { $rms })
+graph-reset-view = Ansicht zurücksetzen
+graph-reset-view-hint = Wieder den ganzen Lauf zeigen (Strg und das Mausrad zoomen, Ziehen verschiebt)
+graph-period = Periode von { $quantity }: { $period } s (Mittel aus { $intervals } { $intervals ->
+    [one] Abstand
+   *[other] Abständen
+} zwischen Maxima)
 graph-angle-hint = Den Winkel dieser Stange, dieses Fadens oder dieser Feder zur Senkrechten nach unten zeichnen (gegen den Uhrzeigersinn positiv)
 graph-length-hint = Den Abstand der Enden dieser Stange, dieses Fadens oder dieser Feder zeichnen
 graph-total-hint = Diese Größe des Systems zeichnen

@@ -185,7 +185,9 @@ graph-use-time-hint = Plot against time again
 graph-export-csv = Export CSV…
 graph-export-csv-hint = Save every recorded sample of this graph's quantities as a CSV file
 graph-save-png = Save PNG…
-graph-save-png-hint = Save a picture of this graph as it is on screen
+graph-save-png-hint = Save this graph as a figure to print: 1200 × 800 pixels, with its title, axes, numbers, units and legend
+graph-save-svg = Save SVG…
+graph-save-svg-hint = Save this graph as a figure to print, as SVG: it scales to any size
 graph-press-play = Press Play: the graph fills from the start of the run.
 
 ## Announcements for screen readers
@@ -251,6 +253,10 @@ stopwatch-start = Start
 stopwatch-reset = Reset stopwatch
 stopwatch-start-on = start on
 stopwatch-stop-on = stop on
+stopwatch-period-at-gate = period at the gate
+stopwatch-period-at-gate-hint = Start on the 1st crossing of the tape, stop on the 3rd: a full period of a pendulum swinging through a gate at its pivot
+stopwatch-between-impacts = between impacts
+stopwatch-between-impacts-hint = Start on the 1st impact, stop on the 2nd: a bounce's flight
 stopwatch-nth = no.
 stopwatch-nth-hint = Which occurrence, counted from Start: a full period of a pendulum is the 1st and the 3rd crossing of its vertical
 stopwatch-event-label = event
@@ -287,6 +293,7 @@ file-title-open = Open a scene
 file-title-save = Save the scene
 file-title-csv = Export the graph as CSV
 file-title-png = Save the picture as PNG
+file-title-svg = Save the figure as SVG
 file-folder = folder
 file-folder-hint = The folder
 file-parent = .. (parent folder)
@@ -571,6 +578,22 @@ graph-particle-hint = The particle whose quantity to add
 graph-quantity = quantity
 graph-quantity-hint = The quantity to add
 graph-tension-hint = Plot the force this rod or string carries (pulling is positive)
+graph-marks = extremes and zeros
+graph-marks-hint = Mark each series' maxima, minima and zero crossings, read off the samples (a parabola through the three samples around each extreme), and give the period from successive maxima
+graph-fit = fit
+graph-fit-hint = Fit each series with a model by least squares: its parameters with their standard uncertainties, and the curve dashed
+graph-fit-none = none
+graph-fit-line = line a + b x
+graph-fit-parabola = parabola a + b x + c x²
+graph-fit-sine = sine A sin(ω x + φ) + c
+graph-fit-decay = decay A e^(−x/τ) + c
+graph-fit-result = { $quantity }, { $model }: { $parameters } (rms residual { $rms })
+graph-reset-view = reset view
+graph-reset-view-hint = Show the whole run again (Ctrl and the mouse wheel zoom, a drag pans)
+graph-period = period of { $quantity }: { $period } s (mean of { $intervals } { $intervals ->
+    [one] interval
+   *[other] intervals
+} between maxima)
 graph-angle-hint = Plot this rod's, string's or spring's angle from the downward vertical (counter-clockwise positive)
 graph-length-hint = Plot the distance between this rod's, string's or spring's ends
 graph-total-hint = Plot this system quantity

@@ -184,7 +184,9 @@ graph-use-time-hint = Volver a dibujar frente al tiempo
 graph-export-csv = Exportar CSV…
 graph-export-csv-hint = Guardar todas las muestras grabadas de las magnitudes de esta gráfica como archivo CSV
 graph-save-png = Guardar PNG…
-graph-save-png-hint = Guardar una imagen de esta gráfica tal como se ve
+graph-save-png-hint = Guardar esta gráfica como figura para imprimir: 1200 × 800 píxeles, con su título, ejes, números, unidades y leyenda
+graph-save-svg = Guardar SVG…
+graph-save-svg-hint = Guardar esta gráfica como figura para imprimir en SVG: se escala a cualquier tamaño
 graph-press-play = Pulse Reproducir: la gráfica se llena desde el inicio de la ejecución.
 
 ## Announcements for screen readers
@@ -250,6 +252,10 @@ stopwatch-start = Iniciar
 stopwatch-reset = Reiniciar el cronómetro
 stopwatch-start-on = iniciar
 stopwatch-stop-on = parar
+stopwatch-period-at-gate = periodo en la barrera
+stopwatch-period-at-gate-hint = Iniciar en el 1.er cruce de la cinta, detener en el 3.º: un periodo completo de un péndulo que pasa por una barrera en su pivote
+stopwatch-between-impacts = entre choques
+stopwatch-between-impacts-hint = Iniciar en el 1.er choque, detener en el 2.º: el vuelo de un rebote
 stopwatch-nth = n.º
 stopwatch-nth-hint = Qué aparición, contada desde Iniciar: un periodo completo de un péndulo es el 1.º y el 3.º cruce de su vertical
 stopwatch-event-label = evento
@@ -286,6 +292,7 @@ file-title-open = Abrir una escena
 file-title-save = Guardar la escena
 file-title-csv = Exportar la gráfica como CSV
 file-title-png = Guardar la imagen como PNG
+file-title-svg = Guardar la figura como SVG
 file-folder = carpeta
 file-folder-hint = La carpeta
 file-parent = .. (carpeta superior)
@@ -570,6 +577,22 @@ graph-particle-hint = La partícula cuya magnitud añadir
 graph-quantity = magnitud
 graph-quantity-hint = La magnitud que añadir
 graph-tension-hint = Dibujar la fuerza que transmite esta varilla o cuerda (la tracción es positiva)
+graph-marks = extremos y ceros
+graph-marks-hint = Marcar los máximos, mínimos y cruces por cero de cada serie, leídos de las muestras (una parábola por las tres muestras alrededor de cada extremo), y dar el periodo entre máximos sucesivos
+graph-fit = ajuste
+graph-fit-hint = Ajustar cada serie a un modelo por mínimos cuadrados: sus parámetros con sus incertidumbres típicas, y la curva a trazos
+graph-fit-none = ninguno
+graph-fit-line = recta a + b x
+graph-fit-parabola = parábola a + b x + c x²
+graph-fit-sine = seno A sin(ω x + φ) + c
+graph-fit-decay = decaimiento A e^(−x/τ) + c
+graph-fit-result = { $quantity }, { $model }: { $parameters } (residuo cuadrático medio { $rms })
+graph-reset-view = restablecer vista
+graph-reset-view-hint = Volver a mostrar toda la simulación (Ctrl y la rueda hacen zoom, arrastrar desplaza)
+graph-period = periodo de { $quantity }: { $period } s (media de { $intervals } { $intervals ->
+    [one] intervalo
+   *[other] intervalos
+} entre máximos)
 graph-angle-hint = Representar el ángulo de esta barra, cuerda o muelle respecto a la vertical hacia abajo (positivo en sentido antihorario)
 graph-length-hint = Representar la distancia entre los extremos de esta barra, cuerda o muelle
 graph-total-hint = Dibujar esta magnitud del sistema

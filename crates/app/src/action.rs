@@ -17,6 +17,8 @@ pub enum Action {
     ExportGraph(usize),
     /// Save a picture of the canvas or a graph as PNG.
     ExportPicture(Subject),
+    /// Save graph number N as a figure to print (PNG or SVG).
+    ExportFigure(usize, crate::picture::Format),
     Example(&'static str),
     Quit,
     Undo,

@@ -16,6 +16,8 @@ pub enum Purpose {
     ExportCsv(usize),
     /// Save the picture waiting in the app.
     ExportPng,
+    /// Save the SVG figure waiting in the app.
+    ExportSvg,
 }
 
 impl Purpose {
@@ -25,6 +27,7 @@ impl Purpose {
             Self::Open | Self::Save => &["toml", "json"],
             Self::ExportCsv(_) => &["csv"],
             Self::ExportPng => &["png"],
+            Self::ExportSvg => &["svg"],
         }
     }
 }
@@ -200,7 +203,9 @@ impl Files {
             let verb = tr(match dialog.purpose {
                 Purpose::Open => "file-verb-open",
                 Purpose::Save => "file-verb-save",
-                Purpose::ExportCsv(_) | Purpose::ExportPng => "file-verb-export",
+                Purpose::ExportCsv(_) | Purpose::ExportPng | Purpose::ExportSvg => {
+                    "file-verb-export"
+                }
             });
             let extensions = dialog.purpose.extensions();
             Modal::new(Id::unique("file dialog")).show(ui.ctx(), |ui| {
@@ -210,6 +215,7 @@ impl Files {
                     Purpose::Save => "file-title-save",
                     Purpose::ExportCsv(_) => "file-title-csv",
                     Purpose::ExportPng => "file-title-png",
+                    Purpose::ExportSvg => "file-title-svg",
                 }));
                 ui.horizontal(|ui| {
                     let label = ui.label(tr("file-folder"));

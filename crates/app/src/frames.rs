@@ -2,9 +2,13 @@
 //! `--measure-frames`.
 
 use crate::App;
+#[cfg(not(target_arch = "wasm32"))]
+use crate::figure;
 use crate::files::Pending;
 #[cfg(not(target_arch = "wasm32"))]
 use crate::files::Purpose;
+#[cfg(not(target_arch = "wasm32"))]
+use crate::i18n::tr;
 use crate::i18n::{Arg, tr_with};
 use crate::{picture, platform};
 use egui::Ui;
@@ -42,6 +46,66 @@ impl App {
                 #[cfg(target_arch = "wasm32")]
                 self.save_picture(subject.file_name());
             }
+            Err(message) => self.notify(message),
+        }
+    }
+
+    /// Draws graph `graph` as a figure to print and asks where to save it (on the web:
+    /// downloads it).
+    pub(crate) fn export_figure(&mut self, graph: usize, format: picture::Format) {
+        #[cfg(target_arch = "wasm32")]
+        {
+            let _ = format;
+            self.picture_asked = Some(picture::Subject::Graph(graph));
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        self.draw_figure(graph, format);
+    }
+
+    /// [`Self::export_figure`] on the desktop: plotters draws the figure.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn draw_figure(&mut self, graph: usize, format: picture::Format) {
+        let (Some(recording), Some(setup)) = (
+            self.runner.recording.as_ref(),
+            self.document.scene().graphs.get(graph),
+        ) else {
+            self.notify(tr("notice-nothing-to-export"));
+            return;
+        };
+        let title = setup.title.clone().unwrap_or_else(|| {
+            tr_with(
+                "graph-untitled",
+                &[("number", Arg::Text(&(graph + 1).to_string()))],
+            )
+        });
+        match figure::graph(recording, setup, &title, format) {
+            Ok(bytes) => match format {
+                picture::Format::Png => {
+                    self.picture_ready = Some(bytes);
+                    self.files.ask(Purpose::ExportPng, None, "graph.png");
+                }
+                picture::Format::Svg => {
+                    self.svg_ready = Some(bytes);
+                    self.files.ask(Purpose::ExportSvg, None, "graph.svg");
+                }
+            },
+            Err(message) => self.notify(message),
+        }
+    }
+
+    /// Writes the SVG figure waiting to `path`.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub(crate) fn save_figure_svg(&mut self, path: &str) {
+        let Some(bytes) = self.svg_ready.take() else {
+            return;
+        };
+        let text = String::from_utf8_lossy(&bytes).into_owned();
+        let written = platform::write_text(path, &text);
+        match written {
+            Ok(()) => self.notify(tr_with(
+                "notice-picture-saved",
+                &[("path", Arg::Text(path))],
+            )),
             Err(message) => self.notify(message),
         }
     }

@@ -28,6 +28,8 @@ pub mod autosave;
 pub mod canvas;
 pub mod document;
 pub mod edit;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod figure;
 pub mod files;
 pub mod format;
 pub mod help;
@@ -146,6 +148,9 @@ pub struct App {
     picture_awaited: Option<(picture::Subject, picture::Slot)>,
     /// A picture encoded, waiting for the file dialog's path.
     picture_ready: Option<Vec<u8>>,
+    /// A graph's SVG figure, waiting for where to save it.
+    #[cfg(not(target_arch = "wasm32"))]
+    svg_ready: Option<Vec<u8>>,
     /// Copies of unsaved work, for recovery after a crash (desktop).
     #[cfg(not(target_arch = "wasm32"))]
     pub autosave: Option<autosave::Autosave>,
@@ -191,6 +196,8 @@ impl App {
             picture_asked: None,
             picture_awaited: None,
             picture_ready: None,
+            #[cfg(not(target_arch = "wasm32"))]
+            svg_ready: None,
             #[cfg(not(target_arch = "wasm32"))]
             autosave: None,
             #[cfg(not(target_arch = "wasm32"))]
@@ -247,6 +254,7 @@ impl App {
             Action::SaveAs => self.save_as(),
             Action::ExportGraph(graph) => self.ask_export(graph),
             Action::ExportPicture(subject) => self.picture_asked = Some(subject),
+            Action::ExportFigure(graph, format) => self.export_figure(graph, format),
             Action::Example(name) => self.guard(Pending::Example(name)),
             Action::Quit => self.guard(Pending::Quit),
             Action::Undo => self.undo(),
@@ -600,6 +608,35 @@ impl App {
         }
     }
 
+    /// The file dialog, and what its answer asks for.
+    fn file_dialogs(&mut self, ui: &mut Ui) {
+        let title = self.document.title();
+        match self.files.ui(ui, &title) {
+            Some(Choice::Path(Purpose::Open, path)) => self.open_path(&path),
+            Some(Choice::Path(Purpose::Save, path)) => self.save_path(&path),
+            Some(Choice::Path(Purpose::ExportCsv(graph), path)) => self.export_csv(&path, graph),
+            Some(Choice::Path(Purpose::ExportPng, path)) => self.save_picture(&path),
+            Some(Choice::Path(Purpose::ExportSvg, path)) => {
+                // No file dialog in the browser: SVG figures are the desktop's.
+                #[cfg(not(target_arch = "wasm32"))]
+                self.save_figure_svg(&path);
+                #[cfg(target_arch = "wasm32")]
+                let _ = path;
+            }
+            Some(Choice::Discard(pending)) => self.proceed(pending),
+            Some(Choice::Overwrite(path)) => self.write_scene(&path),
+            #[cfg(not(target_arch = "wasm32"))]
+            Some(Choice::Recover(recovered)) => self.recover(recovered),
+            #[cfg(not(target_arch = "wasm32"))]
+            Some(Choice::DropRecovery) => {
+                if let Some(autosave) = &mut self.autosave {
+                    autosave.clear();
+                }
+            }
+            None => {}
+        }
+    }
+
     /// The whole app, one frame.
     pub fn ui(&mut self, ui: &mut Ui) {
         // The run back from the steps taken while the last frame was drawn.
@@ -678,24 +715,7 @@ impl App {
                 .ui(ui, &mut self.document, &self.runner, &mut self.selection);
         });
 
-        let title = self.document.title();
-        match self.files.ui(ui, &title) {
-            Some(Choice::Path(Purpose::Open, path)) => self.open_path(&path),
-            Some(Choice::Path(Purpose::Save, path)) => self.save_path(&path),
-            Some(Choice::Path(Purpose::ExportCsv(graph), path)) => self.export_csv(&path, graph),
-            Some(Choice::Path(Purpose::ExportPng, path)) => self.save_picture(&path),
-            Some(Choice::Discard(pending)) => self.proceed(pending),
-            Some(Choice::Overwrite(path)) => self.write_scene(&path),
-            #[cfg(not(target_arch = "wasm32"))]
-            Some(Choice::Recover(recovered)) => self.recover(recovered),
-            #[cfg(not(target_arch = "wasm32"))]
-            Some(Choice::DropRecovery) => {
-                if let Some(autosave) = &mut self.autosave {
-                    autosave.clear();
-                }
-            }
-            None => {}
-        }
+        self.file_dialogs(ui);
         for action in actions {
             self.perform(action);
         }

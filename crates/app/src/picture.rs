@@ -27,6 +27,13 @@ pub fn take(slot: &Slot) -> Option<Arc<ColorImage>> {
     slot.lock().ok().and_then(|mut place| place.take())
 }
 
+/// What a graph's figure to print is written as (`figure.rs`, on the desktop).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    Png,
+    Svg,
+}
+
 /// What a picture shows.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Subject {

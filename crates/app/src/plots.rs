@@ -10,16 +10,19 @@
 //! last run's graphs until the next Play. The graphs are part of the scene: editing them
 //! is an undoable change, saved with the file.
 
+use std::fmt::Write as _;
+
 use egui::Ui;
 use egui_plot::{AxisHints, Legend, Line, LineStyle, Plot, PlotPoints, VLine};
 use physics::{Graph, LinkOf, Of, Quantity, Total};
 
 use crate::action::Action;
+use crate::analysis;
 use crate::document::Document;
 use crate::edit::Edit;
 use crate::format;
 use crate::i18n::{Arg, tr, tr_with};
-use crate::picture::Subject;
+use crate::picture::Format;
 use crate::recording::Recording;
 use crate::run_loop::Runner;
 
@@ -33,6 +36,14 @@ type GraphEdit = (Edit, Box<dyn FnOnce(&mut Graph)>);
 #[derive(Default)]
 pub struct Graphs {
     choice: Vec<(usize, Of)>,
+    /// Whether each graph marks its series' maxima, minima and zero crossings.
+    pub marks: Vec<bool>,
+    /// Whether each graph's view is to be reset at the next frame.
+    reset: Vec<bool>,
+    /// What each graph read off its series last frame (the periods, the fits), as shown.
+    pub readings: Vec<Vec<String>>,
+    /// The model each graph fits its series with, if any.
+    pub fits: Vec<Option<analysis::Model>>,
     /// Where each graph's plot was drawn last frame, for its picture.
     pub rects: Vec<egui::Rect>,
 }
@@ -42,27 +53,14 @@ pub fn label(quantity: &Quantity) -> String {
     format!("{quantity} ({})", quantity.unit())
 }
 
-/// The graph's quantities, parsed; ones that do not parse are left out (validation
-/// reports them).
-fn axes(graph: &Graph) -> (Quantity, Vec<Quantity>) {
-    let x = Quantity::parse(&graph.x).unwrap_or(Quantity::Time);
-    let y = graph
-        .y
-        .iter()
-        .filter_map(|y| Quantity::parse(y).ok())
-        .collect();
-    (x, y)
-}
-
 /// The recorded samples of `graph` as CSV: t first, then the x axis if it is not t,
 /// then each series; one row per sample, at the simulation's instants.
 pub fn to_csv(recording: &Recording, graph: &Graph) -> String {
-    let (x, y) = axes(graph);
     let mut columns = vec![Quantity::Time];
-    if x != Quantity::Time {
-        columns.push(x);
+    if graph.x != Quantity::Time {
+        columns.push(graph.x.clone());
     }
-    columns.extend(y);
+    columns.extend(graph.y.iter().cloned());
     let quote = |s: String| {
         if s.contains([',', '"']) {
             format!("\"{}\"", s.replace('"', "\"\""))
@@ -93,6 +91,10 @@ impl Graphs {
         ui.separator();
         let count = document.scene().graphs.len();
         self.choice.resize(count, (0, Of::Y));
+        self.marks.resize(count, false);
+        self.reset.resize(count, false);
+        self.readings.resize(count, Vec::new());
+        self.fits.resize(count, None);
         self.rects.resize(count, egui::Rect::NOTHING);
         for g in 0..count {
             ui.push_id(("graph", g), |ui| {
@@ -115,7 +117,7 @@ impl Graphs {
             .clicked()
         {
             document.apply(Edit::AddGraph, |scene| {
-                scene.graphs.push(Graph::against_time(Vec::<String>::new()));
+                scene.graphs.push(Graph::against_time([]));
             });
         }
         action
@@ -135,7 +137,7 @@ impl Graphs {
         // Only what the panel reads, not the whole scene, every frame.
         let graph = &document.scene().graphs[g].clone();
         let names = document.scene().particle_names();
-        let (x, series) = axes(graph);
+        let (x, series) = (graph.x.clone(), graph.y.clone());
         let mut action = None;
         let mut change: Option<GraphEdit> = None;
         ui.horizontal(|ui| {
@@ -181,7 +183,7 @@ impl Graphs {
             self.choice[g] = (particle, of);
             let chosen = names
                 .get(particle)
-                .map(|name| Quantity::Particle(name.clone(), of).to_string());
+                .map(|name| Quantity::Particle(name.clone(), of));
             if ui
                 .add_enabled(chosen.is_some(), egui::Button::new(tr("graph-add-series")))
                 .on_hover_text(tr("graph-add-series-hint"))
@@ -223,8 +225,10 @@ impl Graphs {
                     .on_hover_text(hint)
                     .clicked()
                 {
-                    let text = quantity.to_string();
-                    change = Some((Edit::AddSeries, Box::new(move |graph| graph.y.push(text))));
+                    change = Some((
+                        Edit::AddSeries,
+                        Box::new(move |graph| graph.y.push(quantity)),
+                    ));
                 }
             }
         });
@@ -239,10 +243,7 @@ impl Graphs {
                     .on_hover_text(tr("graph-use-time-hint"))
                     .clicked()
                 {
-                    change = Some((
-                        Edit::SetXAxis,
-                        Box::new(|graph| "t".clone_into(&mut graph.x)),
-                    ));
+                    change = Some((Edit::SetXAxis, Box::new(|graph| graph.x = Quantity::Time)));
                 }
             }
             for (k, q) in series.iter().enumerate() {
@@ -278,21 +279,88 @@ impl Graphs {
             {
                 action = Some(Action::ExportGraph(g));
             }
-            if ui
-                .add_enabled(samples > 0, egui::Button::new(tr("graph-save-png")))
-                .on_hover_text(tr("graph-save-png-hint"))
-                .clicked()
-            {
-                action = Some(Action::ExportPicture(Subject::Graph(g)));
+            // In the browser a graph saves as the picture on screen (`figure.rs`).
+            let formats = [
+                (Format::Png, "graph-save-png", "graph-save-png-hint"),
+                (Format::Svg, "graph-save-svg", "graph-save-svg-hint"),
+            ];
+            let shown = if cfg!(target_arch = "wasm32") { 1 } else { 2 };
+            for (format, text, hint) in formats.into_iter().take(shown) {
+                if ui
+                    .add_enabled(samples > 0, egui::Button::new(tr(text)))
+                    .on_hover_text(tr(hint))
+                    .clicked()
+                {
+                    action = Some(Action::ExportFigure(g, format));
+                }
             }
         });
         let Some(recording) = recording else {
             ui.label(tr("graph-press-play"));
             return action;
         };
+        ui.horizontal(|ui| {
+            ui.checkbox(&mut self.marks[g], tr("graph-marks"))
+                .on_hover_text(tr("graph-marks-hint"));
+            let fit = &mut self.fits[g];
+            let label = ui.label(tr("graph-fit"));
+            egui::ComboBox::from_id_salt(("graph fit", g))
+                .selected_text(fit.map_or_else(|| tr("graph-fit-none"), model_name))
+                .show_ui(ui, |ui| {
+                    ui.selectable_value(fit, None, tr("graph-fit-none"));
+                    for model in analysis::Model::ALL {
+                        ui.selectable_value(fit, Some(model), model_name(model));
+                    }
+                })
+                .response
+                .labelled_by(label.id)
+                .on_hover_text(tr("graph-fit-hint"));
+            if ui
+                .small_button(tr("graph-reset-view"))
+                .on_hover_text(tr("graph-reset-view-hint"))
+                .clicked()
+            {
+                self.reset[g] = true;
+            }
+        });
+        let columns: Vec<(Quantity, Vec<[f64; 2]>)> = series
+            .iter()
+            .filter_map(|q| {
+                let (across, up) = (recording.column(&x)?, recording.column(q)?);
+                let points = (0..samples)
+                    .map(|k| [recording.at(k, across), recording.at(k, up)])
+                    .collect();
+                Some((q.clone(), points))
+            })
+            .collect();
+        let marks = self.marks[g] && x == Quantity::Time;
+        let analyses: Vec<Analysis> = columns
+            .iter()
+            .filter(|_| marks)
+            .map(|(q, points)| Analysis::of(q, points))
+            .collect();
+        let fits: Vec<(String, analysis::Fit, (f64, f64))> = self.fits[g]
+            .map(|model| {
+                columns
+                    .iter()
+                    .filter_map(|(q, points)| {
+                        let (x, y): (Vec<f64>, Vec<f64>) =
+                            points.iter().map(|p| (p[0], p[1])).unzip();
+                        let span = x
+                            .iter()
+                            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+                                (a.min(v), b.max(v))
+                            });
+                        analysis::fit(model, &x, &y).map(|fit| (q.to_string(), fit, span))
+                    })
+                    .collect()
+            })
+            .unwrap_or_default();
         let every = samples.div_ceil(MAX_POINTS).max(1);
-        let shown = Plot::new("graph")
+        let mut plot = Plot::new("graph")
             .legend(Legend::default())
+            // The wheel scrolls the panel, not the plot (Ctrl and the wheel zoom it).
+            .allow_scroll(false)
             // egui_plot's default hides x labels closer than 60 points, which on a panel
             // this narrow leaves only "0"; a label that does not fit is still skipped.
             .custom_x_axes(vec![
@@ -300,40 +368,184 @@ impl Graphs {
                     .label(label(&x))
                     .label_spacing(24.0..=40.0),
             ])
-            .height(220.0)
-            .show(ui, |plot| {
-                for q in &series {
-                    let (Some(across), Some(up)) = (recording.column(&x), recording.column(q))
-                    else {
-                        continue;
-                    };
-                    let points: PlotPoints = (0..samples)
-                        .step_by(every)
-                        .chain((!(samples - 1).is_multiple_of(every)).then_some(samples - 1))
-                        .map(|k| [recording.at(k, across), recording.at(k, up)])
-                        .collect();
-                    plot.line(Line::new(label(q), points));
-                }
-                if let (Quantity::Time, Some(t)) = (&x, cursor) {
+            .height(220.0);
+        if std::mem::take(&mut self.reset[g]) {
+            plot = plot.reset();
+        }
+        let shown = plot.show(ui, |plot| {
+            for (q, points) in &columns {
+                let drawn: PlotPoints = (0..points.len())
+                    .step_by(every)
+                    .chain((!(points.len() - 1).is_multiple_of(every)).then_some(points.len() - 1))
+                    .map(|k| points[k])
+                    .collect();
+                plot.line(Line::new(label(q), drawn));
+            }
+            for analysis in &analyses {
+                analysis.draw(plot);
+            }
+            for (name, fit, (from, to)) in &fits {
+                let curve: PlotPoints = (0..=400)
+                    .map(|k| {
+                        let x = from + (to - from) * f64::from(k) / 400.0;
+                        [x, fit.model.value(&fit.parameters, x)]
+                    })
+                    .collect();
+                plot.line(
+                    Line::new(format!("{name} fit"), curve)
+                        .style(LineStyle::dashed_loose())
+                        .color(egui::Color32::from_rgb(60, 60, 60)),
+                );
+            }
+            if let (Quantity::Time, Some(t)) = (&x, cursor) {
+                plot.vline(
+                    VLine::new("shown", t)
+                        .color(egui::Color32::from_rgb(200, 60, 60))
+                        .width(1.5),
+                );
+            }
+            if x == Quantity::Time {
+                for t in impact_marks(recording, &series) {
                     plot.vline(
-                        VLine::new("shown", t)
-                            .color(egui::Color32::from_rgb(200, 60, 60))
-                            .width(1.5),
+                        VLine::new("impacts", t)
+                            .color(egui::Color32::from_gray(140))
+                            .style(LineStyle::dashed_dense()),
                     );
                 }
-                if x == Quantity::Time {
-                    for t in impact_marks(recording, &series) {
-                        plot.vline(
-                            VLine::new("impacts", t)
-                                .color(egui::Color32::from_gray(140))
-                                .style(LineStyle::dashed_dense()),
-                        );
-                    }
+            }
+        });
+        // The values under the pointer: where it is across, and each series there.
+        if let Some(pointer) = shown.response.hover_pos() {
+            let at = shown.transform.value_from_position(pointer).x;
+            let mut line = format!("{x} = {}", format::with_unit(at, x.unit()));
+            for (q, points) in &columns {
+                let (across, up): (Vec<f64>, Vec<f64>) =
+                    points.iter().map(|p| (p[0], p[1])).unzip();
+                let sorted = across.windows(2).all(|w| w[0] <= w[1]);
+                if let Some(value) = sorted
+                    .then(|| analysis::value_at(&across, &up, at))
+                    .flatten()
+                {
+                    let _ = write!(line, ";  {q} = {}", format::with_unit(value, q.unit()));
                 }
-            });
+            }
+            ui.label(
+                egui::RichText::new(line)
+                    .small()
+                    .family(egui::FontFamily::Monospace),
+            );
+        }
+        self.readings[g] = analyses
+            .iter()
+            .filter_map(Analysis::period_words)
+            .chain(fits.iter().map(|(name, fit, _)| fit_words(name, fit)))
+            .collect();
+        // Monospace: its font has the superscripts of a power of ten (1.2 × 10⁻¹³).
+        for words in &self.readings[g] {
+            ui.label(
+                egui::RichText::new(words)
+                    .small()
+                    .family(egui::FontFamily::Monospace),
+            );
+        }
         self.rects[g] = shown.response.rect;
         action
     }
+}
+
+/// A series' maxima, minima and zero crossings, read off its samples
+/// ([`analysis`]).
+struct Analysis {
+    name: String,
+    extremes: Vec<analysis::Extreme>,
+    zeros: Vec<f64>,
+}
+
+impl Analysis {
+    fn of(quantity: &Quantity, points: &[[f64; 2]]) -> Self {
+        let (x, y): (Vec<f64>, Vec<f64>) = points.iter().map(|p| (p[0], p[1])).unzip();
+        Self {
+            name: quantity.to_string(),
+            extremes: analysis::extrema(&x, &y),
+            zeros: analysis::zeros(&x, &y),
+        }
+    }
+
+    /// The marks: up triangles at maxima, down at minima, rings at zero crossings.
+    fn draw(&self, plot: &mut egui_plot::PlotUi<'_>) {
+        let at = |maximum: bool| -> Vec<[f64; 2]> {
+            self.extremes
+                .iter()
+                .filter(|e| e.maximum == maximum)
+                .take(MARKS)
+                .map(|e| [e.x, e.value])
+                .collect()
+        };
+        for (points, shape) in [
+            (at(true), egui_plot::MarkerShape::Up),
+            (at(false), egui_plot::MarkerShape::Down),
+            (
+                self.zeros.iter().take(MARKS).map(|&t| [t, 0.0]).collect(),
+                egui_plot::MarkerShape::Circle,
+            ),
+        ] {
+            plot.points(
+                egui_plot::Points::new(format!("{} marks", self.name), points)
+                    .shape(shape)
+                    .radius(4.0)
+                    .color(egui::Color32::from_rgb(200, 120, 20)),
+            );
+        }
+    }
+
+    /// "period of bob.x: 3.0446 s (2 intervals between maxima)".
+    fn period_words(&self) -> Option<String> {
+        let (period, intervals) = analysis::period(&self.extremes)?;
+        Some(tr_with(
+            "graph-period",
+            &[
+                ("quantity", Arg::Text(&self.name)),
+                ("period", Arg::Text(&format::fixed(period, 6))),
+                ("intervals", Arg::Number(intervals as f64)),
+            ],
+        ))
+    }
+}
+
+/// A model's name in the app's language.
+fn model_name(model: analysis::Model) -> String {
+    tr(match model {
+        analysis::Model::Line => "graph-fit-line",
+        analysis::Model::Parabola => "graph-fit-parabola",
+        analysis::Model::Sine => "graph-fit-sine",
+        analysis::Model::Decay => "graph-fit-decay",
+    })
+}
+
+/// "fit of bob.x: y = A sin(ω t + φ) + c; A = 1.7320 ± 0.0001, …; rms 3e-5".
+fn fit_words(name: &str, fit: &analysis::Fit) -> String {
+    let parameters: Vec<String> = fit
+        .model
+        .names()
+        .iter()
+        .zip(fit.parameters.iter().zip(&fit.uncertainties))
+        .map(|(n, (value, sigma))| {
+            format!(
+                "{n} = {} ± {}",
+                format::number(*value),
+                format::number(*sigma)
+            )
+        })
+        .collect();
+    tr_with(
+        "graph-fit-result",
+        &[
+            ("quantity", Arg::Text(name)),
+            ("model", Arg::Text(&model_name(fit.model))),
+            ("parameters", Arg::Text(&parameters.join(", "))),
+            ("rms", Arg::Text(&format::number(fit.rms))),
+        ],
+    )
 }
 
 /// Marks shown on a graph at most: more would be a grey smear.

@@ -137,6 +137,19 @@ impl Stopwatch {
         }
     }
 
+    /// Sets it to time a full period at the light gate: the 1st to the 3rd crossing of
+    /// the tape (a pendulum crosses a gate through its pivot twice a period).
+    pub fn period_at_the_gate(&mut self) {
+        (self.start_on, self.start_nth) = (Trigger::Gate, 1);
+        (self.stop_on, self.stop_nth) = (Trigger::Gate, 3);
+    }
+
+    /// Sets it to time the flight between the 1st and the 2nd impact (a bounce).
+    pub fn between_impacts(&mut self) {
+        (self.start_on, self.start_nth) = (Trigger::Impact, 1);
+        (self.stop_on, self.stop_nth) = (Trigger::Impact, 2);
+    }
+
     /// Start pressed at simulated time `now`: counting at once by hand, else armed (also
     /// before Play: the run's first instants count).
     pub fn start(&mut self, now: f64) {

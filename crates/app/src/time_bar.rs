@@ -265,9 +265,26 @@ impl App {
     }
 }
 
-/// The stopwatch's choices: what starts and stops it, which occurrence, and the event.
+/// The stopwatch's choices: what starts and stops it, which occurrence, and the event;
+/// first, the two settings a lesson most often wants, in one click.
 fn triggers(ui: &mut Ui, watch: &mut stopwatch::Stopwatch) {
     use stopwatch::Trigger;
+    ui.horizontal(|ui| {
+        if ui
+            .small_button(tr("stopwatch-period-at-gate"))
+            .on_hover_text(tr("stopwatch-period-at-gate-hint"))
+            .clicked()
+        {
+            watch.period_at_the_gate();
+        }
+        if ui
+            .small_button(tr("stopwatch-between-impacts"))
+            .on_hover_text(tr("stopwatch-between-impacts-hint"))
+            .clicked()
+        {
+            watch.between_impacts();
+        }
+    });
     let rows = [
         (
             "stopwatch-start-on",

@@ -384,8 +384,9 @@ y = ["B.x", "A.z", "t"]
         found,
         [
             "7:5 graph #1: x: 'B.vx' names no particle; there is no particle 'B'",
-            "8:5 graph #1: y: 'B.x' names no particle; there is no particle 'B'",
+            // A name that is no quantity is found as the file is read, before the checks.
             "8:5 graph #1: y: 'A.z': a particle's quantity is one of x, y, vx, vy, speed, ax, ay, kinetic_energy; a rod's, string's or spring's is angle or length, and a rod's or string's also tension",
+            "8:5 graph #1: y: 'B.x' names no particle; there is no particle 'B'",
             "8:5 graph #1: y: time goes on the x axis (x = \"t\")",
         ]
     );

@@ -53,7 +53,9 @@ pub fn dropped_ball() -> Scene {
         .with_world(World::default())
         .with_particle(Particle::new("ball", 1.0).position([0.0, 10.0]));
     scene.world.gravitation = false;
-    scene.graphs.push(Graph::against_time(["ball.y"]));
+    scene
+        .graphs
+        .push(Graph::of(["ball.y"]).expect("a quantity"));
     scene
 }
 

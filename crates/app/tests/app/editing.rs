@@ -202,7 +202,9 @@ fn the_rod_and_string_tools_tie_a_particle_to_a_point() {
         "as long as the drag: {length}"
     );
     harness.state_mut().document.apply(Edit::AddGraph, |scene| {
-        scene.graphs.push(Graph::against_time(["rod1.tension"]));
+        scene
+            .graphs
+            .push(Graph::of(["rod1.tension"]).expect("a quantity"));
     });
     play_frames(&mut harness, 4);
     let app = harness.state();

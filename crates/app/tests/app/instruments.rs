@@ -229,14 +229,25 @@ fn a_tape_laid_by_hand_snaps_to_the_pivot_and_times_a_period() {
     harness.run();
     let tape = harness.state().canvas.instruments.tape.expect("laid");
     assert_eq!(tape.0, Mark::Point(DVec2::ZERO), "snapped to the pivot");
-    {
-        let watch = &mut harness.state_mut().stopwatch;
-        watch.shown = true;
-        watch.start_on = Trigger::Gate;
-        watch.stop_on = Trigger::Gate;
-        watch.stop_nth = 3;
-    }
+    harness.key_press(Key::T);
     harness.run();
+    assert_eq!(
+        harness.state().canvas.instruments.active,
+        Some(newtonlab_app::Instrument::Tape),
+        "still measuring"
+    );
+    harness.get_by_label("period at the gate").click();
+    harness.run();
+    let watch = &harness.state().stopwatch;
+    assert_eq!(
+        (
+            watch.start_on,
+            watch.start_nth,
+            watch.stop_on,
+            watch.stop_nth
+        ),
+        (Trigger::Gate, 1, Trigger::Gate, 3)
+    );
     harness.get_by_label("Start").click();
     harness.run();
     play_frames(&mut harness, 45);

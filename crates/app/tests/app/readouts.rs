@@ -20,7 +20,10 @@ fn graphs_keep_the_whole_run_through_axis_changes_late_series_and_reset() {
     // A phase plot against y, then back to time: nothing is lost.
     harness.get_by_label("Use as x axis").click();
     harness.run();
-    assert_eq!(harness.state().document.scene().graphs[0].x, "ball.y");
+    assert_eq!(
+        harness.state().document.scene().graphs[0].x.to_string(),
+        "ball.y"
+    );
     harness.get_by_label("use time").click();
     harness.run();
     // A series added after the run has data from t = 0.
@@ -167,7 +170,11 @@ fn a_rods_angle_and_length_are_plotted() {
         harness.run();
     }
     let graph = &harness.state().document.scene().graphs[0];
-    assert!(graph.y.contains(&"rod.angle".to_owned()), "{:?}", graph.y);
+    assert!(
+        graph.y.iter().any(|y| y.to_string() == "rod.angle"),
+        "{:?}",
+        graph.y
+    );
     let (header, rows) = csv_rows(harness.state(), 0);
     let columns: Vec<&str> = header.split(',').collect();
     let angle = columns
@@ -191,5 +198,133 @@ fn a_rods_angle_and_length_are_plotted() {
     assert!(
         rows.iter().any(|r| r[angle] < -59.0),
         "it swings to the other side"
+    );
+}
+
+/// A graph reads its series: with "extremes and zeros" on, the 60° pendulum's `bob.x`
+/// gives its period from successive maxima, 4 √(L/g) K(sin 30°) = 3.044625 s, to 1e-6 s
+/// (each maximum is the vertex of the parabola through three samples 5 ms apart).
+#[test]
+fn a_graph_reads_the_period_of_its_series() {
+    // Tall enough that the first graph and its readings are in view without scrolling.
+    let mut harness = egui_kittest::Harness::builder()
+        .with_size([1280.0, 1200.0])
+        .build_ui_state(
+            |ui, app: &mut App| app.ui(ui),
+            App::new(crate::common::example_scene("pendulum")),
+        );
+    harness.run();
+    play_frames(&mut harness, 70);
+    harness
+        .get_all_by_label("extremes and zeros")
+        .next()
+        .expect("a checkbox")
+        .click();
+    harness.run();
+    let readings = &harness.state().graphs.readings[0];
+    let text = readings
+        .iter()
+        .find(|r| r.starts_with("period of bob.x"))
+        .unwrap_or_else(|| panic!("no period among {readings:?}"));
+    let number: f64 = text
+        .split(": ")
+        .nth(1)
+        .and_then(|rest| rest.split(' ').next())
+        .and_then(|n| n.parse().ok())
+        .unwrap_or_else(|| panic!("a period in {text:?}"));
+    let (mut a, mut b) = (1.0_f64, (0.75_f64).sqrt());
+    for _ in 0..20 {
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+    }
+    let period = 4.0 * (2.0 / 9.81_f64).sqrt() * std::f64::consts::PI / (2.0 * a);
+    assert!((number - period).abs() < 1e-6, "{text}: theory {period} s");
+}
+
+/// A graph exports as a figure to print: a PNG of 1200 × 800 pixels whose plot is drawn
+/// (many pixels neither white nor grey: the curves), and an SVG holding the title, the
+/// axes' quantities with their units, tick numbers and the legend's entries.
+#[test]
+fn a_graph_exports_as_a_figure_with_axes_and_units() {
+    use newtonlab_app::figure::{self, Format};
+    let harness = played("pendulum", 20);
+    let app = harness.state();
+    let recording = app.runner.recording.as_ref().expect("recorded");
+    let graph = &app.document.scene().graphs[0];
+    let png = figure::graph(recording, graph, "Swing of the bob", Format::Png).expect("a PNG");
+    let decoder = png::Decoder::new(std::io::Cursor::new(png));
+    let mut reader = decoder.read_info().expect("a PNG that reads back");
+    let mut pixels = vec![0; reader.output_buffer_size().expect("a size")];
+    let info = reader.next_frame(&mut pixels).expect("its pixels");
+    assert_eq!((info.width, info.height), figure::SIZE, "printable size");
+    let coloured = pixels
+        .chunks(3)
+        .filter(|p| p[0].abs_diff(p[1]) > 40 || p[1].abs_diff(p[2]) > 40)
+        .count();
+    assert!(
+        coloured > 1000,
+        "the curve is drawn: {coloured} coloured pixels"
+    );
+    let svg = figure::graph(recording, graph, "Swing of the bob", Format::Svg).expect("an SVG");
+    let svg = String::from_utf8(svg).expect("text");
+    for expected in [
+        "<svg",
+        "Swing of the bob",
+        "t (s)",
+        "bob.x (m)",
+        "(m)",
+        "1.0",
+    ] {
+        assert!(svg.contains(expected), "{expected} in the SVG");
+    }
+    let texts = svg.matches("</text>").count();
+    assert!(
+        texts >= 12,
+        "a title, two axes' names, the legend and tick numbers: {texts}"
+    );
+}
+
+/// A sine fitted to a spring's motion: a bob of 1 kg on a spring of 4 N/m stretched
+/// 0.5 m moves as x = 1 + 0.5 cos 2t (rk4 follows it to 1e-9 m), so the fit reads A =
+/// 0.5, ω = 2 rad/s, φ = π/2 and c = 1, each to 1e-6, with tiny uncertainties.
+#[test]
+fn a_sine_fitted_to_a_spring_reads_its_amplitude_and_frequency() {
+    use newtonlab_app::analysis::Model;
+    use physics::{Graph, Spring};
+    let mut scene = Scene::new()
+        .with_world(World::no_forces())
+        .with_particle(Particle::new("bob", 1.0).radius(0.05).position([1.5, 0.0]))
+        .with_spring(Spring::new("s", "bob", [0.0, 0.0], 4.0, 1.0));
+    scene.graphs.push(Graph::of(["bob.x"]).expect("a quantity"));
+    let mut harness = crate::common::harness(App::new(scene));
+    play_frames(&mut harness, 60);
+    harness.state_mut().graphs.fits[0] = Some(Model::Sine);
+    harness.run();
+    let app = harness.state();
+    let recording = app.runner.recording.as_ref().expect("recorded");
+    let column = |q: &str| {
+        let c = recording
+            .column(&Quantity::parse(q).expect("a quantity"))
+            .expect("recorded");
+        (0..recording.len())
+            .map(|k| recording.at(k, c))
+            .collect::<Vec<f64>>()
+    };
+    let fit =
+        newtonlab_app::analysis::fit(Model::Sine, &column("t"), &column("bob.x")).expect("a fit");
+    let truth = [0.5, 2.0, std::f64::consts::FRAC_PI_2, 1.0];
+    for (k, (got, want)) in fit.parameters.iter().zip(truth).enumerate() {
+        assert!(
+            (got - want).abs() < 1e-6,
+            "{}: {got} against {want}",
+            Model::Sine.names()[k]
+        );
+        assert!(fit.uncertainties[k] < 1e-6, "{}", fit.uncertainties[k]);
+    }
+    assert!(
+        app.graphs.readings[0]
+            .iter()
+            .any(|r| r.starts_with("bob.x, sine")),
+        "{:?}",
+        app.graphs.readings[0]
     );
 }

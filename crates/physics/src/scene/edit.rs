@@ -74,18 +74,16 @@ impl Scene {
 
 #[cfg(test)]
 mod tests {
-    use crate::{Follow, Graph, Particle, Scene, Section, Spring, View};
+    use crate::{Follow, Graph, Particle, Quantity, Scene, Section, Spring, View};
 
     fn two_balls() -> Scene {
         let mut scene = Scene::new()
             .with_particle(Particle::new("A", 1.0))
             .with_particle(Particle::new("B", 1.0).position([1.0, 0.0]))
             .with_spring(Spring::new("s1", "A", "B", 1.0, 1.0));
-        scene.graphs.push(Graph {
-            title: None,
-            x: "A.x".to_owned(),
-            y: vec!["A.vx".to_owned(), "B.y".to_owned()],
-        });
+        let mut graph = Graph::of(["A.vx", "B.y"]).expect("quantities");
+        graph.x = Quantity::parse("A.x").expect("a quantity");
+        scene.graphs.push(graph);
         scene.view = Some(View {
             follow: Some(Follow::Particle("A".to_owned())),
             ..View::default()
@@ -98,8 +96,16 @@ mod tests {
         let mut scene = two_balls();
         scene.rename(Section::Particle(0), "C");
         assert_eq!(scene.springs[0].from, "C".into());
-        assert_eq!(scene.graphs[0].x, "C.x");
-        assert_eq!(scene.graphs[0].y, ["C.vx", "B.y"]);
+        let names = |graph: &Graph| {
+            (
+                graph.x.to_string(),
+                graph.y.iter().map(ToString::to_string).collect::<Vec<_>>(),
+            )
+        };
+        assert_eq!(
+            names(&scene.graphs[0]),
+            ("C.x".to_owned(), vec!["C.vx".to_owned(), "B.y".to_owned()])
+        );
         assert_eq!(
             scene.view.unwrap().follow,
             Some(Follow::Particle("C".to_owned()))
@@ -111,8 +117,11 @@ mod tests {
         let mut scene = two_balls();
         scene.remove(Section::Particle(0));
         assert!(scene.springs.is_empty());
-        assert_eq!(scene.graphs[0].x, "t");
-        assert_eq!(scene.graphs[0].y, ["B.y"]);
+        assert_eq!(scene.graphs[0].x, Quantity::Time);
+        assert_eq!(
+            scene.graphs[0].y,
+            [Quantity::parse("B.y").expect("a quantity")]
+        );
         assert_eq!(scene.view.as_ref().unwrap().follow, None);
         assert!(scene.validate().is_empty());
     }

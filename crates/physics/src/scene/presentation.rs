@@ -14,20 +14,32 @@ use crate::quantity::Quantity;
 pub struct Graph {
     /// A heading, optional.
     pub title: Option<String>,
-    /// The horizontal axis: `"t"` or a quantity (see [`Quantity::parse`]).
-    pub x: String,
+    /// The horizontal axis: time, or a quantity (a phase plot).
+    pub x: Quantity,
     /// The plotted quantities, one series each.
-    pub y: Vec<String>,
+    pub y: Vec<Quantity>,
 }
 
 impl Graph {
     /// `y` against time.
-    pub fn against_time(y: impl IntoIterator<Item = impl Into<String>>) -> Self {
+    pub fn against_time(y: impl IntoIterator<Item = Quantity>) -> Self {
         Self {
             title: None,
-            x: "t".to_owned(),
-            y: y.into_iter().map(Into::into).collect(),
+            x: Quantity::Time,
+            y: y.into_iter().collect(),
         }
+    }
+
+    /// The quantities named `y` (`"ball.y"`, as a scene file writes them) against time.
+    ///
+    /// # Errors
+    /// The first name that is no quantity, and why ([`Quantity::parse`]).
+    pub fn of<S: AsRef<str>>(y: impl IntoIterator<Item = S>) -> Result<Self, String> {
+        let y = y
+            .into_iter()
+            .map(|text| Quantity::parse(text.as_ref()))
+            .collect::<Result<Vec<_>, _>>()?;
+        Ok(Self::against_time(y))
     }
 }
 
@@ -74,12 +86,9 @@ impl Scene {
     /// Renames every reference to the particle, rod or string `old` in the graphs and the
     /// view, as renaming a particle does for its springs.
     pub(super) fn rename_in_presentation(&mut self, old: &str, new: &str) {
-        let rename = |text: &mut String| match Quantity::parse(text) {
-            Ok(Quantity::Particle(name, of)) if name == old => {
-                *text = Quantity::Particle(new.to_owned(), of).to_string();
-            }
-            Ok(Quantity::Link(name, of)) if name == old => {
-                *text = Quantity::Link(new.to_owned(), of).to_string();
+        let rename = |quantity: &mut Quantity| match quantity {
+            Quantity::Particle(name, _) | Quantity::Link(name, _) if name == old => {
+                new.clone_into(name);
             }
             _ => {}
         };
@@ -98,13 +107,13 @@ impl Scene {
     /// the view (a graph's x axis falls back to time), as deleting a particle does for
     /// its springs.
     pub(super) fn forget_in_presentation(&mut self, name: &str) {
-        let names = |text: &str| match Quantity::parse(text) {
-            Ok(Quantity::Particle(n, _) | Quantity::Link(n, _)) => n == name,
+        let names = |quantity: &Quantity| match quantity {
+            Quantity::Particle(n, _) | Quantity::Link(n, _) => n == name,
             _ => false,
         };
         for graph in &mut self.graphs {
             if names(&graph.x) {
-                "t".clone_into(&mut graph.x);
+                graph.x = Quantity::Time;
             }
             graph.y.retain(|y| !names(y));
         }

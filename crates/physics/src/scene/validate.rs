@@ -372,10 +372,10 @@ impl Checker<'_> {
         for (i, graph) in self.scene.graphs.iter().enumerate() {
             let s = Section::Graph(i);
             let axes = std::iter::once(("x", &graph.x)).chain(graph.y.iter().map(|y| ("y", y)));
-            for (field, text) in axes {
-                match Quantity::parse(text) {
-                    Err(reason) => self.report(s, field, &format!("{field}: {reason}")),
-                    Ok(Quantity::Particle(name, _)) if self.particle_index(&name).is_none() => {
+            for (field, quantity) in axes {
+                let text = &quantity.to_string();
+                match quantity.clone() {
+                    Quantity::Particle(name, _) if self.particle_index(&name).is_none() => {
                         self.report(
                             s,
                             field,
@@ -385,7 +385,7 @@ impl Checker<'_> {
                             ),
                         );
                     }
-                    Ok(Quantity::Link(name, LinkOf::Tension))
+                    Quantity::Link(name, LinkOf::Tension)
                         if !self.scene.ties.iter().any(|t| t.name == name) =>
                     {
                         self.report(
@@ -397,7 +397,7 @@ impl Checker<'_> {
                             ),
                         );
                     }
-                    Ok(Quantity::Link(name, _))
+                    Quantity::Link(name, _)
                         if !self.scene.ties.iter().any(|t| t.name == name)
                             && !self.scene.springs.iter().any(|t| t.name == name) =>
                     {
@@ -410,10 +410,10 @@ impl Checker<'_> {
                             ),
                         );
                     }
-                    Ok(Quantity::Time) if field == "y" => {
+                    Quantity::Time if field == "y" => {
                         self.report(s, field, &say("scene-graph-time-on-y", &[]));
                     }
-                    Ok(_) => {}
+                    _ => {}
                 }
             }
         }

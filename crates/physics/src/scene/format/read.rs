@@ -6,7 +6,6 @@ use std::ops::Range;
 
 use super::VERSION;
 use super::tree::{Entry, Node, Span, Value, line_column};
-use crate::Integrator;
 use crate::scene::error::{FieldRef, LoadError, Problem, Section};
 use crate::scene::fields::{self, Field, Kind, Value as FieldValue};
 use crate::scene::validate;
@@ -14,6 +13,7 @@ use crate::scene::{
     Bounds, Color, Endpoint, Follow, Graph, PairForces, Particle, Ramp, Scene, Settings, Spring,
     Tie, TieKind, Vector, View, World, say,
 };
+use crate::{Integrator, Quantity};
 
 pub(super) struct Reader<'t> {
     pub(super) text: &'t str,
@@ -393,7 +393,7 @@ impl<'t> Reader<'t> {
     }
 
     pub(super) fn graph(&mut self, node: &Node, index: usize) -> Graph {
-        let mut graph = Graph::against_time(Vec::<String>::new());
+        let mut graph = Graph::against_time([]);
         let Some(mut t) = self.table(
             node,
             Section::Graph(index),
@@ -405,12 +405,34 @@ impl<'t> Reader<'t> {
         if let Some(title) = &graph.title {
             t.label = say("scene-named", &[("kind", "graph"), ("name", title)]);
         }
+        // Each name is read as a quantity here, each one that is not said at its field.
         if let Some(x) = self.field(&mut t, "x", read_text) {
-            graph.x = x;
+            match Quantity::parse(&x) {
+                Ok(x) => graph.x = x,
+                Err(reason) => self.quantity_problem(&t, "x", &reason),
+            }
         }
-        graph.y = self.required(&mut t, "y", read_text_list, Vec::new());
+        for y in self.required(&mut t, "y", read_text_list, Vec::new()) {
+            match Quantity::parse(&y) {
+                Ok(y) => graph.y.push(y),
+                Err(reason) => self.quantity_problem(&t, "y", &reason),
+            }
+        }
         self.close(&t, GRAPH_KEYS);
         graph
+    }
+
+    /// A name in a graph's `key` that is no quantity: `reason`, at the field.
+    fn quantity_problem(&mut self, table: &Table<'_>, key: &'static str, reason: &str) {
+        let field = FieldRef {
+            section: table.section,
+            field: key,
+        };
+        let span = self.spans.get(&field).cloned();
+        let message = format!("{}: {key}: {reason}", table.label);
+        self.problem(span, Some(field), message);
+        // The field's other names are still checked: every problem is listed at once.
+        self.failed.remove(&field);
     }
 
     pub(super) fn view(&mut self, node: &Node) -> View {

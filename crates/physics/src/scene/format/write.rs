@@ -120,8 +120,11 @@ impl Scene {
             if let Some(title) = &graph.title {
                 entries.push(("title", Out::Text(title.clone())));
             }
-            entries.push(("x", Out::Text(graph.x.clone())));
-            entries.push(("y", Out::TextList(graph.y.clone())));
+            entries.push(("x", Out::Text(graph.x.to_string())));
+            entries.push((
+                "y",
+                Out::TextList(graph.y.iter().map(ToString::to_string).collect()),
+            ));
             sections.push(OutSection {
                 header: Header::ArrayItem("graph"),
                 entries,

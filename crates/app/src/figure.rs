@@ -30,8 +30,12 @@ const COLOURS: [RGBColor; 6] = [
     RGBColor(23, 190, 207),
 ];
 
-/// Makes the bundled font available to plotters as "sans-serif" (once per process).
-fn register_font() -> Result<(), String> {
+/// Makes the bundled font available to plotters as "sans-serif" (once per process; the
+/// command line's `validate` figures use it too).
+///
+/// # Errors
+/// The font could not be loaded.
+pub fn register_font() -> Result<(), String> {
     static REGISTERED: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
     let ok = *REGISTERED.get_or_init(|| {
         plotters::style::register_font(

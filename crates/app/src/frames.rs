@@ -7,8 +7,6 @@ use crate::figure;
 use crate::files::Pending;
 #[cfg(not(target_arch = "wasm32"))]
 use crate::files::Purpose;
-#[cfg(not(target_arch = "wasm32"))]
-use crate::i18n::tr;
 use crate::i18n::{Arg, tr_with};
 use crate::{picture, platform};
 use egui::Ui;
@@ -65,11 +63,7 @@ impl App {
     /// [`Self::export_figure`] on the desktop: plotters draws the figure.
     #[cfg(not(target_arch = "wasm32"))]
     fn draw_figure(&mut self, graph: usize, format: picture::Format) {
-        let (Some(recording), Some(setup)) = (
-            self.runner.recording.as_ref(),
-            self.document.scene().graphs.get(graph),
-        ) else {
-            self.notify(tr("notice-nothing-to-export"));
+        let Some((recording, setup)) = self.recorded_graph(graph) else {
             return;
         };
         let title = setup.title.clone().unwrap_or_else(|| {

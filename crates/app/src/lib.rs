@@ -581,13 +581,22 @@ impl App {
         self.export_csv("graph.csv", graph);
     }
 
+    /// The run's recording and graph `graph`, to export; `None`, said, when there is
+    /// nothing to export.
+    pub(crate) fn recorded_graph(&mut self, graph: usize) -> Option<(&Recording, &physics::Graph)> {
+        if self.runner.recording.is_none() || self.document.scene().graphs.get(graph).is_none() {
+            self.notify(tr("notice-nothing-to-export"));
+            return None;
+        }
+        Some((
+            self.runner.recording.as_ref()?,
+            self.document.scene().graphs.get(graph)?,
+        ))
+    }
+
     /// Writes graph `graph`'s recorded samples to `path` and says how many.
     pub fn export_csv(&mut self, path: &str, graph: usize) {
-        let (Some(recording), Some(setup)) = (
-            self.runner.recording.as_ref(),
-            self.document.scene().graphs.get(graph),
-        ) else {
-            self.notify(tr("notice-nothing-to-export"));
+        let Some((recording, setup)) = self.recorded_graph(graph) else {
             return;
         };
         let csv = plots::to_csv(recording, setup);

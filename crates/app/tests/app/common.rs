@@ -7,9 +7,20 @@ use egui_kittest::kittest::Queryable;
 use newtonlab_app::{App, plots};
 use physics::{Graph, Particle, Scene, World};
 
+/// The real app in a window of a laptop's screen, 1280 × 800, after its first frame.
 pub fn harness(app: App) -> Harness<'static, App> {
+    harness_of_size(app, [1280.0, 800.0])
+}
+
+/// A harness taller than a laptop's screen (1280 × 1200), so that the graph panel's
+/// first graph and what it reads are in view without scrolling.
+pub fn tall_harness(app: App) -> Harness<'static, App> {
+    harness_of_size(app, [1280.0, 1200.0])
+}
+
+fn harness_of_size(app: App, size: [f32; 2]) -> Harness<'static, App> {
     let mut harness = Harness::builder()
-        .with_size([1280.0, 800.0])
+        .with_size(size)
         .build_ui_state(|ui, app: &mut App| app.ui(ui), app);
     harness.run();
     harness

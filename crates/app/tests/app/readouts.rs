@@ -151,14 +151,8 @@ fn the_impact_list_shows_each_impact_with_its_impulse() {
 /// `rod.length` stays 2 m to 1e-9; the graph's chips offer them (clicking adds them).
 #[test]
 fn a_rods_angle_and_length_are_plotted() {
-    // Tall enough that the first graph's chips are all in view without scrolling.
-    let mut harness = egui_kittest::Harness::builder()
-        .with_size([1280.0, 1200.0])
-        .build_ui_state(
-            |ui, app: &mut App| app.ui(ui),
-            App::new(crate::common::example_scene("pendulum")),
-        );
-    harness.run();
+    let mut harness =
+        crate::common::tall_harness(App::new(crate::common::example_scene("pendulum")));
     play_frames(&mut harness, 30);
     // The first graph's chips (each graph has its own).
     for chip in ["rod.angle (°)", "rod.length (m)"] {
@@ -206,14 +200,8 @@ fn a_rods_angle_and_length_are_plotted() {
 /// (each maximum is the vertex of the parabola through three samples 5 ms apart).
 #[test]
 fn a_graph_reads_the_period_of_its_series() {
-    // Tall enough that the first graph and its readings are in view without scrolling.
-    let mut harness = egui_kittest::Harness::builder()
-        .with_size([1280.0, 1200.0])
-        .build_ui_state(
-            |ui, app: &mut App| app.ui(ui),
-            App::new(crate::common::example_scene("pendulum")),
-        );
-    harness.run();
+    let mut harness =
+        crate::common::tall_harness(App::new(crate::common::example_scene("pendulum")));
     play_frames(&mut harness, 70);
     harness
         .get_all_by_label("extremes and zeros")

@@ -1,11 +1,11 @@
 //! The paper's figures: position and acceleration against time, simulation and theory
 //! overlaid, drawn with plotters into PNG files. Text is rendered with the Ubuntu Light
-//! font that egui ships (`epaint_default_fonts`), so no system font is needed.
+//! font that egui ships, registered as the app's figures register it, so no system font
+//! is needed.
 
 use std::path::Path;
 
 use plotters::prelude::*;
-use plotters::style::FontStyle;
 
 /// One quantity against time (or another variable), simulated and theoretical.
 pub(crate) struct Panel {
@@ -67,27 +67,9 @@ pub(crate) struct Figure {
     pub panels: [Panel; 2],
 }
 
-/// Makes the bundled font available to plotters as "sans-serif" (once per process).
-fn register_font() -> Result<(), String> {
-    static REGISTERED: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
-    let ok = *REGISTERED.get_or_init(|| {
-        plotters::style::register_font(
-            "sans-serif",
-            FontStyle::Normal,
-            epaint_default_fonts::UBUNTU_LIGHT,
-        )
-        .is_ok()
-    });
-    if ok {
-        Ok(())
-    } else {
-        Err("the bundled font could not be loaded".to_owned())
-    }
-}
-
 /// Draws `figure` into `directory/figure.file`.
 pub(crate) fn draw(figure: &Figure, directory: &Path) -> Result<(), String> {
-    register_font()?;
+    newtonlab_app::figure::register_font()?;
     let path = directory.join(&figure.file);
     let root = BitMapBackend::new(&path, (1000, 760)).into_drawing_area();
     let problem = |e: &dyn std::fmt::Display| format!("{}: {e}", path.display());

@@ -53,6 +53,8 @@ pub enum Action {
     Impact(bool),
     /// Show the run at the instant of its impact number N (in the recording's list).
     GoToImpact(usize),
+    /// Forget the earlier runs the graphs draw behind the last.
+    ForgetEarlierRuns,
     /// Make the moment shown the scene's start.
     EditFromHere,
     /// Show or hide the list of keys (F1).

@@ -302,6 +302,7 @@ impl App {
                     self.notify(tr("timeline-no-turn"));
                 }
             }
+            Action::ForgetEarlierRuns => self.runner.earlier.clear(),
             Action::GoToImpact(k) => {
                 let time = self
                     .runner

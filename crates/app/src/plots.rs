@@ -105,7 +105,8 @@ impl Graphs {
                     .and_then(|t| t.shown)
                     .and(runner.simulation())
                     .map(physics::Simulation::time);
-                if let Some(a) = self.graph(ui, document, (runner.recording.as_ref(), cursor), g) {
+                let runs = (runner.recording.as_ref(), &runner.earlier[..], cursor);
+                if let Some(a) = self.graph(ui, document, runs, g) {
                     action = Some(a);
                 }
             });
@@ -131,7 +132,7 @@ impl Graphs {
         &mut self,
         ui: &mut Ui,
         document: &mut Document,
-        (recording, cursor): (Option<&Recording>, Option<f64>),
+        (recording, earlier, cursor): (Option<&Recording>, &[Recording], Option<f64>),
         g: usize,
     ) -> Option<Action> {
         // Only what the panel reads, not the whole scene, every frame.
@@ -315,6 +316,14 @@ impl Graphs {
                 .response
                 .labelled_by(label.id)
                 .on_hover_text(tr("graph-fit-hint"));
+            if !earlier.is_empty()
+                && ui
+                    .small_button(tr("graph-forget-earlier"))
+                    .on_hover_text(tr("graph-forget-earlier-hint"))
+                    .clicked()
+            {
+                action = Some(Action::ForgetEarlierRuns);
+            }
             if ui
                 .small_button(tr("graph-reset-view"))
                 .on_hover_text(tr("graph-reset-view-hint"))
@@ -372,7 +381,30 @@ impl Graphs {
         if std::mem::take(&mut self.reset[g]) {
             plot = plot.reset();
         }
+        // The earlier runs' series first, greyed, so the last run's are drawn over them.
+        let earlier_lines: Vec<Vec<[f64; 2]>> = earlier
+            .iter()
+            .flat_map(|run| {
+                series.iter().filter_map(|q| {
+                    let (across, up) = (run.column(&x)?, run.column(q)?);
+                    let every = run.len().div_ceil(MAX_POINTS).max(1);
+                    Some(
+                        (0..run.len())
+                            .step_by(every)
+                            .map(|k| [run.at(k, across), run.at(k, up)])
+                            .collect(),
+                    )
+                })
+            })
+            .collect();
         let shown = plot.show(ui, |plot| {
+            for points in &earlier_lines {
+                plot.line(
+                    Line::new(tr("graph-earlier-runs"), PlotPoints::from(points.clone()))
+                        .color(egui::Color32::from_gray(150))
+                        .width(1.0),
+                );
+            }
             for (q, points) in &columns {
                 let drawn: PlotPoints = (0..points.len())
                     .step_by(every)

@@ -40,6 +40,10 @@ const LONGEST_FRAME: f64 = 0.1;
 /// Points kept per trail.
 pub const TRAIL_LENGTH: usize = 400;
 
+/// Earlier runs kept for the graphs: enough to compare a few settings, each recording
+/// bounded by its own budget (`recording.rs`).
+pub const EARLIER_RUNS: usize = 3;
+
 /// Where the run is.
 #[expect(
     clippy::large_enum_variant,
@@ -91,6 +95,9 @@ pub struct Runner {
     last_real_dt: f64,
     /// The last run, sampled from its start: kept after Reset until the next Play.
     pub recording: Option<Recording>,
+    /// The runs before it (of this scene, oldest first, at most [`EARLIER_RUNS`]), which
+    /// the graphs draw greyed behind the last: a series of runs compared at a glance.
+    pub earlier: Vec<Recording>,
     /// Why the simulation stopped, if it failed.
     pub failure: Option<String>,
     /// Total energy when Play built the simulation, joules.
@@ -125,6 +132,7 @@ impl Default for Runner {
             last_physics: 0.0,
             last_real_dt: 0.0,
             recording: None,
+            earlier: Vec::new(),
             failure: None,
             start_energy: 0.0,
             trails: Vec::new(),
@@ -287,6 +295,12 @@ impl Runner {
         simulation.record_impacts();
         simulation.keep_ledger();
         self.start_energy = simulation.diagnostics().energy.total();
+        if let Some(last) = self.recording.take().filter(|r| !r.is_empty()) {
+            self.earlier.push(last);
+            if self.earlier.len() > EARLIER_RUNS {
+                self.earlier.remove(0);
+            }
+        }
         self.recording = Some(Recording::start(&simulation));
         self.timeline = Some(Timeline::start(&simulation));
         self.trails = vec![VecDeque::new(); simulation.len()];
@@ -321,6 +335,7 @@ impl Runner {
         self.catch_up();
         *self = Self {
             recording: self.recording.take(),
+            earlier: std::mem::take(&mut self.earlier),
             ahead: self.ahead,
             ..Self::default()
         };

@@ -102,6 +102,38 @@ pub struct Instruments {
     pub handle: usize,
 }
 
+/// Whether `mark` was laid by hand where nothing fixes it: a point that is no fixed end of
+/// a rod, string or spring and no ramp's end (those, and particles, are exact).
+fn is_free(mark: Mark, scene: &Scene) -> bool {
+    let Mark::Point(p) = mark else {
+        return false;
+    };
+    let fixed =
+        |end: &physics::Endpoint| matches!(end, physics::Endpoint::Point(q) if q.to_dvec2() == p);
+    let on_link = scene.springs.iter().any(|s| fixed(&s.from) || fixed(&s.to))
+        || scene.ties.iter().any(|t| fixed(&t.from) || fixed(&t.to));
+    let on_ramp = scene
+        .ramps
+        .iter()
+        .any(|r| r.from.to_dvec2() == p || r.to.to_dvec2() == p);
+    !(on_link || on_ramp)
+}
+
+/// `value` with as many decimals as `spread` (its uncertainty, same unit) allows: the
+/// last digit shown is the first uncertain one.
+fn to_precision(value: f64, spread: f64) -> String {
+    if !(spread.is_finite() && spread > 0.0) {
+        return number(value);
+    }
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "a small count of decimals"
+    )]
+    let decimals = (-spread.log10()).ceil().clamp(0.0, 12.0) as usize;
+    format::fixed(value, decimals)
+}
+
 /// The angle between the protractor's arms, degrees in 0..=180, once both are laid.
 pub fn protractor_reading(
     protractor: (Mark, Mark, Option<Mark>),
@@ -188,7 +220,24 @@ impl Instruments {
             for end in [pa, pb] {
                 painter.circle_stroke(end, 4.0, Stroke::new(1.5, tape_colour));
             }
-            let text = format!("{} m, {}°", number(length), number(angle));
+            // A reading is as precise as its ends: a pixel for an end laid by hand, exact
+            // for an end on a particle, a fixed point or a ramp's end.
+            let pixel = 1.0 / view.pixels_per_metre;
+            let loose = [tape.0, tape.1]
+                .iter()
+                .filter(|m| is_free(**m, scene))
+                .count();
+            let text = if loose == 0 {
+                format!("{} m, {}°", number(length), number(angle))
+            } else {
+                #[expect(clippy::cast_precision_loss, reason = "one or two ends")]
+                let spread = pixel * (loose as f64).sqrt();
+                format!(
+                    "{} m, {}°",
+                    to_precision(length, spread),
+                    to_precision(angle, (spread / length.max(spread)).to_degrees())
+                )
+            };
             label(
                 painter,
                 pa.lerp(pb, 0.5) + Vec2::new(0.0, -8.0),
@@ -204,7 +253,19 @@ impl Instruments {
             if let Some(pb) = b.and_then(|b| b.at(positions)) {
                 painter.line_segment([screen(o), screen(pb)], stroke);
                 if let Some(angle) = protractor_reading((vertex, a, b), positions) {
-                    let text = format!("{}°", number(angle));
+                    let arms = [o.distance(pa), o.distance(pb)];
+                    let loose = [vertex, a]
+                        .iter()
+                        .chain(b.as_ref())
+                        .any(|m| is_free(*m, scene));
+                    let text = if loose {
+                        let pixel = 1.0 / view.pixels_per_metre;
+                        let spread =
+                            (pixel / arms[0].max(pixel) + pixel / arms[1].max(pixel)).to_degrees();
+                        format!("{}°", to_precision(angle, spread))
+                    } else {
+                        format!("{}°", number(angle))
+                    };
                     label(
                         painter,
                         screen(o) + Vec2::new(10.0, -10.0),
@@ -528,5 +589,23 @@ impl super::Canvas {
             .filter(|(_, (p, x))| x.distance(world) <= p.radius + tolerance)
             .min_by(|(_, (_, a)), (_, (_, b))| a.distance(world).total_cmp(&b.distance(world)))
             .map(|(i, _)| i)
+    }
+}
+
+#[cfg(test)]
+mod precision_tests {
+    use super::*;
+
+    /// A reading keeps the decimals its uncertainty allows: a protractor laid by hand on
+    /// a 60° pendulum reads 64.9°, not 64.9138°, when a pixel is half a degree.
+    #[test]
+    fn readings_keep_only_the_digits_their_placement_means() {
+        assert_eq!(to_precision(64.913_84, 0.5), "64.9");
+        assert_eq!(to_precision(64.913_84, 0.05), "64.91");
+        assert_eq!(to_precision(64.913_84, 2.0), "65");
+        assert_eq!(to_precision(1.234_567, 0.001), "1.235");
+        let scene = Scene::new();
+        assert!(is_free(Mark::Point(DVec2::new(0.3, 0.1)), &scene));
+        assert!(!is_free(Mark::Particle(0), &scene));
     }
 }

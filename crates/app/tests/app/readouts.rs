@@ -316,3 +316,36 @@ fn a_sine_fitted_to_a_spring_reads_its_amplitude_and_frequency() {
         app.graphs.readings[0]
     );
 }
+
+/// Runs of one scene are compared on its graphs: after a run, Reset, a new height and a
+/// second run, the earlier run is kept (drawn greyed) with its own samples, the last run
+/// has its own; "forget earlier runs" clears them, and a new scene starts afresh.
+#[test]
+fn earlier_runs_are_kept_for_the_graphs_until_forgotten() {
+    use physics::Quantity;
+    let mut harness = harness(App::new(dropped_ball()));
+    play_frames(&mut harness, 3);
+    harness.get_by_label("Reset").click();
+    harness.run();
+    harness
+        .state_mut()
+        .document
+        .apply(newtonlab_app::edit::Edit::MoveParticle, |scene| {
+            scene.particles[0].position = [0.0, 5.0].into();
+        });
+    play_frames(&mut harness, 3);
+    let runner = &harness.state().runner;
+    assert_eq!(runner.earlier.len(), 1, "the first run kept");
+    let y = Quantity::parse("ball.y").expect("a quantity");
+    let first_y =
+        |recording: &newtonlab_app::Recording| recording.value(0, &y).expect("ball.y recorded");
+    assert!(
+        (first_y(&runner.earlier[0]) - 10.0).abs() < 1e-12,
+        "the earlier run from 10 m"
+    );
+    let last = runner.recording.as_ref().expect("the last run");
+    assert!((first_y(last) - 5.0).abs() < 1e-12, "the last run from 5 m");
+    harness.get_by_label("forget earlier runs").click();
+    harness.run();
+    assert!(harness.state().runner.earlier.is_empty(), "forgotten");
+}

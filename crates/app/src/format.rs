@@ -38,6 +38,17 @@ pub fn fixed(value: f64, decimals: usize) -> String {
     local(format!("{value:.decimals$}"))
 }
 
+/// `value` as a text field shows it: 15 significant digits at most, so that the last
+/// bit of a sum (5.800000000000001 for 5.8) is not shown, and 0 for −0. What the field
+/// holds is not touched: only what the user types is applied.
+pub fn field(value: f64) -> String {
+    if value == 0.0 {
+        return "0".to_owned();
+    }
+    let rounded: f64 = format!("{value:.14e}").parse().unwrap_or(value);
+    rounded.to_string()
+}
+
 /// `text` with the decimal separator of the app's language.
 fn local(text: String) -> String {
     if crate::i18n::decimal_comma() {
@@ -93,6 +104,21 @@ fn superscript(exponent: f64) -> String {
 
 #[cfg(test)]
 mod tests {
+    use super::field;
+
+    /// A field shows what a person typed, not the last bit of the sum that made it: 5.8
+    /// for 5.8 + 1 ulp, 0.3 for 0.1 + 0.2, 0 for −0; and every other value in full.
+    #[test]
+    fn fields_show_fifteen_digits_and_no_negative_zero() {
+        assert_eq!(field(5.800_000_000_000_001), "5.8");
+        assert_eq!(field(0.1 + 0.2), "0.3");
+        assert_eq!(field(-0.0), "0");
+        assert_eq!(field(9.81), "9.81");
+        assert_eq!(field(6.674e-11), "0.00000000006674");
+        assert_eq!(field(1.234_567_890_123_45), "1.23456789012345");
+        assert_eq!(field(-2.5), "-2.5");
+    }
+
     use super::*;
 
     #[test]

@@ -131,7 +131,7 @@ fn number_field(
     let hint = format!(
         "{hint}. Arithmetic and units are converted: 2*pi, sqrt(2)/2, 30 km/h, 5 cm, 250 g"
     );
-    text_field(ui, id, label, unit, &value.to_string(), &hint, &check)
+    text_field(ui, id, label, unit, &format::field(value), &hint, &check)
         .and_then(|t| units::parse(&t, unit).ok())
 }
 

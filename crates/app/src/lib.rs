@@ -409,7 +409,8 @@ impl App {
     /// as `label` when it has no file.
     fn replace(&mut self, scene: Scene, path: Option<String>, label: Option<String>) {
         self.runner = Runner::default();
-        // Measurements are of the scene they were taken in.
+        // Measurements, and what was said of the run, are of the scene they were taken in.
+        self.announcer = announcer::Announcer::default();
         self.stopwatch = stopwatch::Stopwatch::shown_as(self.stopwatch.shown);
         self.canvas.instruments.tape = None;
         self.canvas.instruments.protractor = None;

@@ -145,6 +145,8 @@ impl App {
                         let chosen = i18n::language() == language;
                         if ui.selectable_label(chosen, language.name()).clicked() {
                             i18n::set_language(language);
+                            // The last sentence said was in the old language.
+                            self.announcer.text.clear();
                             self.settings.language = Some(language.code().to_owned());
                             self.keep_settings();
                         }

@@ -127,7 +127,7 @@ pub fn ui(
                 let id = egui::Id::unique("toolbar time step");
                 let mut text: String = ui
                     .data(|d| d.get_temp(id))
-                    .unwrap_or_else(|| settings.time_step.to_string());
+                    .unwrap_or_else(|| crate::format::field(settings.time_step));
                 let label = ui.label("dt");
                 let response = ui
                     .add(egui::TextEdit::singleline(&mut text).desired_width(70.0))

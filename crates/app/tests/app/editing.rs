@@ -295,3 +295,43 @@ fn a_rod_longer_than_its_ends_are_apart_is_flagged() {
     harness.run();
     harness.get_by_label_contains("0.9 m apart at the start, not 1 m");
 }
+
+/// The inspector shows what a person typed, not the last bit of a sum: a particle at
+/// x = 0.1 + 0.2 and y = −0 reads "0.3" and "0"; the scene keeps its exact value until
+/// the user types a new one.
+#[test]
+fn fields_show_no_last_bit_and_no_negative_zero() {
+    let scene = Scene::new()
+        .with_world(World::no_forces())
+        .with_particle(Particle::new("ball", 1.0).position([0.1 + 0.2, -0.0]));
+    let mut harness = harness(App::new(scene));
+    harness.state_mut().selection = Some(Selection::Particle(0));
+    harness.run();
+    let value = |harness: &Harness<'_, App>, label: &str| {
+        harness.get_by_label(label).value().unwrap_or_default()
+    };
+    assert_eq!(value(&harness, "position x"), "0.3");
+    assert_eq!(value(&harness, "position y"), "0");
+    let x = harness.state().document.scene().particles[0]
+        .position
+        .to_dvec2()
+        .x;
+    assert_eq!(
+        x.to_bits(),
+        (0.1_f64 + 0.2).to_bits(),
+        "the scene's value untouched"
+    );
+}
+
+/// A new scene forgets what was said of the last run: the status line's sentence.
+#[test]
+fn a_new_scene_forgets_the_last_runs_sentence() {
+    let mut harness = crate::common::played("collision", 10);
+    assert!(
+        !harness.state().announcer.text.is_empty(),
+        "an impact was told"
+    );
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, Key::N);
+    harness.run();
+    assert!(harness.state().announcer.text.is_empty(), "forgotten");
+}

@@ -3,7 +3,7 @@
 
 mod common;
 
-use common::{newtonlab, scene_file, stderr, stdout};
+use common::{newtonlab, pendulum_period, scene_file, stderr, stdout};
 
 /// The CSV's header and rows.
 fn table(text: &str) -> (Vec<String>, Vec<Vec<String>>) {
@@ -92,12 +92,7 @@ fn events_among_regular_rows_leave_them_as_they_were() {
     assert_eq!(regular, plain_rows, "regular rows unchanged");
     let times: Vec<f64> = rows.iter().map(|r| r[0].parse().expect("t")).collect();
     assert!(times.windows(2).all(|w| w[0] <= w[1]), "in time order");
-    // K(k) by the arithmetic–geometric mean.
-    let (mut a, mut b) = (1.0_f64, (1.0 - 0.25_f64).sqrt());
-    for _ in 0..20 {
-        (a, b) = (0.5 * (a + b), (a * b).sqrt());
-    }
-    let period = 4.0 * (2.0 / 9.81_f64).sqrt() * std::f64::consts::PI / (2.0 * a);
+    let period = pendulum_period(2.0, 60.0);
     let turns: Vec<f64> = rows
         .iter()
         .filter(|r| r.last().is_some_and(|e| e == "bob.vx crosses 0"))

@@ -151,3 +151,15 @@ pub fn tab_until(
     }
     panic!("Tab never reaches {what}");
 }
+
+/// The period of a pendulum of `length` m released at rest `amplitude` degrees from the
+/// vertical, g = 9.81: 4 √(L/g) K(sin(θ₀/2)), K by the arithmetic–geometric mean (written
+/// apart from the app and the physics, as the theory the tests hold them to).
+pub fn pendulum_period(length: f64, amplitude: f64) -> f64 {
+    let k = (amplitude.to_radians() / 2.0).sin();
+    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
+    for _ in 0..20 {
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+    }
+    4.0 * (length / 9.81).sqrt() * std::f64::consts::PI / (2.0 * a)
+}

@@ -6,7 +6,9 @@ use egui_kittest::kittest::Queryable;
 use newtonlab_app::App;
 use physics::{DVec2, Particle, Scene, World};
 
-use crate::common::{click_canvas, example_scene, harness, play_frames, small_ball};
+use crate::common::{
+    click_canvas, example_scene, harness, pendulum_period, play_frames, small_ball,
+};
 
 /// The tape measure: M takes it up; a drag from empty space to a ball lays it, the end
 /// on the ball holding to it; its reading is the distance and direction between its
@@ -162,12 +164,12 @@ fn the_stopwatch_times_a_bounce_between_two_impacts() {
 /// The 60° pendulum on its 2 m rod (the example): a light gate laid down from the pivot
 /// (the tape's line) is crossed twice a period, so the stopwatch started on its 1st
 /// crossing and stopped on its 3rd reads a full period, 4 √(L/g) K(sin 30°) = 3.0446 s,
-/// to 1e-6 s (the crossings are located inside the step, not between frames, whose
-/// linear interpolation was off by some 1e-5 s); armed before Play.
+/// to 1e-6 s (the crossings are located inside the step, not between frames); armed
+/// before Play.
 #[test]
 fn a_gate_through_the_pivot_times_a_full_period() {
     use newtonlab_app::canvas::Mark;
-    use newtonlab_app::stopwatch::{State, Trigger};
+    use newtonlab_app::stopwatch::Trigger;
     let mut harness = harness(App::new(example_scene("pendulum")));
     harness.key_press(Key::T);
     harness.run();
@@ -180,6 +182,14 @@ fn a_gate_through_the_pivot_times_a_full_period() {
         watch.stop_on = Trigger::Gate;
         watch.stop_nth = 3;
     }
+    start_and_read_the_period(&mut harness);
+}
+
+/// Start pressed before Play (the watch armed), then a swing and a half played: the
+/// stopwatch has stopped on the gate's third crossing and reads the 60° pendulum's
+/// period, 4 √(L/g) K(sin 30°) with L = 2 m, to 1e-6 s.
+fn start_and_read_the_period(harness: &mut Harness<'_, App>) {
+    use newtonlab_app::stopwatch::State;
     harness.get_by_label("Start").click();
     harness.run();
     assert_eq!(
@@ -187,7 +197,7 @@ fn a_gate_through_the_pivot_times_a_full_period() {
         State::Armed,
         "armed before Play"
     );
-    play_frames(&mut harness, 45);
+    play_frames(harness, 45);
     let watch = &harness.state().stopwatch;
     assert_eq!(watch.state, State::Stopped, "stopped by the third crossing");
     let period = pendulum_period(2.0, 60.0);
@@ -206,7 +216,7 @@ fn a_gate_through_the_pivot_times_a_full_period() {
 #[test]
 fn a_tape_laid_by_hand_snaps_to_the_pivot_and_times_a_period() {
     use newtonlab_app::canvas::Mark;
-    use newtonlab_app::stopwatch::{State, Trigger};
+    use newtonlab_app::stopwatch::Trigger;
     let mut harness = harness(App::new(example_scene("pendulum")));
     harness.get_by_label("Tape measure").click();
     harness.run();
@@ -248,17 +258,7 @@ fn a_tape_laid_by_hand_snaps_to_the_pivot_and_times_a_period() {
         ),
         (Trigger::Gate, 1, Trigger::Gate, 3)
     );
-    harness.get_by_label("Start").click();
-    harness.run();
-    play_frames(&mut harness, 45);
-    let watch = &harness.state().stopwatch;
-    assert_eq!(watch.state, State::Stopped);
-    let period = pendulum_period(2.0, 60.0);
-    assert!(
-        (watch.reading - period).abs() < 1e-6,
-        "{} s against {period} s",
-        watch.reading
-    );
+    start_and_read_the_period(&mut harness);
     harness.get_by_label("Reset").click();
     harness.run();
     harness.get_by_label("Particle").click();
@@ -331,17 +331,6 @@ fn a_bad_event_is_named_in_the_stopwatch() {
         .expect("a problem");
     assert!(problem.contains("no particle named 'Bob'"), "{problem}");
     harness.get_by_label_contains("no particle named 'Bob'");
-}
-
-/// The period of a pendulum of `length` m released at rest `amplitude` degrees from the
-/// vertical: 4 √(L/g) K(sin(θ₀/2)), K by the arithmetic–geometric mean.
-fn pendulum_period(length: f64, amplitude: f64) -> f64 {
-    let k = (amplitude.to_radians() / 2.0).sin();
-    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
-    for _ in 0..20 {
-        (a, b) = (0.5 * (a + b), (a * b).sqrt());
-    }
-    4.0 * (length / 9.81).sqrt() * std::f64::consts::PI / (2.0 * a)
 }
 
 /// The protractor (A): a drag lays the vertex and the first arm, a second drag the

@@ -220,11 +220,7 @@ fn a_graph_reads_the_period_of_its_series() {
         .and_then(|rest| rest.split(' ').next())
         .and_then(|n| n.parse().ok())
         .unwrap_or_else(|| panic!("a period in {text:?}"));
-    let (mut a, mut b) = (1.0_f64, (0.75_f64).sqrt());
-    for _ in 0..20 {
-        (a, b) = (0.5 * (a + b), (a * b).sqrt());
-    }
-    let period = 4.0 * (2.0 / 9.81_f64).sqrt() * std::f64::consts::PI / (2.0 * a);
+    let period = crate::common::pendulum_period(2.0, 60.0);
     assert!((number - period).abs() < 1e-6, "{text}: theory {period} s");
 }
 

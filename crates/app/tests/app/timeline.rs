@@ -120,12 +120,7 @@ fn the_time_machine_jumps_to_turning_points_and_typed_instants() {
     play_frames(&mut harness, 40);
     harness.state_mut().perform(Action::GoTo(0));
     harness.run();
-    let k = 0.5_f64; // sin 30°
-    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
-    for _ in 0..20 {
-        (a, b) = (0.5 * (a + b), (a * b).sqrt());
-    }
-    let period = 4.0 * (2.0 / 9.81_f64).sqrt() * std::f64::consts::PI / (2.0 * a);
+    let period = crate::common::pendulum_period(2.0, 60.0);
     let shown = |harness: &egui_kittest::Harness<'_, App>| {
         let simulation = harness.state().runner.simulation().expect("shown");
         (simulation.time(), simulation.velocities()[0].length())

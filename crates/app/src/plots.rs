@@ -44,6 +44,8 @@ pub struct Graphs {
     pub readings: Vec<Vec<String>>,
     /// The model each graph fits its series with, if any.
     pub fits: Vec<Option<analysis::Model>>,
+    /// What each graph last read off its series, and of which samples.
+    read: Vec<Option<Read>>,
     /// Where each graph's plot was drawn last frame, for its picture.
     pub rects: Vec<egui::Rect>,
 }
@@ -95,6 +97,7 @@ impl Graphs {
         self.reset.resize(count, false);
         self.readings.resize(count, Vec::new());
         self.fits.resize(count, None);
+        self.read.resize_with(count, || None);
         self.rects.resize(count, egui::Rect::NOTHING);
         for g in 0..count {
             ui.push_id(("graph", g), |ui| {
@@ -105,7 +108,12 @@ impl Graphs {
                     .and_then(|t| t.shown)
                     .and(runner.simulation())
                     .map(physics::Simulation::time);
-                let runs = (runner.recording.as_ref(), &runner.earlier[..], cursor);
+                let runs = (
+                    runner.recording.as_ref(),
+                    &runner.earlier[..],
+                    cursor,
+                    runner.playing,
+                );
                 if let Some(a) = self.graph(ui, document, runs, g) {
                     action = Some(a);
                 }
@@ -132,7 +140,12 @@ impl Graphs {
         &mut self,
         ui: &mut Ui,
         document: &mut Document,
-        (recording, earlier, cursor): (Option<&Recording>, &[Recording], Option<f64>),
+        (recording, earlier, cursor, playing): (
+            Option<&Recording>,
+            &[Recording],
+            Option<f64>,
+            bool,
+        ),
         g: usize,
     ) -> Option<Action> {
         // Only what the panel reads, not the whole scene, every frame.
@@ -332,40 +345,31 @@ impl Graphs {
                 self.reset[g] = true;
             }
         });
-        let columns: Vec<(Quantity, Vec<[f64; 2]>)> = series
-            .iter()
-            .filter_map(|q| {
-                let (across, up) = (recording.column(&x)?, recording.column(q)?);
-                let points = (0..samples)
-                    .map(|k| [recording.at(k, across), recording.at(k, up)])
-                    .collect();
-                Some((q.clone(), points))
-            })
-            .collect();
-        let marks = self.marks[g] && x == Quantity::Time;
-        let analyses: Vec<Analysis> = columns
-            .iter()
-            .filter(|_| marks)
-            .map(|(q, points)| Analysis::of(q, points))
-            .collect();
-        let fits: Vec<(String, analysis::Fit, (f64, f64))> = self.fits[g]
-            .map(|model| {
-                columns
-                    .iter()
-                    .filter_map(|(q, points)| {
-                        let (x, y): (Vec<f64>, Vec<f64>) =
-                            points.iter().map(|p| (p[0], p[1])).unzip();
-                        let span = x
-                            .iter()
-                            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
-                                (a.min(v), b.max(v))
-                            });
-                        analysis::fit(model, &x, &y).map(|fit| (q.to_string(), fit, span))
-                    })
-                    .collect()
-            })
-            .unwrap_or_default();
+        // What is drawn: at most MAX_POINTS a series. What the graph reads off its
+        // series (extremes, fits) is of every sample, and kept until the run changes.
         let every = samples.div_ceil(MAX_POINTS).max(1);
+        let columns = series_points(recording, &x, &series, every);
+        let marks = self.marks[g] && x == Quantity::Time;
+        let key = ReadKey {
+            samples,
+            x: x.clone(),
+            series: series.clone(),
+            marks,
+            fit: self.fits[g],
+        };
+        if (marks || key.fit.is_some())
+            && self.read[g]
+                .as_ref()
+                .is_none_or(|r| r.is_stale(&key, playing))
+        {
+            self.read[g] = Some(Read::of(recording, key));
+        }
+        let empty = Read::default();
+        let read = self.read[g]
+            .as_ref()
+            .filter(|_| marks || self.fits[g].is_some())
+            .unwrap_or(&empty);
+        let (analyses, fits) = (&read.analyses, &read.fits);
         let mut plot = Plot::new("graph")
             .legend(Legend::default())
             // The wheel scrolls the panel, not the plot (Ctrl and the wheel zoom it).
@@ -406,17 +410,12 @@ impl Graphs {
                 );
             }
             for (q, points) in &columns {
-                let drawn: PlotPoints = (0..points.len())
-                    .step_by(every)
-                    .chain((!(points.len() - 1).is_multiple_of(every)).then_some(points.len() - 1))
-                    .map(|k| points[k])
-                    .collect();
-                plot.line(Line::new(label(q), drawn));
+                plot.line(Line::new(label(q), PlotPoints::from(points.clone())));
             }
-            for analysis in &analyses {
+            for analysis in analyses {
                 analysis.draw(plot);
             }
-            for (name, fit, (from, to)) in &fits {
+            for (name, fit, (from, to)) in fits {
                 let curve: PlotPoints = (0..=400)
                     .map(|k| {
                         let x = from + (to - from) * f64::from(k) / 400.0;
@@ -482,6 +481,103 @@ impl Graphs {
         }
         self.rects[g] = shown.response.rect;
         action
+    }
+}
+
+/// Each series of `series` against `x`, every `every`th sample and the last.
+fn series_points(
+    recording: &Recording,
+    x: &Quantity,
+    series: &[Quantity],
+    every: usize,
+) -> Vec<(Quantity, Vec<[f64; 2]>)> {
+    let samples = recording.len();
+    series
+        .iter()
+        .filter_map(|q| {
+            let (across, up) = (recording.column(x)?, recording.column(q)?);
+            let last = (samples > 0 && !(samples - 1).is_multiple_of(every)).then(|| samples - 1);
+            let points = (0..samples)
+                .step_by(every)
+                .chain(last)
+                .map(|k| [recording.at(k, across), recording.at(k, up)])
+                .collect();
+            Some((q.clone(), points))
+        })
+        .collect()
+}
+
+/// What a graph's reading was made of: the run's samples so far and the graph's choices.
+#[derive(Clone, Debug, PartialEq)]
+struct ReadKey {
+    samples: usize,
+    x: Quantity,
+    series: Vec<Quantity>,
+    marks: bool,
+    fit: Option<analysis::Model>,
+}
+
+/// What a graph read off every sample of its series: extremes and zeros, and fits.
+#[derive(Default)]
+struct Read {
+    key: Option<ReadKey>,
+    analyses: Vec<Analysis>,
+    fits: Vec<(String, analysis::Fit, (f64, f64))>,
+}
+
+impl Read {
+    /// Reads `recording` as `key` asks.
+    fn of(recording: &Recording, key: ReadKey) -> Self {
+        let columns = series_points(recording, &key.x, &key.series, 1);
+        let analyses = columns
+            .iter()
+            .filter(|_| key.marks)
+            .map(|(q, points)| Analysis::of(q, points))
+            .collect();
+        let fits = key
+            .fit
+            .map(|model| {
+                columns
+                    .iter()
+                    .filter_map(|(q, points)| {
+                        let (x, y): (Vec<f64>, Vec<f64>) =
+                            points.iter().map(|p| (p[0], p[1])).unzip();
+                        let span = x
+                            .iter()
+                            .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
+                                (a.min(v), b.max(v))
+                            });
+                        analysis::fit(model, &x, &y).map(|fit| (q.to_string(), fit, span))
+                    })
+                    .collect()
+            })
+            .unwrap_or_default();
+        Self {
+            key: Some(key),
+            analyses,
+            fits,
+        }
+    }
+
+    /// Whether it must be read again for `key`: the graph's choices changed, or the run
+    /// grew — while it plays, only once it has grown by a twentieth, so that a fit over
+    /// a long run is not made again at every frame.
+    fn is_stale(&self, key: &ReadKey, playing: bool) -> bool {
+        let Some(old) = &self.key else {
+            return true;
+        };
+        let same_choices = ReadKey {
+            samples: key.samples,
+            ..old.clone()
+        } == *key;
+        if !same_choices {
+            return true;
+        }
+        if playing {
+            key.samples * 20 >= old.samples * 21
+        } else {
+            key.samples != old.samples
+        }
     }
 }
 

@@ -587,11 +587,9 @@ impl Runner {
 
     /// The simulated time of the run's newest state.
     pub fn end_time(&self) -> Option<f64> {
-        let timeline = self.timeline.as_ref()?;
-        match (&timeline.live, timeline.shown) {
-            (Some(live), _) => Some(live.time()),
-            (None, _) => self.simulation().map(Simulation::time),
-        }
+        // Gone back in time, the run's end waits in the timeline; else it is shown.
+        let live = self.timeline.as_ref()?.live.as_ref();
+        live.or(self.simulation()).map(Simulation::time)
     }
 
     /// Goes to the next (`forward`) or previous turning point of particle `i`: an instant

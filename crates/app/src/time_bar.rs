@@ -41,22 +41,6 @@ impl App {
             if slider.changed() {
                 action = Some(Action::GoTo(at));
             }
-            // A click on the slider's track goes there, as a drag does.
-            if slider.clicked()
-                && let Some(pointer) = slider.interact_pointer_pos()
-            {
-                let rail = slider.rect;
-                let fraction =
-                    f64::from(((pointer.x - rail.left()) / rail.width()).clamp(0.0, 1.0));
-                #[expect(
-                    clippy::cast_possible_truncation,
-                    clippy::cast_sign_loss,
-                    clippy::cast_precision_loss,
-                    reason = "a step of the run, from a fraction of their count"
-                )]
-                let clicked = (fraction * end as f64).round() as u64;
-                action = Some(Action::GoTo(clicked));
-            }
             let start = self.document.scene().simulation.start_time;
             #[expect(clippy::cast_precision_loss, reason = "a count of steps")]
             let (now, last) = (start + at as f64 * step, start + end as f64 * step);

@@ -10,7 +10,7 @@ menu-open-hint = Eine Szenendatei öffnen
 menu-save = Speichern
 menu-save-hint = Die Szene speichern
 menu-save-canvas = Zeichenfläche als PNG speichern…
-menu-save-canvas-hint = Ein Bild der Zeichenfläche, wie sie zu sehen ist
+menu-save-canvas-hint = Ein Bild der Zeichenfläche, wie sie zu sehen ist, zum Drucken in doppelter Bildschirmauflösung (im Browser wie auf dem Bildschirm)
 menu-save-as = Speichern unter…
 menu-save-as-hint = Die Szene unter einem anderen Namen speichern
 menu-copy-link = Link zu dieser Szene kopieren
@@ -578,7 +578,7 @@ graph-quantity = Größe
 graph-quantity-hint = Die Größe, die hinzukommt
 graph-tension-hint = Die Kraft zeichnen, die diese Stange oder dieser Faden trägt (Zug ist positiv)
 graph-marks = Extrema und Nullstellen
-graph-marks-hint = Maxima, Minima und Nulldurchgänge jeder Kurve markieren, aus den Abtastwerten gelesen (eine Parabel durch die drei Werte um jedes Extremum), und die Periode aus aufeinanderfolgenden Maxima angeben
+graph-marks-hint = Maxima, Minima und Nulldurchgänge jeder Kurve markieren, im Lauf genau bestimmt, sobald er anhält (angesteuert wie die Ereignisse der Stoppuhr; während er läuft und in sehr großen Szenen aus den Abtastwerten gelesen), und die Periode aus aufeinanderfolgenden Maxima angeben
 graph-earlier-runs = frühere Läufe
 graph-forget-earlier = frühere Läufe vergessen
 graph-forget-earlier-hint = Die grauen Kurven sind die Läufe vor dem letzten (bis zu drei, von Start zu Start behalten); sie vergessen
@@ -595,7 +595,10 @@ graph-reset-view-hint = Wieder den ganzen Lauf zeigen (Strg und das Mausrad zoom
 graph-period = Periode von { $quantity }: { $period } s (Mittel aus { $intervals } { $intervals ->
     [one] Abstand
    *[other] Abständen
-} zwischen Maxima)
+} zwischen Maxima, { $how ->
+    [located] im Lauf bestimmt
+   *[sampled] aus den Abtastwerten gelesen
+})
 graph-angle-hint = Den Winkel dieser Stange, dieses Fadens oder dieser Feder zur Senkrechten nach unten zeichnen (gegen den Uhrzeigersinn positiv)
 graph-length-hint = Den Abstand der Enden dieser Stange, dieses Fadens oder dieser Feder zeichnen
 graph-total-hint = Diese Größe des Systems zeichnen
@@ -616,3 +619,5 @@ file-cannot-read-file = '{ $path }' lässt sich nicht lesen
 file-cannot-download = der Browser konnte '{ $path }' nicht herunterladen
 file-cannot-autosave = automatisches Speichern in '{ $path }' nicht möglich: { $error }
 file-cannot-encode = das Bild ließ sich nicht kodieren: { $error }
+reading-full = { $value } (der volle Wert: zum Kopieren klicken)
+reading-copied = { $value } in die Zwischenablage kopiert.

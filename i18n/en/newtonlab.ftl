@@ -11,7 +11,7 @@ menu-open-hint = Open a scene file
 menu-save = Save
 menu-save-hint = Save the scene
 menu-save-canvas = Save the canvas as PNG…
-menu-save-canvas-hint = A picture of the canvas as it is on screen
+menu-save-canvas-hint = A picture of the canvas as it is on screen, at twice the screen's resolution to print (in the browser, as on screen)
 menu-save-as = Save As…
 menu-save-as-hint = Save the scene under another name
 menu-copy-link = Copy link to this scene
@@ -579,7 +579,7 @@ graph-quantity = quantity
 graph-quantity-hint = The quantity to add
 graph-tension-hint = Plot the force this rod or string carries (pulling is positive)
 graph-marks = extremes and zeros
-graph-marks-hint = Mark each series' maxima, minima and zero crossings, read off the samples (a parabola through the three samples around each extreme), and give the period from successive maxima
+graph-marks-hint = Mark each series' maxima, minima and zero crossings, located in the run once it stops (stepped to, as the stopwatch's events; read off the samples while it plays and in a very large scene), and give the period from successive maxima
 graph-earlier-runs = earlier runs
 graph-forget-earlier = forget earlier runs
 graph-forget-earlier-hint = The grey curves are the runs before the last (up to three, kept from Play to Play); forget them
@@ -596,7 +596,10 @@ graph-reset-view-hint = Show the whole run again (Ctrl and the mouse wheel zoom,
 graph-period = period of { $quantity }: { $period } s (mean of { $intervals } { $intervals ->
     [one] interval
    *[other] intervals
-} between maxima)
+} between maxima { $how ->
+    [located] located in the run
+   *[sampled] read off the samples
+})
 graph-angle-hint = Plot this rod's, string's or spring's angle from the downward vertical (counter-clockwise positive)
 graph-length-hint = Plot the distance between this rod's, string's or spring's ends
 graph-total-hint = Plot this system quantity
@@ -617,3 +620,5 @@ file-cannot-read-file = cannot read '{ $path }'
 file-cannot-download = the browser could not download '{ $path }'
 file-cannot-autosave = cannot autosave in '{ $path }': { $error }
 file-cannot-encode = the picture could not be encoded: { $error }
+reading-full = { $value } (the full value: click to copy it)
+reading-copied = { $value } copied to the clipboard.

@@ -10,7 +10,7 @@ menu-open-hint = Abrir un archivo de escena
 menu-save = Guardar
 menu-save-hint = Guardar la escena
 menu-save-canvas = Guardar el lienzo como PNG…
-menu-save-canvas-hint = Una imagen del lienzo tal como se ve
+menu-save-canvas-hint = Una imagen del lienzo tal como se ve, al doble de la resolución de la pantalla para imprimir (en el navegador, como en pantalla)
 menu-save-as = Guardar como…
 menu-save-as-hint = Guardar la escena con otro nombre
 menu-copy-link = Copiar un enlace a esta escena
@@ -578,7 +578,7 @@ graph-quantity = magnitud
 graph-quantity-hint = La magnitud que añadir
 graph-tension-hint = Dibujar la fuerza que transmite esta varilla o cuerda (la tracción es positiva)
 graph-marks = extremos y ceros
-graph-marks-hint = Marcar los máximos, mínimos y cruces por cero de cada serie, leídos de las muestras (una parábola por las tres muestras alrededor de cada extremo), y dar el periodo entre máximos sucesivos
+graph-marks-hint = Marcar los máximos, mínimos y cruces por cero de cada serie, localizados en la ejecución cuando se detiene (como los eventos del cronómetro; leídos de las muestras mientras corre y en escenas muy grandes), y dar el periodo entre máximos sucesivos
 graph-earlier-runs = simulaciones anteriores
 graph-forget-earlier = olvidar simulaciones anteriores
 graph-forget-earlier-hint = Las curvas grises son las simulaciones anteriores a la última (hasta tres, guardadas de una reproducción a otra); olvidarlas
@@ -595,7 +595,10 @@ graph-reset-view-hint = Volver a mostrar toda la simulación (Ctrl y la rueda ha
 graph-period = periodo de { $quantity }: { $period } s (media de { $intervals } { $intervals ->
     [one] intervalo
    *[other] intervalos
-} entre máximos)
+} entre máximos { $how ->
+    [located] localizados en la ejecución
+   *[sampled] leídos de las muestras
+})
 graph-angle-hint = Representar el ángulo de esta barra, cuerda o muelle respecto a la vertical hacia abajo (positivo en sentido antihorario)
 graph-length-hint = Representar la distancia entre los extremos de esta barra, cuerda o muelle
 graph-total-hint = Dibujar esta magnitud del sistema
@@ -616,3 +619,5 @@ file-cannot-read-file = no se puede leer '{ $path }'
 file-cannot-download = el navegador no pudo descargar '{ $path }'
 file-cannot-autosave = no se puede guardar automáticamente en '{ $path }': { $error }
 file-cannot-encode = no se pudo codificar la imagen: { $error }
+reading-full = { $value } (el valor completo: haz clic para copiarlo)
+reading-copied = { $value } copiado al portapapeles.

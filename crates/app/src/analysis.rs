@@ -5,9 +5,10 @@
 //! A maximum or minimum is the vertex of the parabola through the extreme sample and its
 //! two neighbours, good to a few 1e-7 s for a smooth motion sampled every 5 ms (the
 //! vertex's error grows as the sampling interval cubed); a zero crossing is where the
-//! straight line between the two samples around it crosses 0. Instants that must be
-//! exact are the events' (`physics::Watch`: the stopwatch, the time machine's jumps,
-//! `run --events`); these are for reading a graph.
+//! straight line between the two samples around it crosses 0. These are the graph's
+//! estimates while a run plays; once it stops, `plots.rs` locates each in the run
+//! between the samples around it, as the stopwatch's events are (`physics::Watch`,
+//! `Simulation::extreme_until`).
 
 /// A turning value of a series: where, and how much.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -13,10 +13,13 @@ use egui::Ui;
 use web_time::Instant;
 
 impl App {
-    /// Asks for a screenshot when a picture was asked for, and turns the screenshot into
-    /// a PNG of the part wanted when it arrives.
+    /// Asks for a screenshot when a picture was asked for (but the desktop's canvas), and
+    /// turns the screenshot into a PNG of the part wanted when it arrives.
     pub(crate) fn take_picture(&mut self, ui: &Ui) {
-        if let Some(subject) = self.picture_asked.take() {
+        // On the desktop the canvas prints itself at the next frame (`print_canvas`).
+        let printed =
+            !cfg!(target_arch = "wasm32") && self.picture_asked == Some(picture::Subject::Canvas);
+        if let Some(subject) = self.picture_asked.take_if(|_| !printed) {
             self.picture_awaited = Some((subject, picture::request(ui.ctx())));
         }
         let Some((subject, slot)) = &self.picture_awaited else {
@@ -43,6 +46,35 @@ impl App {
                     .ask(Purpose::ExportPng, None, subject.file_name());
                 #[cfg(target_arch = "wasm32")]
                 self.save_picture(subject.file_name());
+            }
+            Err(message) => self.notify(message),
+        }
+    }
+
+    /// The canvas as drawn so far this frame, at twice the resolution, as a PNG to save.
+    #[cfg(not(target_arch = "wasm32"))]
+    pub(crate) fn print_canvas(&mut self, ui: &Ui) {
+        let rect = self.canvas.rect;
+        // The canvas's painter clips to the canvas: every shape clipped within it is its.
+        let shapes: Vec<egui::epaint::ClippedShape> = ui.ctx().graphics(|layers| {
+            layers
+                .get(ui.layer_id())
+                .map(|list| {
+                    list.all_entries()
+                        .filter(|s| rect.expand(0.5).contains_rect(s.clip_rect))
+                        .cloned()
+                        .collect()
+                })
+                .unwrap_or_default()
+        });
+        match figure::canvas::png(&shapes, rect, ui.ctx().pixels_per_point()) {
+            Ok(bytes) => {
+                self.picture_ready = Some(bytes);
+                self.files.ask(
+                    Purpose::ExportPng,
+                    None,
+                    picture::Subject::Canvas.file_name(),
+                );
             }
             Err(message) => self.notify(message),
         }

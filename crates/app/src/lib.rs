@@ -724,6 +724,16 @@ impl App {
         egui::CentralPanel::default().show(ui, |ui| {
             self.canvas
                 .ui(ui, &mut self.document, &self.runner, &mut self.selection);
+            if let Some(value) = self.canvas.copied.take() {
+                self.announcer.text = tr_with("reading-copied", &[("value", Arg::Text(&value))]);
+            }
+            // On the desktop the canvas is printed from the shapes it was just drawn
+            // with, at twice the resolution (`figure::canvas`); the web takes a screenshot.
+            #[cfg(not(target_arch = "wasm32"))]
+            if self.picture_asked == Some(picture::Subject::Canvas) {
+                self.picture_asked = None;
+                self.print_canvas(ui);
+            }
         });
 
         self.file_dialogs(ui);

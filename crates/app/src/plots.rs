@@ -25,6 +25,7 @@ use crate::i18n::{Arg, tr, tr_with};
 use crate::picture::Format;
 use crate::recording::Recording;
 use crate::run_loop::Runner;
+use crate::timeline::Timeline;
 
 /// Points drawn per series at most; the CSV export has every sample.
 const MAX_POINTS: usize = 4_000;
@@ -108,12 +109,13 @@ impl Graphs {
                     .and_then(|t| t.shown)
                     .and(runner.simulation())
                     .map(physics::Simulation::time);
-                let runs = (
-                    runner.recording.as_ref(),
-                    &runner.earlier[..],
+                let runs = Runs {
+                    recording: runner.recording.as_ref(),
+                    earlier: &runner.earlier[..],
                     cursor,
-                    runner.playing,
-                );
+                    playing: runner.playing,
+                    timeline: runner.timeline.as_ref(),
+                };
                 if let Some(a) = self.graph(ui, document, runs, g) {
                     action = Some(a);
                 }
@@ -132,6 +134,21 @@ impl Graphs {
         action
     }
 
+    /// The maxima and minima graph `g` marks (its series' in order), as last read: a
+    /// time, a value and whether each is a maximum.
+    pub fn extremes(&self, g: usize) -> Vec<(f64, f64, bool)> {
+        self.read
+            .get(g)
+            .and_then(Option::as_ref)
+            .map(|read| {
+                read.analyses
+                    .iter()
+                    .flat_map(|a| a.extremes.iter().map(|e| (e.x, e.value, e.maximum)))
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+
     #[expect(
         clippy::too_many_lines,
         reason = "one graph's controls, laid out in order"
@@ -140,14 +157,16 @@ impl Graphs {
         &mut self,
         ui: &mut Ui,
         document: &mut Document,
-        (recording, earlier, cursor, playing): (
-            Option<&Recording>,
-            &[Recording],
-            Option<f64>,
-            bool,
-        ),
+        runs: Runs<'_>,
         g: usize,
     ) -> Option<Action> {
+        let Runs {
+            recording,
+            earlier,
+            cursor,
+            playing,
+            timeline,
+        } = runs;
         // Only what the panel reads, not the whole scene, every frame.
         let graph = &document.scene().graphs[g].clone();
         let names = document.scene().particle_names();
@@ -356,13 +375,15 @@ impl Graphs {
             series: series.clone(),
             marks,
             fit: self.fits[g],
+            // Located in the run once it stops: while it plays, each frame would wait.
+            located: marks && !playing && timeline.is_some(),
         };
         if (marks || key.fit.is_some())
             && self.read[g]
                 .as_ref()
                 .is_none_or(|r| r.is_stale(&key, playing))
         {
-            self.read[g] = Some(Read::of(recording, key));
+            self.read[g] = Some(Read::of(recording, key, timeline));
         }
         let empty = Read::default();
         let read = self.read[g]
@@ -507,6 +528,17 @@ fn series_points(
         .collect()
 }
 
+/// What a graph draws from: the last run, the runs before it, the moment shown when gone
+/// back in time, whether it plays, and its keyframes (to locate extremes in).
+#[derive(Clone, Copy)]
+struct Runs<'a> {
+    recording: Option<&'a Recording>,
+    earlier: &'a [Recording],
+    cursor: Option<f64>,
+    playing: bool,
+    timeline: Option<&'a Timeline>,
+}
+
 /// What a graph's reading was made of: the run's samples so far and the graph's choices.
 #[derive(Clone, Debug, PartialEq)]
 struct ReadKey {
@@ -515,6 +547,8 @@ struct ReadKey {
     series: Vec<Quantity>,
     marks: bool,
     fit: Option<analysis::Model>,
+    /// Whether the marks are to be located in the run, not read off the samples.
+    located: bool,
 }
 
 /// What a graph read off every sample of its series: extremes and zeros, and fits.
@@ -526,13 +560,20 @@ struct Read {
 }
 
 impl Read {
-    /// Reads `recording` as `key` asks.
-    fn of(recording: &Recording, key: ReadKey) -> Self {
+    /// Reads `recording` as `key` asks, locating the marks in `timeline` if it says so.
+    fn of(recording: &Recording, key: ReadKey, timeline: Option<&Timeline>) -> Self {
         let columns = series_points(recording, &key.x, &key.series, 1);
+        let mut budget = LOCATING_BUDGET;
         let analyses = columns
             .iter()
             .filter(|_| key.marks)
-            .map(|(q, points)| Analysis::of(q, points))
+            .map(|(q, points)| {
+                let mut analysis = Analysis::of(q, points);
+                if let Some(timeline) = timeline.filter(|_| key.located) {
+                    analysis.locate(q, points, timeline, &mut budget);
+                }
+                analysis
+            })
             .collect();
         let fits = key
             .fit
@@ -581,12 +622,19 @@ impl Read {
     }
 }
 
-/// A series' maxima, minima and zero crossings, read off its samples
-/// ([`analysis`]).
+/// The particle-steps a graph may spend locating its marks in the run, at most (a
+/// particle-step costs some 0.1–0.3 µs, so a fraction of a second once a run stops): a
+/// pendulum's marks are all located, a large scene's are read off the samples past it.
+const LOCATING_BUDGET: f64 = 2e6;
+
+/// A series' maxima, minima and zero crossings against time: read off its samples
+/// ([`analysis`]), then located in the run where the budget allows ([`Self::locate`]).
 struct Analysis {
     name: String,
     extremes: Vec<analysis::Extreme>,
     zeros: Vec<f64>,
+    /// Whether every mark was located in the run (else some are read off the samples).
+    located: bool,
 }
 
 impl Analysis {
@@ -596,7 +644,78 @@ impl Analysis {
             name: quantity.to_string(),
             extremes: analysis::extrema(&x, &y),
             zeros: analysis::zeros(&x, &y),
+            located: false,
         }
+    }
+
+    /// Locates each mark in the run, as the stopwatch's events are
+    /// ([`Timeline::extreme_between`], [`Timeline::crossing_between`]): between the
+    /// samples around the sampled estimate, by stepping to the instant. Marks past what
+    /// `budget` (particle-steps) pays for keep their sampled estimate.
+    fn locate(
+        &mut self,
+        quantity: &Quantity,
+        points: &[[f64; 2]],
+        timeline: &Timeline,
+        budget: &mut f64,
+    ) {
+        let Some(reading) = timeline.reading(quantity) else {
+            return;
+        };
+        let times: Vec<f64> = points.iter().map(|p| p[0]).collect();
+        if times.is_empty() {
+            return;
+        }
+        // The samples on either side of an estimate (the nearest one's neighbours).
+        let around = |t: f64| {
+            let k = times.partition_point(|&s| s < t).min(times.len() - 1);
+            let nearest = if k > 0 && t - times[k - 1] < times[k] - t {
+                k - 1
+            } else {
+                k
+            };
+            (
+                times[nearest.saturating_sub(1)],
+                times[(nearest + 1).min(times.len() - 1)],
+            )
+        };
+        let mut all = true;
+        for extreme in self.extremes.iter_mut().take(MARKS) {
+            let span = around(extreme.x);
+            if !timeline.pay_for(span, budget) {
+                all = false;
+                break;
+            }
+            let turn = if extreme.maximum {
+                physics::Turn::Maximum
+            } else {
+                physics::Turn::Minimum
+            };
+            match timeline.extreme_between(reading, span, turn) {
+                Some(at) => {
+                    extreme.x = at.time();
+                    extreme.value = at.read(reading);
+                }
+                None => all = false,
+            }
+        }
+        for zero in self.zeros.iter_mut().take(MARKS) {
+            // Between the sample before the estimate and the one after the next.
+            let k = times.partition_point(|&s| s < *zero);
+            if k == 0 {
+                continue; // on the first sample, exactly
+            }
+            let span = (times[k - 1], times[(k + 1).min(times.len() - 1)]);
+            if !timeline.pay_for(span, budget) {
+                all = false;
+                break;
+            }
+            match timeline.crossing_between(reading, 0.0, span) {
+                Some(t) => *zero = t,
+                None => all = false,
+            }
+        }
+        self.located = all && self.extremes.len() <= MARKS && self.zeros.len() <= MARKS;
     }
 
     /// The marks: up triangles at maxima, down at minima, rings at zero crossings.
@@ -635,6 +754,10 @@ impl Analysis {
                 ("quantity", Arg::Text(&self.name)),
                 ("period", Arg::Text(&format::fixed(period, 6))),
                 ("intervals", Arg::Number(intervals as f64)),
+                (
+                    "how",
+                    Arg::Text(if self.located { "located" } else { "sampled" }),
+                ),
             ],
         ))
     }

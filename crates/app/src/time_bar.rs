@@ -213,11 +213,23 @@ impl App {
             .default_pos(self.canvas.rect.left_bottom() + egui::vec2(12.0, -260.0))
             .show(ui.ctx(), |ui| {
                 let watch = &mut self.stopwatch;
-                ui.label(
-                    egui::RichText::new(format!("{} s", format::fixed(watch.reading, 6)))
-                        .monospace()
-                        .size(22.0),
-                );
+                // Shown to the microsecond a located event means; the full value is a
+                // hover or a click (to the clipboard) away.
+                let full = format!("{} s", watch.reading);
+                let reading = ui
+                    .add(
+                        egui::Label::new(
+                            egui::RichText::new(format!("{} s", format::fixed(watch.reading, 6)))
+                                .monospace()
+                                .size(22.0),
+                        )
+                        .sense(egui::Sense::click()),
+                    )
+                    .on_hover_text(tr_with("reading-full", &[("value", Arg::Text(&full))]));
+                if reading.clicked() {
+                    ui.ctx().copy_text(full.clone());
+                    self.announcer.text = tr_with("reading-copied", &[("value", Arg::Text(&full))]);
+                }
                 ui.label(tr(match watch.state {
                     State::Stopped => "stopwatch-stopped",
                     State::Armed => "stopwatch-armed",

@@ -184,6 +184,55 @@ impl Timeline {
         }
     }
 
+    /// `quantity` found in the run's objects; `None` if the run has no such object.
+    pub fn reading(&self, quantity: &physics::Quantity) -> Option<physics::Reading> {
+        quantity.reading(&self.keyframes.first()?.1).ok()
+    }
+
+    /// Takes from `budget` (particle-steps) what locating something between `from` and
+    /// `until` costs at most, if it holds that much: the steps from a keyframe there,
+    /// and a hundred trials across the span (each a few steps of its own).
+    pub fn pay_for(&self, (from, until): (f64, f64), budget: &mut f64) -> bool {
+        let Some((_, first)) = self.keyframes.first() else {
+            return false;
+        };
+        let across = ((until - from) / first.time_step()).ceil().max(1.0);
+        let cost = first.len() as f64 * (self.interval as f64 + 100.0 * across);
+        let paid = cost <= *budget;
+        if paid {
+            *budget -= cost;
+        }
+        paid
+    }
+
+    /// The run's state at the instant between `from` and `until` (the samples around a
+    /// sampled maximum or minimum) at which `reading` is at its `turn`
+    /// ([`Simulation::extreme_until`]); `None` outside the run or if stepping failed.
+    pub fn extreme_between(
+        &self,
+        reading: physics::Reading,
+        (from, until): (f64, f64),
+        turn: physics::Turn,
+    ) -> Option<Simulation> {
+        let (_, start) = self.state_at_time(from)?;
+        start.extreme_until(reading, until, turn).ok()
+    }
+
+    /// The first instant between `from` and `until` at which `reading` crosses `value`,
+    /// located inside its step; `None` if it does not within the run.
+    pub fn crossing_between(
+        &self,
+        reading: physics::Reading,
+        value: f64,
+        (from, until): (f64, f64),
+    ) -> Option<f64> {
+        let (_, mut simulation) = self.state_at_time(from)?;
+        let event = (reading, value, physics::Direction::Either);
+        let mut watch = physics::Watch::of_readings(vec![event], &simulation);
+        let found = simulation.step_to_watching(until, &mut watch).ok()?;
+        found.first().map(physics::Located::time)
+    }
+
     /// Forgets everything after `step`: the run goes on from there as a new branch.
     pub fn truncate(&mut self, step: u64) {
         self.keyframes.retain(|(at, _)| *at <= step);

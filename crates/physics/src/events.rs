@@ -19,7 +19,7 @@
 
 use std::fmt;
 
-use crate::quantity::{Quantity, Reading};
+use crate::quantity::{Of, Quantity, Reading};
 use crate::simulation::{Simulation, SimulationError};
 
 /// Which way a crossing must go.
@@ -270,6 +270,103 @@ impl Simulation {
             }),
         )?;
         Ok(found)
+    }
+}
+
+/// Largest or smallest.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Turn {
+    /// A maximum.
+    Maximum,
+    /// A minimum.
+    Minimum,
+}
+
+impl Reading {
+    /// The reading whose value is this one's rate of change, where the simulation has one
+    /// that is exactly that: a position's velocity. (An acceleration read by
+    /// [`Simulation::read`] is the smooth forces' and leaves out a rod's pull, so a
+    /// velocity has none here.)
+    pub fn rate(self) -> Option<Self> {
+        match self {
+            Self::Particle(i, Of::X) => Some(Self::Particle(i, Of::Vx)),
+            Self::Particle(i, Of::Y) => Some(Self::Particle(i, Of::Vy)),
+            _ => None,
+        }
+    }
+}
+
+/// Golden-section trials at most: each narrows the bracket by 0.618, so 120 take it
+/// from a second to far below what f64 tells apart.
+const MOST_GOLDEN_TRIALS: usize = 120;
+
+impl Simulation {
+    /// The state at the instant between this state's and `until` at which `reading` is at
+    /// its `turn` — for a span that holds one turning point, as the samples around a
+    /// sampled maximum do. Where the reading has an exact rate ([`Reading::rate`]: a
+    /// position), the instant is where that rate crosses 0, located as an event (to
+    /// 1e-12 s); otherwise it is found by golden-section search on the reading itself,
+    /// each trial integrated from this state, to 1e-12 s or as close as the values tell
+    /// apart (near a smooth maximum a value changes as the square of the time, so about
+    /// the square root of f64's precision, 1e-8 of the span's scale). An end of the span
+    /// is the answer when the reading is largest (smallest) there.
+    ///
+    /// # Errors
+    /// A failure while integrating to a trial instant.
+    pub fn extreme_until(
+        &self,
+        reading: Reading,
+        until: f64,
+        turn: Turn,
+    ) -> Result<Self, SimulationError> {
+        if let Some(rate) = reading.rate() {
+            let direction = match turn {
+                Turn::Maximum => Direction::Down,
+                Turn::Minimum => Direction::Up,
+            };
+            let mut run = self.keyframe();
+            let mut watch = Watch::of_readings(vec![(rate, 0.0, direction)], &run);
+            if let Some(found) = run.step_to_watching(until, &mut watch)?.into_iter().next() {
+                return Ok(found.at);
+            }
+        }
+        let sign = match turn {
+            Turn::Maximum => 1.0,
+            Turn::Minimum => -1.0,
+        };
+        let at = |t: f64| -> Result<(f64, Self), SimulationError> {
+            let mut trial = self.keyframe();
+            if t > trial.time() {
+                trial.step_to(t)?;
+            }
+            Ok((sign * trial.read(reading), trial))
+        };
+        let golden = 0.5 * (5.0_f64.sqrt() - 1.0);
+        let (mut a, mut b) = (self.time(), until.max(self.time()));
+        let (mut c, mut d) = (b - golden * (b - a), a + golden * (b - a));
+        let (mut fc, mut sc) = at(c)?;
+        let (mut fd, mut sd) = at(d)?;
+        for _ in 0..MOST_GOLDEN_TRIALS {
+            if b - a <= FOUND || b - a <= 4.0 * f64::EPSILON * b.abs() {
+                break;
+            }
+            if fc >= fd {
+                (b, d, fd, sd) = (d, c, fc, sc);
+                c = b - golden * (b - a);
+                (fc, sc) = at(c)?;
+            } else {
+                (a, c, fc, sc) = (c, d, fd, sd);
+                d = a + golden * (b - a);
+                (fd, sd) = at(d)?;
+            }
+        }
+        let (fa, sa) = at(a)?;
+        let (fb, sb) = at(b)?;
+        let best = [(fa, sa), (fb, sb), (fc, sc), (fd, sd)]
+            .into_iter()
+            .max_by(|x, y| x.0.total_cmp(&y.0))
+            .map(|(_, s)| s);
+        Ok(best.unwrap_or_else(|| self.keyframe()))
     }
 }
 

@@ -75,6 +75,7 @@ macro_rules! examples {
 examples!(
     "kinematics-cartesian",
     "kinematics-polar",
+    "projectile",
     "spring-undamped",
     "spring-damped-light",
     "spring-damped-heavy",

@@ -95,7 +95,7 @@ mod testing;
 mod tuning;
 
 pub use diagnostics::{Diagnostics, Energy, ParticleReadout};
-pub use events::{Direction, Event, Located, Watch};
+pub use events::{Direction, Event, Located, Turn, Watch};
 pub use examples::{EXAMPLES, Example, example};
 pub use field::{FieldReadout, field_at};
 pub use glam::DVec2;

@@ -69,14 +69,9 @@ fn a_projectile_lands_at_the_kinematics_instant() {
     }
 }
 
-/// A bob on a 1 m rod released at rest 60° from the vertical turns at every half period
-/// T/2 = 2 √(L/g) K(sin 30°) and passes the vertical at T/4 + k T/2; rk4 at 1 ms finds
-/// the first eight of each to 1e-8 s (its error over a period is some 1e-12 s: the
-/// tolerance is the for a 1 ms step). The release itself, at rest, is not a
-/// turning point (a start on the value is not a crossing). The rod's angle crosses 0
-/// going counter-clockwise (up) and clockwise (down) by turns, starting down.
-#[test]
-fn a_pendulum_turns_and_passes_the_vertical_at_the_elliptic_instants() {
+/// A bob on a 1 m rod released at rest 60° from the vertical, and its period
+/// 4 √(L/g) K(sin 30°).
+fn pendulum() -> (Scene, f64) {
     let (length, angle) = (1.0, 60.0_f64);
     let (sin, cos) = angle.to_radians().sin_cos();
     let scene = Scene::new()
@@ -88,6 +83,18 @@ fn a_pendulum_turns_and_passes_the_vertical_at_the_elliptic_instants() {
         )
         .with_tie(Tie::rod("rod", [0.0, 0.0], "Bob", length));
     let period = 4.0 * (length / G).sqrt() * elliptic_k((angle.to_radians() / 2.0).sin());
+    (scene, period)
+}
+
+/// A bob on a 1 m rod released at rest 60° from the vertical turns at every half period
+/// T/2 = 2 √(L/g) K(sin 30°) and passes the vertical at T/4 + k T/2; rk4 at 1 ms finds
+/// the first eight of each to 1e-8 s (its error over a period is some 1e-12 s: the
+/// tolerance is the for a 1 ms step). The release itself, at rest, is not a
+/// turning point (a start on the value is not a crossing). The rod's angle crosses 0
+/// going counter-clockwise (up) and clockwise (down) by turns, starting down.
+#[test]
+fn a_pendulum_turns_and_passes_the_vertical_at_the_elliptic_instants() {
+    let (scene, period) = pendulum();
     let until = 4.0 * period + 0.1;
     let turns = times(&located(&scene, &["Bob.vx crosses 0"], until));
     let passes = located(
@@ -250,4 +257,54 @@ fn an_event_on_an_unknown_object_is_refused_by_name() {
         let error = Watch::new(&[event], &simulation).expect_err("refused");
         assert!(error.contains(names), "{text}: {error}");
     }
+}
+
+/// A bob on a 1 m rod released 60° from the vertical is at its extremes at the elliptic
+/// instants: between 0.3 T and 0.7 T its x is smallest at T/2 (found where vx crosses 0,
+/// as the events above) at −sin 60° m, and between 0.8 T and 1.2 T largest at T, to
+/// 1e-10 s (golden section on x itself would give only some 1e-8 s); between 0.6 T and 0.9 T its speed is
+/// largest at the vertical, 3T/4 (found by golden section on the speed itself: a smooth
+/// maximum is flat to its square, so the instant to 1e-7 s, some 1e-8 s seen) at
+/// √(2 g L (1 − cos 60°)) to 1e-9 m/s. The rod's angle, with no exact rate, is smallest
+/// at T/2, to 1e-7 s, at −60° to 1e-9°.
+#[test]
+fn a_pendulums_extremes_are_located_at_the_elliptic_instants() {
+    let (scene, period) = pendulum();
+    let (length, angle) = (1.0, 60.0_f64);
+    let (sin, cos) = angle.to_radians().sin_cos();
+    let from = common::simulation_at(&scene, 0.3 * period);
+    let until = 0.7 * period;
+    let reading = |text: &str| {
+        physics::Quantity::parse(text)
+            .unwrap()
+            .reading(&from)
+            .unwrap()
+    };
+    let left = from
+        .extreme_until(reading("Bob.x"), until, physics::Turn::Minimum)
+        .unwrap();
+    assert!((left.time() - period / 2.0).abs() < 1e-8, "{}", left.time());
+    assert!((left.positions()[0].x + sin).abs() < 1e-9);
+    let right = common::simulation_at(&scene, 0.8 * period)
+        .extreme_until(reading("Bob.x"), 1.2 * period, physics::Turn::Maximum)
+        .unwrap();
+    assert!((right.time() - period).abs() < 1e-10, "{}", right.time());
+    let bottom = 0.75 * period;
+    let from = common::simulation_at(&scene, 0.6 * period);
+    let fastest = from
+        .extreme_until(reading("Bob.speed"), 0.9 * period, physics::Turn::Maximum)
+        .unwrap();
+    assert!((fastest.time() - bottom).abs() < 1e-7, "{}", fastest.time());
+    let top_speed = (2.0 * G * length * (1.0 - cos)).sqrt();
+    assert!((fastest.velocities()[0].length() - top_speed).abs() < 1e-9);
+    let from = common::simulation_at(&scene, 0.3 * period);
+    let widest = from
+        .extreme_until(reading("rod.angle"), until, physics::Turn::Minimum)
+        .unwrap();
+    assert!((widest.read(reading("rod.angle")) + angle).abs() < 1e-9);
+    assert!(
+        (widest.time() - period / 2.0).abs() < 1e-7,
+        "{}",
+        widest.time()
+    );
 }

@@ -100,6 +100,9 @@ pub struct Instruments {
     /// The point of the tape or protractor the arrow keys move (Tab picks the next):
     /// 0 the tape's first end or the protractor's vertex, 1 and 2 the others.
     pub handle: usize,
+    /// The readings drawn last frame: where each label is, and the full value it rounds
+    /// (shown on hover, copied on a click).
+    pub readings: Vec<(Rect, String)>,
 }
 
 /// Whether `mark` was laid by hand where nothing fixes it: a point that is no fixed end of
@@ -198,7 +201,7 @@ pub fn probe_lines(scene: &Scene, positions: &[DVec2], at: DVec2) -> Vec<String>
 impl Instruments {
     /// Draws the tape, the probe and the field view, in the colours of `palette`.
     pub fn draw(
-        &self,
+        &mut self,
         painter: &egui::Painter,
         (view, palette): (&View, &super::Palette),
         rect: Rect,
@@ -208,6 +211,7 @@ impl Instruments {
         let screen = |p: DVec2| view.to_screen(rect, p);
         let (tape_colour, probe_colour, angle_colour) =
             (palette.tape, palette.probe, palette.angle);
+        self.readings.clear();
         if let Some(kind) = self.field_view {
             draw_field(painter, view, rect, scene, positions, kind);
         }
@@ -238,12 +242,13 @@ impl Instruments {
                     to_precision(angle, (spread / length.max(spread)).to_degrees())
                 )
             };
-            label(
+            let at = label(
                 painter,
                 pa.lerp(pb, 0.5) + Vec2::new(0.0, -8.0),
                 &text,
                 tape_colour,
             );
+            self.readings.push((at, format!("{length} m, {angle}°")));
         }
         if let Some((vertex, a, b)) = self.protractor
             && let (Some(o), Some(pa)) = (vertex.at(positions), a.at(positions))
@@ -266,12 +271,13 @@ impl Instruments {
                     } else {
                         format!("{}°", number(angle))
                     };
-                    label(
+                    let at = label(
                         painter,
                         screen(o) + Vec2::new(10.0, -10.0),
                         &text,
                         angle_colour,
                     );
+                    self.readings.push((at, format!("{angle}°")));
                 }
             }
         }
@@ -291,8 +297,8 @@ impl Instruments {
     }
 }
 
-/// Text on a pale box, so that it reads over the grid and the particles.
-fn label(painter: &egui::Painter, at: Pos2, text: &str, colour: Color32) {
+/// Text on a pale box, so that it reads over the grid and the particles. Returns the box.
+fn label(painter: &egui::Painter, at: Pos2, text: &str, colour: Color32) -> Rect {
     let galley = painter.layout_no_wrap(text.to_owned(), FontId::proportional(12.0), colour);
     let rect = Align2::LEFT_BOTTOM
         .anchor_size(at, galley.size())
@@ -303,6 +309,7 @@ fn label(painter: &egui::Painter, at: Pos2, text: &str, colour: Color32) {
         Color32::from_rgba_unmultiplied(255, 255, 255, 220),
     );
     painter.galley(rect.min + Vec2::splat(3.0), galley, colour);
+    rect
 }
 
 /// Arrows of the field on a grid across the canvas: each points along the field, its

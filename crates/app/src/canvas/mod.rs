@@ -26,6 +26,7 @@ use egui::{Pos2, Rect, Sense, Ui, Vec2};
 use physics::{DVec2, Endpoint, Follow, Particle, Scene, Section};
 
 use crate::document::Document;
+use crate::i18n::{Arg, tr_with};
 use crate::recording::Recording;
 use crate::run_loop::Runner;
 pub use instruments::{
@@ -160,6 +161,8 @@ pub struct Canvas {
     pub id: Option<egui::Id>,
     /// The colours of this frame (the usual ones or high contrast, as the theme is).
     pub palette: Palette,
+    /// A reading's full value just copied to the clipboard, for the status line to say.
+    pub copied: Option<String>,
 }
 
 impl Default for Canvas {
@@ -179,6 +182,7 @@ impl Default for Canvas {
             instruments: Instruments::default(),
             id: None,
             palette: Palette::USUAL,
+            copied: None,
         }
     }
 }
@@ -336,6 +340,17 @@ impl Canvas {
             &frame.positions,
         );
         self.draw_scale_bar(&painter, rect);
+        // A reading shows the digits its ends mean; the full value is a hover or a click
+        // (to the clipboard) away.
+        for (k, (at, full)) in self.instruments.readings.iter().enumerate() {
+            let reading = ui
+                .interact(*at, response.id.with(("reading", k)), Sense::click())
+                .on_hover_text(tr_with("reading-full", &[("value", Arg::Text(full))]));
+            if reading.clicked() {
+                ui.ctx().copy_text(full.clone());
+                self.copied = Some(full.clone());
+            }
+        }
 
         self.keyboard(ui, &response, document, &frame, selection, editable);
         if response.has_focus() {

@@ -225,3 +225,51 @@ fn a_file_changed_on_disk_is_not_silently_overwritten() {
     assert!(!harness.state().document.is_dirty());
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// File → Save the canvas as PNG writes the canvas at twice the screen's resolution (the
+/// PNG twice the canvas's size in pixels), drawn: the pendulum's bob and rod darken
+/// pixels of the light background.
+#[test]
+fn the_canvas_prints_at_twice_the_resolution() {
+    let folder = std::env::temp_dir().join(format!("newtonlab-canvas-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let mut harness = harness(App::new(example_scene("pendulum")));
+    harness.get_by_label("File").click();
+    harness.run();
+    harness
+        .get_by_label_contains("Save the canvas as PNG")
+        .click();
+    harness.run();
+    harness.run();
+    for (label, text) in [
+        ("folder", folder.to_string_lossy().into_owned()),
+        ("file name", "canvas.png".to_owned()),
+    ] {
+        harness.get_by_label(label).focus();
+        harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+        harness.get_by_label(label).type_text(&text);
+        harness.run();
+    }
+    harness.get_by_label("Export").click();
+    harness.run();
+    let bytes = std::fs::read(folder.join("canvas.png")).expect("the picture was written");
+    let decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+    let mut reader = decoder.read_info().expect("a PNG");
+    let mut pixels = vec![0; reader.output_buffer_size().expect("a size")];
+    let info = reader.next_frame(&mut pixels).expect("a frame");
+    let rect = harness.state().canvas.rect;
+    let scale = 2.0 * harness.ctx.pixels_per_point();
+    assert_eq!(
+        (f64::from(info.width), f64::from(info.height)),
+        (
+            f64::from((rect.width() * scale).round()),
+            f64::from((rect.height() * scale).round())
+        )
+    );
+    let dark = pixels
+        .chunks_exact(3)
+        .filter(|p| p.iter().all(|&c| c < 100))
+        .count();
+    assert!(dark > 200, "{dark} dark pixels: the bob and the rod");
+    std::fs::remove_dir_all(&folder).ok();
+}

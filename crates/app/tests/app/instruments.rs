@@ -363,4 +363,15 @@ fn the_protractor_reads_the_angle_between_its_arms() {
     assert!(protractor.2.is_some(), "both arms");
     let angle = protractor_reading(protractor, &[DVec2::ZERO]).expect("a reading");
     assert!((angle - 45.0).abs() < 1e-9, "{angle}°");
+    // Its label rounds to what hand-laid arms mean; the full value is a click away.
+    let (label, full) = harness.state().canvas.instruments.readings[0].clone();
+    assert_eq!(full, format!("{angle}°"));
+    harness.hover_at(label.center());
+    harness.run();
+    harness.drag_at(label.center());
+    harness.run();
+    harness.drop_at(label.center());
+    harness.run();
+    let said = &harness.state().announcer.text;
+    assert!(said.contains(&full) && said.contains("copied"), "{said}");
 }

@@ -12,6 +12,7 @@ mod files;
 mod instruments;
 mod keyboard;
 mod languages;
+mod lessons;
 mod readouts;
 mod run_controls;
 mod timeline;

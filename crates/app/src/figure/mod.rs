@@ -13,6 +13,8 @@ use physics::{Graph, Quantity};
 
 use crate::recording::Recording;
 
+pub mod canvas;
+
 /// The figure's size, pixels.
 pub const SIZE: (u32, u32) = (1200, 800);
 /// The legend's width beside the plot, pixels.
@@ -196,7 +198,7 @@ fn extent(series: &[(Quantity, Vec<(f64, f64)>)]) -> ((f64, f64), (f64, f64)) {
 }
 
 /// RGB `pixels` of `size` as PNG bytes.
-fn encode_png(pixels: &[u8], (w, h): (u32, u32)) -> Result<Vec<u8>, String> {
+pub(crate) fn encode_png(pixels: &[u8], (w, h): (u32, u32)) -> Result<Vec<u8>, String> {
     let mut out = Vec::new();
     let fail = |e: png::EncodingError| {
         crate::i18n::tr_text("file-cannot-encode", &[("error", &e.to_string())])

@@ -902,6 +902,9 @@ fn readouts(ui: &mut Ui, runner: &Runner) {
             rows.push((tr("readout-damping"), format::number(ledger.damping)));
             rows.push((tr("readout-friction"), format::number(ledger.friction)));
             rows.push((tr("readout-impacts"), format::number(ledger.impacts)));
+            if ledger.drag != 0.0 {
+                rows.push((tr("readout-drag"), format::number(ledger.drag)));
+            }
             if runner
                 .simulation()
                 .is_some_and(|s| !s.tie_names().is_empty())
@@ -947,6 +950,11 @@ fn books(
         (tr("bar-damping"), ledger.damping, DISSIPATED),
         (tr("bar-friction"), ledger.friction, DISSIPATED),
         (tr("bar-impacts"), ledger.impacts, DISSIPATED),
+    ]);
+    if ledger.drag != 0.0 {
+        bars.push((tr("bar-drag"), ledger.drag, DISSIPATED));
+    }
+    bars.extend([
         (tr("readout-error"), residual, ERROR_BAR),
         (tr("bar-total-at-play"), start, TOTAL),
     ]);

@@ -287,8 +287,11 @@ fn write_csv(
     let named = rows.regular && rows.watch.is_some();
     let mut header = simulation.csv_header();
     if ledger_start.is_some() {
-        header
-            .push_str(",dissipated_damping,dissipated_friction,dissipated_impacts,energy_residual");
+        // Drag's column comes last, after the residual: it was added after files were
+        // read by column position.
+        header.push_str(
+            ",dissipated_damping,dissipated_friction,dissipated_impacts,energy_residual,dissipated_drag",
+        );
     }
     if named {
         header.push_str(",event");
@@ -300,8 +303,8 @@ fn write_csv(
             let residual = simulation.diagnostics().energy.total() + ledger.total() - start;
             write!(
                 out,
-                ",{},{},{},{residual}",
-                ledger.damping, ledger.friction, ledger.impacts
+                ",{},{},{},{residual},{}",
+                ledger.damping, ledger.friction, ledger.impacts, ledger.drag
             )?;
         }
         if named {

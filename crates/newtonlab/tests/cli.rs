@@ -632,18 +632,22 @@ velocity = [3.0, 0.0]
     let mut lines = text.lines();
     assert!(
         lines.next().unwrap().ends_with(
-            ",momentum_x,momentum_y,dissipated_damping,dissipated_friction,dissipated_impacts,energy_residual"
+            ",momentum_x,momentum_y,dissipated_damping,dissipated_friction,dissipated_impacts,energy_residual,dissipated_drag"
         ),
-        "header"
+        "header: drag's column after the residual, so that older readers keep theirs"
     );
     let mu_g = 0.5 * 9.81;
     for line in lines {
         let row: Vec<f64> = line.split(',').map(|f| f.parse().unwrap()).collect();
         let (t, n) = (row[0], row.len());
         let theory = 2.0 * mu_g * (3.0 * t - 0.5 * mu_g * t * t);
-        assert!((row[n - 3] - theory).abs() < 1e-9, "t = {t}: {line}");
-        assert_eq!((row[n - 4], row[n - 2]), (0.0, 0.0), "t = {t}: {line}");
-        assert!(row[n - 1].abs() < 1e-9, "t = {t}: residual in {line}");
+        assert!((row[n - 4] - theory).abs() < 1e-9, "t = {t}: {line}");
+        assert_eq!(
+            (row[n - 5], row[n - 3], row[n - 1]),
+            (0.0, 0.0, 0.0),
+            "t = {t}: {line}"
+        );
+        assert!(row[n - 2].abs() < 1e-9, "t = {t}: residual in {line}");
     }
 }
 

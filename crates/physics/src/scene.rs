@@ -145,6 +145,10 @@ pub struct Particle {
     pub fixed: bool,
     /// Display colour; `None` lets the app choose.
     pub color: Option<Color>,
+    /// Linear air resistance b, kg/s: a force −b v. Default 0.
+    pub linear_drag: f64,
+    /// Quadratic air resistance c, kg/m: a force −c |v| v. Default 0.
+    pub quadratic_drag: f64,
 }
 
 impl Particle {
@@ -161,6 +165,8 @@ impl Particle {
             acceleration: Vector::ZERO,
             fixed: false,
             color: None,
+            linear_drag: 0.0,
+            quadratic_drag: 0.0,
         }
     }
 
@@ -205,6 +211,15 @@ impl Particle {
     #[must_use]
     pub fn charge(mut self, charge: f64) -> Self {
         self.charge = charge;
+        self
+    }
+
+    /// Sets the air resistance: linear `b` (kg/s, F = −b v) and quadratic `c` (kg/m,
+    /// F = −c |v| v).
+    #[must_use]
+    pub fn drag(mut self, b: f64, c: f64) -> Self {
+        self.linear_drag = b;
+        self.quadratic_drag = c;
         self
     }
 

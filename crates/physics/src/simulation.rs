@@ -133,7 +133,7 @@ pub struct ImpactRecord {
 
 /// The energy the dissipative parts of the physics took out of the motion since the
 /// ledger was started, joules. With the kinetic and potential energy it closes: kinetic +
-/// potential + the three − the starting energy is what is left, the residual: the
+/// potential + these − the starting energy is what is left, the residual: the
 /// integrator's error.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Ledger {
@@ -141,6 +141,8 @@ pub struct Ledger {
     pub damping: f64,
     /// Surface friction: ∫ −F·v dt of the surfaces' tangential force, the same way.
     pub friction: f64,
+    /// Air resistance: ∫ (b |v|² + c |v|³) dt, the same way.
+    pub drag: f64,
     /// Impacts and resting contact: ½ μ (1 − e²) u² per impact, the kinetic energy the
     /// resting contacts' inelastic impulses remove, less the potential energy their
     /// position correction adds (a pile at rest sinks by ½ g h² a step under gravity and is
@@ -150,14 +152,13 @@ pub struct Ledger {
 }
 
 impl Ledger {
-    /// All three, joules.
+    /// All of them, joules.
     pub fn total(&self) -> f64 {
-        self.damping + self.friction + self.impacts
+        self.damping + self.friction + self.impacts + self.drag
     }
 }
 
-/// Dissipated power, watts: (spring damping, surface friction).
-type Power = (f64, f64);
+use crate::forces::Power;
 
 /// The effective mass of an impact, kg: 1/(1/mᵢ + 1/mⱼ) for a pair, m against a
 /// surface (0 when nothing can move). `w` is each particle's 1/m.
@@ -689,7 +690,7 @@ impl Simulation {
     /// ends' positions and velocities, and at its end.
     fn power_over_step(&self, taken: f64) -> (Power, Power) {
         if !self.forces.dissipates() {
-            return ((0.0, 0.0), (0.0, 0.0));
+            return (Power::default(), Power::default());
         }
         let (start, end) = (&self.start, &self.state);
         let h = taken;
@@ -728,13 +729,12 @@ impl Simulation {
         let Some(ledger) = &mut self.ledger else {
             return;
         };
-        let (
-            (caught, (damping_0, friction_0)),
-            (((damping_m, friction_m), (damping_1, friction_1)), kinetic),
-        ) = (start, end);
+        let ((caught, p0), ((pm, p1), kinetic)) = (start, end);
         // Simpson's rule over the step.
-        ledger.damping += (damping_0 + 4.0 * damping_m + damping_1) * taken / 6.0;
-        ledger.friction += (friction_0 + 4.0 * friction_m + friction_1) * taken / 6.0;
+        let simpson = |of: fn(&Power) -> f64| (of(&p0) + 4.0 * of(&pm) + of(&p1)) * taken / 6.0;
+        ledger.damping += simpson(|p| p.damping);
+        ledger.friction += simpson(|p| p.friction);
+        ledger.drag += simpson(|p| p.drag);
         let w = &self.forces.inverse_mass;
         let in_step: f64 = self.contacts.applied[begun..]
             .iter()

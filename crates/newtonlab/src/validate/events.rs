@@ -4,7 +4,7 @@
 use physics::{Event, Integrator, Located, Particle, Scene, Spring, Tie, Watch, World};
 
 use super::experiments::{Outcome, start};
-use super::report::{Report, Table, bound, error, value};
+use super::report::{Checks, Report};
 use super::theory;
 use crate::Failure;
 
@@ -28,16 +28,9 @@ fn instants(scene: &Scene, event: &str, until: f64) -> Result<Vec<Located>, Fail
 /// 1e-8 s; a bob on a spring (ω = 2 rad/s) is at its maxima (`bob.vx crosses 0 down`) at
 /// 2π k / ω, to 1e-9 s.
 pub(crate) fn events(report: &mut Report) -> Outcome {
-    let mut rows = Vec::new();
-    let mut row = |report: &mut Report, what: String, simulated: f64, theory: f64, limit| {
-        let e = report.check_within(format!("events: {what}"), (simulated, theory, 1.0), limit);
-        rows.push(vec![
-            what,
-            value(simulated),
-            value(theory),
-            error(e),
-            bound(limit),
-        ]);
+    let mut checks = Checks::new("events");
+    let mut row = |report: &mut Report, what: String, simulated, theory, limit| {
+        checks.check(report, what, (simulated, theory, 1.0), limit);
     };
     let (h, vx, vy) = (10.0, 3.0, 4.0);
     let landing = (vy + (vy * vy + 2.0 * G * h).sqrt()) / G;
@@ -104,12 +97,9 @@ pub(crate) fn events(report: &mut Report) -> Outcome {
             1e-9,
         );
     }
-    report.tables.push(Table {
-        section: "events",
-        title: "Events: instants located inside a step".to_owned(),
-        theory: "landing (v + √(v² + 2gh))/g; a pendulum turns every half period 2 √(L/g) K(sin(θ₀/2)); a spring's maxima at 2πk/ω",
-        header: vec!["quantity", "simulated", "theory", "error", "tolerance"],
-        rows,
-    });
+    report.tables.push(checks.table(
+        "Events: instants located inside a step",
+        "landing (v + √(v² + 2gh))/g; a pendulum turns every half period 2 √(L/g) K(sin(θ₀/2)); a spring's maxima at 2πk/ω",
+    ));
     Ok(())
 }

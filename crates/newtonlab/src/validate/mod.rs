@@ -8,6 +8,7 @@
 //! within its tolerance, 1 otherwise, listing the misses.
 
 mod books;
+mod drag;
 mod events;
 mod experiments;
 mod methods;
@@ -49,10 +50,11 @@ enum Group {
     Friction,
     SavedState,
     Events,
+    Drag,
 }
 
 impl Group {
-    const ALL: [Self; 10] = [
+    const ALL: [Self; 11] = [
         Self::Paper,
         Self::Rods,
         Self::Strings,
@@ -63,6 +65,7 @@ impl Group {
         Self::Friction,
         Self::SavedState,
         Self::Events,
+        Self::Drag,
     ];
 
     fn name(self) -> &'static str {
@@ -77,6 +80,7 @@ impl Group {
             Self::Friction => "friction",
             Self::SavedState => "saved-state",
             Self::Events => "events",
+            Self::Drag => "drag",
         }
     }
 
@@ -110,6 +114,9 @@ impl Group {
             Self::SavedState => "a saved state reopens and continues its run",
             Self::Events => {
                 "events are located inside a step: a landing, a pendulum's turning points, a spring's maxima at their closed-form instants"
+            }
+            Self::Drag => {
+                "air resistance: linear drag's exponentials, quadratic drag's tanh fall to the terminal speed, and the energy it takes in the books"
             }
         }
     }
@@ -158,6 +165,7 @@ pub(crate) fn validate(args: &ValidateArgs) -> Result<(), Failure> {
             Group::Friction => books::friction(report)?,
             Group::SavedState => books::saved_state(report)?,
             Group::Events => events::events(report)?,
+            Group::Drag => drag::drag(report)?,
         }
     }
     let statements: Vec<(&str, &str)> = groups.iter().map(|g| (g.name(), g.statement())).collect();

@@ -15,6 +15,57 @@ pub(crate) struct Table {
     pub rows: Vec<Vec<String>>,
 }
 
+/// The rows of a table of checks, each a quantity against its closed form: quantity,
+/// simulated, theory, error, tolerance.
+pub(crate) struct Checks {
+    /// The group's name, before each check's in the report's list.
+    group: &'static str,
+    rows: Vec<Vec<String>>,
+}
+
+impl Checks {
+    pub fn new(group: &'static str) -> Self {
+        Self {
+            group,
+            rows: Vec::new(),
+        }
+    }
+
+    /// Checks `simulated` against `theory`, the error relative to `scale`, within `limit`,
+    /// and adds the row.
+    pub fn check(
+        &mut self,
+        report: &mut Report,
+        what: String,
+        (simulated, theory, scale): (f64, f64, f64),
+        limit: f64,
+    ) {
+        let e = report.check_within(
+            format!("{}: {what}", self.group),
+            (simulated, theory, scale),
+            limit,
+        );
+        self.rows.push(vec![
+            what,
+            value(simulated),
+            value(theory),
+            error(e),
+            bound(limit),
+        ]);
+    }
+
+    /// The table of the rows, titled, with the closed forms they hold to.
+    pub fn table(self, title: &str, theory: &'static str) -> Table {
+        Table {
+            section: self.group,
+            title: title.to_owned(),
+            theory,
+            header: vec!["quantity", "simulated", "theory", "error", "tolerance"],
+            rows: self.rows,
+        }
+    }
+}
+
 /// What a check's error must not exceed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Limit {

@@ -4,6 +4,7 @@
 //! module owns the per-particle constants they read and sums them into accelerations.
 
 pub(crate) mod direct;
+pub(crate) mod drag;
 pub(crate) mod normal;
 pub(crate) mod pair;
 mod response;
@@ -19,6 +20,17 @@ use crate::constraints::Constraints;
 use crate::scene::{PairForces, Scene};
 pub(crate) use normal::SurfaceContact;
 pub(crate) use spring::SpringLink;
+
+/// Power the smooth dissipative forces take out of the motion, watts, by kind.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct Power {
+    /// Spring damping.
+    pub damping: f64,
+    /// Surface friction.
+    pub friction: f64,
+    /// Air resistance.
+    pub drag: f64,
+}
 
 /// The constants of every force law, in runtime form (SI, indexed by particle).
 #[derive(Clone, Debug)]
@@ -53,6 +65,8 @@ pub(crate) struct ForceModel {
     pub workers: crate::parallel::Workers,
     /// Particles resting on or sliding along a ramp or wall during the current step.
     pub surface_contacts: Vec<SurfaceContact>,
+    /// The moving particles with air resistance, ascending.
+    pub drag: Vec<drag::Drag>,
 }
 
 impl ForceModel {
@@ -116,6 +130,7 @@ impl ForceModel {
             springs,
             surface_contacts: Vec::new(),
             workers: crate::parallel::Workers::default(),
+            drag: drag::Drag::of(particles),
         }
     }
 
@@ -166,7 +181,10 @@ impl ForceModel {
     /// forces, springs, rods or strings, so each feels only the field, its applied
     /// acceleration and the surfaces' answer to them (fixed for the step).
     pub fn accelerations_are_constant(&self) -> bool {
-        self.interacting.is_empty() && self.springs.is_empty() && self.constraints.is_empty()
+        self.interacting.is_empty()
+            && self.springs.is_empty()
+            && self.constraints.is_empty()
+            && self.drag.is_empty()
     }
 
     /// The accelerations of the fields, pairwise forces and springs: everything the
@@ -176,6 +194,9 @@ impl ForceModel {
         self.pairwise(x, out);
         for link in &self.springs {
             link.add_forces(x, v, out);
+        }
+        for drag in &self.drag {
+            drag.add_force(v, out);
         }
         for ((a, &field), &w) in out
             .iter_mut()
@@ -198,13 +219,14 @@ impl ForceModel {
     }
 
     /// The power the dissipative forces take out of the motion at positions `x` and
-    /// velocities `v`, watts: (spring damping, surface friction). Friction is the part
-    /// of a surface's force along the surface; its power is −F·v.
-    pub fn dissipation(&self, x: &[DVec2], v: &[DVec2]) -> (f64, f64) {
+    /// velocities `v`, watts, by kind. Friction is the part of a surface's force along
+    /// the surface; its power is −F·v.
+    pub fn dissipation(&self, x: &[DVec2], v: &[DVec2]) -> Power {
         if !self.dissipates() {
-            return (0.0, 0.0);
+            return Power::default();
         }
         let damping = self.springs.iter().map(|s| s.damping_power(x, v)).sum();
+        let drag = self.drag.iter().map(|d| d.power(v)).sum();
         let mut friction = 0.0;
         if self.surface_contacts.iter().any(|c| c.friction > 0.0) {
             let mut a = vec![DVec2::ZERO; x.len()];
@@ -218,7 +240,11 @@ impl ForceModel {
                 friction -= self.mass[p] * along.dot(v[p]);
             }
         }
-        (damping, friction)
+        Power {
+            damping,
+            friction,
+            drag,
+        }
     }
 
     /// The work the surfaces' normal forces did on particles that moved into or off
@@ -268,10 +294,11 @@ impl ForceModel {
             + (self.interacting.len() + self.charged.len()) * size_of::<usize>()
     }
 
-    /// Whether any force dissipates smoothly now: a damped spring, or friction on a
-    /// surface a particle rests on.
+    /// Whether any force dissipates smoothly now: a damped spring, air resistance, or
+    /// friction on a surface a particle rests on.
     pub fn dissipates(&self) -> bool {
         self.springs.iter().any(|s| s.damping != 0.0)
+            || !self.drag.is_empty()
             || self.surface_contacts.iter().any(|c| c.friction > 0.0)
     }
 

@@ -230,6 +230,7 @@ mod tests {
             constraints: crate::constraints::Constraints::default(),
             workers: crate::parallel::Workers::default(),
             surface_contacts: Vec::new(),
+            drag: Vec::new(),
         };
         (model, x)
     }

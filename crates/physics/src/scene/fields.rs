@@ -398,6 +398,24 @@ pub const PARTICLE: &[Field<Particle>] = &[
         "false",
         "A fixed particle never moves; it still attracts, repels and is hit"
     ),
+    number!(
+        "linear_drag",
+        "air resistance, linear",
+        linear_drag,
+        Rule::NonNegative,
+        "kg/s",
+        Some("0.0"),
+        "Air resistance b: a force of b v against the motion (slow motion in a thick fluid)"
+    ),
+    number!(
+        "quadratic_drag",
+        "air resistance, quadratic",
+        quadratic_drag,
+        Rule::NonNegative,
+        "kg/m",
+        Some("0.0"),
+        "Air resistance c: a force of c v² against the motion (a ball through air: c = ½ ρ C_d A)"
+    ),
     Field {
         key: "color",
         label: "colour",

@@ -264,6 +264,16 @@ fn restricted(forces: &ForceModel, members: &[usize], local: &[Option<u32>]) -> 
         constraints: Constraints::default(),
         workers: forces.workers.clone(),
         surface_contacts: Vec::new(),
+        drag: forces
+            .drag
+            .iter()
+            .filter_map(|d| {
+                Some(crate::forces::drag::Drag {
+                    particle: pick(&d.particle)?,
+                    ..*d
+                })
+            })
+            .collect(),
     }
 }
 
@@ -276,13 +286,17 @@ impl Simulation {
     /// first stage, kept in `self.work`), then three of the coupled particles' alone,
     /// instead of four of everything's: the mixed scene of 1,000 balls integrates its
     /// 200 coupled ones and 800 others. Returns false, doing nothing, where it does not
-    /// apply (another method, no coupled system, or every particle coupled).
+    /// apply (another method, no coupled system, every particle coupled, or air
+    /// resistance, under which no particle's acceleration is constant).
     pub(super) fn split_trial_step(&mut self, h: f64) -> bool {
         let Some(system) = self.coupled.as_mut() else {
             return false;
         };
         let n = self.state.len();
-        if self.integrator != Integrator::Rk4 || system.members.len() == n {
+        if self.integrator != Integrator::Rk4
+            || system.members.len() == n
+            || !self.forces.drag.is_empty()
+        {
             return false;
         }
         let members = Arc::clone(&system.members);

@@ -155,7 +155,8 @@ impl Scene {
 /// Keys added to version 1 after files were first written: a writer leaves each out
 /// while it holds its default, so a file saved without using it reads, and is written,
 /// exactly as before the key existed.
-pub(super) const WRITTEN_WHEN_USED: &[&str] = &["softening", "collisions"];
+pub(super) const WRITTEN_WHEN_USED: &[&str] =
+    &["softening", "collisions", "linear_drag", "quadratic_drag"];
 
 pub(super) fn out_fields<T>(fields: &[Field<T>], target: &T) -> Vec<(&'static str, Out)> {
     fields

@@ -1,0 +1,51 @@
+//! Air resistance on a particle: linear, F = −b v, and quadratic, F = −c |v| v, against
+//! the velocity. Both take energy out of the motion at the rate b |v|² + c |v|³, which
+//! the energy ledger books as `dissipated_drag`.
+
+use glam::DVec2;
+
+use crate::scene::Particle;
+
+/// One moving particle's air resistance.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Drag {
+    /// The particle's index.
+    pub particle: usize,
+    /// b, kg/s.
+    pub linear: f64,
+    /// c, kg/m.
+    pub quadratic: f64,
+}
+
+impl Drag {
+    /// Each moving particle's of `particles` that has air resistance, in order (a fixed
+    /// particle never moves, so feels none).
+    pub fn of(particles: &[Particle]) -> Vec<Self> {
+        particles
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| !p.fixed && (p.linear_drag > 0.0 || p.quadratic_drag > 0.0))
+            .map(|(particle, p)| Self {
+                particle,
+                linear: p.linear_drag,
+                quadratic: p.quadratic_drag,
+            })
+            .collect()
+    }
+
+    /// The force at velocities `v`, newtons.
+    pub fn force(&self, v: &[DVec2]) -> DVec2 {
+        let v = v[self.particle];
+        -(self.linear + self.quadratic * v.length()) * v
+    }
+
+    /// Adds the force at velocities `v` to the particle's entry of `force`.
+    pub fn add_force(&self, v: &[DVec2], force: &mut [DVec2]) {
+        force[self.particle] += self.force(v);
+    }
+
+    /// The power it takes out of the motion at velocities `v`, watts: −F·v.
+    pub fn power(&self, v: &[DVec2]) -> f64 {
+        -self.force(v).dot(v[self.particle])
+    }
+}

@@ -1,5 +1,5 @@
 //! `newtonlab`: the command line of `NewtonLab`. With no subcommand it opens the app; `run`,
-//! `check`, `examples` and `bench` are headless.
+//! `sweep`, `check`, `examples`, `bench` and `validate` are headless.
 //!
 //! Exit codes, for every subcommand: 0 success; 1 the simulation failed (a non-finite
 //! value: the message names the particle and the time); 2 bad input (arguments or scene:
@@ -8,6 +8,7 @@
 mod bench;
 mod run;
 mod scene_source;
+mod sweep;
 mod validate;
 
 use std::process::ExitCode;
@@ -42,6 +43,8 @@ fn parse_language(code: &str) -> Result<Language, String> {
 enum Command {
     /// Run a scene and write its trajectory as CSV.
     Run(run::RunArgs),
+    /// Vary a scene's values over ranges, run each, and write one CSV row of measures per run.
+    Sweep(sweep::SweepArgs),
     /// Check a scene file and list every problem with it.
     Check {
         /// A scene file (.toml or .json), or example:NAME for a built-in scene.
@@ -123,6 +126,7 @@ fn main() -> ExitCode {
         ),
         Some(Command::App(args)) => open_app(&args, cli.lang),
         Some(Command::Run(args)) => run::run(&args),
+        Some(Command::Sweep(args)) => sweep::sweep(&args),
         Some(Command::Check { scene }) => check(&scene),
         Some(Command::Examples) => {
             examples();

@@ -316,7 +316,7 @@ fn write_csv(
         }
         writeln!(out)
     };
-    let progress = progress_bar(times.len() as u64);
+    let progress = progress_bar(times.len() as u64, "rows");
     for &t in times {
         let stepped = match &mut rows.watch {
             Some((watch, names)) => match simulation.step_to_watching(t, watch) {
@@ -419,14 +419,15 @@ impl ImpactLog {
 }
 
 /// A progress bar on stderr when it is a terminal; hidden otherwise.
-fn progress_bar(rows: u64) -> indicatif::ProgressBar {
+/// A progress bar of `len` `things` on stderr when it is a terminal (hidden otherwise).
+pub(crate) fn progress_bar(len: u64, things: &str) -> indicatif::ProgressBar {
     if !io::stderr().is_terminal() {
         return indicatif::ProgressBar::hidden();
     }
-    let bar = indicatif::ProgressBar::new(rows);
-    if let Ok(style) =
-        indicatif::ProgressStyle::with_template("{bar:40} {pos}/{len} rows, {eta} left")
-    {
+    let bar = indicatif::ProgressBar::new(len);
+    if let Ok(style) = indicatif::ProgressStyle::with_template(&format!(
+        "{{bar:40}} {{pos}}/{{len}} {things}, {{eta}} left"
+    )) {
         bar.set_style(style);
     }
     bar

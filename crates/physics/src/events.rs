@@ -164,7 +164,7 @@ impl Watch {
 
     /// Looks for crossings in the step from `before` to `after` (the run's own states)
     /// and adds each, located, to `found`, in time order.
-    fn after_step(
+    pub(crate) fn after_step(
         &mut self,
         before: &Simulation,
         after: &Simulation,

@@ -88,6 +88,7 @@ mod parallel;
 mod profile;
 mod quantity;
 mod scene;
+pub mod series;
 mod simulation;
 mod state;
 #[cfg(test)]

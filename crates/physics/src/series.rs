@@ -1,0 +1,629 @@
+//! Experiment series: vary a scene's value over a range, run the scene for each value,
+//! and measure each run (`newtonlab sweep`, the app's series panel, Python's `sweep`).
+//!
+//! A [`Setting`] names one number of the scene (`Ball.velocity.angle`, `Bob.mass`,
+//! `world.gravity.y`, `simulation.time_step`) and writes it through the scene's field
+//! table, so it obeys the same rules as the file. A [`Measure`] reads one number off a
+//! run, located as exactly as events are: a quantity at the Nth occurrence of an event,
+//! its maximum or minimum (between the steps around the largest sample, as
+//! [`Simulation::extreme_until`] finds it), its period (the mean interval between its
+//! successive located maxima), or its value at an instant. A run is never changed by
+//! being measured: it takes the steps it takes without measures, bit for bit, and an
+//! instant between two steps is read off a copy stepped on to it.
+//!
+//! The runs of a series are independent: they run on every core (native builds), each on
+//! one thread, and come back in the series' order, so the results are the same bits for
+//! any number of threads.
+
+use std::fmt;
+
+use crate::events::{Event, Located, Turn, Watch};
+use crate::quantity::{Quantity, Reading};
+use crate::scene::fields::{self, Field, Kind, Value};
+use crate::scene::{Scene, Vector, say};
+use crate::simulation::{Simulation, SimulationError};
+
+/// Which object a [`Setting`] writes to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Target {
+    Particle(usize),
+    Spring(usize),
+    Tie(usize),
+    Ramp(usize),
+    World,
+    Simulation,
+}
+
+/// The part of a vector a [`Setting`] writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Part {
+    X,
+    Y,
+    Magnitude,
+    /// Degrees, counter-clockwise from +x, as the file's polar form.
+    Angle,
+}
+
+impl Part {
+    fn parse(text: &str) -> Option<Self> {
+        Some(match text {
+            "x" => Self::X,
+            "y" => Self::Y,
+            "magnitude" => Self::Magnitude,
+            "angle" => Self::Angle,
+            _ => return None,
+        })
+    }
+
+    /// `vector` with this part set to `value` (a magnitude or an angle keeps the other
+    /// of the polar pair; x or y the other component).
+    fn set(self, vector: Vector, value: f64) -> Vector {
+        let v = vector.to_dvec2();
+        let (magnitude, angle) = match vector {
+            Vector::Polar { magnitude, angle } => (magnitude, angle),
+            Vector::Cartesian(c) => (c.length(), c.y.atan2(c.x).to_degrees()),
+        };
+        match self {
+            Self::X => Vector::Cartesian(glam::DVec2::new(value, v.y)),
+            Self::Y => Vector::Cartesian(glam::DVec2::new(v.x, value)),
+            Self::Magnitude => Vector::Polar {
+                magnitude: value,
+                angle,
+            },
+            Self::Angle => Vector::Polar {
+                magnitude,
+                angle: value,
+            },
+        }
+    }
+}
+
+/// One number of a scene, by name: `OBJECT.key`, a vector's `OBJECT.key.x|.y|.magnitude|.angle`,
+/// `world.key[.x|.y|…]`, `simulation.key`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Setting {
+    text: String,
+    target: Target,
+    key: &'static str,
+    part: Option<Part>,
+}
+
+impl fmt::Display for Setting {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.text)
+    }
+}
+
+/// The field of `fields` called `key` that holds a number (or a vector, with a part).
+fn numeric<T>(fields: &'static [Field<T>], key: &str) -> Option<(&'static str, bool)> {
+    let field = fields.iter().find(|f| f.key == key)?;
+    match field.kind {
+        Kind::Number(_) => Some((field.key, false)),
+        Kind::Vector => Some((field.key, true)),
+        _ => None,
+    }
+}
+
+/// Writes `value` into `object`'s field `key` (its `part`, for a vector).
+fn write<T>(fields: &[Field<T>], object: &mut T, key: &str, part: Option<Part>, value: f64) {
+    let Some(field) = fields.iter().find(|f| f.key == key) else {
+        return;
+    };
+    let new = match ((field.get)(object), part) {
+        (Value::Number(_), None) => Value::Number(value),
+        (Value::Vector(v), Some(part)) => Value::Vector(part.set(v, value)),
+        _ => return,
+    };
+    (field.set)(object, new);
+}
+
+impl Setting {
+    /// Reads `text` as a number of `scene`.
+    ///
+    /// # Errors
+    /// No such object, key or part, or a key that holds no number (in words).
+    pub fn parse(text: &str, scene: &Scene) -> Result<Self, String> {
+        let text = text.trim();
+        let unknown = |what: &str| say(what, &[("text", text)]);
+        // The object: `world`, `simulation`, or the longest object name before a dot
+        // (names may hold dots and spaces).
+        let objects = scene
+            .particles
+            .iter()
+            .enumerate()
+            .map(|(i, p)| (p.name.as_str(), Target::Particle(i)))
+            .chain(
+                scene
+                    .springs
+                    .iter()
+                    .enumerate()
+                    .map(|(i, s)| (s.name.as_str(), Target::Spring(i))),
+            )
+            .chain(
+                scene
+                    .ties
+                    .iter()
+                    .enumerate()
+                    .map(|(i, t)| (t.name.as_str(), Target::Tie(i))),
+            )
+            .chain(
+                scene
+                    .ramps
+                    .iter()
+                    .enumerate()
+                    .map(|(i, r)| (r.name.as_str(), Target::Ramp(i))),
+            )
+            .chain([("world", Target::World), ("simulation", Target::Simulation)]);
+        let (target, rest) = objects
+            .filter_map(|(name, target)| {
+                let rest = text.strip_prefix(name)?.strip_prefix('.')?;
+                Some((name.len(), target, rest))
+            })
+            .max_by_key(|&(length, _, _)| length)
+            .map(|(_, target, rest)| (target, rest))
+            .ok_or_else(|| unknown("setting-object"))?;
+        let (key, part) = match rest.split_once('.') {
+            Some((key, part)) => (key, Some(part)),
+            None => (rest, None),
+        };
+        let found = match target {
+            Target::Particle(_) => numeric(fields::PARTICLE, key),
+            Target::Spring(_) => numeric(fields::SPRING, key),
+            Target::Tie(i) => numeric(fields::tie_fields(scene.ties[i].kind), key),
+            Target::Ramp(_) => numeric(fields::RAMP, key),
+            Target::World => numeric(fields::WORLD, key),
+            Target::Simulation => numeric(fields::SIMULATION, key),
+        };
+        let (key, vector) = found.ok_or_else(|| unknown("setting-key"))?;
+        let part = match (vector, part) {
+            (false, None) => None,
+            (true, Some(part)) => Some(Part::parse(part).ok_or_else(|| unknown("setting-part"))?),
+            (true, None) | (false, Some(_)) => return Err(unknown("setting-part")),
+        };
+        Ok(Self {
+            text: text.to_owned(),
+            target,
+            key,
+            part,
+        })
+    }
+
+    /// Writes `value` into `scene`.
+    pub fn set(&self, scene: &mut Scene, value: f64) {
+        let (key, part) = (self.key, self.part);
+        match self.target {
+            Target::Particle(i) => {
+                write(fields::PARTICLE, &mut scene.particles[i], key, part, value);
+            }
+            Target::Spring(i) => write(fields::SPRING, &mut scene.springs[i], key, part, value),
+            Target::Tie(i) => {
+                let fields = fields::tie_fields(scene.ties[i].kind);
+                write(fields, &mut scene.ties[i], key, part, value);
+            }
+            Target::Ramp(i) => write(fields::RAMP, &mut scene.ramps[i], key, part, value),
+            Target::World => write(fields::WORLD, &mut scene.world, key, part, value),
+            Target::Simulation => {
+                write(fields::SIMULATION, &mut scene.simulation, key, part, value);
+            }
+        }
+    }
+}
+
+/// A setting and the values it takes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Vary {
+    /// What is varied.
+    pub setting: Setting,
+    /// Its values, in order.
+    pub values: Vec<f64>,
+}
+
+impl Vary {
+    /// Reads `FIELD=FROM:TO:STEP` against `scene`: FROM, FROM + STEP, … up to TO (TO
+    /// itself when the steps reach it, to a billionth of a step).
+    ///
+    /// # Errors
+    /// A malformed text, an unknown field, a step of 0 or one that leads away from TO.
+    pub fn parse(text: &str, scene: &Scene) -> Result<Self, String> {
+        let malformed = || say("vary-malformed", &[("text", text.trim())]);
+        let (field, range) = text.rsplit_once('=').ok_or_else(malformed)?;
+        let numbers: Vec<f64> = range
+            .split(':')
+            .map(|n| n.trim().parse::<f64>().ok().filter(|v| v.is_finite()))
+            .collect::<Option<_>>()
+            .ok_or_else(malformed)?;
+        let [from, to, step] = numbers[..] else {
+            return Err(malformed());
+        };
+        let values = range_values(from, to, step)
+            .ok_or_else(|| say("vary-empty", &[("text", text.trim())]))?;
+        Ok(Self {
+            setting: Setting::parse(field, scene)?,
+            values,
+        })
+    }
+}
+
+/// FROM, FROM + STEP, … up to TO; `None` for a step of 0, one leading away from TO, or
+/// more than a million values.
+pub fn range_values(from: f64, to: f64, step: f64) -> Option<Vec<f64>> {
+    let steps = (to - from) / step;
+    if step == 0.0 || !steps.is_finite() || !(-1e-9..=1e6).contains(&steps) {
+        return None;
+    }
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "checked to be in 0..=1e6"
+    )]
+    let count = (steps + 1e-9).floor().max(0.0) as u32;
+    Some((0..=count).map(|k| from + f64::from(k) * step).collect())
+}
+
+/// One number read off a run.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Measure {
+    /// A quantity (`t` for the instant) at the `nth` occurrence (from 1) of an event.
+    At {
+        /// What is read.
+        quantity: Quantity,
+        /// When.
+        event: Event,
+        /// Which occurrence, from 1.
+        nth: usize,
+    },
+    /// A quantity's largest value over the run.
+    Max(Quantity),
+    /// A quantity's smallest value over the run.
+    Min(Quantity),
+    /// The mean interval between a quantity's successive maxima.
+    Period(Quantity),
+    /// A quantity at an instant.
+    AtTime(Quantity, f64),
+}
+
+impl Measure {
+    /// Reads `QUANTITY at EVENT [#N]`, `t at EVENT`, `max QUANTITY`, `min QUANTITY`,
+    /// `period QUANTITY` or `QUANTITY at T`.
+    ///
+    /// # Errors
+    /// What the text should have been.
+    pub fn parse(text: &str) -> Result<Self, String> {
+        let text = text.trim();
+        let malformed = || say("measure-malformed", &[("text", text)]);
+        for (word, make) in [
+            ("max ", Self::Max as fn(Quantity) -> Self),
+            ("min ", Self::Min),
+            ("period ", Self::Period),
+        ] {
+            if let Some(rest) = text.strip_prefix(word) {
+                return Ok(make(Quantity::parse(rest.trim())?));
+            }
+        }
+        let (quantity, when) = text.split_once(" at ").ok_or_else(malformed)?;
+        let quantity = Quantity::parse(quantity.trim())?;
+        let when = when.trim();
+        if let Ok(t) = when.parse::<f64>() {
+            if !t.is_finite() {
+                return Err(malformed());
+            }
+            return Ok(Self::AtTime(quantity, t));
+        }
+        let (event, nth) = match when.rsplit_once('#') {
+            Some((event, n)) => (
+                event,
+                n.trim()
+                    .parse::<usize>()
+                    .ok()
+                    .filter(|&n| n > 0)
+                    .ok_or_else(malformed)?,
+            ),
+            None => (when, 1),
+        };
+        Ok(Self::At {
+            quantity,
+            event: Event::parse(event)?,
+            nth,
+        })
+    }
+
+    /// The quantity it reads.
+    fn quantity(&self) -> &Quantity {
+        match self {
+            Self::At { quantity, .. }
+            | Self::Max(quantity)
+            | Self::Min(quantity)
+            | Self::Period(quantity)
+            | Self::AtTime(quantity, _) => quantity,
+        }
+    }
+}
+
+/// Reads `measures` off a run of `scene` to `until`: each a number, or why there is none
+/// (an event that did not happen often enough, a period of fewer than two maxima).
+///
+/// # Errors
+/// The scene does not load, a measure names an object it does not have, an instant
+/// outside the run, or the run failed (in words).
+pub fn measure(
+    scene: &Scene,
+    until: f64,
+    measures: &[Measure],
+) -> Result<Vec<Result<f64, String>>, String> {
+    let mut simulation = Simulation::new(scene).map_err(|e| e.to_string())?;
+    let mut runs = Measuring::new(measures, &simulation, until)?;
+    let start = simulation.keyframe();
+    runs.begin(&start);
+    simulation
+        .step_to_observed(
+            until,
+            Some(&mut |before: &Simulation, after: &Simulation| runs.after_step(before, after)),
+        )
+        .map_err(|e| e.to_string())?;
+    Ok(runs.finish(&simulation))
+}
+
+/// The state of each measure through a run.
+struct Measuring<'a> {
+    measures: &'a [Measure],
+    /// Each measure's quantity found in the simulation.
+    readings: Vec<Reading>,
+    /// The events of the `At` measures, with the measure each serves.
+    watch: Watch,
+    watched: Vec<usize>,
+    /// How often each watched event has happened.
+    counts: Vec<usize>,
+    /// What each measure has found so far.
+    found: Vec<Option<f64>>,
+    /// For the extremes and periods: the value at the last two step ends.
+    history: Vec<[f64; 2]>,
+    /// The state at the start of the previous step (an extreme's bracket starts there).
+    previous: Option<Simulation>,
+    /// The located maxima, for the periods.
+    maxima: Vec<Vec<f64>>,
+    /// Whether an extreme or a period is measured (only then is `previous` kept).
+    keeps_previous: bool,
+}
+
+impl<'a> Measuring<'a> {
+    fn new(measures: &'a [Measure], simulation: &Simulation, until: f64) -> Result<Self, String> {
+        let readings = measures
+            .iter()
+            .map(|m| m.quantity().reading(simulation))
+            .collect::<Result<Vec<_>, _>>()?;
+        for m in measures {
+            if let Measure::AtTime(_, t) = m
+                && !(simulation.time()..=until).contains(t)
+            {
+                return Err(say(
+                    "measure-instant",
+                    &[
+                        ("instant", &t.to_string()),
+                        ("from", &simulation.time().to_string()),
+                        ("until", &until.to_string()),
+                    ],
+                ));
+            }
+        }
+        let (events, watched): (Vec<Event>, Vec<usize>) = measures
+            .iter()
+            .enumerate()
+            .filter_map(|(k, m)| match m {
+                Measure::At { event, .. } => Some((event.clone(), k)),
+                _ => None,
+            })
+            .unzip();
+        let watch = Watch::new(&events, simulation)?;
+        Ok(Self {
+            measures,
+            readings,
+            counts: vec![0; watched.len()],
+            watch,
+            watched,
+            found: vec![None; measures.len()],
+            history: vec![[f64::NAN; 2]; measures.len()],
+            previous: None,
+            maxima: vec![Vec::new(); measures.len()],
+            keeps_previous: measures
+                .iter()
+                .any(|m| matches!(m, Measure::Max(_) | Measure::Min(_) | Measure::Period(_))),
+        })
+    }
+
+    /// Reads what the start state gives: an instant at the start, the first sample of
+    /// the extremes.
+    fn begin(&mut self, start: &Simulation) {
+        for (k, m) in self.measures.iter().enumerate() {
+            let value = start.read(self.readings[k]);
+            match m {
+                Measure::AtTime(_, t) if *t <= start.time() => self.found[k] = Some(value),
+                Measure::Max(_) | Measure::Min(_) => self.found[k] = Some(value),
+                _ => {}
+            }
+            self.history[k] = [f64::NAN, value];
+        }
+    }
+
+    fn after_step(
+        &mut self,
+        before: &Simulation,
+        after: &Simulation,
+    ) -> Result<(), SimulationError> {
+        let mut events: Vec<Located> = Vec::new();
+        self.watch.after_step(before, after, &mut events)?;
+        for event in events {
+            let k = self.watched[event.event];
+            self.counts[event.event] += 1;
+            if let Measure::At { nth, .. } = self.measures[k]
+                && self.counts[event.event] == nth
+            {
+                self.found[k] = Some(event.at.read(self.readings[k]));
+            }
+        }
+        for (k, m) in self.measures.iter().enumerate() {
+            let reading = self.readings[k];
+            let now = after.read(reading);
+            let [earlier, last] = self.history[k];
+            self.history[k] = [last, now];
+            match m {
+                Measure::AtTime(_, t) if before.time() < *t && *t <= after.time() => {
+                    let mut copy = before.keyframe();
+                    copy.step_to(*t)?;
+                    self.found[k] = Some(copy.read(reading));
+                }
+                Measure::Max(_) | Measure::Min(_) | Measure::Period(_) => {
+                    let (turn, sign) = if matches!(m, Measure::Min(_)) {
+                        (Turn::Minimum, -1.0)
+                    } else {
+                        (Turn::Maximum, 1.0)
+                    };
+                    let beats = |value: f64, best: Option<f64>| {
+                        best.is_none_or(|best| sign * value > sign * best)
+                    };
+                    // The sample at `before` is a turning point: the extreme lies between
+                    // the step ends around it, where it is located.
+                    let turning = sign * last > sign * earlier && sign * last >= sign * now;
+                    let period = matches!(m, Measure::Period(_));
+                    // (The sample itself is the best so far: it was the step's end.)
+                    let best = self.found[k].is_none_or(|best| sign * last >= sign * best);
+                    if turning
+                        && (period || best)
+                        && let Some(previous) = &self.previous
+                    {
+                        let at = previous.extreme_until(reading, after.time(), turn)?;
+                        if period {
+                            self.maxima[k].push(at.time());
+                        } else {
+                            let value = at.read(reading);
+                            if beats(value, self.found[k]) {
+                                self.found[k] = Some(value);
+                            }
+                        }
+                    }
+                    // A run that ends still rising has its extreme at its end.
+                    if !period && beats(now, self.found[k]) {
+                        self.found[k] = Some(now);
+                    }
+                }
+                _ => {}
+            }
+        }
+        if self.keeps_previous {
+            self.previous = Some(before.keyframe());
+        }
+        Ok(())
+    }
+
+    fn finish(self, end: &Simulation) -> Vec<Result<f64, String>> {
+        let until = end.time().to_string();
+        self.measures
+            .iter()
+            .enumerate()
+            .map(|(k, m)| match m {
+                Measure::Period(_) => {
+                    let maxima = &self.maxima[k];
+                    match maxima.len() {
+                        0 | 1 => Err(say(
+                            "measure-no-period",
+                            &[("count", &maxima.len().to_string()), ("until", &until)],
+                        )),
+                        n => Ok((maxima[n - 1] - maxima[0]) / (n - 1) as f64),
+                    }
+                }
+                Measure::At { event, nth, .. } => {
+                    let w = self.watched.iter().position(|&w| w == k).unwrap_or(0);
+                    self.found[k].ok_or_else(|| {
+                        say(
+                            "measure-no-event",
+                            &[
+                                ("event", &event.to_string()),
+                                ("count", &self.counts[w].to_string()),
+                                ("nth", &nth.to_string()),
+                                ("until", &until),
+                            ],
+                        )
+                    })
+                }
+                _ => self.found[k].ok_or_else(|| say("measure-none", &[("until", &until)])),
+            })
+            .collect()
+    }
+}
+
+/// A series: every combination of the settings' values (the first setting's outermost),
+/// each run to `until` and measured.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Sweep {
+    /// The settings varied, the first outermost.
+    pub varies: Vec<Vary>,
+    /// How long each run lasts, seconds (the instant it ends).
+    pub until: f64,
+    /// What each run is measured for.
+    pub measures: Vec<Measure>,
+}
+
+/// One run of a series: the settings' values, and what was measured (or why the run
+/// failed).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Row {
+    /// Each setting's value in this run.
+    pub values: Vec<f64>,
+    /// Each measure's number or why there is none; or why the run failed.
+    pub measured: Result<Vec<Result<f64, String>>, String>,
+}
+
+impl Sweep {
+    /// Whether the series can run on `scene`: the scene loads, every measure's objects
+    /// are in it, every instant is within the run.
+    ///
+    /// # Errors
+    /// The first problem, in words.
+    pub fn check(&self, scene: &Scene) -> Result<(), String> {
+        let simulation = Simulation::new(scene).map_err(|e| e.to_string())?;
+        Measuring::new(&self.measures, &simulation, self.until).map(|_| ())
+    }
+
+    /// Every combination of the settings' values, in the series' order.
+    pub fn points(&self) -> Vec<Vec<f64>> {
+        self.varies.iter().fold(vec![Vec::new()], |points, vary| {
+            points
+                .iter()
+                .flat_map(|point| {
+                    vary.values.iter().map(move |&value| {
+                        let mut next = point.clone();
+                        next.push(value);
+                        next
+                    })
+                })
+                .collect()
+        })
+    }
+
+    /// Runs and measures every combination on `scene`, on up to `threads` threads (where
+    /// there are threads), calling `progress` after each run. The rows come back in the
+    /// series' order, the same bits for any number of threads.
+    pub fn run(&self, scene: &Scene, threads: usize, progress: &(dyn Fn() + Sync)) -> Vec<Row> {
+        let one = |values: &Vec<f64>| {
+            let mut varied = scene.clone();
+            for (vary, &value) in self.varies.iter().zip(values) {
+                vary.setting.set(&mut varied, value);
+            }
+            let measured = measure(&varied, self.until, &self.measures);
+            progress();
+            Row {
+                values: values.clone(),
+                measured,
+            }
+        };
+        let points = self.points();
+        #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
+        if threads > 1
+            && let Ok(pool) = rayon::ThreadPoolBuilder::new().num_threads(threads).build()
+        {
+            use rayon::prelude::*;
+            return pool.install(|| points.par_iter().map(one).collect());
+        }
+        let _ = threads;
+        points.iter().map(one).collect()
+    }
+}

@@ -1,0 +1,270 @@
+//! Experiment series (`physics::series`) against theory: a drag-free projectile's range
+//! against its launch angle (v₀² sin 2a / g), a rod pendulum's period against its
+//! amplitude (the elliptic integral), an instant read between steps, the Nth event; the
+//! same bits on one thread and on two; bad settings and measures refused by name.
+
+mod common;
+
+use physics::series::{Measure, Sweep, Vary, range_values};
+use physics::{Particle, Scene, Tie, World};
+
+use common::{elliptic_k, relative};
+
+const G: f64 = 9.81;
+
+fn projectile() -> Scene {
+    Scene::new()
+        .with_world(World::gravity_only())
+        .with_particle(
+            Particle::new("Ball", 1.0)
+                .radius(0.1)
+                .velocity(physics::Vector::Polar {
+                    magnitude: 20.0,
+                    angle: 45.0,
+                }),
+        )
+}
+
+fn sweep(scene: &Scene, vary: &[&str], until: f64, measures: &[&str]) -> Sweep {
+    Sweep {
+        varies: vary
+            .iter()
+            .map(|v| Vary::parse(v, scene).expect("a setting"))
+            .collect(),
+        until,
+        measures: measures
+            .iter()
+            .map(|m| Measure::parse(m).expect("a measure"))
+            .collect(),
+    }
+}
+
+/// The measured numbers of every run, which must all have them.
+fn numbers(sweep: &Sweep, scene: &Scene, threads: usize) -> Vec<(Vec<f64>, Vec<f64>)> {
+    sweep
+        .run(scene, threads, &|| {})
+        .into_iter()
+        .map(|row| {
+            let measured = row.measured.expect("the run succeeds");
+            let measured = measured.into_iter().map(|m| m.expect("measured")).collect();
+            (row.values, measured)
+        })
+        .collect()
+}
+
+/// A ball launched at 20 m/s from the ground at 10°, 15°, …, 80°: where it comes down
+/// again (`Ball.x at Ball.y crosses 0 down`) is v₀² sin 2a / g, its flight
+/// (`t at …`) 2 v₀ sin a / g, its highest point (`max Ball.y`) (v₀ sin a)²/2g, each to
+/// 1e-9 relative (rk4 is exact for a constant field; the landing is located to 1e-12 s
+/// and the top where vy crosses 0). The same bits on one thread and on two.
+#[test]
+fn a_projectiles_range_against_its_angle_is_the_sine_law() {
+    let scene = projectile();
+    let series = sweep(
+        &scene,
+        &["Ball.velocity.angle=10:80:5"],
+        5.0,
+        &[
+            "Ball.x at Ball.y crosses 0 down",
+            "t at Ball.y crosses 0 down",
+            "max Ball.y",
+        ],
+    );
+    let one = numbers(&series, &scene, 1);
+    assert_eq!(one.len(), 15, "10° to 80° by 5°");
+    for (values, measured) in &one {
+        let a = values[0].to_radians();
+        let v0: f64 = 20.0;
+        let range = v0 * v0 * (2.0 * a).sin() / G;
+        let flight = 2.0 * v0 * a.sin() / G;
+        let top = (v0 * a.sin()).powi(2) / (2.0 * G);
+        assert!(
+            relative(measured[0], range) < 1e-9,
+            "{values:?}: range {}",
+            measured[0]
+        );
+        assert!(
+            relative(measured[1], flight) < 1e-9,
+            "{values:?}: flight {}",
+            measured[1]
+        );
+        assert!(
+            relative(measured[2], top) < 1e-9,
+            "{values:?}: top {}",
+            measured[2]
+        );
+    }
+    let bits = |rows: &[(Vec<f64>, Vec<f64>)]| -> Vec<u64> {
+        rows.iter()
+            .flat_map(|(v, m)| v.iter().chain(m).map(|x| x.to_bits()))
+            .collect()
+    };
+    assert_eq!(
+        bits(&one),
+        bits(&numbers(&series, &scene, 2)),
+        "the same bits"
+    );
+}
+
+/// A bob on a 1 m rod released at rest at 10°, 30°, 50°, 70°, 90° from the vertical
+/// (its position's angle −80°, …, 0° from +x): `period Bob.x` (the mean interval between
+/// its located maxima) is 4 √(L/g) K(sin(θ₀/2)), to 1e-9 relative over four periods;
+/// `max Bob.speed` (no exact rate: golden section) is √(2 g L (1 − cos θ₀)) to 1e-9;
+/// `t at Bob.vx crosses 0 #3` is the third turning point, 3T/2, to 1e-9 relative.
+#[test]
+fn a_pendulums_period_against_its_amplitude_is_the_elliptic_integral() {
+    let scene =
+        Scene::new()
+            .with_world(World::gravity_only())
+            .with_particle(Particle::new("Bob", 1.0).radius(0.05).position(
+                physics::Vector::Polar {
+                    magnitude: 1.0,
+                    angle: -60.0,
+                },
+            ))
+            .with_tie(Tie::rod("rod", [0.0, 0.0], "Bob", 1.0));
+    let series = sweep(
+        &scene,
+        &["Bob.position.angle=-80:0:20"],
+        9.0,
+        &["period Bob.x", "max Bob.speed", "t at Bob.vx crosses 0 #3"],
+    );
+    for (values, measured) in numbers(&series, &scene, 2) {
+        let amplitude = (values[0] + 90.0).to_radians();
+        let period = 4.0 * (1.0 / G).sqrt() * elliptic_k((amplitude / 2.0).sin());
+        let fastest = (2.0 * G * (1.0 - amplitude.cos())).sqrt();
+        assert!(
+            relative(measured[0], period) < 1e-9,
+            "{values:?}: period {}",
+            measured[0]
+        );
+        assert!(
+            relative(measured[1], fastest) < 1e-9,
+            "{values:?}: speed {}",
+            measured[1]
+        );
+        assert!(
+            relative(measured[2], 1.5 * period) < 1e-9,
+            "{values:?}: third turn {}",
+            measured[2]
+        );
+    }
+}
+
+/// An instant between two steps is read off a copy stepped on to it, the run itself
+/// untouched: `Ball.x at 1.0005` is v₀ cos a × 1.0005 exactly (to 1e-12), and the
+/// landing measured beside it is the landing measured alone, bit for bit.
+#[test]
+fn an_instant_between_steps_leaves_the_run_alone() {
+    let scene = projectile();
+    let beside = sweep(
+        &scene,
+        &["Ball.velocity.angle=30:30:1"],
+        5.0,
+        &["Ball.x at 1.0005", "Ball.x at Ball.y crosses 0 down"],
+    );
+    let alone = sweep(
+        &scene,
+        &["Ball.velocity.angle=30:30:1"],
+        5.0,
+        &["Ball.x at Ball.y crosses 0 down"],
+    );
+    let (with, without) = (numbers(&beside, &scene, 1), numbers(&alone, &scene, 1));
+    let x = 20.0 * 30_f64.to_radians().cos() * 1.0005;
+    assert!((with[0].1[0] - x).abs() < 1e-12, "{}", with[0].1[0]);
+    assert_eq!(with[0].1[1].to_bits(), without[0].1[0].to_bits());
+}
+
+/// What cannot be measured says why, and the rest of the row stands: an event that
+/// happens once, asked for its second time; a period with one maximum.
+#[test]
+fn a_measure_without_a_number_says_why() {
+    let scene = projectile();
+    let series = sweep(
+        &scene,
+        &["Ball.velocity.angle=45:45:1"],
+        5.0,
+        &[
+            "t at Ball.y crosses 0 down #2",
+            "period Ball.y",
+            "t at Ball.y crosses 0 down",
+        ],
+    );
+    let row = series.run(&scene, 1, &|| {}).remove(0);
+    let measured = row.measured.unwrap();
+    let why = measured[0].as_ref().unwrap_err();
+    assert!(why.contains("1 times") && why.contains("not 2"), "{why}");
+    assert!(
+        measured[1]
+            .as_ref()
+            .unwrap_err()
+            .contains("fewer than two maxima")
+    );
+    assert!(measured[2].is_ok());
+}
+
+/// A varied value the scene's rules refuse fails that run, by the rule's words.
+#[test]
+fn a_value_the_rules_refuse_fails_its_run() {
+    let scene = projectile();
+    let series = sweep(&scene, &["Ball.mass=-1:1:1"], 1.0, &["max Ball.y"]);
+    let rows = series.run(&scene, 1, &|| {});
+    assert!(rows[0].measured.as_ref().unwrap_err().contains("mass"));
+    assert!(
+        rows[1].measured.as_ref().unwrap_err().contains("mass"),
+        "0 kg"
+    );
+    assert!(rows[2].measured.is_ok());
+}
+
+/// Ranges: FROM to TO inclusive (to a billionth of a step), downwards too; none for a
+/// step of 0 or one leading away.
+#[test]
+fn ranges_reach_their_end() {
+    assert_eq!(range_values(10.0, 80.0, 35.0), Some(vec![10.0, 45.0, 80.0]));
+    assert_eq!(range_values(0.0, 0.3, 0.1).map(|v| v.len()), Some(4));
+    assert_eq!(range_values(5.0, 1.0, -2.0), Some(vec![5.0, 3.0, 1.0]));
+    assert_eq!(range_values(1.0, 1.0, 1.0), Some(vec![1.0]));
+    assert_eq!(range_values(0.0, 1.0, 0.0), None);
+    assert_eq!(range_values(0.0, 1.0, -1.0), None);
+}
+
+/// Bad settings and measures are refused with the problem named.
+#[test]
+fn bad_settings_and_measures_are_named() {
+    let scene = projectile();
+    for (text, words) in [
+        ("Bal.mass=1:2:1", "names no object"),
+        ("Ball.weight=1:2:1", "no number of that name"),
+        ("Ball.velocity=1:2:1", "one part"),
+        ("Ball.mass.x=1:2:1", "one part"),
+        ("Ball.velocity.z=1:2:1", "one part"),
+        ("Ball.color=1:2:1", "no number of that name"),
+        ("Ball.mass=1:2", "not a range"),
+        ("Ball.mass=1:2:0", "no values"),
+        ("Ball.mass=2:1:1", "no values"),
+    ] {
+        let error = Vary::parse(text, &scene).unwrap_err();
+        assert!(error.contains(words), "{text}: {error}");
+    }
+    for (text, words) in [
+        ("Ball.x", "not a measure"),
+        ("Ball.x at Ball.y crosses", "not an event"),
+        ("Ball.x at Ball.y crosses 0 #0", "not a measure"),
+        ("maximum Ball.y", "not a measure"),
+    ] {
+        let error = Measure::parse(text).unwrap_err();
+        assert!(error.contains(words), "{text}: {error}");
+    }
+    for (measure, words) in [
+        ("max Bob.y", "no particle named 'Bob'"),
+        ("Ball.x at 7", "outside the run"),
+    ] {
+        let series = sweep(&scene, &["Ball.mass=1:1:1"], 5.0, &[measure]);
+        let error = series.check(&scene).unwrap_err();
+        assert!(error.contains(words), "{measure}: {error}");
+    }
+    let world = Vary::parse("world.gravity.y=-9.81:-1.62:1", &scene).unwrap();
+    assert_eq!(world.values.len(), 9);
+    assert!(Vary::parse("simulation.time_step=0.001:0.002:0.001", &scene).is_ok());
+}

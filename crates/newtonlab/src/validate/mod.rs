@@ -15,6 +15,7 @@ mod methods;
 mod paper_method;
 mod plots;
 mod report;
+mod series;
 mod theory;
 mod ties;
 
@@ -51,10 +52,11 @@ enum Group {
     SavedState,
     Events,
     Drag,
+    Series,
 }
 
 impl Group {
-    const ALL: [Self; 11] = [
+    const ALL: [Self; 12] = [
         Self::Paper,
         Self::Rods,
         Self::Strings,
@@ -66,6 +68,7 @@ impl Group {
         Self::SavedState,
         Self::Events,
         Self::Drag,
+        Self::Series,
     ];
 
     fn name(self) -> &'static str {
@@ -81,6 +84,7 @@ impl Group {
             Self::SavedState => "saved-state",
             Self::Events => "events",
             Self::Drag => "drag",
+            Self::Series => "series",
         }
     }
 
@@ -117,6 +121,9 @@ impl Group {
             }
             Self::Drag => {
                 "air resistance: linear drag's exponentials, quadratic drag's tanh fall to the terminal speed, and the energy it takes in the books"
+            }
+            Self::Series => {
+                "laws measured as series: a pendulum's period against its amplitude, a baseball's range against its angle with drag"
             }
         }
     }
@@ -166,6 +173,7 @@ pub(crate) fn validate(args: &ValidateArgs) -> Result<(), Failure> {
             Group::SavedState => books::saved_state(report)?,
             Group::Events => events::events(report)?,
             Group::Drag => drag::drag(report)?,
+            Group::Series => series::series(report)?,
         }
     }
     let statements: Vec<(&str, &str)> = groups.iter().map(|g| (g.name(), g.statement())).collect();

@@ -186,9 +186,65 @@ pub(crate) fn bisect(f: impl Fn(f64) -> bool, (mut lo, mut hi): (f64, f64)) -> f
     0.5 * (lo + hi)
 }
 
+/// Where a ball launched from the ground at `speed` m/s and `angle` degrees under gravity
+/// `g` and quadratic drag (`k` = c/m, 1/m: an acceleration −k |v| v) comes down again:
+/// (range, flight time). Integrated here, apart from the simulation: classical
+/// Runge–Kutta on (x, y, vx, vy) with a 10 µs step (its truncation error far below the
+/// rounding of its 10⁵–10⁶ steps, some 1e-11 of the range),
+/// the landing found inside the last step by bisection on the cubic Hermite curve
+/// through the step's ends.
+pub(crate) fn drag_landing(speed: f64, angle: f64, g: f64, k: f64) -> (f64, f64) {
+    let rate = |s: [f64; 4]| {
+        let drag = k * (s[2] * s[2] + s[3] * s[3]).sqrt();
+        [s[2], s[3], -drag * s[2], -g - drag * s[3]]
+    };
+    let add = |s: [f64; 4], d: [f64; 4], h: f64| std::array::from_fn(|i| s[i] + h * d[i]);
+    let h = 1e-5;
+    let (sin, cos) = angle.to_radians().sin_cos();
+    let mut s = [0.0, 0.0, speed * cos, speed * sin];
+    let mut t = 0.0;
+    loop {
+        let k1 = rate(s);
+        let k2 = rate(add(s, k1, h / 2.0));
+        let k3 = rate(add(s, k2, h / 2.0));
+        let k4 = rate(add(s, k3, h));
+        let next: [f64; 4] =
+            std::array::from_fn(|i| s[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]));
+        if next[1] < 0.0 && t > 0.0 {
+            // y and x on the cubic through both ends (positions and velocities).
+            let hermite = |p0: f64, v0: f64, p1: f64, v1: f64, u: f64| {
+                let (u2, u3) = (u * u, u * u * u);
+                (2.0 * u3 - 3.0 * u2 + 1.0) * p0
+                    + (u3 - 2.0 * u2 + u) * h * v0
+                    + (-2.0 * u3 + 3.0 * u2) * p1
+                    + (u3 - u2) * h * v1
+            };
+            let u = bisect(
+                |u| hermite(s[1], s[3], next[1], next[3], u) < 0.0,
+                (0.0, 1.0),
+            );
+            return (hermite(s[0], s[2], next[0], next[2], u), t + u * h);
+        }
+        s = next;
+        t += h;
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Without drag the independent integration lands where the sine law says, and its
+    /// flight lasts 2 v sin a / g, both to 1e-10 relative (rounding over 4 × 10⁵ steps:
+    /// some 7e-12 seen); with drag it lands shorter.
+    #[test]
+    fn the_drag_landing_without_drag_is_the_sine_law() {
+        let (range, flight) = drag_landing(30.0, 35.0, 9.81, 0.0);
+        let a = 35_f64.to_radians();
+        assert!((range - 900.0 * (2.0 * a).sin() / 9.81).abs() < 1e-10 * range);
+        assert!((flight - 60.0 * a.sin() / 9.81).abs() < 1e-10 * flight);
+        assert!(drag_landing(30.0, 35.0, 9.81, 0.01).0 < 0.8 * range);
+    }
 
     /// Free fall from r0 = 1 to 0 with μ = 2 takes π/2 √(r0³/2μ) = π/4 (arccos 0 = π/2).
     #[test]

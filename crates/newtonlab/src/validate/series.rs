@@ -1,0 +1,132 @@
+//! Experiment series against theory: `physics::series`, the code behind `newtonlab
+//! sweep`, the app's series and Python's, measuring laws rather than single runs.
+
+use physics::series::{Measure, Sweep, Vary};
+use physics::{Particle, Scene, Tie, Vector, World};
+
+use super::experiments::Outcome;
+use super::report::{Checks, Report};
+use super::theory;
+use crate::Failure;
+
+const G: f64 = 9.81;
+
+/// Each run of `sweep` on `scene`: the varied value and every measure, which must all
+/// have a number.
+fn measured(sweep: &Sweep, scene: &Scene) -> Result<Vec<(f64, Vec<f64>)>, Failure> {
+    sweep.check(scene).map_err(Failure::Input)?;
+    sweep
+        .run(scene, 1, &|| {})
+        .into_iter()
+        .map(|row| {
+            let values = row
+                .measured
+                .map_err(Failure::Simulation)?
+                .into_iter()
+                .collect::<Result<Vec<f64>, String>>()
+                .map_err(Failure::Simulation)?;
+            Ok((row.values[0], values))
+        })
+        .collect()
+}
+
+fn sweep(scene: &Scene, vary: &str, until: f64, measures: &[&str]) -> Result<Sweep, Failure> {
+    Ok(Sweep {
+        varies: vec![Vary::parse(vary, scene).map_err(Failure::Input)?],
+        until,
+        measures: measures
+            .iter()
+            .map(|m| Measure::parse(m).map_err(Failure::Input))
+            .collect::<Result<_, _>>()?,
+    })
+}
+
+/// Two laws measured as series, rk4 at 1 ms: a 1 m rod pendulum's period against its
+/// amplitude, 10° to 170°, against 4 √(L/g) K(sin(θ₀/2)), to 1e-9 relative (half the
+/// time from the rod's 1st to its 3rd counter-clockwise pass through the vertical, each
+/// located); and a baseball's range against its
+/// launch angle with quadratic drag (0.145 kg, c = 7.6e-4 kg/m, 40 m/s), against an
+/// integration of the same equations written here (`theory::drag_landing`), to 1e-9
+/// relative — the furthest angle falls below 45°.
+pub(crate) fn series(report: &mut Report) -> Outcome {
+    let mut checks = Checks::new("series");
+    let pendulum = Scene::new()
+        .with_world(World::gravity_only())
+        .with_particle(
+            Particle::new("Bob", 1.0)
+                .radius(0.05)
+                .position(Vector::Polar {
+                    magnitude: 1.0,
+                    angle: -60.0,
+                }),
+        )
+        .with_tie(Tie::rod("rod", [0.0, 0.0], "Bob", 1.0));
+    // The rod passes the vertical counter-clockwise once a period (past 90° the bob's x
+    // has two maxima a swing, so its period would not be the swing's).
+    let passes = measured(
+        &sweep(
+            &pendulum,
+            "Bob.position.angle=-80:80:20",
+            16.0,
+            &[
+                "t at rod.angle crosses 0 up #1",
+                "t at rod.angle crosses 0 up #3",
+            ],
+        )?,
+        &pendulum,
+    )?;
+    for (angle, passes) in passes {
+        let period = (passes[1] - passes[0]) / 2.0;
+        let amplitude = angle + 90.0;
+        let theory = theory::pendulum_period(1.0, G, amplitude.to_radians());
+        checks.check(
+            report,
+            format!("pendulum at {amplitude}°: period (s)"),
+            (period, theory, theory),
+            1e-9,
+        );
+    }
+    let (mass, c, speed) = (0.145, 7.6e-4, 40.0);
+    let ball = Scene::new()
+        .with_world(World::gravity_only())
+        .with_particle(
+            Particle::new("Ball", mass)
+                .radius(0.0366)
+                .velocity(Vector::Polar {
+                    magnitude: speed,
+                    angle: 45.0,
+                })
+                .drag(0.0, c),
+        );
+    let ranges = measured(
+        &sweep(
+            &ball,
+            "Ball.velocity.angle=20:60:5",
+            8.0,
+            &["Ball.x at Ball.y crosses 0 down"],
+        )?,
+        &ball,
+    )?;
+    let mut furthest = (0.0, 0.0);
+    for (angle, range) in ranges {
+        let range = range[0];
+        let (theory, _) = theory::drag_landing(speed, angle, G, c / mass);
+        checks.check(
+            report,
+            format!("baseball at {angle}°: range (m)"),
+            (range, theory, theory),
+            1e-9,
+        );
+        if range > furthest.1 {
+            furthest = (angle, range);
+        }
+    }
+    report.tables.push(checks.table(
+        &format!(
+            "Series: a pendulum's period against its amplitude; a baseball's range against its angle with drag (furthest at {}°)",
+            furthest.0
+        ),
+        "period 4 √(L/g) K(sin(θ₀/2)); range by an integration of x'' = −k|v|vₓ, y'' = −g − k|v|vᵧ written apart (RK4, 10 µs), k = c/m",
+    ));
+    Ok(())
+}

@@ -644,6 +644,7 @@ fn section_kind(scene: &Scene, section: Section) -> &'static str {
         Section::Tie(i) => scene.ties.get(i).map_or("rod", |tie| tie.kind.as_str()),
         Section::Ramp(_) => "ramp",
         Section::Graph(_) => "graph",
+        Section::Series(_) => "series",
         Section::Root | Section::View => "scene",
     }
 }

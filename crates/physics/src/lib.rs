@@ -108,6 +108,6 @@ pub use scene::fields;
 pub use scene::format::SceneFormat;
 pub use scene::{
     Bounds, Color, Endpoint, FieldRef, Follow, Graph, PairForces, Particle, Ramp, Rule, Scene,
-    Section, Settings, Spring, Tie, TieKind, Vector, View, World, check_value,
+    Section, Series, Settings, Spring, Tie, TieKind, Vector, View, World, check_value,
 };
 pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};

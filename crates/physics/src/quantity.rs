@@ -216,30 +216,51 @@ impl Quantity {
     /// The object it names is not there (with the names there are), or a tension is asked
     /// of a spring.
     pub fn reading(&self, simulation: &Simulation) -> Result<Reading, String> {
+        self.find(
+            simulation.names(),
+            simulation.tie_names(),
+            simulation.spring_names(),
+        )
+    }
+
+    /// Whether `scene` has the object the quantity names.
+    ///
+    /// # Errors
+    /// As [`Self::reading`].
+    pub fn check_in(&self, scene: &crate::Scene) -> Result<(), String> {
+        let names = |names: Vec<&String>| names.into_iter().cloned().collect::<Vec<String>>();
+        let particles = names(scene.particles.iter().map(|p| &p.name).collect());
+        let ties = names(scene.ties.iter().map(|t| &t.name).collect());
+        let springs = names(scene.springs.iter().map(|s| &s.name).collect());
+        self.find(&particles, &ties, &springs).map(|_| ())
+    }
+
+    /// [`Self::reading`] among the objects of these names, in the simulation's order.
+    fn find(
+        &self,
+        particles: &[String],
+        ties: &[String],
+        springs: &[String],
+    ) -> Result<Reading, String> {
         let find = |names: &[String], name: &str| names.iter().position(|n| n == name);
         match self {
             Self::Time => Ok(Reading::Time),
             Self::Total(total) => Ok(Reading::Total(*total)),
-            Self::Particle(name, of) => find(simulation.names(), name)
+            Self::Particle(name, of) => find(particles, name)
                 .map(|i| Reading::Particle(i, *of))
-                .ok_or_else(|| unknown("quantity-no-particle", self, name, simulation.names())),
+                .ok_or_else(|| unknown("quantity-no-particle", self, name, particles)),
             Self::Link(name, of) => {
-                if let Some(k) = find(simulation.tie_names(), name) {
+                if let Some(k) = find(ties, name) {
                     return Ok(Reading::Link(Link::Tie(k), *of));
                 }
-                match (find(simulation.spring_names(), name), of) {
+                match (find(springs, name), of) {
                     (Some(_), LinkOf::Tension) => Err(crate::scene::say(
                         "quantity-spring-tension",
                         &[("text", &self.to_string()), ("name", name)],
                     )),
                     (Some(k), _) => Ok(Reading::Link(Link::Spring(k), *of)),
                     (None, _) => {
-                        let links: Vec<String> = simulation
-                            .tie_names()
-                            .iter()
-                            .chain(simulation.spring_names())
-                            .cloned()
-                            .collect();
+                        let links: Vec<String> = ties.iter().chain(springs).cloned().collect();
                         Err(unknown("quantity-no-link", self, name, &links))
                     }
                 }

@@ -18,7 +18,7 @@ use glam::DVec2;
 pub(crate) use newtonlab_i18n::tr_text as say;
 
 pub use error::{FieldRef, Section};
-pub use presentation::{Follow, Graph, View};
+pub use presentation::{Follow, Graph, Series, View};
 pub use validate::{Rule, check_value};
 
 /// A 2D vector as the user typed it: Cartesian `[x, y]` or polar
@@ -606,6 +606,8 @@ pub struct Scene {
     pub ramps: Vec<Ramp>,
     /// The app's graphs when the scene opens (`[[graph]]`), in file order.
     pub graphs: Vec<Graph>,
+    /// The app's experiment series (`[[series]]`), in file order.
+    pub series: Vec<Series>,
     /// The app's framing when the scene opens (`[view]`).
     pub view: Option<View>,
 }

@@ -627,3 +627,152 @@ impl Sweep {
         points.iter().map(one).collect()
     }
 }
+
+impl fmt::Display for Measure {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::At {
+                quantity,
+                event,
+                nth,
+            } => {
+                write!(f, "{quantity} at {event}")?;
+                if *nth == 1 {
+                    Ok(())
+                } else {
+                    write!(f, " #{nth}")
+                }
+            }
+            Self::Max(q) => write!(f, "max {q}"),
+            Self::Min(q) => write!(f, "min {q}"),
+            Self::Period(q) => write!(f, "period {q}"),
+            Self::AtTime(q, t) => write!(f, "{q} at {t:?}"),
+        }
+    }
+}
+
+impl Measure {
+    /// Each quantity it names, mutably (its own, and its event's).
+    pub fn quantities_mut(&mut self) -> Vec<&mut Quantity> {
+        match self {
+            Self::At {
+                quantity, event, ..
+            } => vec![quantity, &mut event.quantity],
+            Self::Max(q) | Self::Min(q) | Self::Period(q) | Self::AtTime(q, _) => vec![q],
+        }
+    }
+
+    /// Whether `scene` has every object the measure names (its quantity's, its event's).
+    ///
+    /// # Errors
+    /// The first missing object, with the names there are.
+    pub fn check_in(&self, scene: &Scene) -> Result<(), String> {
+        self.quantity().check_in(scene)?;
+        match self {
+            Self::At { event, .. } => event.quantity.check_in(scene),
+            _ => Ok(()),
+        }
+    }
+}
+
+/// The law a series is expected to follow: an expression of the varied value (`x`, also
+/// `a`; an angle in radians, the file's degrees converted) and of the scene's constants:
+/// `g`, the field's strength (m/s²); of the varied particle, `m` (kg), `r` (m), `v0`
+/// (its speed at the start, m/s), `h` (its height at the start, m), `b` and `c` (its
+/// air resistance); of a varied rod or string `L` (m), of a varied spring `k` (N/m) and
+/// `L` (its natural length). `v0^2*sin(2*a)/g` is the range of a projectile launched
+/// from the ground at the angle varied. Arithmetic as the app's fields: + − × ÷ ^, sqrt,
+/// sin, cos, tan, asin, acos, atan, exp, ln, log10, abs, PI.
+#[derive(Clone, Debug)]
+pub struct Theory {
+    expression: exmex::FlatEx<f64>,
+    /// The values of the expression's variables but the varied one, in its order; the
+    /// varied one's place.
+    constants: Vec<f64>,
+    varied: Vec<usize>,
+    /// Whether the varied value is an angle (degrees, turned into radians).
+    angle: bool,
+}
+
+impl Theory {
+    /// Reads `text` for the series varying `vary` on `scene`.
+    ///
+    /// # Errors
+    /// The text is no expression, or names something that is not one of the variables
+    /// above (in words, with the names there are).
+    pub fn parse(text: &str, scene: &Scene, vary: &str) -> Result<Self, String> {
+        use exmex::Express as _;
+        let setting = Setting::parse(vary, scene)?;
+        let expression = exmex::parse::<f64>(text.trim())
+            .map_err(|_| say("theory-unreadable", &[("text", text.trim())]))?;
+        let named = setting.constants(scene);
+        let mut constants = Vec::new();
+        let mut varied = Vec::new();
+        for (k, name) in expression.var_names().iter().enumerate() {
+            if name == "x" || name == "a" {
+                varied.push(k);
+                constants.push(0.0);
+                continue;
+            }
+            let value = named
+                .iter()
+                .find(|(n, _)| n == name)
+                .map(|&(_, v)| v)
+                .ok_or_else(|| {
+                    let names: Vec<&str> = ["x", "a"]
+                        .into_iter()
+                        .chain(named.iter().map(|(n, _)| *n))
+                        .collect();
+                    say(
+                        "theory-unknown-name",
+                        &[("name", name), ("names", &names.join(", "))],
+                    )
+                })?;
+            constants.push(value);
+        }
+        Ok(Self {
+            expression,
+            constants,
+            varied,
+            angle: setting.part == Some(Part::Angle),
+        })
+    }
+
+    /// The law's value at the varied value `x` (in the file's unit).
+    pub fn at(&self, x: f64) -> f64 {
+        use exmex::Express as _;
+        let x = if self.angle { x.to_radians() } else { x };
+        let mut values = self.constants.clone();
+        for &k in &self.varied {
+            values[k] = x;
+        }
+        self.expression.eval(&values).unwrap_or(f64::NAN)
+    }
+}
+
+impl Setting {
+    /// The scene's constants a theory may name, for this setting's object.
+    fn constants(&self, scene: &Scene) -> Vec<(&'static str, f64)> {
+        let mut named = vec![("g", scene.world.gravity.to_dvec2().length())];
+        match self.target {
+            Target::Particle(i) => {
+                let p = &scene.particles[i];
+                named.extend([
+                    ("m", p.mass),
+                    ("r", p.radius),
+                    ("v0", p.velocity.to_dvec2().length()),
+                    ("h", p.position.to_dvec2().y),
+                    ("b", p.linear_drag),
+                    ("c", p.quadratic_drag),
+                ]);
+            }
+            Target::Tie(i) => named.push(("L", scene.ties[i].length)),
+            Target::Spring(i) => {
+                let s = &scene.springs[i];
+                named.extend([("k", s.stiffness), ("L", s.natural_length)]);
+            }
+            Target::Ramp(_) | Target::World | Target::Simulation => {}
+        }
+        named
+    }
+}

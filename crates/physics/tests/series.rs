@@ -268,3 +268,92 @@ fn bad_settings_and_measures_are_named() {
     assert_eq!(world.values.len(), 9);
     assert!(Vary::parse("simulation.time_step=0.001:0.002:0.001", &scene).is_ok());
 }
+
+const SCENE_WITH_SERIES: &str = r#"version = 1
+[world]
+gravity = [0.0, -9.81]
+[[particle]]
+name = "Ball"
+mass = 1.0
+radius = 0.1
+position = [0.0, 0.0]
+velocity = { magnitude = 20.0, angle = 45.0 }
+[[series]]
+vary = "Ball.velocity.angle"
+from = 10.0
+to = 80.0
+step = 5.0
+until = 5.0
+measure = ["Ball.x at Ball.y crosses 0 down"]
+theory = "v0^2*sin(2*a)/g"
+"#;
+
+/// `[[series]]` reads, writes back and reads again to the same scene; its theory is the
+/// sine law at the varied angle (degrees turned to radians), and the series measures it.
+#[test]
+fn a_series_in_a_scene_file_round_trips_and_follows_its_theory() {
+    let scene = Scene::from_toml(SCENE_WITH_SERIES).expect("a valid scene");
+    assert_eq!(scene.series.len(), 1);
+    let again = Scene::from_toml(&scene.to_toml()).expect("written back");
+    assert_eq!(again, scene);
+    let series = &scene.series[0];
+    let theory =
+        physics::series::Theory::parse(series.theory.as_deref().unwrap(), &scene, &series.vary)
+            .unwrap();
+    let expected = 400.0 * (60_f64.to_radians()).sin() / G;
+    assert!(relative(theory.at(30.0), expected) < 1e-15);
+    let sweep = series.sweep(&scene).unwrap();
+    for (values, measured) in numbers(&sweep, &scene, 2) {
+        assert!(
+            relative(measured[0], theory.at(values[0])) < 1e-9,
+            "{values:?}"
+        );
+    }
+}
+
+/// A series that names what the scene lacks is refused where it says so: each problem
+/// with its line.
+#[test]
+fn a_bad_series_is_refused_at_its_line() {
+    for (from, to, words) in [
+        (
+            "vary = \"Ball.velocity.angle\"",
+            "vary = \"Bal.velocity.angle\"",
+            "names no object",
+        ),
+        ("step = 5.0", "step = 0.0", "no values"),
+        ("until = 5.0", "until = -1.0", "until must be"),
+        (
+            "measure = [\"Ball.x at Ball.y crosses 0 down\"]",
+            "measure = [\"Bob.x at Ball.y crosses 0 down\"]",
+            "no particle named 'Bob'",
+        ),
+        (
+            "theory = \"v0^2*sin(2*a)/g\"",
+            "theory = \"v0^2*sin(2*q)/g\"",
+            "not 'q'",
+        ),
+    ] {
+        let text = SCENE_WITH_SERIES.replace(from, to);
+        let error = Scene::from_toml(&text).expect_err("refused");
+        let problem = &error.problems[0];
+        assert!(problem.message.contains(words), "{to}: {}", problem.message);
+        let line = text.lines().position(|l| l == to).map(|l| l + 1);
+        assert_eq!(problem.line, line, "{to}: at its line");
+    }
+}
+
+/// Renaming the ball renames it in the series; deleting it drops the series.
+#[test]
+fn a_series_follows_its_particle() {
+    let mut scene = Scene::from_toml(SCENE_WITH_SERIES).unwrap();
+    scene.rename(physics::Section::Particle(0), "Shot");
+    assert_eq!(scene.series[0].vary, "Shot.velocity.angle");
+    assert_eq!(
+        scene.series[0].measure,
+        ["Shot.x at Shot.y crosses 0.0 down"]
+    );
+    assert!(scene.validate().is_empty(), "{:?}", scene.validate());
+    scene.remove(physics::Section::Particle(0));
+    assert!(scene.series.is_empty());
+}

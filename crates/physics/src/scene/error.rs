@@ -24,6 +24,8 @@ pub enum Section {
     Ramp(usize),
     /// The graph at this index (`[[graph]]`).
     Graph(usize),
+    /// The series at this index (`[[series]]`).
+    Series(usize),
     /// `[view]`.
     View,
 }

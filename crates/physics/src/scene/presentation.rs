@@ -43,6 +43,47 @@ impl Graph {
     }
 }
 
+/// An experiment series the app runs (`[[series]]`): a setting varied over a range, each
+/// run measured, and optionally the law expected ([`crate::series`] runs it; `run`
+/// ignores it).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Series {
+    /// The setting varied, as `sweep --vary` names it (`Ball.velocity.angle`).
+    pub vary: String,
+    /// The first value.
+    pub from: f64,
+    /// The last value (reached when the steps reach it).
+    pub to: f64,
+    /// The step between values.
+    pub step: f64,
+    /// How long each run lasts, seconds.
+    pub until: f64,
+    /// What each run is measured for, as `sweep --measure` writes it.
+    pub measure: Vec<String>,
+    /// The law expected of the first measure, an expression of the varied value
+    /// ([`crate::series::Theory`]).
+    pub theory: Option<String>,
+}
+
+impl Series {
+    /// The series as a [`crate::series::Sweep`] on `scene`.
+    ///
+    /// # Errors
+    /// A setting, range or measure that does not read (in words).
+    pub fn sweep(&self, scene: &Scene) -> Result<crate::series::Sweep, String> {
+        let text = format!("{}={}:{}:{}", self.vary, self.from, self.to, self.step);
+        Ok(crate::series::Sweep {
+            varies: vec![crate::series::Vary::parse(&text, scene)?],
+            until: self.until,
+            measures: self
+                .measure
+                .iter()
+                .map(|m| crate::series::Measure::parse(m))
+                .collect::<Result<_, _>>()?,
+        })
+    }
+}
+
 /// How the app frames the scene when it opens.
 #[derive(Clone, Debug, PartialEq, Default)]
 pub struct View {
@@ -83,8 +124,8 @@ impl Follow {
 }
 
 impl Scene {
-    /// Renames every reference to the particle, rod or string `old` in the graphs and the
-    /// view, as renaming a particle does for its springs.
+    /// Renames every reference to the particle, rod or string `old` in the graphs, the
+    /// series and the view, as renaming a particle does for its springs.
     pub(super) fn rename_in_presentation(&mut self, old: &str, new: &str) {
         let rename = |quantity: &mut Quantity| match quantity {
             Quantity::Particle(name, _) | Quantity::Link(name, _) if name == old => {
@@ -96,6 +137,17 @@ impl Scene {
             rename(&mut graph.x);
             graph.y.iter_mut().for_each(rename);
         }
+        for series in &mut self.series {
+            if let Some(rest) = series.vary.strip_prefix(old).filter(|r| r.starts_with('.')) {
+                series.vary = format!("{new}{rest}");
+            }
+            for text in &mut series.measure {
+                if let Ok(mut measure) = crate::series::Measure::parse(text) {
+                    measure.quantities_mut().into_iter().for_each(rename);
+                    *text = measure.to_string();
+                }
+            }
+        }
         if let Some(Follow::Particle(name)) = self.view.as_mut().and_then(|v| v.follow.as_mut())
             && name == old
         {
@@ -103,9 +155,9 @@ impl Scene {
         }
     }
 
-    /// Drops every reference to the particle, rod or string `name` from the graphs and
-    /// the view (a graph's x axis falls back to time), as deleting a particle does for
-    /// its springs.
+    /// Drops every reference to the particle, rod or string `name` from the graphs, the
+    /// series (each series about it) and the view (a graph's x axis falls back to time),
+    /// as deleting a particle does for its springs.
     pub(super) fn forget_in_presentation(&mut self, name: &str) {
         let names = |quantity: &Quantity| match quantity {
             Quantity::Particle(n, _) | Quantity::Link(n, _) => n == name,
@@ -117,6 +169,18 @@ impl Scene {
             }
             graph.y.retain(|y| !names(y));
         }
+        // A series about the object is about nothing once it is gone.
+        self.series.retain(|series| {
+            let varies = series
+                .vary
+                .strip_prefix(name)
+                .is_some_and(|rest| rest.starts_with('.'));
+            let measures = series.measure.iter().any(|text| {
+                crate::series::Measure::parse(text)
+                    .is_ok_and(|mut m| m.quantities_mut().into_iter().any(|q| names(q)))
+            });
+            !(varies || measures)
+        });
         if let Some(view) = &mut self.view
             && view.follow == Some(Follow::Particle(name.to_owned()))
         {

@@ -29,6 +29,7 @@ impl Scene {
         check.ties();
         check.ramps();
         check.graphs();
+        check.series();
         check.view();
         check.problems
     }
@@ -63,6 +64,7 @@ impl Scene {
                 self.graphs.get(i).and_then(|g| g.title.as_deref()),
                 i,
             ),
+            Section::Series(i) => numbered("series", i),
             Section::View => "[view]".to_owned(),
         }
     }
@@ -415,6 +417,38 @@ impl Checker<'_> {
                     }
                     _ => {}
                 }
+            }
+        }
+    }
+
+    /// A series must name a number of the scene, a range with values, a run that ends
+    /// after the start, measures that read and name objects that exist, a theory that
+    /// reads.
+    fn series(&mut self) {
+        for (i, series) in self.scene.series.iter().enumerate() {
+            let s = Section::Series(i);
+            if let Err(why) = crate::series::Setting::parse(&series.vary, self.scene) {
+                self.report(s, "vary", &why);
+            }
+            if crate::series::range_values(series.from, series.to, series.step).is_none() {
+                let text = format!("{}:{}:{}", series.from, series.to, series.step);
+                self.report(s, "step", &say("vary-empty", &[("text", &text)]));
+            }
+            if !(series.until.is_finite() && series.until > self.scene.simulation.start_time) {
+                let until = series.until.to_string();
+                self.report(s, "until", &say("scene-series-until", &[("until", &until)]));
+            }
+            for text in &series.measure {
+                let checked = crate::series::Measure::parse(text)
+                    .and_then(|measure| measure.check_in(self.scene));
+                if let Err(why) = checked {
+                    self.report(s, "measure", &why);
+                }
+            }
+            if let Some(theory) = &series.theory
+                && let Err(why) = crate::series::Theory::parse(theory, self.scene, &series.vary)
+            {
+                self.report(s, "theory", &why);
             }
         }
     }

@@ -10,8 +10,8 @@ use crate::scene::error::{FieldRef, LoadError, Problem, Section};
 use crate::scene::fields::{self, Field, Kind, Value as FieldValue};
 use crate::scene::validate;
 use crate::scene::{
-    Bounds, Color, Endpoint, Follow, Graph, PairForces, Particle, Ramp, Scene, Settings, Spring,
-    Tie, TieKind, Vector, View, World, say,
+    Bounds, Color, Endpoint, Follow, Graph, PairForces, Particle, Ramp, Scene, Series, Settings,
+    Spring, Tie, TieKind, Vector, View, World, say,
 };
 use crate::{Integrator, Quantity};
 
@@ -54,9 +54,12 @@ pub(super) const ROOT_KEYS: &[&str] = &[
     "string",
     "ramp",
     "graph",
+    "series",
     "view",
 ];
 pub(super) const GRAPH_KEYS: &[&str] = &["title", "x", "y"];
+pub(super) const SERIES_KEYS: &[&str] =
+    &["vary", "from", "to", "step", "until", "measure", "theory"];
 pub(super) const VIEW_KEYS: &[&str] = &["center", "width", "follow"];
 
 impl<'t> Reader<'t> {
@@ -246,6 +249,10 @@ impl<'t> Reader<'t> {
             let graph = self.graph(node, i);
             scene.graphs.push(graph);
         }
+        for (i, node) in self.items(&mut top, "series").iter().enumerate() {
+            let series = self.series(node, i);
+            scene.series.push(series);
+        }
         if let Some(node) = top.get("view") {
             scene.view = Some(self.view(node));
         }
@@ -420,6 +427,34 @@ impl<'t> Reader<'t> {
         }
         self.close(&t, GRAPH_KEYS);
         graph
+    }
+
+    pub(super) fn series(&mut self, node: &Node, index: usize) -> Series {
+        let mut series = Series {
+            vary: String::new(),
+            from: 0.0,
+            to: 0.0,
+            step: 1.0,
+            until: 1.0,
+            measure: Vec::new(),
+            theory: None,
+        };
+        let Some(mut t) = self.table(
+            node,
+            Section::Series(index),
+            validate::numbered("series", index),
+        ) else {
+            return series;
+        };
+        series.vary = self.required(&mut t, "vary", read_text, String::new());
+        series.from = self.required(&mut t, "from", read_number, 0.0);
+        series.to = self.required(&mut t, "to", read_number, 0.0);
+        series.step = self.required(&mut t, "step", read_number, 1.0);
+        series.until = self.required(&mut t, "until", read_number, 1.0);
+        series.measure = self.required(&mut t, "measure", read_text_list, Vec::new());
+        series.theory = self.field(&mut t, "theory", read_text);
+        self.close(&t, SERIES_KEYS);
+        series
     }
 
     /// A name in a graph's `key` that is no quantity: `reason`, at the field.

@@ -112,7 +112,7 @@ impl Scene {
         sections
     }
 
-    /// The app's part of the scene: `[[graph]]` and `[view]`.
+    /// The app's part of the scene: `[[graph]]`, `[[series]]` and `[view]`.
     fn presentation(&self) -> Vec<OutSection> {
         let mut sections = Vec::new();
         for graph in &self.graphs {
@@ -127,6 +127,23 @@ impl Scene {
             ));
             sections.push(OutSection {
                 header: Header::ArrayItem("graph"),
+                entries,
+            });
+        }
+        for series in &self.series {
+            let mut entries = vec![
+                ("vary", Out::Text(series.vary.clone())),
+                ("from", Out::Number(series.from)),
+                ("to", Out::Number(series.to)),
+                ("step", Out::Number(series.step)),
+                ("until", Out::Number(series.until)),
+                ("measure", Out::TextList(series.measure.clone())),
+            ];
+            if let Some(theory) = &series.theory {
+                entries.push(("theory", Out::Text(theory.clone())));
+            }
+            sections.push(OutSection {
+                header: Header::ArrayItem("series"),
                 entries,
             });
         }

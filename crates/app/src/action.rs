@@ -19,6 +19,10 @@ pub enum Action {
     ExportPicture(Subject),
     /// Save graph number N as a figure to print (PNG or SVG).
     ExportFigure(usize, crate::picture::Format),
+    /// Run experiment series number N.
+    RunExperiment(usize),
+    /// Export experiment series number N's results: CSV (`None`) or a figure.
+    ExportExperiment(usize, Option<crate::picture::Format>),
     Example(&'static str),
     Quit,
     Undo,

@@ -42,12 +42,16 @@ pub enum Edit {
     AddSeries,
     RemoveSeries,
     SetXAxis,
+    /// An experiment series added, changed or removed.
+    AddExperiment,
+    ChangeExperiment,
+    RemoveExperiment,
 }
 
 impl Edit {
     /// Every edit but [`Edit::Set`]'s fields, for the tests.
     #[cfg(test)]
-    const ALL: [Self; 24] = [
+    const ALL: [Self; 27] = [
         Self::Add(Object::Particle),
         Self::Add(Object::Spring),
         Self::Add(Object::Rod),
@@ -72,6 +76,9 @@ impl Edit {
         Self::AddSeries,
         Self::RemoveSeries,
         Self::SetXAxis,
+        Self::AddExperiment,
+        Self::ChangeExperiment,
+        Self::RemoveExperiment,
     ];
 
     /// The message of its words, but for [`Edit::Set`] (whose words name the field).
@@ -102,6 +109,9 @@ impl Edit {
             Self::AddSeries => "edit-add-series",
             Self::RemoveSeries => "edit-remove-series",
             Self::SetXAxis => "edit-set-x-axis",
+            Self::AddExperiment => "edit-add-experiment",
+            Self::ChangeExperiment => "edit-change-experiment",
+            Self::RemoveExperiment => "edit-remove-experiment",
         }
     }
 

@@ -18,6 +18,8 @@ pub enum Purpose {
     ExportPng,
     /// Save the SVG figure waiting in the app.
     ExportSvg,
+    /// Save the CSV table waiting in the app (an experiment series' results).
+    ExportTable,
 }
 
 impl Purpose {
@@ -25,7 +27,7 @@ impl Purpose {
     fn extensions(self) -> &'static [&'static str] {
         match self {
             Self::Open | Self::Save => &["toml", "json"],
-            Self::ExportCsv(_) => &["csv"],
+            Self::ExportCsv(_) | Self::ExportTable => &["csv"],
             Self::ExportPng => &["png"],
             Self::ExportSvg => &["svg"],
         }
@@ -203,9 +205,10 @@ impl Files {
             let verb = tr(match dialog.purpose {
                 Purpose::Open => "file-verb-open",
                 Purpose::Save => "file-verb-save",
-                Purpose::ExportCsv(_) | Purpose::ExportPng | Purpose::ExportSvg => {
-                    "file-verb-export"
-                }
+                Purpose::ExportCsv(_)
+                | Purpose::ExportTable
+                | Purpose::ExportPng
+                | Purpose::ExportSvg => "file-verb-export",
             });
             let extensions = dialog.purpose.extensions();
             Modal::new(Id::unique("file dialog")).show(ui.ctx(), |ui| {
@@ -213,7 +216,7 @@ impl Files {
                 ui.heading(tr(match dialog.purpose {
                     Purpose::Open => "file-title-open",
                     Purpose::Save => "file-title-save",
-                    Purpose::ExportCsv(_) => "file-title-csv",
+                    Purpose::ExportCsv(_) | Purpose::ExportTable => "file-title-csv",
                     Purpose::ExportPng => "file-title-png",
                     Purpose::ExportSvg => "file-title-svg",
                 }));

@@ -28,6 +28,8 @@ pub mod autosave;
 pub mod canvas;
 pub mod document;
 pub mod edit;
+mod experiment_files;
+pub mod experiments;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod figure;
 pub mod files;
@@ -124,6 +126,10 @@ pub struct App {
     pub settings: settings::Settings,
     /// The latest impact as a sentence for screen readers, rate-limited.
     pub announcer: announcer::Announcer,
+    /// The experiment series panel: each series' results and the run in progress.
+    pub experiments: experiments::Experiments,
+    /// A CSV table waiting for the file dialog's answer (an experiment's results).
+    table_ready: Option<String>,
     /// Where the desktop keeps them; none: not kept.
     #[cfg(not(target_arch = "wasm32"))]
     settings_file: Option<std::path::PathBuf>,
@@ -180,6 +186,8 @@ impl App {
             stopwatch: stopwatch::Stopwatch::default(),
             settings: settings::Settings::default(),
             announcer: announcer::Announcer::default(),
+            experiments: experiments::Experiments::default(),
+            table_ready: None,
             #[cfg(not(target_arch = "wasm32"))]
             settings_file: None,
             files: Files::default(),
@@ -255,6 +263,12 @@ impl App {
             Action::ExportGraph(graph) => self.ask_export(graph),
             Action::ExportPicture(subject) => self.picture_asked = Some(subject),
             Action::ExportFigure(graph, format) => self.export_figure(graph, format),
+            Action::RunExperiment(index) => {
+                if let Err(why) = self.experiments.start(self.document.scene(), index) {
+                    self.notify(why);
+                }
+            }
+            Action::ExportExperiment(index, format) => self.export_experiment(index, format),
             Action::Example(name) => self.guard(Pending::Example(name)),
             Action::Quit => self.guard(Pending::Quit),
             Action::Undo => self.undo(),
@@ -423,6 +437,7 @@ impl App {
         }
         self.selection = None;
         self.graphs = Graphs::default();
+        self.experiments.clear();
         self.forget_entries = true;
     }
 
@@ -603,10 +618,16 @@ impl App {
         };
         let csv = plots::to_csv(recording, setup);
         let rows = recording.len();
+        self.write_table(path, &csv, rows);
+    }
+
+    /// Writes the CSV `text` of `rows` rows to `path` (on the web: downloads it) and says
+    /// so.
+    pub(crate) fn write_table(&mut self, path: &str, text: &str, rows: usize) {
         #[cfg(not(target_arch = "wasm32"))]
-        let written = platform::write_text(path, &csv);
+        let written = platform::write_text(path, text);
         #[cfg(target_arch = "wasm32")]
-        let written = platform::web::download(path, &csv, "text/csv");
+        let written = platform::web::download(path, text, "text/csv");
         match written {
             Ok(()) => self.notify(tr_with(
                 "notice-exported",
@@ -627,6 +648,7 @@ impl App {
             Some(Choice::Path(Purpose::Save, path)) => self.save_path(&path),
             Some(Choice::Path(Purpose::ExportCsv(graph), path)) => self.export_csv(&path, graph),
             Some(Choice::Path(Purpose::ExportPng, path)) => self.save_picture(&path),
+            Some(Choice::Path(Purpose::ExportTable, path)) => self.save_table(&path),
             Some(Choice::Path(Purpose::ExportSvg, path)) => {
                 // No file dialog in the browser: SVG figures are the desktop's.
                 #[cfg(not(target_arch = "wasm32"))]
@@ -718,6 +740,13 @@ impl App {
                     egui::ScrollArea::vertical().show(ui, |ui| {
                         ui.set_width(ui.available_width());
                         actions.extend(self.graphs.ui(ui, &mut self.document, &self.runner));
+                        ui.separator();
+                        let selected = self.selected_particle_name();
+                        actions.extend(self.experiments.ui(
+                            ui,
+                            &mut self.document,
+                            selected.as_deref(),
+                        ));
                     });
                 });
         }

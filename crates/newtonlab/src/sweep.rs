@@ -118,24 +118,11 @@ fn write_csv(args: &SweepArgs, rows: &[Row]) -> io::Result<()> {
         Some(path) => Box::new(std::fs::File::create(path)?),
     };
     let mut out = BufWriter::new(sink);
-    let names: Vec<String> = varied_fields(args)
+    let names: Vec<&str> = varied_fields(args)
         .into_iter()
         .chain(args.measure.iter().map(|m| m.trim()))
-        .map(physics::csv_field)
         .collect();
-    writeln!(out, "{}", names.join(","))?;
-    for row in rows {
-        let mut fields: Vec<String> = row.values.iter().map(f64::to_string).collect();
-        match &row.measured {
-            Ok(measured) => fields.extend(
-                measured
-                    .iter()
-                    .map(|m| m.as_ref().map(f64::to_string).unwrap_or_default()),
-            ),
-            Err(_) => fields.extend(args.measure.iter().map(|_| String::new())),
-        }
-        writeln!(out, "{}", fields.join(","))?;
-    }
+    out.write_all(physics::series::csv(&names, rows).as_bytes())?;
     out.flush()
 }
 

@@ -75,13 +75,14 @@ macro_rules! examples {
 examples!(
     "kinematics-cartesian",
     "kinematics-polar",
-    "projectile",
     "spring-undamped",
     "spring-damped-light",
     "spring-damped-heavy",
     "orbit",
     "charged-pair",
     "collision",
+    "projectile",
+    "projectile-range",
     "ramp-slides",
     "ramp-bounces",
     "paper-gravitation",
@@ -90,8 +91,10 @@ examples!(
     "marble-run",
     "ball-pit",
     "pendulum",
+    "pendulum-amplitude",
     "double-pendulum",
     "string-circle",
+    "terminal-speed",
 );
 
 /// The built-in scene with this name.

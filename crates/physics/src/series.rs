@@ -583,6 +583,18 @@ impl Sweep {
         Measuring::new(&self.measures, &simulation, self.until).map(|_| ())
     }
 
+    /// One run: `scene` with the settings at `values` (one per setting), measured.
+    pub fn run_one(&self, scene: &Scene, values: &[f64]) -> Row {
+        let mut varied = scene.clone();
+        for (vary, &value) in self.varies.iter().zip(values) {
+            vary.setting.set(&mut varied, value);
+        }
+        Row {
+            values: values.to_vec(),
+            measured: measure(&varied, self.until, &self.measures),
+        }
+    }
+
     /// Every combination of the settings' values, in the series' order.
     pub fn points(&self) -> Vec<Vec<f64>> {
         self.varies.iter().fold(vec![Vec::new()], |points, vary| {
@@ -604,16 +616,9 @@ impl Sweep {
     /// series' order, the same bits for any number of threads.
     pub fn run(&self, scene: &Scene, threads: usize, progress: &(dyn Fn() + Sync)) -> Vec<Row> {
         let one = |values: &Vec<f64>| {
-            let mut varied = scene.clone();
-            for (vary, &value) in self.varies.iter().zip(values) {
-                vary.setting.set(&mut varied, value);
-            }
-            let measured = measure(&varied, self.until, &self.measures);
+            let row = self.run_one(scene, values);
             progress();
-            Row {
-                values: values.clone(),
-                measured,
-            }
+            row
         };
         let points = self.points();
         #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
@@ -626,6 +631,30 @@ impl Sweep {
         let _ = threads;
         points.iter().map(one).collect()
     }
+}
+
+/// The rows as CSV, as `newtonlab sweep` writes them: a header of `names` (the varied
+/// settings, then the measures, as typed), then a row per run: its values, then each
+/// measure's number, empty where there is none.
+pub fn csv(names: &[&str], rows: &[Row]) -> String {
+    let header: Vec<String> = names.iter().map(|n| crate::csv_field(n)).collect();
+    let mut out = header.join(",");
+    out.push('\n');
+    for row in rows {
+        let mut fields: Vec<String> = row.values.iter().map(f64::to_string).collect();
+        let measures = names.len().saturating_sub(row.values.len());
+        match &row.measured {
+            Ok(measured) => fields.extend(
+                measured
+                    .iter()
+                    .map(|m| m.as_ref().map(f64::to_string).unwrap_or_default()),
+            ),
+            Err(_) => fields.extend(std::iter::repeat_n(String::new(), measures)),
+        }
+        out.push_str(&fields.join(","));
+        out.push('\n');
+    }
+    out
 }
 
 impl fmt::Display for Measure {
@@ -679,13 +708,16 @@ impl Measure {
 /// `a`; an angle in radians, the file's degrees converted) and of the scene's constants:
 /// `g`, the field's strength (m/s²); of the varied particle, `m` (kg), `r` (m), `v0`
 /// (its speed at the start, m/s), `h` (its height at the start, m), `b` and `c` (its
-/// air resistance); of a varied rod or string `L` (m), of a varied spring `k` (N/m) and
-/// `L` (its natural length). `v0^2*sin(2*a)/g` is the range of a projectile launched
+/// air resistance) and `L` (the length of the first rod or string holding it); of a
+/// varied rod or string `L` (m), of a varied spring `k` (N/m) and `L` (its natural
+/// length). `v0^2*sin(2*a)/g` is the range of a projectile launched
 /// from the ground at the angle varied. Arithmetic as the app's fields: + − × ÷ ^, sqrt,
-/// sin, cos, tan, asin, acos, atan, exp, ln, log10, abs, PI.
+/// sin, cos, tan, asin, acos, atan, exp, ln, log10, abs, PI, and `K`, the complete
+/// elliptic integral of the first kind K(k) (a pendulum's period is
+/// `4*sqrt(L/g)*K(sin(θ₀/2))`).
 #[derive(Clone, Debug)]
 pub struct Theory {
-    expression: exmex::FlatEx<f64>,
+    expression: exmex::FlatEx<f64, TheoryOps>,
     /// The values of the expression's variables but the varied one, in its order; the
     /// varied one's place.
     constants: Vec<f64>,
@@ -703,7 +735,7 @@ impl Theory {
     pub fn parse(text: &str, scene: &Scene, vary: &str) -> Result<Self, String> {
         use exmex::Express as _;
         let setting = Setting::parse(vary, scene)?;
-        let expression = exmex::parse::<f64>(text.trim())
+        let expression = exmex::FlatEx::<f64, TheoryOps>::parse(text.trim())
             .map_err(|_| say("theory-unreadable", &[("text", text.trim())]))?;
         let named = setting.constants(scene);
         let mut constants = Vec::new();
@@ -750,6 +782,31 @@ impl Theory {
     }
 }
 
+/// exmex's operators on floats, and `K`.
+#[derive(Clone, Debug)]
+struct TheoryOps;
+
+impl exmex::MakeOperators<f64> for TheoryOps {
+    fn make<'a>() -> Vec<exmex::Operator<'a, f64>> {
+        let mut operators = exmex::FloatOpsFactory::<f64>::make();
+        operators.push(exmex::Operator::make_unary("K", elliptic_k));
+        operators
+    }
+}
+
+/// The complete elliptic integral of the first kind K(k), |k| < 1, by the
+/// arithmetic–geometric mean (quadratic convergence: 30 rounds are past f64's digits).
+pub fn elliptic_k(k: f64) -> f64 {
+    if k.abs() >= 1.0 || k.is_nan() {
+        return f64::NAN;
+    }
+    let (mut a, mut b) = (1.0_f64, (1.0 - k * k).sqrt());
+    for _ in 0..30 {
+        (a, b) = (0.5 * (a + b), (a * b).sqrt());
+    }
+    std::f64::consts::PI / (2.0 * a)
+}
+
 impl Setting {
     /// The scene's constants a theory may name, for this setting's object.
     fn constants(&self, scene: &Scene) -> Vec<(&'static str, f64)> {
@@ -765,6 +822,11 @@ impl Setting {
                     ("b", p.linear_drag),
                     ("c", p.quadratic_drag),
                 ]);
+                // The length of the first rod or string that holds it.
+                let holds = |end: &crate::scene::Endpoint| matches!(end, crate::scene::Endpoint::Particle(n) if *n == p.name);
+                if let Some(tie) = scene.ties.iter().find(|t| holds(&t.from) || holds(&t.to)) {
+                    named.push(("L", tie.length));
+                }
             }
             Target::Tie(i) => named.push(("L", scene.ties[i].length)),
             Target::Spring(i) => {

@@ -357,3 +357,34 @@ fn a_series_follows_its_particle() {
     scene.remove(physics::Section::Particle(0));
     assert!(scene.series.is_empty());
 }
+
+/// Every example's series with a theory follows it: each run's first measure against the
+/// law at its value, to 1e-8 relative (the projectile's range, the pendulum's elliptic
+/// period at 5°–90°, the terminal speed's tanh at 5 s).
+#[test]
+fn the_examples_series_follow_their_theories() {
+    let mut checked = 0;
+    for example in physics::EXAMPLES {
+        let Some(scene) = example.scene().ok() else {
+            continue;
+        };
+        for series in &scene.series {
+            let Some(text) = &series.theory else {
+                continue;
+            };
+            let theory = physics::series::Theory::parse(text, &scene, &series.vary).unwrap();
+            let sweep = series.sweep(&scene).unwrap();
+            for (values, measured) in numbers(&sweep, &scene, 2) {
+                let expected = theory.at(values[0]);
+                assert!(
+                    relative(measured[0], expected) < 1e-8,
+                    "{}: {values:?}: {} against {expected}",
+                    example.name,
+                    measured[0]
+                );
+            }
+            checked += 1;
+        }
+    }
+    assert!(checked >= 3, "{checked} series with a theory");
+}

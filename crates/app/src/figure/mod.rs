@@ -78,106 +78,156 @@ pub fn graph(
     if recording.is_empty() || series.is_empty() {
         return Err(crate::i18n::tr("notice-nothing-to-export"));
     }
-    match format {
-        Format::Png => {
-            let (w, h) = SIZE;
-            let mut pixels = vec![255_u8; (w * h * 3) as usize];
-            {
-                let root = BitMapBackend::with_buffer(&mut pixels, SIZE).into_drawing_area();
-                draw(&root, title, &x, &series)?;
-                root.present().map_err(|e| e.to_string())?;
-            }
-            encode_png(&pixels, SIZE)
-        }
-        Format::Svg => {
-            let mut text = String::new();
-            {
-                let root = SVGBackend::with_string(&mut text, SIZE).into_drawing_area();
-                draw(&root, title, &x, &series)?;
-                root.present().map_err(|e| e.to_string())?;
-            }
-            Ok(text.into_bytes())
-        }
-    }
-}
-
-/// The figure on `root`: the title, the plot with its axes, the legend to its right.
-fn draw<DB: DrawingBackend>(
-    root: &DrawingArea<DB, plotters::coord::Shift>,
-    title: &str,
-    x: &Quantity,
-    series: &[(Quantity, Vec<(f64, f64)>)],
-) -> Result<(), String> {
-    let fail = |e: &dyn std::fmt::Display| e.to_string();
-    root.fill(&WHITE).map_err(|e| fail(&e))?;
-    let root = root
-        .titled(title, ("sans-serif", 32))
-        .map_err(|e| fail(&e))?;
-    let (width, _) = root.dim_in_pixel();
-    let (plot, legend) = root.split_horizontally(width.saturating_sub(LEGEND_WIDTH));
-    let ((x0, x1), (y0, y1)) = extent(series);
     // One y axis: its label names the unit when every series shares it.
     let units: Vec<&str> = series.iter().map(|(q, _)| q.unit()).collect();
-    let y_label = match series {
+    let y_label = match &series[..] {
         [(only, _)] => crate::plots::label(only),
         _ if units.windows(2).all(|w| w[0] == w[1]) => format!("({})", units[0]),
         _ => String::new(),
     };
-    let mut chart = ChartBuilder::on(&plot)
-        .margin(20)
-        .x_label_area_size(60)
-        .y_label_area_size(100)
-        .build_cartesian_2d(x0..x1, y0..y1)
-        .map_err(|e| fail(&e))?;
-    chart
-        .configure_mesh()
-        .x_desc(crate::plots::label(x))
-        .y_desc(y_label)
-        .label_style(("sans-serif", 20))
-        .axis_desc_style(("sans-serif", 24))
-        .draw()
-        .map_err(|e| fail(&e))?;
-    for (k, (_, points)) in series.iter().enumerate() {
-        let colour = COLOURS[k % COLOURS.len()];
+    let curves: Vec<Curve> = series
+        .into_iter()
+        .map(|(q, points)| Curve {
+            label: crate::plots::label(&q),
+            points,
+            dots: false,
+        })
+        .collect();
+    let figure = Figure {
+        title,
+        x_label: crate::plots::label(&x),
+        y_label,
+        curves: &curves,
+    };
+    figure.encode(format)
+}
+
+/// A figure's content: labelled curves (lines, or dots for measured points) on one pair
+/// of axes.
+pub struct Figure<'a> {
+    pub title: &'a str,
+    pub x_label: String,
+    pub y_label: String,
+    pub curves: &'a [Curve],
+}
+
+/// One curve of a figure.
+pub struct Curve {
+    pub label: String,
+    pub points: Vec<(f64, f64)>,
+    /// Drawn as dots (measurements) rather than a line.
+    pub dots: bool,
+}
+
+impl Figure<'_> {
+    /// The figure as `format`'s bytes, [`SIZE`] pixels.
+    ///
+    /// # Errors
+    /// Drawing or encoding failed (in words).
+    pub fn encode(&self, format: Format) -> Result<Vec<u8>, String> {
+        register_font()?;
+        match format {
+            Format::Png => {
+                let (w, h) = SIZE;
+                let mut pixels = vec![255_u8; (w * h * 3) as usize];
+                {
+                    let root = BitMapBackend::with_buffer(&mut pixels, SIZE).into_drawing_area();
+                    self.draw(&root)?;
+                    root.present().map_err(|e| e.to_string())?;
+                }
+                encode_png(&pixels, SIZE)
+            }
+            Format::Svg => {
+                let mut text = String::new();
+                {
+                    let root = SVGBackend::with_string(&mut text, SIZE).into_drawing_area();
+                    self.draw(&root)?;
+                    root.present().map_err(|e| e.to_string())?;
+                }
+                Ok(text.into_bytes())
+            }
+        }
+    }
+
+    /// The figure on `root`: the title, the plot with its axes, the legend to its right.
+    fn draw<DB: DrawingBackend>(
+        &self,
+        root: &DrawingArea<DB, plotters::coord::Shift>,
+    ) -> Result<(), String> {
+        let fail = |e: &dyn std::fmt::Display| e.to_string();
+        root.fill(&WHITE).map_err(|e| fail(&e))?;
+        let root = root
+            .titled(self.title, ("sans-serif", 32))
+            .map_err(|e| fail(&e))?;
+        let (width, _) = root.dim_in_pixel();
+        let (plot, legend) = root.split_horizontally(width.saturating_sub(LEGEND_WIDTH));
+        let ((x0, x1), (y0, y1)) = extent(self.curves);
+        let mut chart = ChartBuilder::on(&plot)
+            .margin(20)
+            .x_label_area_size(60)
+            .y_label_area_size(100)
+            .build_cartesian_2d(x0..x1, y0..y1)
+            .map_err(|e| fail(&e))?;
         chart
-            .draw_series(LineSeries::new(
-                points.iter().copied(),
-                colour.stroke_width(3),
-            ))
+            .configure_mesh()
+            .x_desc(&self.x_label)
+            .y_desc(&self.y_label)
+            .label_style(("sans-serif", 20))
+            .axis_desc_style(("sans-serif", 24))
+            .draw()
             .map_err(|e| fail(&e))?;
+        for (k, curve) in self.curves.iter().enumerate() {
+            let colour = COLOURS[k % COLOURS.len()];
+            let points = curve.points.iter().copied();
+            if curve.dots {
+                chart
+                    .draw_series(points.map(|p| Circle::new(p, 6, colour.filled())))
+                    .map_err(|e| fail(&e))?;
+            } else {
+                chart
+                    .draw_series(LineSeries::new(points, colour.stroke_width(3)))
+                    .map_err(|e| fail(&e))?;
+            }
+        }
+        // The legend beside the plot: a mark of each colour and the curve's label.
+        for (k, curve) in self.curves.iter().enumerate() {
+            let colour = COLOURS[k % COLOURS.len()];
+            #[expect(
+                clippy::cast_possible_truncation,
+                clippy::cast_possible_wrap,
+                reason = "a few rows"
+            )]
+            let y = 40 + 36 * k as i32;
+            if curve.dots {
+                legend
+                    .draw(&Circle::new((30, y), 6, colour.filled()))
+                    .map_err(|e| fail(&e))?;
+            } else {
+                legend
+                    .draw(&PathElement::new(
+                        vec![(10, y), (50, y)],
+                        colour.stroke_width(4),
+                    ))
+                    .map_err(|e| fail(&e))?;
+            }
+            legend
+                .draw(&Text::new(
+                    curve.label.clone(),
+                    (60, y - 11),
+                    ("sans-serif", 22).into_font(),
+                ))
+                .map_err(|e| fail(&e))?;
+        }
+        Ok(())
     }
-    // The legend beside the plot: a stroke of each colour and the quantity with its unit.
-    for (k, (q, _)) in series.iter().enumerate() {
-        let colour = COLOURS[k % COLOURS.len()];
-        #[expect(
-            clippy::cast_possible_truncation,
-            clippy::cast_possible_wrap,
-            reason = "a few rows"
-        )]
-        let y = 40 + 36 * k as i32;
-        legend
-            .draw(&PathElement::new(
-                vec![(10, y), (50, y)],
-                colour.stroke_width(4),
-            ))
-            .map_err(|e| fail(&e))?;
-        legend
-            .draw(&Text::new(
-                crate::plots::label(q),
-                (60, y - 11),
-                ("sans-serif", 22).into_font(),
-            ))
-            .map_err(|e| fail(&e))?;
-    }
-    Ok(())
 }
 
 /// The range of the points across and up, widened by 5 % (and around a single value).
-fn extent(series: &[(Quantity, Vec<(f64, f64)>)]) -> ((f64, f64), (f64, f64)) {
+fn extent(curves: &[Curve]) -> ((f64, f64), (f64, f64)) {
     let mut x = (f64::INFINITY, f64::NEG_INFINITY);
     let mut y = (f64::INFINITY, f64::NEG_INFINITY);
-    for (_, points) in series {
-        for &(a, b) in points {
+    for curve in curves {
+        for &(a, b) in &curve.points {
             x = (x.0.min(a), x.1.max(a));
             y = (y.0.min(b), y.1.max(b));
         }

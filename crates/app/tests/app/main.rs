@@ -8,6 +8,7 @@
 
 mod common;
 mod editing;
+mod experiments;
 mod files;
 mod instruments;
 mod keyboard;

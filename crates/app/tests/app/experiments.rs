@@ -1,0 +1,74 @@
+//! The experiment series panel: an example opens with its series, Run runs it, and the
+//! results follow the law; a series is added for the selected particle and edited in
+//! place; its results export as the command line writes them.
+
+use egui_kittest::kittest::Queryable;
+use newtonlab_app::App;
+
+use crate::common::{example_scene, tall_harness};
+
+/// The range example: "Run the series" runs its 15 angles and each range is
+/// v₀² sin 2a / g to 1e-9 relative; the CSV is `sweep`'s.
+#[test]
+fn the_range_series_runs_and_follows_the_sine_law() {
+    let mut harness = tall_harness(App::new(example_scene("projectile-range")));
+    harness
+        .get_all_by_label("Run the series")
+        .next()
+        .expect("a run button")
+        .click();
+    harness.step();
+    let ctx = harness.ctx.clone();
+    harness.state_mut().experiments.finish(&ctx);
+    harness.step();
+    let results = harness.state().experiments.results[0]
+        .clone()
+        .expect("results");
+    assert_eq!(results.rows.len(), 15, "10° to 80° by 5°");
+    for row in &results.rows {
+        let a = row.values[0].to_radians();
+        let range = 900.0 * (2.0 * a).sin() / 9.81;
+        let measured = row.measured.as_ref().unwrap()[0].as_ref().unwrap();
+        assert!(
+            (measured - range).abs() < 1e-9 * range,
+            "{}°: {measured} against {range}",
+            row.values[0]
+        );
+    }
+    let csv = newtonlab_app::experiments::to_csv(&results);
+    assert!(csv.starts_with("Ball.velocity.angle,Ball.x at Ball.y crosses 0 down\n10,"));
+    assert_eq!(csv.lines().count(), 16);
+}
+
+/// "Add an experiment series" adds one for the selected particle; a field typed in it
+/// changes the scene's series (undoably), and a bad one is shown in red words.
+#[test]
+fn a_series_is_added_and_edited_in_place() {
+    let mut harness = tall_harness(App::new(example_scene("projectile")));
+    harness.get_by_label("Add an experiment series").click();
+    harness.run();
+    let series = &harness.state().document.scene().series;
+    assert_eq!(series.len(), 1);
+    assert_eq!(series[0].vary, "Ball.velocity.angle");
+    let field = harness.get_by_label("step");
+    field.focus();
+    harness.run();
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    harness.get_by_label("step").type_text("15");
+    harness.key_press(egui::Key::Enter);
+    harness.run();
+    assert_eq!(harness.state().document.scene().series[0].step, 15.0);
+    harness.get_by_label("vary").focus();
+    harness.run();
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    harness.get_by_label("vary").type_text("Ball.weight");
+    harness.key_press(egui::Key::Enter);
+    harness.run();
+    harness.get_by_label_contains("no number of that name");
+    harness.state_mut().undo();
+    harness.run();
+    assert_eq!(
+        harness.state().document.scene().series[0].vary,
+        "Ball.velocity.angle"
+    );
+}

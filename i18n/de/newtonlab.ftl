@@ -676,3 +676,5 @@ experiment-theory-curve = Theorie: { $law }
 edit-add-experiment = Versuchsreihe hinzufügen
 edit-change-experiment = Versuchsreihe ändern
 edit-remove-experiment = Versuchsreihe entfernen
+experiment-choose = wählen…
+experiment-choose-hint = Den variierten Wert unter denen des gewählten Teilchens (oder des ersten) und der Welt wählen

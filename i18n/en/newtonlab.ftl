@@ -677,3 +677,5 @@ experiment-theory-curve = theory: { $law }
 edit-add-experiment = add experiment series
 edit-change-experiment = change experiment series
 edit-remove-experiment = remove experiment series
+experiment-choose = choose…
+experiment-choose-hint = Pick the value to vary among the selected particle's (or the first's) and the world's

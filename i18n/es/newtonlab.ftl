@@ -676,3 +676,5 @@ experiment-theory-curve = teoría: { $law }
 edit-add-experiment = añadir serie de experimentos
 edit-change-experiment = cambiar serie de experimentos
 edit-remove-experiment = quitar serie de experimentos
+experiment-choose = elegir…
+experiment-choose-hint = Elegir el valor a variar entre los de la partícula seleccionada (o la primera) y los del mundo

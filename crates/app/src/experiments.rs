@@ -77,7 +77,7 @@ impl Experiments {
                 break; // one was removed this frame
             }
             ui.push_id(("experiment", i), |ui| {
-                if let Some(a) = self.one(ui, document, i) {
+                if let Some(a) = self.one(ui, document, i, selected) {
                     action = Some(a);
                 }
             });
@@ -224,7 +224,13 @@ impl Experiments {
         clippy::too_many_lines,
         reason = "one series' fields, run and plots, in order"
     )]
-    fn one(&mut self, ui: &mut Ui, document: &mut Document, i: usize) -> Option<Action> {
+    fn one(
+        &mut self,
+        ui: &mut Ui,
+        document: &mut Document,
+        i: usize,
+        selected: Option<&str>,
+    ) -> Option<Action> {
         let scene = document.scene();
         let series = scene.series[i].clone();
         let mut action = None;
@@ -323,6 +329,20 @@ impl Experiments {
                     edited = Some(next);
                 }
             });
+        // The values a series can vary, from the selection (or the first particle).
+        ui.menu_button(tr("experiment-choose"), |ui| {
+            for choice in choices(document.scene(), selected) {
+                if ui.button(&choice).clicked() {
+                    let mut next = edited.take().unwrap_or_else(|| series.clone());
+                    self.drafts.remove(&(i, "vary"));
+                    next.vary = choice;
+                    edited = Some(next);
+                    ui.close();
+                }
+            }
+        })
+        .response
+        .on_hover_text(tr("experiment-choose-hint"));
         if let Some(next) = edited {
             document.apply(Edit::ChangeExperiment, |scene| scene.series[i] = next);
         }
@@ -387,6 +407,29 @@ impl Experiments {
         });
         action
     }
+}
+
+/// Every number of the selected particle (the first, if none is selected) a series can
+/// vary, as `vary` names it, and the world's: its mass, radius, charge, drag, and each
+/// part of its position and velocity; the field's x and y and the restitution.
+fn choices(scene: &Scene, selected: Option<&str>) -> Vec<String> {
+    use physics::fields::{Kind, PARTICLE};
+    let name = selected.or_else(|| scene.particles.first().map(|p| p.name.as_str()));
+    let mut out = Vec::new();
+    if let Some(name) = name {
+        for field in PARTICLE {
+            match field.kind {
+                Kind::Number(_) => out.push(format!("{name}.{}", field.key)),
+                Kind::Vector => out.extend(
+                    ["x", "y", "magnitude", "angle"]
+                        .map(|part| format!("{name}.{}.{part}", field.key)),
+                ),
+                _ => {}
+            }
+        }
+    }
+    out.extend(["world.gravity.y", "world.restitution"].map(str::to_owned));
+    out
 }
 
 /// The measures against the varied value (dots), the law (a line over the range) and the

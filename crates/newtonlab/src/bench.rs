@@ -40,6 +40,9 @@ enum BenchScene {
     /// The app's time machine: the pit recorded for `--seconds` simulated seconds as the
     /// app records a run, then gone back to moments spread over it.
     Scrub,
+    /// An experiment series: a 20 × 20 grid (launch angle × quadratic drag) of a thrown
+    /// ball, each run measured for its range, on one thread and on `--threads`.
+    Sweep,
 }
 
 #[derive(Debug, clap::Args)]
@@ -87,11 +90,14 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
     if matches!(args.scene, BenchScene::Scrub) {
         return scrub(args);
     }
+    if matches!(args.scene, BenchScene::Sweep) {
+        return sweep(args);
+    }
     let scene = match args.scene {
         BenchScene::Cloud => {
             physics::generated::charged_cloud(args.particles).with_integrator(args.integrator, 1e-4)
         }
-        BenchScene::Pit | BenchScene::Scrub => {
+        BenchScene::Pit | BenchScene::Scrub | BenchScene::Sweep => {
             physics::generated::ball_pit(args.particles).with_integrator(args.integrator, 1e-3)
         }
         BenchScene::Mixed => {
@@ -120,7 +126,9 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
     // crashes and settles, so it is measured over a fixed simulated interval.
     let running = |simulation: &Simulation| match args.scene {
         BenchScene::Cloud | BenchScene::Cluster => start.elapsed() < budget,
-        BenchScene::Pit | BenchScene::Mixed | BenchScene::Scrub => simulation.time() < args.seconds,
+        BenchScene::Pit | BenchScene::Mixed | BenchScene::Scrub | BenchScene::Sweep => {
+            simulation.time() < args.seconds
+        }
     };
     while running(&simulation) {
         simulation.step().map_err(fail)?;
@@ -151,7 +159,7 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
             integrator,
             tree_error,
         ),
-        BenchScene::Pit | BenchScene::Mixed | BenchScene::Scrub => {
+        BenchScene::Pit | BenchScene::Mixed | BenchScene::Scrub | BenchScene::Sweep => {
             let simulated = simulation.time();
             let threads = simulation.threads();
             let what = if matches!(args.scene, BenchScene::Mixed) {
@@ -225,6 +233,62 @@ fn scrub(args: &BenchArgs) -> Result<(), Failure> {
         );
     }
     Ok(())
+}
+
+/// A 20 × 20 series of a thrown ball (launch angle 10°–86°, quadratic drag 0–0.0019 kg/m,
+/// each run to its landing) on one thread, then on `--threads` (every core by default):
+/// the wall time of each, their ratio, and whether both gave the same bits.
+fn sweep(args: &BenchArgs) -> Result<(), Failure> {
+    use physics::series::{Measure, Sweep, Vary};
+    use physics::{Particle, Scene, Vector, World};
+    let scene = Scene::new()
+        .with_world(World::gravity_only())
+        .with_integrator(args.integrator, 1e-3)
+        .with_particle(
+            Particle::new("Ball", 0.145)
+                .radius(0.0366)
+                .velocity(Vector::Polar {
+                    magnitude: 30.0,
+                    angle: 45.0,
+                }),
+        );
+    let input = |e: String| Failure::Input(e);
+    let sweep = Sweep {
+        varies: vec![
+            Vary::parse("Ball.velocity.angle=10:86:4", &scene).map_err(input)?,
+            Vary::parse("Ball.quadratic_drag=0:0.0019:0.0001", &scene).map_err(input)?,
+        ],
+        until: 6.5,
+        measures: vec![Measure::parse("Ball.x at Ball.y crosses 0 down").map_err(input)?],
+    };
+    let threads = args.threads.unwrap_or_else(|| {
+        std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
+    });
+    let timed = |threads: usize| {
+        let clock = Instant::now();
+        let rows = sweep.run(&scene, threads, &|| {});
+        (clock.elapsed().as_secs_f64(), rows)
+    };
+    let (one, rows_one) = timed(1);
+    let (many, rows_many) = timed(threads);
+    #[expect(clippy::print_stdout, reason = "the command's report")]
+    {
+        println!("sweep of {} runs (20 angles × 20 drags)", rows_one.len());
+        println!("  {one:.3} s on 1 thread");
+        println!("  {many:.3} s on {threads} threads");
+        println!("  {:.2}x faster on {threads} threads", one / many);
+        println!(
+            "  the same results on both: {}",
+            if rows_one == rows_many { "yes" } else { "NO" }
+        );
+    }
+    if rows_one == rows_many {
+        Ok(())
+    } else {
+        Err(Failure::Simulation(
+            "the series gave different results on different thread counts".to_owned(),
+        ))
+    }
 }
 
 /// The most bodies whose tree forces `bench` checks against the direct sum.

@@ -173,6 +173,12 @@ pub fn ball_pit(n: usize) -> Scene {
         max: Vector::cartesian(width / 2.0, height),
     });
     let mut scene = Scene::new().with_world(world);
+    // Framed on the box, with a margin.
+    scene.view = Some(crate::scene::View {
+        center: Some(glam::DVec2::new(0.0, height / 2.0)),
+        width: Some(1.25 * width.max(height)),
+        ..crate::scene::View::default()
+    });
     scene.name = Some(format!("Ball pit of {n}"));
     scene.description = Some(format!(
         "{n} balls of 0.1 m dropped into a box; impacts lose energy (restitution 0.5) until the pile rests."

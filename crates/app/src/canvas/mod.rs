@@ -230,19 +230,41 @@ impl Canvas {
     /// Frames a scene that was just opened as its file says (`[view]`), or fits it.
     pub fn open(&mut self, scene: &Scene) {
         self.follow = scene.view.as_ref().and_then(|v| v.follow.clone());
+        // The toggles as the scene was saved; those it does not say, as they were.
+        if let Some(view) = &scene.view {
+            let o = &mut self.overlays;
+            for (saved, toggle) in [
+                (view.trails, &mut o.trails),
+                (view.velocity, &mut o.velocity),
+                (view.acceleration, &mut o.acceleration),
+                (view.force, &mut o.force),
+                (view.names, &mut o.names),
+            ] {
+                if let Some(on) = saved {
+                    *toggle = on;
+                }
+            }
+        }
         self.framing = Some(scene.view.clone().map_or(Framing::Fit, Framing::Scene));
     }
 
-    /// The camera as a scene's `[view]`, to save with it: the centre on a step of a
-    /// hundredth of the grid, the width to four digits, so the file reads cleanly.
+    /// The camera and the toggles as a scene's `[view]`, to save with it: the centre on a
+    /// step of a hundredth of the grid, the width to four digits, so the file reads
+    /// cleanly.
     pub fn scene_view(&self) -> physics::View {
         let step = nice_length(80.0 / self.view.pixels_per_metre) / 100.0;
         let width = f64::from(self.rect.width()) / self.view.pixels_per_metre;
         let digits = 10_f64.powf(width.log10().floor() - 3.0);
+        let o = &self.overlays;
         physics::View {
             center: Some((self.view.center / step).round() * step),
             width: Some((width / digits).round() * digits),
             follow: self.follow.clone(),
+            trails: Some(o.trails),
+            velocity: Some(o.velocity),
+            acceleration: Some(o.acceleration),
+            force: Some(o.force),
+            names: Some(o.names),
         }
     }
 

@@ -41,7 +41,8 @@ fn the_range_series_runs_and_follows_the_sine_law() {
 }
 
 /// "Add an experiment series" adds one for the selected particle; a field typed in it
-/// changes the scene's series (undoably), and a bad one is shown in red words.
+/// changes the scene's series (undoably), a bad one is shown in red words, and "choose…"
+/// offers the particle's numbers to vary.
 #[test]
 fn a_series_is_added_and_edited_in_place() {
     let mut harness = tall_harness(App::new(example_scene("projectile")));
@@ -70,5 +71,14 @@ fn a_series_is_added_and_edited_in_place() {
     assert_eq!(
         harness.state().document.scene().series[0].vary,
         "Ball.velocity.angle"
+    );
+    harness.get_by_label("choose…").click();
+    harness.run();
+    harness.get_by_label("Ball.quadratic_drag").click();
+    harness.run();
+    assert_eq!(
+        harness.state().document.scene().series[0].vary,
+        "Ball.quadratic_drag",
+        "chosen from the particle's numbers"
     );
 }

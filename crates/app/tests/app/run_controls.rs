@@ -109,6 +109,7 @@ fn the_camera_follows_a_particle() {
         center: Some(DVec2::ZERO),
         width: Some(10.0),
         follow: Some(Follow::Particle("ball".to_owned())),
+        ..View::default()
     });
     let mut harness = harness(App::new(scene));
     let width = f64::from(harness.state().canvas.rect.width());
@@ -146,4 +147,38 @@ fn fit_frames_the_recent_path() {
         let at = app.canvas.view.to_screen(app.canvas.rect, point);
         assert!(app.canvas.rect.contains(at), "{point} is in view");
     }
+}
+
+/// The canvas's toggles are part of the scene's `[view]`: a scene saved with trails on
+/// and velocity arrows off opens so (the others as the app's defaults), and the view
+/// saved writes every toggle as it is, through the file and back.
+#[test]
+fn the_canvas_toggles_open_and_save_with_the_scene() {
+    let mut scene = one_ball();
+    scene.view = Some(View {
+        trails: Some(true),
+        velocity: Some(false),
+        ..View::default()
+    });
+    let mut harness = harness(App::new(scene));
+    harness.run();
+    let overlays = harness.state().canvas.overlays;
+    assert!(overlays.trails && !overlays.velocity, "as saved");
+    assert!(overlays.names && !overlays.force, "the defaults");
+    harness.state_mut().canvas.overlays.force = true;
+    let view = harness.state().canvas.scene_view();
+    assert_eq!(
+        (
+            view.trails,
+            view.velocity,
+            view.acceleration,
+            view.force,
+            view.names
+        ),
+        (Some(true), Some(false), Some(false), Some(true), Some(true))
+    );
+    let mut saved = harness.state().document.scene().clone();
+    saved.view = Some(view.clone());
+    let again = physics::Scene::from_toml(&saved.to_toml()).expect("reads back");
+    assert_eq!(again.view, Some(view));
 }

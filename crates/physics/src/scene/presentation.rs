@@ -93,6 +93,17 @@ pub struct View {
     pub width: Option<f64>,
     /// A particle to follow, or every particle.
     pub follow: Option<Follow>,
+    /// The canvas's toggles as the scene was saved (each `None`: the app's default):
+    /// trails, velocity, acceleration and force arrows, names.
+    pub trails: Option<bool>,
+    /// Velocity arrows.
+    pub velocity: Option<bool>,
+    /// Acceleration arrows.
+    pub acceleration: Option<bool>,
+    /// Force arrows.
+    pub force: Option<bool>,
+    /// Particles' names.
+    pub names: Option<bool>,
 }
 
 /// What the camera keeps in view while the scene plays.

@@ -60,7 +60,16 @@ pub(super) const ROOT_KEYS: &[&str] = &[
 pub(super) const GRAPH_KEYS: &[&str] = &["title", "x", "y"];
 pub(super) const SERIES_KEYS: &[&str] =
     &["vary", "from", "to", "step", "until", "measure", "theory"];
-pub(super) const VIEW_KEYS: &[&str] = &["center", "width", "follow"];
+pub(super) const VIEW_KEYS: &[&str] = &[
+    "center",
+    "width",
+    "follow",
+    "trails",
+    "velocity",
+    "acceleration",
+    "force",
+    "names",
+];
 
 impl<'t> Reader<'t> {
     pub(super) fn new(text: &'t str) -> Self {
@@ -482,6 +491,11 @@ impl<'t> Reader<'t> {
         view.follow = self
             .field(&mut t, "follow", read_text)
             .map(|text| Follow::parse(&text));
+        view.trails = self.field(&mut t, "trails", read_bool);
+        view.velocity = self.field(&mut t, "velocity", read_bool);
+        view.acceleration = self.field(&mut t, "acceleration", read_bool);
+        view.force = self.field(&mut t, "force", read_bool);
+        view.names = self.field(&mut t, "names", read_bool);
         self.close(&t, VIEW_KEYS);
         view
     }

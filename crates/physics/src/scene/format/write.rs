@@ -158,6 +158,17 @@ impl Scene {
             if let Some(follow) = &view.follow {
                 entries.push(("follow", Out::Text(follow.as_str().to_owned())));
             }
+            for (key, toggle) in [
+                ("trails", view.trails),
+                ("velocity", view.velocity),
+                ("acceleration", view.acceleration),
+                ("force", view.force),
+                ("names", view.names),
+            ] {
+                if let Some(on) = toggle {
+                    entries.push((key, Out::Bool(on)));
+                }
+            }
             sections.push(OutSection {
                 header: Header::Table("view"),
                 entries,

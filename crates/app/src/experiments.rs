@@ -31,6 +31,8 @@ pub struct Experiments {
     running: Option<Running>,
     /// Each series' fields as being typed: (series index, key) → text.
     drafts: std::collections::HashMap<(usize, &'static str), String>,
+    /// The series whose results came last: the canvas draws its runs' paths.
+    last: Option<usize>,
 }
 
 /// A series' last results.
@@ -107,6 +109,21 @@ impl Experiments {
         action
     }
 
+    /// The paths of every run of the series that finished last, each particle's a
+    /// polyline, for the canvas to draw faintly over the scene.
+    pub fn paths(&self) -> Vec<&[physics::DVec2]> {
+        self.last
+            .and_then(|i| self.results.get(i)?.as_ref())
+            .map(|results| {
+                results
+                    .rows
+                    .iter()
+                    .flat_map(|row| row.paths.iter().map(Vec::as_slice))
+                    .collect()
+            })
+            .unwrap_or_default()
+    }
+
     /// Whether a series is being run.
     pub fn is_running(&self) -> bool {
         self.running.is_some()
@@ -131,8 +148,9 @@ impl Experiments {
             .get(index)
             .cloned()
             .ok_or_else(|| tr("experiment-none"))?;
-        let sweep = series.sweep(scene)?;
+        let mut sweep = series.sweep(scene)?;
         sweep.check(scene)?;
+        sweep.trace = true;
         let points = sweep.points();
         let done = Arc::new(AtomicUsize::new(0));
         #[cfg(not(target_arch = "wasm32"))]
@@ -209,6 +227,7 @@ impl Experiments {
                 rows,
                 seconds,
             });
+            self.last = Some(index);
         }
     }
 
@@ -251,6 +270,7 @@ impl Experiments {
             });
             self.results.remove(i);
             self.drafts.clear();
+            self.last = None;
             return None;
         }
         let problems: Vec<String> = scene
@@ -329,20 +349,36 @@ impl Experiments {
                     edited = Some(next);
                 }
             });
-        // The values a series can vary, from the selection (or the first particle).
-        ui.menu_button(tr("experiment-choose"), |ui| {
-            for choice in choices(document.scene(), selected) {
-                if ui.button(&choice).clicked() {
-                    let mut next = edited.take().unwrap_or_else(|| series.clone());
-                    self.drafts.remove(&(i, "vary"));
-                    next.vary = choice;
-                    edited = Some(next);
-                    ui.close();
+        ui.horizontal(|ui| {
+            // Measures to add, for the selection (or the first particle).
+            ui.menu_button(tr("experiment-add-measure"), |ui| {
+                for choice in measures(document.scene(), selected, series.until) {
+                    if ui.button(&choice).clicked() {
+                        let mut next = edited.take().unwrap_or_else(|| series.clone());
+                        self.drafts.remove(&(i, "measure"));
+                        next.measure.push(choice);
+                        edited = Some(next);
+                        ui.close();
+                    }
                 }
-            }
-        })
-        .response
-        .on_hover_text(tr("experiment-choose-hint"));
+            })
+            .response
+            .on_hover_text(tr("experiment-add-measure-hint"));
+            // The values a series can vary, from the selection (or the first particle).
+            ui.menu_button(tr("experiment-choose"), |ui| {
+                for choice in choices(document.scene(), selected) {
+                    if ui.button(&choice).clicked() {
+                        let mut next = edited.take().unwrap_or_else(|| series.clone());
+                        self.drafts.remove(&(i, "vary"));
+                        next.vary = choice;
+                        edited = Some(next);
+                        ui.close();
+                    }
+                }
+            })
+            .response
+            .on_hover_text(tr("experiment-choose-hint"));
+        });
         if let Some(next) = edited {
             document.apply(Edit::ChangeExperiment, |scene| scene.series[i] = next);
         }
@@ -381,6 +417,15 @@ impl Experiments {
             }
         });
         let Some(Some(results)) = self.results.get(i) else {
+            // Before a run, the law alone, so that an example opens with its curve.
+            if series.theory.is_some() {
+                let empty = Results {
+                    series,
+                    rows: Vec::new(),
+                    seconds: 0.0,
+                };
+                plot(ui, document.scene(), &empty);
+            }
             return action;
         };
         plot(ui, document.scene(), results);
@@ -432,6 +477,33 @@ fn choices(scene: &Scene, selected: Option<&str>) -> Vec<String> {
     out
 }
 
+/// Measures a series often wants, for the selected particle (the first, if none is
+/// selected) and each rod or string: where and when it comes down, its extremes, its
+/// period, its speed at the end, a swing's period from the rod's passes.
+fn measures(scene: &Scene, selected: Option<&str>, until: f64) -> Vec<String> {
+    let name = selected.or_else(|| scene.particles.first().map(|p| p.name.as_str()));
+    let mut out = Vec::new();
+    if let Some(n) = name {
+        out.extend([
+            format!("{n}.x at {n}.y crosses 0 down"),
+            format!("t at {n}.y crosses 0 down"),
+            format!("max {n}.y"),
+            format!("min {n}.y"),
+            format!("max {n}.speed"),
+            format!("period {n}.x"),
+            format!("{n}.speed at {until}"),
+            format!("t at {n}.vx crosses 0 #2"),
+        ]);
+    }
+    for tie in &scene.ties {
+        out.push(format!(
+            "t at {} crosses 0 up #2",
+            physics::Quantity::Link(tie.name.clone(), physics::LinkOf::Angle)
+        ));
+    }
+    out
+}
+
 /// The measures against the varied value (dots), the law (a line over the range) and the
 /// residuals of the first measure from it.
 fn plot(ui: &mut Ui, scene: &Scene, results: &Results) {
@@ -467,6 +539,7 @@ fn plot(ui: &mut Ui, scene: &Scene, results: &Results) {
         }
     });
     if let (Some((_, _)), Some((name, points))) = (&theory, columns.first())
+        && !points.is_empty()
         && let Ok(law) = Theory::parse(
             results.series.theory.as_deref().unwrap_or_default(),
             scene,

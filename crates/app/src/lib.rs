@@ -670,6 +670,34 @@ impl App {
         }
     }
 
+    /// The central panel: the canvas, with a series' paths while editing.
+    fn central(&mut self, ui: &mut Ui) {
+        egui::CentralPanel::default().show(ui, |ui| {
+            // A series' runs, drawn faintly while editing: how the varied value fans out.
+            let paths = if self.runner.is_editing() {
+                self.experiments.paths()
+            } else {
+                Vec::new()
+            };
+            self.canvas.ui(
+                ui,
+                (&mut self.document, &paths),
+                &self.runner,
+                &mut self.selection,
+            );
+            if let Some(value) = self.canvas.copied.take() {
+                self.announcer.text = tr_with("reading-copied", &[("value", Arg::Text(&value))]);
+            }
+            // On the desktop the canvas is printed from the shapes it was just drawn
+            // with, at twice the resolution (`figure::canvas`); the web takes a screenshot.
+            #[cfg(not(target_arch = "wasm32"))]
+            if self.picture_asked == Some(picture::Subject::Canvas) {
+                self.picture_asked = None;
+                self.print_canvas(ui);
+            }
+        });
+    }
+
     /// The whole app, one frame.
     pub fn ui(&mut self, ui: &mut Ui) {
         // The run back from the steps taken while the last frame was drawn.
@@ -750,20 +778,7 @@ impl App {
                     });
                 });
         }
-        egui::CentralPanel::default().show(ui, |ui| {
-            self.canvas
-                .ui(ui, &mut self.document, &self.runner, &mut self.selection);
-            if let Some(value) = self.canvas.copied.take() {
-                self.announcer.text = tr_with("reading-copied", &[("value", Arg::Text(&value))]);
-            }
-            // On the desktop the canvas is printed from the shapes it was just drawn
-            // with, at twice the resolution (`figure::canvas`); the web takes a screenshot.
-            #[cfg(not(target_arch = "wasm32"))]
-            if self.picture_asked == Some(picture::Subject::Canvas) {
-                self.picture_asked = None;
-                self.print_canvas(ui);
-            }
-        });
+        self.central(ui);
 
         self.file_dialogs(ui);
         for action in actions {

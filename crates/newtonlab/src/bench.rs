@@ -260,6 +260,7 @@ fn sweep(args: &BenchArgs) -> Result<(), Failure> {
         ],
         until: 6.5,
         measures: vec![Measure::parse("Ball.x at Ball.y crosses 0 down").map_err(input)?],
+        trace: false,
     };
     let threads = args.threads.unwrap_or_else(|| {
         std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)

@@ -72,6 +72,7 @@ pub(crate) fn sweep(args: &SweepArgs) -> Result<(), Failure> {
         varies,
         until: args.until,
         measures,
+        trace: false,
     };
     sweep.check(&scene).map_err(Failure::Input)?;
     let threads = args.threads.unwrap_or_else(|| {

@@ -350,17 +350,51 @@ pub fn measure(
     until: f64,
     measures: &[Measure],
 ) -> Result<Vec<Result<f64, String>>, String> {
+    measure_tracing(scene, until, measures, None).map(|(measured, _)| measured)
+}
+
+/// Each measure's number, or why there is none.
+pub type Measured = Vec<Result<f64, String>>;
+
+/// Samples of a path a traced run keeps at most.
+const MOST_PATH_SAMPLES: usize = 1000;
+
+/// [`measure`], and with `trace` also each particle's path: its positions at the start
+/// and after each step at least `until / 1000` s after the last kept (at most a thousand
+/// a particle), as polylines in the scene's order of particles.
+///
+/// # Errors
+/// As [`measure`].
+pub fn measure_tracing(
+    scene: &Scene,
+    until: f64,
+    measures: &[Measure],
+    trace: Option<()>,
+) -> Result<(Measured, Vec<Vec<glam::DVec2>>), String> {
     let mut simulation = Simulation::new(scene).map_err(|e| e.to_string())?;
     let mut runs = Measuring::new(measures, &simulation, until)?;
     let start = simulation.keyframe();
     runs.begin(&start);
+    let spacing = (until - start.time()) / MOST_PATH_SAMPLES as f64;
+    let mut paths: Vec<Vec<glam::DVec2>> = trace
+        .map(|()| start.positions().iter().map(|&p| vec![p]).collect())
+        .unwrap_or_default();
+    let mut kept = start.time();
     simulation
         .step_to_observed(
             until,
-            Some(&mut |before: &Simulation, after: &Simulation| runs.after_step(before, after)),
+            Some(&mut |before: &Simulation, after: &Simulation| {
+                if trace.is_some() && after.time() - kept >= spacing {
+                    kept = after.time();
+                    for (path, &p) in paths.iter_mut().zip(after.positions()) {
+                        path.push(p);
+                    }
+                }
+                runs.after_step(before, after)
+            }),
         )
         .map_err(|e| e.to_string())?;
-    Ok(runs.finish(&simulation))
+    Ok((runs.finish(&simulation), paths))
 }
 
 /// The state of each measure through a run.
@@ -560,6 +594,8 @@ pub struct Sweep {
     pub until: f64,
     /// What each run is measured for.
     pub measures: Vec<Measure>,
+    /// Whether each run keeps its particles' paths (the app draws them overlaid).
+    pub trace: bool,
 }
 
 /// One run of a series: the settings' values, and what was measured (or why the run
@@ -570,6 +606,8 @@ pub struct Row {
     pub values: Vec<f64>,
     /// Each measure's number or why there is none; or why the run failed.
     pub measured: Result<Vec<Result<f64, String>>, String>,
+    /// Each particle's path, when the series traces them ([`Sweep::trace`]; else empty).
+    pub paths: Vec<Vec<glam::DVec2>>,
 }
 
 impl Sweep {
@@ -589,9 +627,15 @@ impl Sweep {
         for (vary, &value) in self.varies.iter().zip(values) {
             vary.setting.set(&mut varied, value);
         }
+        let trace = self.trace.then_some(());
+        let (measured, paths) = match measure_tracing(&varied, self.until, &self.measures, trace) {
+            Ok((measured, paths)) => (Ok(measured), paths),
+            Err(why) => (Err(why), Vec::new()),
+        };
         Row {
             values: values.to_vec(),
-            measured: measure(&varied, self.until, &self.measures),
+            measured,
+            paths,
         }
     }
 

@@ -36,6 +36,7 @@ fn sweep(scene: &Scene, vary: &[&str], until: f64, measures: &[&str]) -> Sweep {
             .iter()
             .map(|m| Measure::parse(m).expect("a measure"))
             .collect(),
+        trace: false,
     }
 }
 

@@ -98,6 +98,15 @@ impl Canvas {
         );
     }
 
+    /// Paths drawn faintly under the scene (an experiment series' runs).
+    pub(super) fn draw_paths(&self, painter: &egui::Painter, rect: Rect, paths: &[&[DVec2]]) {
+        let faint = self.palette.ink.gamma_multiply(0.3);
+        for path in paths {
+            let points: Vec<Pos2> = path.iter().map(|&p| self.view.to_screen(rect, p)).collect();
+            painter.add(egui::Shape::line(points, Stroke::new(1.0, faint)));
+        }
+    }
+
     #[expect(
         clippy::too_many_lines,
         reason = "one pass over every kind of object, in drawing order"

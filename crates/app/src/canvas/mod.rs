@@ -307,7 +307,7 @@ impl Canvas {
     pub fn ui(
         &mut self,
         ui: &mut Ui,
-        document: &mut Document,
+        (document, paths): (&mut Document, &[&[DVec2]]),
         runner: &Runner,
         selection: &mut Option<Selection>,
     ) {
@@ -342,6 +342,7 @@ impl Canvas {
 
         painter.rect_filled(rect, 0.0, self.palette.background);
         self.draw_grid(&painter, rect);
+        self.draw_paths(&painter, rect, paths);
         let hovered = response
             .hover_pos()
             .and_then(|p| self.hit(rect, document.scene(), &frame, p));

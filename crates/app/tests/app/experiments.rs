@@ -8,7 +8,8 @@ use newtonlab_app::App;
 use crate::common::{example_scene, tall_harness};
 
 /// The range example: "Run the series" runs its 15 angles and each range is
-/// v₀² sin 2a / g to 1e-9 relative; the CSV is `sweep`'s.
+/// v₀² sin 2a / g to 1e-9 relative; every run's paths are kept for the canvas; the CSV
+/// is `sweep`'s.
 #[test]
 fn the_range_series_runs_and_follows_the_sine_law() {
     let mut harness = tall_harness(App::new(example_scene("projectile-range")));
@@ -35,14 +36,22 @@ fn the_range_series_runs_and_follows_the_sine_law() {
             row.values[0]
         );
     }
+    // Each run's paths, for the canvas to draw over the scene: both balls, each run.
+    let paths = harness.state().experiments.paths();
+    assert_eq!(paths.len(), 30, "2 balls × 15 runs");
+    let landing = paths[0].iter().rev().find(|p| p.y.abs() < 0.3).copied();
+    assert!(
+        landing.is_some_and(|p| p.x > 0.0),
+        "the 10° ball's path comes down ahead"
+    );
     let csv = newtonlab_app::experiments::to_csv(&results);
     assert!(csv.starts_with("Ball.velocity.angle,Ball.x at Ball.y crosses 0 down\n10,"));
     assert_eq!(csv.lines().count(), 16);
 }
 
 /// "Add an experiment series" adds one for the selected particle; a field typed in it
-/// changes the scene's series (undoably), a bad one is shown in red words, and "choose…"
-/// offers the particle's numbers to vary.
+/// changes the scene's series (undoably), a bad one is shown in red words, "choose…"
+/// offers the particle's numbers to vary and "add a measure…" measures of it.
 #[test]
 fn a_series_is_added_and_edited_in_place() {
     let mut harness = tall_harness(App::new(example_scene("projectile")));
@@ -80,5 +89,14 @@ fn a_series_is_added_and_edited_in_place() {
         harness.state().document.scene().series[0].vary,
         "Ball.quadratic_drag",
         "chosen from the particle's numbers"
+    );
+    harness.get_by_label("add a measure…").click();
+    harness.run();
+    harness.get_by_label("t at Ball.y crosses 0 down").click();
+    harness.run();
+    assert_eq!(
+        harness.state().document.scene().series[0].measure,
+        ["max Ball.y", "t at Ball.y crosses 0 down"],
+        "added from the menu"
     );
 }

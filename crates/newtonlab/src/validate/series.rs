@@ -38,6 +38,7 @@ fn sweep(scene: &Scene, vary: &str, until: f64, measures: &[&str]) -> Result<Swe
             .iter()
             .map(|m| Measure::parse(m).map_err(Failure::Input))
             .collect::<Result<_, _>>()?,
+        trace: false,
     })
 }
 

@@ -80,6 +80,7 @@ impl Series {
                 .iter()
                 .map(|m| crate::series::Measure::parse(m))
                 .collect::<Result<_, _>>()?,
+            trace: false,
         })
     }
 }

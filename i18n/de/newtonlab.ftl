@@ -680,3 +680,6 @@ experiment-choose = wählen…
 experiment-choose-hint = Den variierten Wert unter denen des gewählten Teilchens (oder des ersten) und der Welt wählen
 experiment-add-measure = Messung hinzufügen…
 experiment-add-measure-hint = Eine oft gebrauchte Messung hinzufügen, für das gewählte Teilchen (oder das erste) und jede Stange oder jeden Faden; im Feld anpassen
+scene-clock-too-coarse = der Zeitschritt { $step } s ist zu fein für eine Uhr bei { $start } s: ein Zeitpunkt dort wird um mehr als 1e-4 eines Schritts gerundet (den Zeitschritt mindestens ein Billionstel der Startzeit wählen oder näher bei 0 beginnen)
+scene-same-point = beginnt am selben Punkt wie Teilchen „{ $other }“, wo die Kraft zwischen ihnen unendlich ist: eines verschieben oder [world] eine Glättung (softening) geben
+cli-every-too-fine = --every { $every } ist zu fein für Zeitpunkte bis { $until } s: die Zeilenzeiten k × every fielen zusammen (ein größeres --every wählen)

@@ -7,6 +7,9 @@ use physics::Simulation;
 
 use crate::{Failure, scene_source};
 
+/// The largest index k of a row's instant k·DT: 2⁵², below which consecutive products
+/// are distinct f64s.
+const MAX_GRID_INDEX: f64 = 4_503_599_627_370_496.0;
 /// The most rows one run may write: beyond this a typo in --every is likelier than intent.
 const MAX_ROWS: f64 = 1e8;
 /// The most time steps one run may take: 10⁹ steps of even the lightest scene take about
@@ -61,44 +64,8 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
     let events = events(args)?;
     let every = every(args, &events)?;
     let scene = scene_source::load(&args.scene)?;
+    check_extent(args, every, &scene)?;
     let start = scene.simulation.start_time;
-    if args.until < start {
-        let (until, start) = (args.until.to_string(), start.to_string());
-        let id = if scene.simulation.start_time == 0.0 {
-            "cli-until-negative"
-        } else {
-            "cli-until-before-start"
-        };
-        return Err(Failure::Input(say(
-            id,
-            &[("until", &until), ("start", &start)],
-        )));
-    }
-    let span = args.until - start;
-    if let Some(every) = every
-        && span / every > MAX_ROWS
-    {
-        return Err(Failure::Input(say(
-            "cli-too-many-rows",
-            &[
-                ("until", &args.until.to_string()),
-                ("every", &every.to_string()),
-                ("rows", &MAX_ROWS.to_string()),
-            ],
-        )));
-    }
-    let steps = span / scene.simulation.time_step;
-    if steps > MAX_STEPS {
-        return Err(Failure::Input(say(
-            "cli-too-many-steps",
-            &[
-                ("until", &args.until.to_string()),
-                ("step", &format!("{:e}", scene.simulation.time_step)),
-                ("steps", &format!("{steps:.1e}")),
-                ("most", &format!("{MAX_STEPS:e}")),
-            ],
-        )));
-    }
     let mut simulation = Simulation::new(&scene).map_err(|e| Failure::Input(e.to_string()))?;
     if args.ledger {
         simulation.keep_ledger();
@@ -150,6 +117,63 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         save_state(&simulation, &scene, path)?;
     }
     outcome
+}
+
+/// Whether the run asked for stays within what it can do: it ends after it starts, its
+/// rows' instants are distinct, and neither its rows nor its steps are beyond reason.
+fn check_extent(args: &RunArgs, every: Option<f64>, scene: &physics::Scene) -> Result<(), Failure> {
+    let start = scene.simulation.start_time;
+    if args.until < start {
+        let (until, start) = (args.until.to_string(), start.to_string());
+        let id = if scene.simulation.start_time == 0.0 {
+            "cli-until-negative"
+        } else {
+            "cli-until-before-start"
+        };
+        return Err(Failure::Input(say(
+            id,
+            &[("until", &until), ("start", &start)],
+        )));
+    }
+    let span = args.until - start;
+    // Rows at k·DT: k must stay an integer an f64 counts exactly, or the grid's instants
+    // run together (and the rows' search for them would not end).
+    if let Some(every) = every
+        && start.abs().max(args.until.abs()) / every > MAX_GRID_INDEX
+    {
+        return Err(Failure::Input(say(
+            "cli-every-too-fine",
+            &[
+                ("every", &every.to_string()),
+                ("until", &args.until.to_string()),
+            ],
+        )));
+    }
+    if let Some(every) = every
+        && span / every > MAX_ROWS
+    {
+        return Err(Failure::Input(say(
+            "cli-too-many-rows",
+            &[
+                ("until", &args.until.to_string()),
+                ("every", &every.to_string()),
+                ("rows", &MAX_ROWS.to_string()),
+            ],
+        )));
+    }
+    let steps = span / scene.simulation.time_step;
+    if steps > MAX_STEPS {
+        return Err(Failure::Input(say(
+            "cli-too-many-steps",
+            &[
+                ("until", &args.until.to_string()),
+                ("step", &format!("{:e}", scene.simulation.time_step)),
+                ("steps", &format!("{steps:.1e}")),
+                ("most", &format!("{MAX_STEPS:e}")),
+            ],
+        )));
+    }
+    Ok(())
 }
 
 /// `--events`: each event as typed (trimmed) and as read.

@@ -40,7 +40,38 @@ impl SurfaceContact {
         } else {
             let tangent = self.normal.perp();
             let pull = a.dot(tangent);
-            *a -= tangent * pull.clamp(-limit, limit);
+            // Not `clamp`, which panics on a NaN bound: a non-finite force here is the
+            // run's failure to report (the step's finiteness check), not a crash.
+            *a -= tangent * pull.max(-limit).min(limit);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Static friction holds a pull within μN and caps one beyond it; a non-finite
+    /// acceleration (coincident bodies' infinite pull) passes through as non-finite,
+    /// without a panic.
+    #[test]
+    fn friction_caps_the_pull_and_a_nan_passes_through() {
+        let contact = SurfaceContact {
+            particle: 0,
+            normal: DVec2::Y,
+            friction: 0.5,
+            sliding: None,
+        };
+        let mut held = DVec2::new(3.0, -10.0);
+        contact.apply(&mut held);
+        assert_eq!(held, DVec2::ZERO, "3 within 0.5 × 10: held");
+        let mut slipping = DVec2::new(8.0, -10.0);
+        contact.apply(&mut slipping);
+        assert_eq!(slipping, DVec2::new(3.0, 0.0), "8 − 0.5 × 10");
+        for bad in [f64::NAN, f64::INFINITY] {
+            let mut a = DVec2::new(bad, -bad);
+            contact.apply(&mut a);
+            assert!(!a.is_finite(), "{a}");
         }
     }
 }

@@ -30,6 +30,7 @@ impl Scene {
         check.ramps();
         check.graphs();
         check.series();
+        check.coincident();
         check.view();
         check.problems
     }
@@ -220,6 +221,58 @@ impl Checker<'_> {
     fn settings(&mut self) {
         let settings = &self.scene.simulation;
         self.rules(Section::Simulation, fields::SIMULATION, settings);
+        // The clock must tell t from t + dt: far from 0 an f64 instant is coarse, and a
+        // step below a trillionth of the time is rounded by more than 1e-4 of itself
+        // (and at 1e16 s, t + dt == t: the run never advances).
+        let (start, step) = (settings.start_time, settings.time_step);
+        if start.is_finite() && step.is_finite() && step > 0.0 && step < 1e-12 * start.abs() {
+            self.report(
+                Section::Simulation,
+                "start_time",
+                &say(
+                    "scene-clock-too-coarse",
+                    &[("start", &start.to_string()), ("step", &step.to_string())],
+                ),
+            );
+        }
+    }
+
+    /// Two particles that attract or repel each other may not start at one point
+    /// without softening: the force between them is infinite there.
+    fn coincident(&mut self) {
+        let world = &self.scene.world;
+        if world.softening != 0.0 {
+            return;
+        }
+        let gravitation = world.gravitation && world.gravitational_constant != 0.0;
+        let coulomb = world.electrostatics && world.coulomb_constant != 0.0;
+        let mut first_at: HashMap<(u64, u64), usize> = HashMap::new();
+        for (i, p) in self.scene.particles.iter().enumerate() {
+            // Only particles that feel a pair force: all of them under gravitation,
+            // the charged ones under Coulomb alone.
+            if !(gravitation || (coulomb && p.charge != 0.0)) {
+                continue;
+            }
+            let at = p.position.to_dvec2();
+            if !at.is_finite() {
+                continue;
+            }
+            // +0 and −0 are one point.
+            let key = ((at.x + 0.0).to_bits(), (at.y + 0.0).to_bits());
+            match first_at.get(&key) {
+                Some(&j) => {
+                    let other = &self.scene.particles[j].name;
+                    self.report(
+                        Section::Particle(i),
+                        "position",
+                        &say("scene-same-point", &[("other", other.as_str())]),
+                    );
+                }
+                None => {
+                    first_at.insert(key, i);
+                }
+            }
+        }
     }
 
     fn names(&mut self) {

@@ -683,3 +683,4 @@ experiment-add-measure-hint = Eine oft gebrauchte Messung hinzufügen, für das 
 scene-clock-too-coarse = der Zeitschritt { $step } s ist zu fein für eine Uhr bei { $start } s: ein Zeitpunkt dort wird um mehr als 1e-4 eines Schritts gerundet (den Zeitschritt mindestens ein Billionstel der Startzeit wählen oder näher bei 0 beginnen)
 scene-same-point = beginnt am selben Punkt wie Teilchen „{ $other }“, wo die Kraft zwischen ihnen unendlich ist: eines verschieben oder [world] eine Glättung (softening) geben
 cli-every-too-fine = --every { $every } ist zu fein für Zeitpunkte bis { $until } s: die Zeilenzeiten k × every fielen zusammen (ein größeres --every wählen)
+cli-state-not-saveable = der Zustand bei { $time } s lässt sich nicht als wieder ladbare Szene speichern: { $problem }

@@ -684,3 +684,4 @@ experiment-add-measure-hint = Add a measure often wanted, for the selected parti
 scene-clock-too-coarse = the time step { $step } s is too fine for a clock at { $start } s: an instant there is rounded by more than 1e-4 of a step (make the time step at least a trillionth of the start time, or start nearer 0)
 scene-same-point = starts at the same point as particle '{ $other }', where the force between them is infinite: move one, or give [world] a softening
 cli-every-too-fine = --every { $every } is too fine for instants as far as { $until } s: the row times k × every would run together (choose a larger --every)
+cli-state-not-saveable = the state at { $time } s cannot be saved as a scene that reopens: { $problem }

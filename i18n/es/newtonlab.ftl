@@ -683,3 +683,4 @@ experiment-add-measure-hint = Añadir una medida frecuente, para la partícula s
 scene-clock-too-coarse = el paso de tiempo { $step } s es demasiado fino para un reloj en { $start } s: un instante allí se redondea en más de 1e-4 de un paso (elija un paso de al menos una billonésima del tiempo inicial, o empiece más cerca de 0)
 scene-same-point = empieza en el mismo punto que la partícula «{ $other }», donde la fuerza entre ellas es infinita: mueva una, o dé a [world] un suavizado (softening)
 cli-every-too-fine = --every { $every } es demasiado fino para instantes hasta { $until } s: los tiempos de las filas k × every se confundirían (elija un --every mayor)
+cli-state-not-saveable = el estado en { $time } s no se puede guardar como una escena que vuelva a abrirse: { $problem }

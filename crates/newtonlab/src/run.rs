@@ -49,7 +49,8 @@ pub(crate) struct RunArgs {
     save_state: Option<String>,
     /// Append the energy ledger to each row, joules: what spring damping, surface
     /// friction and impacts (with resting contact) took out of the motion since the
-    /// start, and the residual: kinetic + potential + all three − the starting energy.
+    /// start, the residual (kinetic + potential + all they took − the starting energy), and
+    /// what air resistance took (last: it came later).
     #[arg(long)]
     ledger: bool,
 }
@@ -218,6 +219,16 @@ fn watch(
 /// `--save-state FILE`: the scene with the state reached, as a scene file.
 fn save_state(simulation: &Simulation, scene: &physics::Scene, path: &str) -> Result<(), Failure> {
     let saved = simulation.saved_state(scene);
+    // A state that would not reopen (a body flung beyond 1e100 m) is said, not written.
+    if let Some(problem) = saved.validate().into_iter().next() {
+        return Err(Failure::Simulation(say(
+            "cli-state-not-saveable",
+            &[
+                ("time", &simulation.time().to_string()),
+                ("problem", &problem.message),
+            ],
+        )));
+    }
     let text = match physics::SceneFormat::from_file_name(path) {
         physics::SceneFormat::Json => saved.to_json(),
         physics::SceneFormat::Toml => saved.to_toml(),

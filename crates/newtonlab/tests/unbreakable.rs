@@ -100,3 +100,42 @@ fn a_clock_that_cannot_tell_its_instants_apart_is_refused() {
     assert_eq!(output.status.code(), Some(2));
     assert!(stderr(&output).contains("too fine"), "{}", stderr(&output));
 }
+
+/// A saved state always reopens: a run from 1e-100 m at −1e-100 m/s saves a position of
+/// some 1e-114 m, which `check` accepts (a coordinate multiplies into no overflow, so only
+/// numbers, not coordinates, must be at least 1e-100), and a subnormal one too; a state
+/// flung beyond 1e100 m is not written but said, exit 1.
+#[test]
+fn a_saved_state_reopens_or_is_not_written() {
+    let (dir, path) = scene_file(
+        "tiny.toml",
+        "version = 1\n[world]\ngravity = [0.0, 0.0]\n[[particle]]\nname = \"a\"\nmass = 1.0\n\
+         position = [1e-100, 0.0]\nvelocity = [-1e-100, 4e-312]\n",
+    );
+    let saved = dir.path.join("saved.toml");
+    let saved = saved.to_string_lossy();
+    let output = within(10, &["run", &path, "--until", "1", "--save-state", &saved]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let check = within(10, &["check", &saved]);
+    assert!(check.status.success(), "{}", stderr(&check));
+    let (dir, path) = scene_file(
+        "far.toml",
+        "version = 1\n[world]\ngravity = [0.0, 0.0]\n[[particle]]\nname = \"a\"\nmass = 1.0\n\
+         position = [9.9e99, 0.0]\nvelocity = [1e99, 0.0]\n",
+    );
+    let saved = dir.path.join("far-saved.toml");
+    let output = within(
+        10,
+        &[
+            "run",
+            &path,
+            "--until",
+            "1",
+            "--save-state",
+            &saved.to_string_lossy(),
+        ],
+    );
+    assert_eq!(output.status.code(), Some(1));
+    assert!(stderr(&output).contains("cannot be saved as a scene that reopens"));
+    assert!(!saved.exists(), "nothing written that would not reopen");
+}

@@ -56,6 +56,23 @@ pub fn label(quantity: &Quantity) -> String {
     format!("{quantity} ({})", quantity.unit())
 }
 
+/// A system quantity in words of the app's language, with its unit ("kinetic energy
+/// (J)"), for the buttons that add it; other quantities as [`label`] (their names are the
+/// scene's).
+pub fn words(quantity: &Quantity) -> String {
+    let Quantity::Total(total) = quantity else {
+        return label(quantity);
+    };
+    let key = match total {
+        Total::KineticEnergy => "total-kinetic-energy",
+        Total::PotentialEnergy => "total-potential-energy",
+        Total::TotalEnergy => "total-total-energy",
+        Total::MomentumX => "total-momentum-x",
+        Total::MomentumY => "total-momentum-y",
+    };
+    format!("{} ({})", tr(key), quantity.unit())
+}
+
 /// The recorded samples of `graph` as CSV: t first, then the x axis if it is not t,
 /// then each series; one row per sample, at the simulation's instants.
 pub fn to_csv(recording: &Recording, graph: &Graph) -> String {
@@ -254,7 +271,7 @@ impl Graphs {
                     _ => "graph-total-hint",
                 });
                 if ui
-                    .small_button(label(&quantity))
+                    .small_button(words(&quantity))
                     .on_hover_text(hint)
                     .clicked()
                 {

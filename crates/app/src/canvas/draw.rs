@@ -21,7 +21,6 @@ impl Canvas {
         let line = Stroke::new(p.width, p.grid);
         let axis = Stroke::new(1.2 * p.width, p.axis);
         let font = FontId::proportional(11.0);
-        let text = p.grid_text;
         let count = ((hi.x - lo.x) / spacing).ceil() + ((hi.y - lo.y) / spacing).ceil();
         if !(count.is_finite() && count < 400.0) {
             return;
@@ -36,13 +35,8 @@ impl Canvas {
             );
             // Not in the corner, where the y axis's labels are.
             if sx > rect.left() + 56.0 {
-                painter.text(
-                    Pos2::new(sx + 2.0, rect.bottom() - 2.0),
-                    Align2::LEFT_BOTTOM,
-                    format_metres(x, spacing),
-                    font.clone(),
-                    text,
-                );
+                let at = Pos2::new(sx + 2.0, rect.bottom() - 2.0);
+                self.grid_label(painter, at, format_metres(x, spacing), &font);
             }
             x += spacing;
         }
@@ -55,16 +49,21 @@ impl Canvas {
                 stroke,
             );
             if sy < rect.bottom() - 16.0 {
-                painter.text(
-                    Pos2::new(rect.left() + 2.0, sy - 2.0),
-                    Align2::LEFT_BOTTOM,
-                    format_metres(y, spacing),
-                    font.clone(),
-                    text,
-                );
+                let at = Pos2::new(rect.left() + 2.0, sy - 2.0);
+                self.grid_label(painter, at, format_metres(y, spacing), &font);
             }
             y += spacing;
         }
+    }
+
+    /// A grid label on a patch of the background, so that no grid line crosses it (a
+    /// horizontal line through "−2 m" would hide its minus sign).
+    fn grid_label(&self, painter: &egui::Painter, at: Pos2, label: String, font: &FontId) {
+        let p = &self.palette;
+        let galley = painter.layout_no_wrap(label, font.clone(), p.grid_text);
+        let place = Align2::LEFT_BOTTOM.anchor_size(at, galley.size());
+        painter.rect_filled(place.expand(1.0), 2.0, p.background);
+        painter.galley(place.min, galley, p.grid_text);
     }
 
     pub(super) fn draw_scale_bar(&self, painter: &egui::Painter, rect: Rect) {

@@ -98,5 +98,24 @@ pub(super) fn format_metres(value: f64, spacing: f64) -> String {
     } else {
         value
     };
-    format!("{value:.decimals$} m")
+    // The separator the language writes on screen, as the panels do.
+    format!("{} m", newtonlab_i18n::decimal(value, decimals))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Grid labels write the decimal separator of the language, as the panels do: a
+    /// point in English, a comma in German and Spanish; −0 is 0.
+    #[test]
+    fn grid_labels_speak_the_language() {
+        use newtonlab_i18n::{Language, set_language};
+        set_language(Language::English);
+        assert_eq!(format_metres(-2.5, 0.5), "-2.5 m");
+        set_language(Language::German);
+        assert_eq!(format_metres(-2.5, 0.5), "-2,5 m");
+        assert_eq!(format_metres(-1e-9, 0.5), "0,0 m");
+        set_language(Language::English);
+    }
 }

@@ -27,7 +27,7 @@ fn graphs_keep_the_whole_run_through_axis_changes_late_series_and_reset() {
     harness.get_by_label("use time").click();
     harness.run();
     // A series added after the run has data from t = 0.
-    harness.get_by_label("total_energy (J)").click();
+    harness.get_by_label("total energy (J)").click();
     harness.run();
     harness.get_by_label("Reset").click();
     harness.run();
@@ -370,4 +370,33 @@ fn earlier_runs_are_kept_for_the_graphs_until_forgotten() {
     harness.get_by_label("forget earlier runs").click();
     harness.run();
     assert!(harness.state().runner.earlier.is_empty(), "forgotten");
+}
+
+/// The buttons that add a system quantity to a graph say it in words of the language,
+/// not as the CSV column: "kinetic energy (J)", "kinetische Energie (J)".
+#[test]
+fn system_quantities_are_offered_in_words() {
+    use newtonlab_app::i18n::{Language, set_language};
+    let mut harness =
+        crate::common::tall_harness(App::new(crate::common::example_scene("pendulum")));
+    harness.run();
+    harness
+        .get_all_by_label("kinetic energy (J)")
+        .next()
+        .expect("in English");
+    assert!(
+        harness
+            .query_all_by_label("kinetic_energy (J)")
+            .next()
+            .is_none()
+    );
+    set_language(Language::German);
+    harness.run();
+    harness.run();
+    let found = harness
+        .query_all_by_label("kinetische Energie (J)")
+        .next()
+        .is_some();
+    set_language(Language::English);
+    assert!(found, "in German");
 }

@@ -85,8 +85,8 @@ test("an example opened from the Examples menu runs when Play is clicked", async
   const { page, context, errors } = await open();
   await page.mouse.click(104, 12); // the Examples menu
   await page.waitForTimeout(300);
-  await page.mouse.click(165, 200); // "Two-ball collision (paper 4.3)"
-  await page.waitForFunction(() => window.newtonlab_status().name === "Two-ball collision (paper 4.3)", null, { timeout: 5000 });
+  await page.mouse.click(165, 200); // "Two balls colliding off-centre"
+  await page.waitForFunction(() => window.newtonlab_status().name === "Two balls colliding off-centre", null, { timeout: 5000 });
   let s = await status(page);
   assert.equal(s.particles, 2);
   assert.equal(s.time, 0);
@@ -167,7 +167,7 @@ test("the scene being edited survives a reload", async () => {
   await page.waitForFunction(() => window.newtonlab_status && window.newtonlab_status().frames >= 2, null, { timeout: 30000 });
   const s = await status(page);
   assert.equal(s.particles, before + 1, "the added particle is still there");
-  assert.equal(s.name, "Two-ball collision (paper 4.3)");
+  assert.equal(s.name, "Two balls colliding off-centre");
   await context.close();
 });
 

@@ -111,7 +111,7 @@ fn the_examples_menu_opens_a_built_in_scene_after_asking_about_unsaved_changes()
     harness.get_by_label("Examples").click();
     harness.run();
     harness
-        .get_by_label("Two-ball collision (paper 4.3)")
+        .get_by_label("Two balls colliding off-centre")
         .click();
     harness.run();
     assert_eq!(
@@ -129,7 +129,7 @@ fn the_examples_menu_opens_a_built_in_scene_after_asking_about_unsaved_changes()
     harness.get_by_label("Examples").click();
     harness.run();
     harness
-        .get_by_label("Two-ball collision (paper 4.3)")
+        .get_by_label("Two balls colliding off-centre")
         .click();
     harness.run();
     harness.get_by_label("Discard changes").click();
@@ -137,13 +137,13 @@ fn the_examples_menu_opens_a_built_in_scene_after_asking_about_unsaved_changes()
     let scene = harness.state().document.scene();
     assert_eq!(
         scene.name.as_deref(),
-        Some("Two-ball collision (paper 4.3)"),
+        Some("Two balls colliding off-centre"),
         "the example is open"
     );
     assert_eq!(scene.particles.len(), 2, "its two balls");
     assert_eq!(
         harness.state().title(),
-        "Two-ball collision (paper 4.3) — NewtonLab",
+        "Two balls colliding off-centre — NewtonLab",
         "titled by the example, not \"untitled\""
     );
 }

@@ -108,7 +108,7 @@ fn the_projectiles_range_in_five_actions() {
 #[test]
 fn the_collisions_velocities_in_five_actions() {
     let mut lesson = Lesson::new();
-    lesson.open_example("Two-ball collision (paper 4.3)");
+    lesson.open_example("Two balls colliding off-centre");
     lesson.play(5);
     lesson.click("Pause");
     lesson.click("« impact");

@@ -689,3 +689,6 @@ total-potential-energy = potentielle Energie
 total-total-energy = Gesamtenergie
 total-momentum-x = Impuls x
 total-momentum-y = Impuls y
+cli-not-a-file = „{ $source }“ ist keine Datei (ein Verzeichnis, ein Gerät oder eine Pipe): eine Szenendatei angeben oder example:NAME
+cli-file-too-large = „{ $source }“ ist { $megabytes } MB groß: eine Szenendatei darf höchstens { $most } MB groß sein
+cli-same-output = { $first } und { $second } nennen beide „{ $path }“: ihre Zeilen würden sich mischen; jedem eine eigene Datei geben

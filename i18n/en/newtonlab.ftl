@@ -690,3 +690,6 @@ total-potential-energy = potential energy
 total-total-energy = total energy
 total-momentum-x = momentum x
 total-momentum-y = momentum y
+cli-not-a-file = '{ $source }' is not a file (a directory, a device or a pipe): give a scene file, or example:NAME
+cli-file-too-large = '{ $source }' is { $megabytes } MB: a scene file may be at most { $most } MB
+cli-same-output = { $first } and { $second } both name '{ $path }': their rows would interleave; give each its own file

@@ -689,3 +689,6 @@ total-potential-energy = energía potencial
 total-total-energy = energía total
 total-momentum-x = momento x
 total-momentum-y = momento y
+cli-not-a-file = «{ $source }» no es un archivo (un directorio, un dispositivo o una tubería): indique un archivo de escena, o example:NAME
+cli-file-too-large = «{ $source }» ocupa { $megabytes } MB: un archivo de escena puede ocupar como mucho { $most } MB
+cli-same-output = { $first } y { $second } nombran ambos «{ $path }»: sus filas se mezclarían; dé a cada uno su propio archivo

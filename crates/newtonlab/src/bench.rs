@@ -66,6 +66,9 @@ pub(crate) struct BenchArgs {
     threads: Option<usize>,
 }
 
+/// The most bodies `bench` builds.
+const MOST_PARTICLES: usize = 10_000_000;
+
 fn parse_integrator(name: &str) -> Result<Integrator, String> {
     name.parse()
         .map_err(|e: physics::UnknownIntegrator| e.to_string())
@@ -80,13 +83,27 @@ fn evaluations_per_step(integrator: Integrator) -> u64 {
     }
 }
 
-pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
+/// `--seconds` and `--particles` within what a benchmark can do.
+fn check_args(args: &BenchArgs) -> Result<(), Failure> {
     if !(args.seconds.is_finite() && args.seconds > 0.0) {
         return Err(Failure::Input(format!(
             "--seconds must be greater than 0; got {}",
             args.seconds
         )));
     }
+    // At least one body (none divides by zero in the figures); a bound on the count,
+    // since an allocation that fails aborts the process (a billion did).
+    if !(1..=MOST_PARTICLES).contains(&args.particles) {
+        return Err(Failure::Input(format!(
+            "--particles must be between 1 and {MOST_PARTICLES}; got {}",
+            args.particles
+        )));
+    }
+    Ok(())
+}
+
+pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
+    check_args(args)?;
     if matches!(args.scene, BenchScene::Scrub) {
         return scrub(args);
     }

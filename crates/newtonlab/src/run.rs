@@ -22,11 +22,11 @@ pub(crate) struct RunArgs {
     /// A scene file (.toml or .json), or example:NAME for a built-in scene.
     scene: String,
     /// Simulated time to run to, seconds.
-    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
     until: f64,
     /// Sampling interval, seconds: rows at t = 0, DT, 2·DT, … and at T [default: 0.01,
     /// or none with --events].
-    #[arg(long, value_name = "DT", allow_negative_numbers = true)]
+    #[arg(long, value_name = "DT", allow_hyphen_values = true)]
     every: Option<f64>,
     /// A row at each instant EVENT happens, located inside its step to 1e-9 s or better:
     /// `QUANTITY crosses VALUE`, optionally `up` or `down` (`Bob.vx crosses 0 down`).
@@ -64,6 +64,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
     }
     let events = events(args)?;
     let every = every(args, &events)?;
+    distinct_outputs(args)?;
     let scene = scene_source::load(&args.scene)?;
     check_extent(args, every, &scene)?;
     let start = scene.simulation.start_time;
@@ -118,6 +119,29 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         save_state(&simulation, &scene, path)?;
     }
     outcome
+}
+
+/// The files the run writes are distinct: two outputs into one file would interleave
+/// their rows.
+fn distinct_outputs(args: &RunArgs) -> Result<(), Failure> {
+    let outputs = [
+        ("--out", args.out.as_deref().filter(|p| *p != "-")),
+        ("--impacts", args.impacts.as_deref()),
+        ("--save-state", args.save_state.as_deref()),
+    ];
+    for (k, (first, a)) in outputs.iter().enumerate() {
+        for (second, b) in &outputs[k + 1..] {
+            if let (Some(a), Some(b)) = (a, b)
+                && std::path::Path::new(a) == std::path::Path::new(b)
+            {
+                return Err(Failure::Input(say(
+                    "cli-same-output",
+                    &[("first", first), ("second", second), ("path", a)],
+                )));
+            }
+        }
+    }
+    Ok(())
 }
 
 /// Whether the run asked for stays within what it can do: it ends after it starts, its

@@ -24,7 +24,7 @@ pub(crate) struct SweepArgs {
     )]
     vary: Vec<String>,
     /// Simulated time each run lasts, seconds.
-    #[arg(long, value_name = "T", allow_negative_numbers = true)]
+    #[arg(long, value_name = "T", allow_hyphen_values = true)]
     until: f64,
     /// What to read off each run: `QUANTITY at EVENT [#N]`, `t at EVENT`,
     /// `max QUANTITY`, `min QUANTITY`, `period QUANTITY` or `QUANTITY at T`. Repeatable;

@@ -139,3 +139,58 @@ fn a_saved_state_reopens_or_is_not_written() {
     assert!(stderr(&output).contains("cannot be saved as a scene that reopens"));
     assert!(!saved.exists(), "nothing written that would not reopen");
 }
+
+/// Arguments the fuzzing campaign broke, each now its own message, exit 2: a negative
+/// number with an exponent (`--until -1e+99`, `--every -1e-3`: clap took "-1" for a
+/// flag), one file for two outputs (their rows interleaved, exit 0), a device or a
+/// directory as the scene (`/dev/zero` was read until memory ran out), `bench` with no
+/// particles (NaN printed) or more than memory holds (an abort).
+#[test]
+fn bad_arguments_are_named() {
+    let (dir, scene) = scene_file(
+        "one.toml",
+        "version = 1\n[[particle]]\nname = \"a\"\nmass = 1.0\nposition = [0.0, 0.0]\n",
+    );
+    let same = dir.path.join("x.csv");
+    let same = same.to_string_lossy();
+    for (args, words) in [
+        (vec!["run", scene.as_str(), "--until", "-1e+99"], "until"),
+        (
+            vec!["run", scene.as_str(), "--until", "1", "--every", "-1e-3"],
+            "--every",
+        ),
+        (
+            vec![
+                "run",
+                scene.as_str(),
+                "--until",
+                "1",
+                "--out",
+                &same,
+                "--impacts",
+                &same,
+            ],
+            "both name",
+        ),
+        (vec!["check", "/dev/zero"], "not a file"),
+        (vec!["check", "/tmp"], "not a file"),
+        (
+            vec!["bench", "--scene", "cluster", "--particles", "0"],
+            "--particles",
+        ),
+        (vec!["bench", "--particles", "1000000000"], "--particles"),
+    ] {
+        let output = within(20, &args);
+        assert_eq!(
+            output.status.code(),
+            Some(2),
+            "{args:?}: {}",
+            stderr(&output)
+        );
+        assert!(
+            stderr(&output).contains(words),
+            "{args:?}: {}",
+            stderr(&output)
+        );
+    }
+}

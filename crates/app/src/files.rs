@@ -40,6 +40,8 @@ pub struct Dialog {
     pub purpose: Purpose,
     pub folder: String,
     pub name: String,
+    /// Whether the file name has had the focus it gets when the dialog opens.
+    focused: bool,
 }
 
 /// Something that would discard unsaved changes, waiting for the user's word.
@@ -100,6 +102,7 @@ impl Files {
             |p| p.rsplit(['/', '\\']).next().unwrap_or(p).to_owned(),
         );
         self.dialog = Some(Dialog {
+            focused: false,
             purpose,
             folder,
             name,
@@ -274,7 +277,12 @@ impl Files {
                             "file-name-hint",
                             &[("extensions", Arg::Text(&extensions.join(", ")))],
                         ));
-                    submit = field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
+                    // The name is what a user types first: it has the focus on opening.
+                    if !dialog.focused {
+                        field.request_focus();
+                        dialog.focused = true;
+                    }
+                    submit |= field.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter));
                 });
                 ui.horizontal(|ui| {
                     submit |= ui

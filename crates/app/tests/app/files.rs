@@ -28,6 +28,10 @@ fn save_then_open_round_trips_a_scene() {
     harness.run();
     harness.get_by_label_contains("Save As…").click();
     harness.run();
+    assert!(
+        harness.get_by_label("file name").is_focused(),
+        "the name has the focus on opening"
+    );
     let replace = |harness: &mut Harness<'_, App>, label: &str, text: &str| {
         harness.get_by_label(label).focus();
         harness.key_press_modifiers(Modifiers::COMMAND, Key::A);

@@ -50,10 +50,10 @@ impl App {
                         dots: true,
                     })
                     .collect();
-                if let Some((label, curve)) = experiments::law(scene, &results.series) {
+                if let Some(law) = experiments::law(scene, &results.series) {
                     curves.push(Curve {
-                        label,
-                        points: curve.iter().map(|p| (p[0], p[1])).collect(),
+                        label: law.name,
+                        points: law.curve.iter().map(|p| (p[0], p[1])).collect(),
                         dots: false,
                     });
                 }

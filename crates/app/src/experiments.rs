@@ -12,7 +12,7 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use egui::Ui;
 use egui_plot::{Legend, Line, Plot, PlotPoints, Points};
 use physics::series::{Row, Theory};
-use physics::{Scene, Section, Series};
+use physics::{Scene, Series};
 use web_time::Instant;
 
 use crate::action::Action;
@@ -153,8 +153,9 @@ impl Experiments {
         sweep.trace = true;
         let points = sweep.points();
         let done = Arc::new(AtomicUsize::new(0));
+        // On the desktop, a thread of its own runs the series over every core.
         #[cfg(not(target_arch = "wasm32"))]
-        {
+        let finished = {
             let finished = Arc::new(Mutex::new(None));
             let (scene, counter, slot) = (scene.clone(), Arc::clone(&done), Arc::clone(&finished));
             let threads =
@@ -167,26 +168,19 @@ impl Experiments {
                     *place = Some(rows);
                 }
             });
-            self.running = Some(Running {
-                index,
-                series,
-                total: points.len(),
-                done,
-                started: Instant::now(),
-                finished,
-            });
-        }
-        #[cfg(target_arch = "wasm32")]
-        {
-            self.running = Some(Running {
-                index,
-                series,
-                total: points.len(),
-                done,
-                started: Instant::now(),
-                work: (sweep, scene.clone(), points, Vec::new()),
-            });
-        }
+            finished
+        };
+        self.running = Some(Running {
+            index,
+            series,
+            total: points.len(),
+            done,
+            started: Instant::now(),
+            #[cfg(not(target_arch = "wasm32"))]
+            finished,
+            #[cfg(target_arch = "wasm32")]
+            work: (sweep, scene.clone(), points, Vec::new()),
+        });
         Ok(())
     }
 
@@ -273,11 +267,11 @@ impl Experiments {
             self.last = None;
             return None;
         }
-        let problems: Vec<String> = scene
-            .validate()
+        // This series' problems alone: the whole scene is not checked every frame.
+        let problems: Vec<String> = series
+            .problems(scene)
             .into_iter()
-            .filter(|p| p.field.is_some_and(|f| f.section == Section::Series(i)))
-            .map(|p| p.message)
+            .map(|(_, why)| why)
             .collect();
         let mut edited: Option<Series> = None;
         egui::Grid::new("experiment fields")
@@ -534,19 +528,20 @@ fn plot(ui: &mut Ui, scene: &Scene, results: &Results) {
                     .shape(egui_plot::MarkerShape::Circle),
             );
         }
-        if let Some((theory, curve)) = &theory {
-            plot.line(Line::new(theory.clone(), PlotPoints::from(curve.clone())));
+        if let Some(law) = &theory {
+            plot.line(Line::new(
+                law.name.clone(),
+                PlotPoints::from(law.curve.clone()),
+            ));
         }
     });
-    if let (Some((_, _)), Some((name, points))) = (&theory, columns.first())
+    if let (Some(law), Some((name, points))) = (&theory, columns.first())
         && !points.is_empty()
-        && let Ok(law) = Theory::parse(
-            results.series.theory.as_deref().unwrap_or_default(),
-            scene,
-            &results.series.vary,
-        )
     {
-        let residuals: Vec<[f64; 2]> = points.iter().map(|p| [p[0], p[1] - law.at(p[0])]).collect();
+        let residuals: Vec<[f64; 2]> = points
+            .iter()
+            .map(|p| [p[0], p[1] - law.theory.at(p[0])])
+            .collect();
         let worst = residuals.iter().map(|r| r[1].abs()).fold(0.0, f64::max);
         ui.label(
             egui::RichText::new(tr_with(
@@ -592,9 +587,16 @@ pub fn columns(results: &Results) -> Vec<(String, Vec<[f64; 2]>)> {
         .collect()
 }
 
-/// The law's name and its curve over the series' range (400 points), if it has one
-/// that reads.
-pub fn law(scene: &Scene, series: &Series) -> Option<(String, Vec<[f64; 2]>)> {
+/// A series' law, read once: its name, the law itself, and its curve over the series'
+/// range (400 points).
+pub struct Law {
+    pub name: String,
+    pub theory: Theory,
+    pub curve: Vec<[f64; 2]>,
+}
+
+/// The series' law, if it has one that reads.
+pub fn law(scene: &Scene, series: &Series) -> Option<Law> {
     let text = series.theory.as_deref()?;
     let theory = Theory::parse(text, scene, &series.vary).ok()?;
     let curve = (0..=400)
@@ -604,10 +606,11 @@ pub fn law(scene: &Scene, series: &Series) -> Option<(String, Vec<[f64; 2]>)> {
         })
         .filter(|p| p[1].is_finite())
         .collect();
-    Some((
-        tr_with("experiment-theory-curve", &[("law", Arg::Text(text))]),
+    Some(Law {
+        name: tr_with("experiment-theory-curve", &[("law", Arg::Text(text))]),
+        theory,
         curve,
-    ))
+    })
 }
 
 /// The results as `newtonlab sweep` writes them: the varied value, then each measure.

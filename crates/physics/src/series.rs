@@ -409,7 +409,8 @@ struct Measuring<'a> {
     counts: Vec<usize>,
     /// What each measure has found so far.
     found: Vec<Option<f64>>,
-    /// For the extremes and periods: the value at the last two step ends.
+    /// For the extremes and periods: the value at the last two step ends (NaN for the
+    /// other measures, which need none).
     history: Vec<[f64; 2]>,
     /// The state at the start of the previous step (an extreme's bracket starts there).
     previous: Option<Simulation>,
@@ -496,9 +497,6 @@ impl<'a> Measuring<'a> {
         }
         for (k, m) in self.measures.iter().enumerate() {
             let reading = self.readings[k];
-            let now = after.read(reading);
-            let [earlier, last] = self.history[k];
-            self.history[k] = [last, now];
             match m {
                 Measure::AtTime(_, t) if before.time() < *t && *t <= after.time() => {
                     let mut copy = before.keyframe();
@@ -506,6 +504,10 @@ impl<'a> Measuring<'a> {
                     self.found[k] = Some(copy.read(reading));
                 }
                 Measure::Max(_) | Measure::Min(_) | Measure::Period(_) => {
+                    // Only these read their quantity at every step's end.
+                    let now = after.read(reading);
+                    let [earlier, last] = self.history[k];
+                    self.history[k] = [last, now];
                     let (turn, sign) = if matches!(m, Measure::Min(_)) {
                         (Turn::Minimum, -1.0)
                     } else {

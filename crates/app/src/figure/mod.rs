@@ -61,7 +61,6 @@ pub fn graph(
     title: &str,
     format: Format,
 ) -> Result<Vec<u8>, String> {
-    register_font()?;
     let x = graph.x.clone();
     let series: Vec<(Quantity, Vec<(f64, f64)>)> = graph
         .y

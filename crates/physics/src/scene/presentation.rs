@@ -66,6 +66,41 @@ pub struct Series {
 }
 
 impl Series {
+    /// What is wrong with the series on `scene`, each with its key: a setting the scene
+    /// does not have, a range with no values, a run that ends before the scene starts,
+    /// measures that do not read or name objects it lacks, a theory that does not read.
+    /// ([`Scene::validate`] lists these at their lines; the app shows them beside the
+    /// series without checking the whole scene each frame.)
+    pub fn problems(&self, scene: &Scene) -> Vec<(&'static str, String)> {
+        use crate::series::{Measure, Setting, Theory, range_values};
+        let mut problems = Vec::new();
+        if let Err(why) = Setting::parse(&self.vary, scene) {
+            problems.push(("vary", why));
+        }
+        if range_values(self.from, self.to, self.step).is_none() {
+            let text = format!("{}:{}:{}", self.from, self.to, self.step);
+            problems.push(("step", super::say("vary-empty", &[("text", &text)])));
+        }
+        if !(self.until.is_finite() && self.until > scene.simulation.start_time) {
+            let until = self.until.to_string();
+            problems.push((
+                "until",
+                super::say("scene-series-until", &[("until", &until)]),
+            ));
+        }
+        for text in &self.measure {
+            if let Err(why) = Measure::parse(text).and_then(|m| m.check_in(scene)) {
+                problems.push(("measure", why));
+            }
+        }
+        if let Some(theory) = &self.theory
+            && let Err(why) = Theory::parse(theory, scene, &self.vary)
+        {
+            problems.push(("theory", why));
+        }
+        problems
+    }
+
     /// The series as a [`crate::series::Sweep`] on `scene`.
     ///
     /// # Errors

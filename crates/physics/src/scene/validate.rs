@@ -485,29 +485,8 @@ impl Checker<'_> {
     /// reads.
     fn series(&mut self) {
         for (i, series) in self.scene.series.iter().enumerate() {
-            let s = Section::Series(i);
-            if let Err(why) = crate::series::Setting::parse(&series.vary, self.scene) {
-                self.report(s, "vary", &why);
-            }
-            if crate::series::range_values(series.from, series.to, series.step).is_none() {
-                let text = format!("{}:{}:{}", series.from, series.to, series.step);
-                self.report(s, "step", &say("vary-empty", &[("text", &text)]));
-            }
-            if !(series.until.is_finite() && series.until > self.scene.simulation.start_time) {
-                let until = series.until.to_string();
-                self.report(s, "until", &say("scene-series-until", &[("until", &until)]));
-            }
-            for text in &series.measure {
-                let checked = crate::series::Measure::parse(text)
-                    .and_then(|measure| measure.check_in(self.scene));
-                if let Err(why) = checked {
-                    self.report(s, "measure", &why);
-                }
-            }
-            if let Some(theory) = &series.theory
-                && let Err(why) = crate::series::Theory::parse(theory, self.scene, &series.vary)
-            {
-                self.report(s, "theory", &why);
+            for (field, why) in series.problems(self.scene) {
+                self.report(Section::Series(i), field, &why);
             }
         }
     }

@@ -6,6 +6,7 @@
 //! every problem listed, each with line and column where the file has them).
 
 mod bench;
+mod plots;
 mod run;
 mod scene_source;
 mod sweep;

@@ -131,12 +131,7 @@ fn write_csv(args: &SweepArgs, rows: &[Row]) -> io::Result<()> {
 fn report_problems(args: &SweepArgs, rows: &[Row]) {
     let fields = varied_fields(args);
     for row in rows {
-        let run: Vec<String> = fields
-            .iter()
-            .zip(&row.values)
-            .map(|(field, value)| format!("{field} = {value}"))
-            .collect();
-        let run = run.join(", ");
+        let run = row.label(&fields);
         match &row.measured {
             Err(why) => eprintln!(
                 "{}",

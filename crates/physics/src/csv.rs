@@ -9,15 +9,15 @@ use std::fmt::Write as _;
 use crate::Simulation;
 
 impl Simulation {
-    /// The CSV header line (without a line break).
-    pub fn csv_header(&self) -> String {
-        let mut header = vec!["t".to_owned()];
+    /// The CSV header's column names, unquoted: `t`, six per particle, then the system's.
+    pub fn csv_columns(&self) -> Vec<String> {
+        let mut columns = vec!["t".to_owned()];
         for name in self.names() {
             for quantity in ["x", "y", "vx", "vy", "ax", "ay"] {
-                header.push(csv_field(&format!("{name}.{quantity}")));
+                columns.push(format!("{name}.{quantity}"));
             }
         }
-        header.extend(
+        columns.extend(
             [
                 "kinetic_energy",
                 "potential_energy",
@@ -27,34 +27,48 @@ impl Simulation {
             ]
             .map(str::to_owned),
         );
-        header.join(",")
+        columns
     }
 
-    /// The CSV row of this instant (without a line break). Accelerations are those of the
-    /// smooth forces at this instant.
-    pub fn csv_row(&self) -> String {
+    /// The CSV header line (without a line break).
+    pub fn csv_header(&self) -> String {
+        let columns: Vec<String> = self.csv_columns().iter().map(|c| csv_field(c)).collect();
+        columns.join(",")
+    }
+
+    /// This instant's values in the order of [`Self::csv_columns`], appended to `out`.
+    /// Accelerations are those of the smooth forces at this instant.
+    pub fn csv_values(&self, out: &mut Vec<f64>) {
         let accelerations = self.accelerations();
         let diagnostics = self.diagnostics();
-        let mut row = String::new();
-        let _ = write!(row, "{:?}", self.time());
+        out.push(self.time());
         for i in 0..self.len() {
             let p = self.particle(i, &accelerations);
-            for value in [p.position, p.velocity, p.acceleration]
-                .iter()
-                .flat_map(|v| [v.x, v.y])
-            {
-                let _ = write!(row, ",{value:?}");
-            }
+            out.extend(
+                [p.position, p.velocity, p.acceleration]
+                    .iter()
+                    .flat_map(|v| [v.x, v.y]),
+            );
         }
         let energy = diagnostics.energy;
-        for value in [
+        out.extend([
             energy.kinetic,
             energy.potential(),
             energy.total(),
             diagnostics.momentum.x,
             diagnostics.momentum.y,
-        ] {
-            let _ = write!(row, ",{value:?}");
+        ]);
+    }
+
+    /// The CSV row of this instant (without a line break): [`Self::csv_values`], each
+    /// the shortest text that parses back to the same f64.
+    pub fn csv_row(&self) -> String {
+        let mut values = Vec::new();
+        self.csv_values(&mut values);
+        let mut row = String::new();
+        for (k, value) in values.iter().enumerate() {
+            let comma = if k == 0 { "" } else { "," };
+            let _ = write!(row, "{comma}{value:?}");
         }
         row
     }

@@ -93,6 +93,7 @@ mod simulation;
 mod state;
 #[cfg(test)]
 mod testing;
+mod trajectory;
 mod tuning;
 
 pub use diagnostics::{Diagnostics, Energy, ParticleReadout};
@@ -111,3 +112,4 @@ pub use scene::{
     Section, Series, Settings, Spring, Tie, TieKind, Vector, View, World, check_value,
 };
 pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};
+pub use trajectory::{IMPACT_COLUMNS, LEDGER_COLUMNS, Plan, Row, Trajectory};

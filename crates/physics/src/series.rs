@@ -612,6 +612,19 @@ pub struct Row {
     pub paths: Vec<Vec<glam::DVec2>>,
 }
 
+impl Row {
+    /// Which run this is, in words: `Ball.mass = 2, Ball.velocity.angle = 30`, each of
+    /// `fields` (the settings as typed) with its value.
+    pub fn label(&self, fields: &[impl AsRef<str>]) -> String {
+        let parts: Vec<String> = fields
+            .iter()
+            .zip(&self.values)
+            .map(|(field, value)| format!("{} = {value}", field.as_ref()))
+            .collect();
+        parts.join(", ")
+    }
+}
+
 impl Sweep {
     /// Whether the series can run on `scene`: the scene loads, every measure's objects
     /// are in it, every instant is within the run.

@@ -5,25 +5,29 @@ use std::fmt::Write as _;
 
 /// A table of simulation beside theory: one of the paper's, reproduced, or one of a
 /// later group's.
-pub(crate) struct Table {
+pub struct Table {
     /// The paper's section, "4.2", or the group's name.
     pub section: &'static str,
+    /// What it shows.
     pub title: String,
     /// The closed-form result the theory column comes from.
     pub theory: &'static str,
+    /// The columns' names.
     pub header: Vec<&'static str>,
+    /// The rows, each value as printed.
     pub rows: Vec<Vec<String>>,
 }
 
 /// The rows of a table of checks, each a quantity against its closed form: quantity,
 /// simulated, theory, error, tolerance.
-pub(crate) struct Checks {
+pub struct Checks {
     /// The group's name, before each check's in the report's list.
     group: &'static str,
     rows: Vec<Vec<String>>,
 }
 
 impl Checks {
+    /// No rows yet, for `group`'s checks.
     pub fn new(group: &'static str) -> Self {
         Self {
             group,
@@ -68,7 +72,7 @@ impl Checks {
 
 /// What a check's error must not exceed.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Limit {
+pub enum Limit {
     /// The report's tolerance (`--tolerance`): the paper's experiments.
     Tolerance,
     /// A bound the group states, with its reason beside the check.
@@ -78,24 +82,31 @@ pub(crate) enum Limit {
 }
 
 /// A simulated value held against theory.
-pub(crate) struct Check {
+pub struct Check {
     /// The group it belongs to (`paper`, `rods`, …).
     pub group: &'static str,
+    /// What is checked, in words.
     pub what: String,
     /// |simulated − theory| / scale; for a printed value, |printed − simulated|.
     pub error: f64,
+    /// What it must not exceed.
     pub limit: Limit,
 }
 
-pub(crate) struct Report {
+/// Every check of a validation, and its tables.
+pub struct Report {
+    /// The paper's experiments' tolerance.
     pub tolerance: f64,
+    /// The tables, in order.
     pub tables: Vec<Table>,
+    /// The checks, in order.
     pub checks: Vec<Check>,
     /// The group whose checks are being recorded.
     pub group: &'static str,
 }
 
 impl Report {
+    /// An empty report, the paper's experiments held to `tolerance`.
     pub fn new(tolerance: f64) -> Self {
         Self {
             tolerance,
@@ -165,6 +176,7 @@ impl Report {
         difference
     }
 
+    /// The checks whose error exceeds their limit (or could not be measured).
     pub fn failures(&self) -> impl Iterator<Item = &Check> {
         // A NaN error (a quantity that could not be measured) fails too.
         self.checks
@@ -324,17 +336,17 @@ impl Report {
 }
 
 /// A value with enough digits to show a 1e-9 difference.
-pub(crate) fn value(x: f64) -> String {
+pub fn value(x: f64) -> String {
     format!("{x:.10}")
 }
 
 /// An error, relative unless stated.
-pub(crate) fn error(x: f64) -> String {
+pub fn error(x: f64) -> String {
     format!("{x:.2e}")
 }
 
 /// A tolerance, as tables print it.
-pub(crate) fn bound(x: f64) -> String {
+pub fn bound(x: f64) -> String {
     if x == 0.0 {
         "exactly".to_owned()
     } else {
@@ -343,7 +355,7 @@ pub(crate) fn bound(x: f64) -> String {
 }
 
 /// An angle in degrees.
-pub(crate) fn degrees(x: f64) -> String {
+pub fn degrees(x: f64) -> String {
     format!("{x:.6}")
 }
 

@@ -3,10 +3,10 @@
 
 use physics::{DVec2, Particle, Scene, Simulation, Tie, World};
 
-use super::experiments::{Outcome, start, step_to};
-use super::plots::{Figure, Panel};
-use super::report::{Report, Table, bound, error, value};
-use super::theory;
+use crate::experiments::{Outcome, start, step_to};
+use crate::figures::{Figure, Panel};
+use crate::report::{Report, Table, bound, error, value};
+use crate::theory;
 
 const G: f64 = 9.81;
 

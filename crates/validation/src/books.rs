@@ -4,10 +4,10 @@
 
 use physics::{Integrator, Particle, Ramp, Scene, Simulation, World};
 
-use super::experiments::{Outcome, load, start, step_to};
-use super::report::{Report, Table, bound, error, value};
-use super::theory::DampedOscillator;
 use crate::Failure;
+use crate::experiments::{Outcome, load, start, step_to};
+use crate::report::{Report, Table, bound, error, value};
+use crate::theory::DampedOscillator;
 
 const G: f64 = 9.81;
 

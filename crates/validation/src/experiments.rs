@@ -1,14 +1,14 @@
 //! The paper's section 4, experiment by experiment: each runs built-in scenes, compares
-//! them with [`super::theory`], and adds a table (and, for 4.6 and 4.7, a figure).
+//! them with [`crate::theory`], and adds a table (and, for 4.6 and 4.7, a figure).
 
 use std::time::{Duration, Instant};
 
 use physics::{DVec2, ImpactTarget, Scene, Simulation};
 
-use super::plots::{Figure, Panel};
-use super::report::{Report, Table, degrees, error, value};
-use super::theory::{self, DampedOscillator, RadialFall};
 use crate::Failure;
+use crate::figures::{Figure, Panel};
+use crate::report::{Report, Table, degrees, error, value};
+use crate::theory::{self, DampedOscillator, RadialFall};
 
 pub(super) type Outcome = Result<(), Failure>;
 

@@ -5,11 +5,11 @@ use std::f64::consts::PI;
 
 use physics::{DVec2, Integrator, PairForces, Particle, Scene, Spring, World, field_at};
 
-use super::experiments::{Outcome, start, step_to};
-use super::plots::{Figure, Panel};
-use super::report::{Report, Table, bound, error, value};
-use super::theory::DampedOscillator;
 use crate::Failure;
+use crate::experiments::{Outcome, start, step_to};
+use crate::figures::{Figure, Panel};
+use crate::report::{Report, Table, bound, error, value};
+use crate::theory::DampedOscillator;
 
 /// A world of pair forces alone: gravitation with G = `g` (or none), Coulomb with the
 /// default constant when `electrostatics`, softened by `softening`.

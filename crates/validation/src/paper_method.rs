@@ -20,10 +20,10 @@
 
 use physics::{Integrator, Scene};
 
-use super::experiments::{Outcome, load, start, step_to};
-use super::plots::{Figure, Panel};
-use super::report::{Report, Table, error, value};
-use super::theory;
+use crate::experiments::{Outcome, load, start, step_to};
+use crate::figures::{Figure, Panel};
+use crate::report::{Report, Table, error, value};
+use crate::theory;
 
 /// The paper's printed rounding: three decimals, with a unit in the last place to spare
 /// for its frame timer.

@@ -3,9 +3,9 @@
 
 use physics::{Integrator, Particle, Scene, World};
 
-use super::experiments::{Outcome, start, step_to};
-use super::report::{Checks, Report};
 use crate::Failure;
+use crate::experiments::{Outcome, start, step_to};
+use crate::report::{Checks, Report};
 
 const G: f64 = 9.81;
 

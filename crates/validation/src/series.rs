@@ -4,10 +4,10 @@
 use physics::series::{Measure, Sweep, Vary};
 use physics::{Particle, Scene, Tie, Vector, World};
 
-use super::experiments::Outcome;
-use super::report::{Checks, Report};
-use super::theory;
 use crate::Failure;
+use crate::experiments::Outcome;
+use crate::report::{Checks, Report};
+use crate::theory;
 
 const G: f64 = 9.81;
 

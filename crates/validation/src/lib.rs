@@ -1,46 +1,42 @@
-//! `newtonlab validate`: every physical claim against theory, in groups. `paper` is the
-//! paper's section 4 (its tables, with simulation, theory and error columns); the other
-//! groups hold what NewtonLab added since (rods, strings, the integrators' orders, the
-//! tree, softening, the energy ledger, friction, saved states) to closed forms or to
+//! `NewtonLab`'s claims against theory, in groups: what `newtonlab validate` prints and
+//! Python's `newtonlab.validate()` returns. `paper` is the paper's section 4 (its tables,
+//! with simulation, theory and error columns); the other groups hold what `NewtonLab`
+//! added since (rods, strings, the integrators' orders, the tree, softening, the energy
+//! ledger, friction, saved states, events, drag, series) to closed forms or to
 //! computations written here apart from the simulation's code, each check to a tolerance
-//! stated beside it. A summary of every group's worst error comes first. With `--out DIR`
-//! it also writes `DIR/report.md` and the figures as PNG. Exit 0 when every error is
-//! within its tolerance, 1 otherwise, listing the misses.
+//! stated beside it.
 
 mod books;
 mod drag;
 mod events;
 mod experiments;
+pub mod figures;
 mod methods;
 mod paper_method;
-mod plots;
-mod report;
+pub mod report;
 mod series;
 mod theory;
 mod ties;
 
-use std::fmt::Write as _;
-use std::path::PathBuf;
+use figures::Figure;
+use report::Report;
 
-use crate::Failure;
-
-#[derive(Debug, clap::Args)]
-pub(crate) struct ValidateArgs {
-    /// Also write report.md and the figures (PNG) into this directory.
-    #[arg(long, value_name = "DIR")]
-    out: Option<PathBuf>,
-    /// The largest error allowed in the paper's experiments, relative to the quantity's
-    /// scale (the other groups state their own).
-    #[arg(long, value_name = "X", default_value_t = 1e-6)]
-    tolerance: f64,
-    /// Run only these groups (repeatable); all of them when left out.
-    #[arg(long, value_name = "GROUP", value_enum)]
-    only: Vec<Group>,
+/// Why a validation could not finish, apart from a check that missed.
+#[derive(Debug)]
+pub enum Failure {
+    /// A simulation failed, or did not match theory.
+    Simulation(String),
+    /// A built-in scene or an argument was bad.
+    Input(String),
 }
 
 /// A group of checks, named as `--only` takes it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-enum Group {
+#[expect(
+    missing_docs,
+    reason = "each group says what it proves in `Group::statement`"
+)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Group {
     Paper,
     Rods,
     Strings,
@@ -56,7 +52,8 @@ enum Group {
 }
 
 impl Group {
-    const ALL: [Self; 12] = [
+    /// Every group, in the report's order.
+    pub const ALL: [Self; 12] = [
         Self::Paper,
         Self::Rods,
         Self::Strings,
@@ -71,7 +68,8 @@ impl Group {
         Self::Series,
     ];
 
-    fn name(self) -> &'static str {
+    /// Its name, as `--only` takes it.
+    pub fn name(self) -> &'static str {
         match self {
             Self::Paper => "paper",
             Self::Rods => "rods",
@@ -89,7 +87,7 @@ impl Group {
     }
 
     /// What the group proves, in one line.
-    fn statement(self) -> &'static str {
+    pub fn statement(self) -> &'static str {
         match self {
             Self::Paper => {
                 "the paper's section 4 (kinematics, collision, ramps, springs, inverse-square bounces) against closed forms"
@@ -129,28 +127,30 @@ impl Group {
     }
 }
 
-pub(crate) fn validate(args: &ValidateArgs) -> Result<(), Failure> {
-    if !(args.tolerance.is_finite() && args.tolerance > 0.0) {
-        return Err(Failure::Input(format!(
-            "--tolerance must be a number greater than 0; got {}",
-            args.tolerance
-        )));
+impl std::str::FromStr for Group {
+    type Err = String;
+
+    fn from_str(name: &str) -> Result<Self, String> {
+        Self::ALL
+            .into_iter()
+            .find(|g| g.name() == name)
+            .ok_or_else(|| {
+                let names: Vec<&str> = Self::ALL.iter().map(|g| g.name()).collect();
+                format!("no group '{name}'; the groups are {}", names.join(", "))
+            })
     }
-    if let Some(directory) = &args.out {
-        std::fs::create_dir_all(directory).map_err(|e| {
-            Failure::Input(format!(
-                "cannot create the directory '{}': {e}",
-                directory.display()
-            ))
-        })?;
-    }
-    let mut report = report::Report::new(args.tolerance);
+}
+
+/// Runs `groups`, the paper's held to `tolerance` (relative to each quantity's scale;
+/// the other groups state their own): the report of every check, and the figures.
+///
+/// # Errors
+/// A built-in scene that does not load, or a simulation that fails outright; a check
+/// that misses is in the report, not an error.
+pub fn validate(groups: &[Group], tolerance: f64) -> Result<(Report, Vec<Figure>), Failure> {
+    let mut report = Report::new(tolerance);
     let mut figures = Vec::new();
-    let groups: Vec<Group> = Group::ALL
-        .into_iter()
-        .filter(|g| args.only.is_empty() || args.only.contains(g))
-        .collect();
-    for &group in &groups {
+    for &group in groups {
         report.group = group.name();
         let (report, figures) = (&mut report, &mut figures);
         match group {
@@ -176,48 +176,5 @@ pub(crate) fn validate(args: &ValidateArgs) -> Result<(), Failure> {
             Group::Series => series::series(report)?,
         }
     }
-    let statements: Vec<(&str, &str)> = groups.iter().map(|g| (g.name(), g.statement())).collect();
-    let overview = report.groups(&statements);
-    let summary = report.summary();
-    #[expect(clippy::print_stdout, reason = "the command's report")]
-    {
-        println!(
-            "NewtonLab against theory: the paper's experiments (section 4) and every claim since{}{}",
-            report::Report::render_text(&overview),
-            report.to_text()
-        );
-        println!("\n{summary}");
-    }
-    if let Some(directory) = &args.out {
-        let mut markdown = format!(
-            "# NewtonLab validation report\n\nRun by `newtonlab validate`: the experiments of the paper's section 4 \
-             (tolerance {:e}) and every claim since, in groups, each check against a closed-form result \
-             or a computation written apart from the simulation's, to the tolerance stated beside it.\n{}{}",
-            args.tolerance,
-            report::Report::render_markdown(&overview),
-            report.to_markdown()
-        );
-        markdown.push_str("\n## Figures\n\n");
-        for figure in &figures {
-            plots::draw(figure, directory)
-                .map_err(|e| Failure::Input(format!("cannot draw a figure: {e}")))?;
-            let _ = write!(
-                markdown,
-                "### {}\n\n![{}]({})\n\n",
-                figure.title, figure.title, figure.file
-            );
-        }
-        let _ = write!(markdown, "## Result\n\n{summary}\n");
-        let path = directory.join("report.md");
-        std::fs::write(&path, markdown)
-            .map_err(|e| Failure::Input(format!("cannot write '{}': {e}", path.display())))?;
-        #[expect(clippy::print_stdout, reason = "the command's report")]
-        {
-            println!("wrote {} and {} figures", path.display(), figures.len());
-        }
-    }
-    if report.failures().next().is_some() {
-        return Err(Failure::Simulation(summary));
-    }
-    Ok(())
+    Ok((report, figures))
 }

@@ -3,10 +3,10 @@
 
 use physics::{Event, Integrator, Located, Particle, Scene, Spring, Tie, Watch, World};
 
-use super::experiments::{Outcome, start};
-use super::report::{Checks, Report};
-use super::theory;
 use crate::Failure;
+use crate::experiments::{Outcome, start};
+use crate::report::{Checks, Report};
+use crate::theory;
 
 const G: f64 = 9.81;
 

@@ -1,0 +1,464 @@
+//! A run sampled as a table: the rows of `newtonlab run` and of Python's `newtonlab.run`,
+//! one implementation for both, so the two give the same numbers bit for bit.
+//!
+//! A [`Plan`] says what is asked (until when, how often, which events, whether the energy
+//! ledger and the impacts are kept); [`Trajectory::new`] checks it against the scene (an
+//! end before the start, a grid whose instants run together, more rows or steps than a
+//! run can take are refused, in words) and [`Trajectory::advance`] steps to each sample
+//! instant in turn and hands over its rows: those of the events located on the way (each
+//! at its own instant, inside its step), then the sample's. The samples are at k·DT
+//! (each computed as k × DT, never accumulated: the grid of a run from 0), so a run from
+//! a saved state samples the instants a run from 0 would.
+
+use crate::Integrator;
+use crate::events::{Event, Watch};
+use crate::scene::{Scene, Settings, say};
+use crate::simulation::{ImpactRecord, ImpactTarget, Simulation, SimulationError};
+
+/// The largest index k of a row's instant k·DT: 2⁵², below which consecutive products
+/// are distinct f64s.
+const MAX_GRID_INDEX: f64 = 4_503_599_627_370_496.0;
+/// The most rows one run may give: beyond this a typo in the interval is likelier than
+/// intent.
+const MAX_ROWS: f64 = 1e8;
+/// The most time steps one run may take: 10⁹ steps of even the lightest scene take about
+/// a quarter of an hour here; more is a time step or an end mistyped, and would look
+/// like a hang.
+const MAX_STEPS: f64 = 1e9;
+
+/// The ledger's columns, in the order the rows give them. Drag's comes last, after the
+/// residual: it was added after files were read by column position.
+pub const LEDGER_COLUMNS: [&str; 5] = [
+    "dissipated_damping",
+    "dissipated_friction",
+    "dissipated_impacts",
+    "energy_residual",
+    "dissipated_drag",
+];
+
+/// The impact table's columns.
+pub const IMPACT_COLUMNS: [&str; 7] = [
+    "t",
+    "particle",
+    "other",
+    "impulse",
+    "normal_speed_before",
+    "normal_speed_after",
+    "kinetic_energy_lost",
+];
+
+/// What a run is asked for.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Plan {
+    /// Simulated time to run to, seconds.
+    pub until: f64,
+    /// The sampling interval, seconds; `None` for 0.01 s, or for no samples when there
+    /// are events.
+    pub every: Option<f64>,
+    /// Events to locate, as typed (`Bob.vx crosses 0 down`).
+    pub events: Vec<String>,
+    /// Whether the rows end with the energy ledger ([`LEDGER_COLUMNS`]).
+    pub ledger: bool,
+    /// Whether impacts are kept, for [`Trajectory::take_impacts`].
+    pub impacts: bool,
+}
+
+/// An event as typed (trimmed) and as read.
+type Named = (String, Event);
+
+impl Plan {
+    /// Whether the plan makes sense before any scene is read: an end that is a number, an
+    /// interval that is a positive number, events that parse.
+    ///
+    /// # Errors
+    /// The first of those that does not hold, in words.
+    pub fn check(&self) -> Result<(), String> {
+        self.read().map(|_| ())
+    }
+
+    /// The events, each as typed (trimmed) and as read, and the sampling interval.
+    fn read(&self) -> Result<(Vec<Named>, Option<f64>), String> {
+        if !self.until.is_finite() {
+            return Err(say(
+                "cli-until-not-finite",
+                &[("until", &self.until.to_string())],
+            ));
+        }
+        let events = self
+            .events
+            .iter()
+            .map(|text| Event::parse(text).map(|event| (text.trim().to_owned(), event)))
+            .collect::<Result<Vec<_>, String>>()
+            .map_err(|reason| say("cli-event-invalid", &[("reason", &reason)]))?;
+        let every = match (self.every, events.is_empty()) {
+            (Some(every), _) => Some(every),
+            (None, true) => Some(0.01),
+            (None, false) => None,
+        };
+        if let Some(every) = every
+            && !(every.is_finite() && every > 0.0)
+        {
+            return Err(say("cli-every-invalid", &[("every", &every.to_string())]));
+        }
+        Ok((events, every))
+    }
+}
+
+/// One row: its values in the order of [`Trajectory::columns`], and the event it is the
+/// instant of (`None` for a sample).
+#[derive(Clone, Copy, Debug)]
+pub struct Row<'a> {
+    /// The values.
+    pub values: &'a [f64],
+    /// The event's name as typed, for an event's row.
+    pub event: Option<&'a str>,
+}
+
+/// A run in progress, sampled.
+#[derive(Clone, Debug)]
+pub struct Trajectory {
+    simulation: Simulation,
+    /// The sample instants (without samples: the start and the end, to step to).
+    times: Vec<f64>,
+    next: usize,
+    /// Whether the instants of `times` are rows.
+    regular: bool,
+    watch: Option<(Watch, Vec<String>)>,
+    /// The energy at the start, when the ledger is kept.
+    ledger_start: Option<f64>,
+    note: Option<String>,
+    particles: Vec<String>,
+    ramps: Vec<String>,
+    values: Vec<f64>,
+}
+
+impl Trajectory {
+    /// The run `plan` asks of `scene`, not yet started.
+    ///
+    /// # Errors
+    /// In words: the scene's problems (each with its location where the file gave one),
+    /// an end that is not finite or comes before the start, an interval that is not a
+    /// positive number, too many rows or steps, an event that does not parse or names
+    /// nothing in the scene.
+    pub fn new(scene: &Scene, plan: &Plan) -> Result<Self, String> {
+        let (events, every) = plan.read()?;
+        check_extent(plan.until, every, &scene.simulation)?;
+        let mut simulation = Simulation::new(scene).map_err(|e| e.to_string())?;
+        if plan.ledger {
+            simulation.keep_ledger();
+        }
+        if plan.impacts {
+            simulation.record_impacts();
+        }
+        let watch = if events.is_empty() {
+            None
+        } else {
+            let (names, list): (Vec<String>, Vec<Event>) = events.into_iter().unzip();
+            let watch = Watch::new(&list, &simulation)
+                .map_err(|reason| say("cli-event-invalid", &[("reason", &reason)]))?;
+            Some((watch, names))
+        };
+        let start = scene.simulation.start_time;
+        let times = every.map_or_else(
+            || vec![start, plan.until],
+            |every| sample_times(start, plan.until, every),
+        );
+        let ledger_start = plan.ledger.then(|| simulation.diagnostics().energy.total());
+        Ok(Self {
+            simulation,
+            times,
+            next: 0,
+            regular: every.is_some(),
+            watch,
+            ledger_start,
+            note: every.and_then(|every| sampling_note(&scene.simulation, every)),
+            particles: scene.particle_names(),
+            ramps: scene.ramps.iter().map(|r| r.name.clone()).collect(),
+            values: Vec::new(),
+        })
+    }
+
+    /// The columns' names, unquoted: the state's ([`Simulation::csv_columns`]), then the
+    /// ledger's when it is kept. The event of a row is not among them ([`Row::event`]).
+    pub fn columns(&self) -> Vec<String> {
+        let mut columns = self.simulation.csv_columns();
+        if self.ledger_start.is_some() {
+            columns.extend(LEDGER_COLUMNS.map(str::to_owned));
+        }
+        columns
+    }
+
+    /// Whether the rows end with the ledger's columns ([`LEDGER_COLUMNS`]).
+    pub fn keeps_ledger(&self) -> bool {
+        self.ledger_start.is_some()
+    }
+
+    /// Whether the rows are of both kinds, samples and events, so that a table needs a
+    /// column saying which.
+    pub fn mixes_rows(&self) -> bool {
+        self.regular && self.watch.is_some()
+    }
+
+    /// How many instants [`Self::advance`] steps to in all.
+    pub fn instants(&self) -> usize {
+        self.times.len()
+    }
+
+    /// When the interval is not a whole number of fixed steps: a note that some steps
+    /// are shortened to land on the samples.
+    pub fn note(&self) -> Option<&str> {
+        self.note.as_deref()
+    }
+
+    /// The run as it stands.
+    pub fn simulation(&self) -> &Simulation {
+        &self.simulation
+    }
+
+    /// Steps on to the next instant, calling `each` with every row on the way (the
+    /// events located inside the steps, in time order, then the sample). `None` once
+    /// every instant is reached; `Some(Err)` when the simulation failed (its rows up to
+    /// the failure were given; the run stops there).
+    pub fn advance(
+        &mut self,
+        each: &mut dyn FnMut(Row<'_>),
+    ) -> Option<Result<(), SimulationError>> {
+        let &t = self.times.get(self.next)?;
+        self.next += 1;
+        let stepped = match &mut self.watch {
+            Some((watch, names)) => match self.simulation.step_to_watching(t, watch) {
+                Ok(found) => {
+                    for event in &found {
+                        row_values(&event.at, self.ledger_start, &mut self.values);
+                        each(Row {
+                            values: &self.values,
+                            event: Some(&names[event.event]),
+                        });
+                    }
+                    Ok(())
+                }
+                Err(error) => Err(error),
+            },
+            None => self.simulation.step_to(t),
+        };
+        if stepped.is_err() {
+            self.next = self.times.len();
+            return Some(stepped);
+        }
+        if self.regular {
+            row_values(&self.simulation, self.ledger_start, &mut self.values);
+            each(Row {
+                values: &self.values,
+                event: None,
+            });
+        }
+        Some(Ok(()))
+    }
+
+    /// The impacts since the last call, when the plan keeps them.
+    pub fn take_impacts(&mut self) -> Vec<ImpactRecord> {
+        self.simulation.take_impacts()
+    }
+
+    /// An impact's particle and what it hit, by name (`wall` for a wall).
+    pub fn impact_names(&self, impact: &ImpactRecord) -> (&str, &str) {
+        let other = match impact.other {
+            ImpactTarget::Particle(j) => self.particles[j].as_str(),
+            ImpactTarget::Ramp(k) => self.ramps[k].as_str(),
+            ImpactTarget::Wall => "wall",
+        };
+        (self.particles[impact.particle].as_str(), other)
+    }
+}
+
+/// `simulation`'s row: its state, then the ledger when `ledger_start` is the energy it
+/// started from.
+fn row_values(simulation: &Simulation, ledger_start: Option<f64>, out: &mut Vec<f64>) {
+    out.clear();
+    simulation.csv_values(out);
+    if let (Some(ledger), Some(start)) = (simulation.ledger(), ledger_start) {
+        let residual = simulation.diagnostics().energy.total() + ledger.total() - start;
+        out.extend([
+            ledger.damping,
+            ledger.friction,
+            ledger.impacts,
+            residual,
+            ledger.drag,
+        ]);
+    }
+}
+
+/// Whether a run to `until` sampled every `every` stays within what it can do: it ends
+/// after it starts, its rows' instants are distinct, and neither its rows nor its steps
+/// are beyond reason.
+fn check_extent(until: f64, every: Option<f64>, settings: &Settings) -> Result<(), String> {
+    let start = settings.start_time;
+    if until < start {
+        let id = if start == 0.0 {
+            "cli-until-negative"
+        } else {
+            "cli-until-before-start"
+        };
+        return Err(say(
+            id,
+            &[("until", &until.to_string()), ("start", &start.to_string())],
+        ));
+    }
+    let span = until - start;
+    // Rows at k·DT: k must stay an integer an f64 counts exactly, or the grid's instants
+    // run together (and the rows' search for them would not end).
+    if let Some(every) = every
+        && start.abs().max(until.abs()) / every > MAX_GRID_INDEX
+    {
+        return Err(say(
+            "cli-every-too-fine",
+            &[("every", &every.to_string()), ("until", &until.to_string())],
+        ));
+    }
+    if let Some(every) = every
+        && span / every > MAX_ROWS
+    {
+        return Err(say(
+            "cli-too-many-rows",
+            &[
+                ("until", &until.to_string()),
+                ("every", &every.to_string()),
+                ("rows", &MAX_ROWS.to_string()),
+            ],
+        ));
+    }
+    let steps = span / settings.time_step;
+    if steps > MAX_STEPS {
+        return Err(say(
+            "cli-too-many-steps",
+            &[
+                ("until", &until.to_string()),
+                ("step", &format!("{:e}", settings.time_step)),
+                ("steps", &format!("{steps:.1e}")),
+                ("most", &format!("{MAX_STEPS:e}")),
+            ],
+        ));
+    }
+    Ok(())
+}
+
+/// A fixed-step method lands exactly on every sample, so when the interval is not a
+/// whole number of time steps some steps are shortened and the run integrates with a
+/// smaller effective step than the scene says (more accurately, and differently from a
+/// run sampled at a multiple). Says so, with the step and the interval.
+fn sampling_note(settings: &Settings, every: f64) -> Option<String> {
+    if settings.integrator == Integrator::Dopri5 {
+        return None; // adaptive: its steps follow the error, not the time step
+    }
+    let steps = every / settings.time_step;
+    if (steps - steps.round()).abs() <= 1e-9 * steps.max(1.0) {
+        return None;
+    }
+    Some(say(
+        "cli-sampling-note",
+        &[
+            ("every", &every.to_string()),
+            ("step", &settings.time_step.to_string()),
+        ],
+    ))
+}
+
+/// t = k·DT for every k with start ≤ k·DT ≤ T (each computed as k × DT, never
+/// accumulated: the grid of a run from 0), with `start` first and T last when they are
+/// not among them.
+fn sample_times(start: f64, until: f64, every: f64) -> Vec<f64> {
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "until / every and start / every are finite and bounded by check_extent"
+    )]
+    let index = |t: f64| (t / every).floor() as i64;
+    let at = |k: i64| k as f64 * every;
+    let (mut first, mut last) = (index(start), index(until));
+    // The division may round either way: settle each end on the exact products.
+    while at(first) < start {
+        first += 1;
+    }
+    while at(first - 1) >= start {
+        first -= 1;
+    }
+    while at(last + 1) <= until {
+        last += 1;
+    }
+    while at(last) > until {
+        last -= 1;
+    }
+    let mut times = Vec::new();
+    // Exact: the start is a row of its own unless it is a grid instant to the bit.
+    if first > last || at(first).to_bits() != start.to_bits() {
+        times.push(start);
+    }
+    times.extend((first..=last).map(at));
+    if times.last() != Some(&until) {
+        times.push(until);
+    }
+    times
+}
+
+#[cfg(test)]
+mod tests {
+    use super::sample_times as from;
+
+    fn sample_times(until: f64, every: f64) -> Vec<f64> {
+        from(0.0, until, every)
+    }
+
+    #[test]
+    fn samples_are_multiples_of_the_interval_and_end_at_until() {
+        // 3 × 0.1 = 0.30000000000000004 > 0.3, so the last multiple is 0.2 and 0.3 is added.
+        assert_eq!(
+            sample_times(0.3, 0.1),
+            vec![0.0, 0.1, 0.2, 0.3],
+            "0.3 by 0.1"
+        );
+        assert_eq!(
+            sample_times(1.0, 0.25),
+            vec![0.0, 0.25, 0.5, 0.75, 1.0],
+            "no duplicate end"
+        );
+        assert_eq!(
+            sample_times(1.05, 0.5),
+            vec![0.0, 0.5, 1.0, 1.05],
+            "end off the grid"
+        );
+        assert_eq!(sample_times(0.0, 0.1), vec![0.0], "zero duration");
+        let times = sample_times(20.0, 0.1);
+        assert_eq!(times.len(), 201, "20 s by 0.1 s");
+        assert_eq!(
+            times[7].to_bits(),
+            (7.0_f64 * 0.1).to_bits(),
+            "k·DT, not accumulated"
+        );
+    }
+
+    /// From a start time the rows are those of the grid of a run from 0 that fall in
+    /// [start, T], with the start first and T last when they are not on it.
+    #[test]
+    fn from_a_start_time_the_rows_keep_the_grid_of_a_run_from_zero() {
+        assert_eq!(
+            from(0.25, 1.0, 0.5),
+            vec![0.25, 0.5, 1.0],
+            "start off the grid"
+        );
+        assert_eq!(from(0.5, 1.0, 0.5), vec![0.5, 1.0], "start on the grid");
+        assert_eq!(from(0.3, 0.4, 0.5), vec![0.3, 0.4], "no grid point between");
+        assert_eq!(from(1.0, 1.0, 0.5), vec![1.0], "zero duration");
+        assert_eq!(
+            from(-1.2, 0.3, 0.5),
+            vec![-1.2, -1.0, -0.5, 0.0, 0.3],
+            "negative start"
+        );
+        let times = from(1.0, 2.0, 0.1);
+        // 10 × 0.1 = 1 exactly; 11 × 0.1 = 1.1000000000000001 is the grid's, not 1 + 0.1.
+        assert_eq!(times.len(), 11, "{times:?}");
+        assert_eq!(
+            times[1].to_bits(),
+            (11.0_f64 * 0.1).to_bits(),
+            "the grid of a run from 0"
+        );
+    }
+}

@@ -1,0 +1,173 @@
+"""Type stubs of NewtonLab's native module (re-exported by ``newtonlab``)."""
+
+import os
+from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
+import numpy.typing as npt
+
+Vector = Union[Tuple[float, float], Sequence[float], Mapping[str, float]]
+"""``(x, y)``, or ``{"magnitude": m, "angle": degrees}``."""
+
+SceneLike = Union["Scene", str, os.PathLike]
+"""A ``Scene``, a scene file's path (``.toml`` or ``.json``), or ``"example:NAME"``."""
+
+class SceneError(ValueError):
+    """A scene, a value or an argument NewtonLab cannot take; the message says which and why."""
+
+class SimulationError(RuntimeError):
+    """A run that failed: a value became infinite or not a number (the message names the particle and the time)."""
+
+class SceneObject:
+    """One object of a scene — a particle, spring, rod, string or ramp, the world or the
+    settings — with the scene file's keys as attributes (``ball.mass``, ``ball.velocity``).
+
+    Numbers are floats, vectors ``(x, y)`` tuples (set them as ``(x, y)`` or as
+    ``{"magnitude": m, "angle": degrees}``), flags bools, colours ``"#rrggbb"``, a
+    spring's or rod's ends a particle's name or an ``(x, y)`` fixed point. Writing a value
+    checks it by the file's rules: a bad one raises ``SceneError`` and leaves the scene as
+    it was. ``dir(obj)`` lists the keys.
+    """
+
+    name: str
+    def __getattr__(self, key: str) -> Any: ...
+    def __setattr__(self, key: str, value: Any) -> None: ...
+    def __dir__(self) -> List[str]: ...
+
+class Scene:
+    """A scene: particles, springs, rods, strings and ramps in a world, with the settings of
+    its simulation (the scene file's ``[world]`` and ``[simulation]``)."""
+
+    def __init__(self) -> None:
+        """An empty scene: the default world (g = 9.81 m/s² downwards) and settings."""
+    @staticmethod
+    def from_toml(text: str) -> "Scene":
+        """A scene from the text of a TOML scene file; ``SceneError`` lists every problem with its line and column."""
+    @staticmethod
+    def from_json(text: str) -> "Scene":
+        """A scene from the text of a JSON scene file."""
+    def to_toml(self) -> str:
+        """The scene as a TOML scene file's text."""
+    def to_json(self) -> str:
+        """The scene as a JSON scene file's text."""
+    def copy(self) -> "Scene":
+        """An independent copy."""
+    def particle(self, name: str) -> SceneObject:
+        """The particle called ``name``; ``SceneError`` when there is none."""
+    def spring(self, name: str) -> SceneObject:
+        """The spring called ``name``."""
+    def rod(self, name: str) -> SceneObject:
+        """The rod called ``name``."""
+    def string(self, name: str) -> SceneObject:
+        """The string called ``name``."""
+    def ramp(self, name: str) -> SceneObject:
+        """The ramp called ``name``."""
+    @property
+    def world(self) -> SceneObject:
+        """The world: ``gravity``, the pair forces' constants, ``bounds``."""
+    @property
+    def simulation(self) -> SceneObject:
+        """The settings: ``integrator``, ``time_step``, ``start_time``, …"""
+    @property
+    def particles(self) -> List[str]:
+        """The particles' names, in scene order."""
+    @property
+    def springs(self) -> List[str]: ...
+    @property
+    def rods(self) -> List[str]: ...
+    @property
+    def strings(self) -> List[str]: ...
+    @property
+    def ramps(self) -> List[str]: ...
+
+class Table:
+    """Named columns of equal length: ``table["t"]`` is a numpy float64 array (a text
+    column, a list of strings); ``table.columns`` the names in order."""
+
+    @property
+    def columns(self) -> List[str]: ...
+    def __getitem__(self, name: str) -> Union[npt.NDArray[np.float64], List[str]]: ...
+    def __contains__(self, name: str) -> bool: ...
+    def __len__(self) -> int:
+        """The number of rows."""
+    def keys(self) -> List[str]: ...
+    def to_dict(self) -> Dict[str, Union[npt.NDArray[np.float64], List[str]]]: ...
+    def to_pandas(self) -> Any:
+        """A pandas DataFrame of the columns, in order (needs pandas)."""
+
+class Trajectory(Table):
+    """A run's rows by ``newtonlab run``'s column names (``traj["Ball.x"]``, ``traj["t"]``),
+    the same numbers bit for bit; with events, a column ``event`` names each row's event
+    (empty for a sample)."""
+
+    @property
+    def impacts(self) -> Table:
+        """Every impact: t, particle, other (a particle, a ramp, or ``wall``), impulse (N·s),
+        normal_speed_before, normal_speed_after (m/s), kinetic_energy_lost (J); kept with
+        ``run(..., impacts=True)``, ``SceneError`` otherwise."""
+    @property
+    def note(self) -> Optional[str]:
+        """When the interval is not a whole number of time steps, why some were shortened."""
+
+class Simulation:
+    """A scene's simulation stepped from Python. Setting ``positions``, ``velocities`` or
+    ``state`` continues from the state given, at the present time, as a saved state
+    would (checked as a scene file is); the energy ledger starts again there."""
+
+    def __init__(self, scene: SceneLike, ledger: bool = False) -> None: ...
+    def step(self) -> None:
+        """Advances by one time step."""
+    def advance(self, *, to: float) -> None:
+        """Advances to exactly ``to`` seconds (nothing happens for an instant not ahead)."""
+    @property
+    def time(self) -> float:
+        """Simulated time, seconds."""
+    @property
+    def names(self) -> List[str]:
+        """The particles' names, in the order of the arrays' rows."""
+    positions: npt.NDArray[np.float64]
+    """Positions, metres: an (n, 2) array."""
+    velocities: npt.NDArray[np.float64]
+    """Velocities, m/s: an (n, 2) array."""
+    state: Tuple[npt.NDArray[np.float64], npt.NDArray[np.float64]]
+    """``(positions, velocities)``."""
+    def energies(self) -> Dict[str, float]:
+        """``kinetic``, ``potential``, ``total`` (J); with the ledger, ``dissipated_*`` too."""
+    def momentum(self) -> Tuple[float, float]:
+        """Momentum, kg·m/s."""
+
+def load(source: Union[str, os.PathLike]) -> Scene:
+    """Reads a scene file (``.toml`` or ``.json``) or ``"example:NAME"``."""
+
+def examples() -> List[Tuple[str, str]]:
+    """The built-in scenes: ``(name, title)`` pairs, each loadable as ``load("example:NAME")``."""
+
+def run(
+    scene: SceneLike,
+    until: float,
+    every: Optional[float] = None,
+    events: Union[None, str, Iterable[str]] = None,
+    ledger: bool = False,
+    impacts: bool = False,
+) -> Trajectory:
+    """Runs ``scene`` to ``until`` seconds: ``newtonlab run``'s rows, bit for bit.
+
+    ``every``: the sampling interval (default 0.01 s, or no samples with ``events``);
+    ``events``: ``"QUANTITY crosses VALUE [up|down]"``, each a row at its located instant;
+    ``ledger``: the energy ledger's columns; ``impacts``: keep every impact for
+    ``traj.impacts`` (off by default: a resting pile counts thousands a step).
+    """
+
+def sweep(
+    scene: SceneLike,
+    vary: Mapping[str, Union[Sequence[float], npt.ArrayLike, str]],
+    until: float,
+    measure: Union[str, Iterable[str]],
+    threads: Optional[int] = None,
+) -> Table:
+    """``newtonlab sweep``: a run per combination of the varied values (in parallel), one row
+    of measures each; NaN (and a warning) where a run had no such number."""
+
+def validate(groups: Union[None, str, Iterable[str]] = None, tolerance: float = 1e-6) -> List[Dict[str, Any]]:
+    """``newtonlab validate``'s checks: one record per check, with ``group``, ``what``,
+    ``error``, ``limit`` and ``passed``."""

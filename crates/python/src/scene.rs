@@ -1,0 +1,689 @@
+//! `newtonlab.Scene` and its objects. A scene is read and written through the scene
+//! format's field table (`physics::fields`), so every attribute is a key of the file, and
+//! a value is checked by the file's own rules: the change is made on a copy, the copy is
+//! validated as a loaded file would be, and only a valid copy replaces the scene.
+
+use std::path::PathBuf;
+
+use physics::fields::{self, Field, Kind, Value};
+use physics::{Bounds, Color, Endpoint, Integrator, PairForces, Section, Vector};
+use pyo3::exceptions::PyAttributeError;
+use pyo3::prelude::*;
+use pyo3::types::{PyBool, PyDict, PyString};
+
+use crate::scene_error;
+
+/// The largest scene file read: 100 MB, as the command line's (a million particles take
+/// some 150 MB as TOML; far beyond what a notebook would run).
+const MAX_SCENE_BYTES: u64 = 100_000_000;
+
+/// A scene: particles, springs, rods, strings and ramps in a world, with the settings
+/// of its simulation. Made with `newtonlab.load`, `Scene.from_toml` or `Scene.from_json`.
+#[pyclass(module = "newtonlab")]
+#[derive(Clone)]
+pub struct Scene {
+    pub(crate) inner: physics::Scene,
+}
+
+/// Which object of a scene a [`SceneObject`] is.
+#[derive(Clone, Debug, PartialEq, Eq)]
+enum What {
+    Particle(String),
+    Spring(String),
+    Rod(String),
+    String(String),
+    Ramp(String),
+    World,
+    Simulation,
+}
+
+impl What {
+    fn kind(&self) -> &'static str {
+        match self {
+            Self::Particle(_) => "particle",
+            Self::Spring(_) => "spring",
+            Self::Rod(_) => "rod",
+            Self::String(_) => "string",
+            Self::Ramp(_) => "ramp",
+            Self::World => "world",
+            Self::Simulation => "simulation",
+        }
+    }
+
+    fn name(&self) -> Option<&str> {
+        match self {
+            Self::Particle(n)
+            | Self::Spring(n)
+            | Self::Rod(n)
+            | Self::String(n)
+            | Self::Ramp(n) => Some(n),
+            Self::World | Self::Simulation => None,
+        }
+    }
+
+    /// Where the object is in `scene`, or why it is not there.
+    fn section(&self, scene: &physics::Scene) -> PyResult<Section> {
+        let missing = |name: &str, names: Vec<&str>| {
+            scene_error(format!(
+                "the scene has no {} named '{name}'; its {}s are: {}",
+                self.kind(),
+                self.kind(),
+                if names.is_empty() {
+                    "none".to_owned()
+                } else {
+                    names.join(", ")
+                }
+            ))
+        };
+        let tie = |name: &str, kind: physics::TieKind| {
+            let ties = || {
+                scene
+                    .ties
+                    .iter()
+                    .enumerate()
+                    .filter(|(_, t)| t.kind == kind)
+            };
+            ties()
+                .find(|(_, t)| t.name == name)
+                .map(|(i, _)| Section::Tie(i))
+                .ok_or_else(|| missing(name, ties().map(|(_, t)| t.name.as_str()).collect()))
+        };
+        match self {
+            Self::Particle(name) => scene
+                .particles
+                .iter()
+                .position(|p| p.name == *name)
+                .map(Section::Particle)
+                .ok_or_else(|| {
+                    missing(
+                        name,
+                        scene.particles.iter().map(|p| p.name.as_str()).collect(),
+                    )
+                }),
+            Self::Spring(name) => scene
+                .springs
+                .iter()
+                .position(|s| s.name == *name)
+                .map(Section::Spring)
+                .ok_or_else(|| {
+                    missing(
+                        name,
+                        scene.springs.iter().map(|s| s.name.as_str()).collect(),
+                    )
+                }),
+            Self::Rod(name) => tie(name, physics::TieKind::Rod),
+            Self::String(name) => tie(name, physics::TieKind::String),
+            Self::Ramp(name) => scene
+                .ramps
+                .iter()
+                .position(|r| r.name == *name)
+                .map(Section::Ramp)
+                .ok_or_else(|| {
+                    missing(name, scene.ramps.iter().map(|r| r.name.as_str()).collect())
+                }),
+            Self::World => Ok(Section::World),
+            Self::Simulation => Ok(Section::Simulation),
+        }
+    }
+}
+
+/// The keys of `section`'s fields.
+fn keys(scene: &physics::Scene, section: Section) -> Vec<&'static str> {
+    fn of<T>(fields: &[Field<T>]) -> Vec<&'static str> {
+        fields.iter().map(|f| f.key).collect()
+    }
+    match section {
+        Section::Particle(_) => of(fields::PARTICLE),
+        Section::Spring(_) => of(fields::SPRING),
+        Section::Tie(i) => of(fields::tie_fields(scene.ties[i].kind)),
+        Section::Ramp(_) => of(fields::RAMP),
+        Section::World => of(fields::WORLD),
+        Section::Simulation => of(fields::SIMULATION),
+        _ => Vec::new(),
+    }
+}
+
+/// `section`'s field `key`: its kind and value.
+fn get(scene: &physics::Scene, section: Section, key: &str) -> Option<(Kind, Value)> {
+    fn of<T>(fields: &[Field<T>], object: &T, key: &str) -> Option<(Kind, Value)> {
+        let field = fields.iter().find(|f| f.key == key)?;
+        Some((field.kind, (field.get)(object)))
+    }
+    match section {
+        Section::Particle(i) => of(fields::PARTICLE, &scene.particles[i], key),
+        Section::Spring(i) => of(fields::SPRING, &scene.springs[i], key),
+        Section::Tie(i) => of(fields::tie_fields(scene.ties[i].kind), &scene.ties[i], key),
+        Section::Ramp(i) => of(fields::RAMP, &scene.ramps[i], key),
+        Section::World => of(fields::WORLD, &scene.world, key),
+        Section::Simulation => of(fields::SIMULATION, &scene.simulation, key),
+        _ => None,
+    }
+}
+
+/// Writes `value` into `section`'s field `key`.
+fn set(scene: &mut physics::Scene, section: Section, key: &str, value: Value) {
+    fn of<T>(fields: &[Field<T>], object: &mut T, key: &str, value: Value) {
+        if let Some(field) = fields.iter().find(|f| f.key == key) {
+            (field.set)(object, value);
+        }
+    }
+    match section {
+        Section::Particle(i) => of(fields::PARTICLE, &mut scene.particles[i], key, value),
+        Section::Spring(i) => of(fields::SPRING, &mut scene.springs[i], key, value),
+        Section::Tie(i) => {
+            let fields = fields::tie_fields(scene.ties[i].kind);
+            of(fields, &mut scene.ties[i], key, value);
+        }
+        Section::Ramp(i) => of(fields::RAMP, &mut scene.ramps[i], key, value),
+        Section::World => of(fields::WORLD, &mut scene.world, key, value),
+        Section::Simulation => of(fields::SIMULATION, &mut scene.simulation, key, value),
+        _ => {}
+    }
+}
+
+/// A value as Python sees it: a float, an `(x, y)` tuple, a bool, a name, a colour's
+/// `"#rrggbb"`, bounds as `((xmin, ymin), (xmax, ymax))`, or `None`.
+fn to_python(py: Python<'_>, value: Value) -> PyResult<Py<PyAny>> {
+    let pair = |v: Vector| {
+        let v = v.to_dvec2();
+        (v.x, v.y)
+    };
+    Ok(match value {
+        Value::Number(x) => x.into_pyobject(py)?.into_any().unbind(),
+        Value::Vector(v) | Value::Endpoint(Endpoint::Point(v)) => {
+            pair(v).into_pyobject(py)?.into_any().unbind()
+        }
+        Value::Bool(b) => PyBool::new(py, b).to_owned().into_any().unbind(),
+        Value::Endpoint(Endpoint::Particle(name)) => name.into_pyobject(py)?.into_any().unbind(),
+        Value::Integrator(integrator) => integrator
+            .to_string()
+            .into_pyobject(py)?
+            .into_any()
+            .unbind(),
+        Value::PairForces(mode) => mode.as_str().into_pyobject(py)?.into_any().unbind(),
+        Value::Color(color) => color
+            .map(Color::to_hex)
+            .into_pyobject(py)?
+            .into_any()
+            .unbind(),
+        Value::Bounds(bounds) => bounds
+            .map(|b| (pair(b.min), pair(b.max)))
+            .into_pyobject(py)?
+            .into_any()
+            .unbind(),
+    })
+}
+
+/// A number from Python: a float or an int, not a bool (which Python counts as an int).
+fn number(value: &Bound<'_, PyAny>, what: &str) -> PyResult<f64> {
+    if value.is_instance_of::<PyBool>() {
+        return Err(scene_error(format!("{what} must be a number, got a bool")));
+    }
+    value
+        .extract::<f64>()
+        .map_err(|_| scene_error(format!("{what} must be a number, got {}", type_name(value))))
+}
+
+fn type_name(value: &Bound<'_, PyAny>) -> String {
+    value
+        .get_type()
+        .name()
+        .map_or_else(|_| "something else".to_owned(), |n| format!("a {n}"))
+}
+
+/// A vector from Python: `(x, y)` (any sequence of two numbers, a numpy array too), or a
+/// dict `{"magnitude": m, "angle": degrees}`.
+fn vector(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vector> {
+    if let Ok(dict) = value.cast::<PyDict>() {
+        let part = |key: &str| -> PyResult<f64> {
+            let item = dict.get_item(key)?.ok_or_else(|| {
+                scene_error(format!(
+                    "{what} as a dict needs 'magnitude' and 'angle' (degrees)"
+                ))
+            })?;
+            number(&item, &format!("{what}'s {key}"))
+        };
+        return Ok(Vector::polar(part("magnitude")?, part("angle")?));
+    }
+    let wrong = || {
+        scene_error(format!(
+            "{what} must be (x, y) or {{\"magnitude\": m, \"angle\": degrees}}, got {}",
+            type_name(value)
+        ))
+    };
+    if value.is_instance_of::<PyString>() {
+        return Err(wrong());
+    }
+    let items: Vec<Bound<'_, PyAny>> = value
+        .try_iter()
+        .map_err(|_| wrong())?
+        .collect::<PyResult<_>>()?;
+    let [x, y] = &items[..] else {
+        return Err(wrong());
+    };
+    Ok(Vector::cartesian(
+        number(x, &format!("{what}'s x"))?,
+        number(y, &format!("{what}'s y"))?,
+    ))
+}
+
+/// The value of kind `kind` that `value` stands for, or why it cannot.
+fn from_python(kind: Kind, value: &Bound<'_, PyAny>, what: &str) -> PyResult<Value> {
+    let text = || -> PyResult<String> {
+        value
+            .extract::<String>()
+            .map_err(|_| scene_error(format!("{what} must be a string, got {}", type_name(value))))
+    };
+    Ok(match kind {
+        Kind::Number(_) => Value::Number(number(value, what)?),
+        Kind::Vector => Value::Vector(vector(value, what)?),
+        Kind::Bool => Value::Bool(
+            value
+                .cast::<PyBool>()
+                .map_err(|_| {
+                    scene_error(format!(
+                        "{what} must be True or False, got {}",
+                        type_name(value)
+                    ))
+                })?
+                .is_true(),
+        ),
+        Kind::Endpoint => {
+            if value.is_instance_of::<PyString>() {
+                Value::Endpoint(Endpoint::Particle(text()?))
+            } else {
+                Value::Endpoint(Endpoint::Point(vector(value, what)?))
+            }
+        }
+        Kind::Integrator => Value::Integrator(
+            text()?
+                .parse::<Integrator>()
+                .map_err(|e| scene_error(format!("{what}: {e}")))?,
+        ),
+        Kind::PairForces => {
+            let name = text()?;
+            Value::PairForces(
+                PairForces::ALL
+                    .into_iter()
+                    .find(|m| m.as_str() == name)
+                    .ok_or_else(|| {
+                        scene_error(format!("{what} must be 'direct' or 'tree', got '{name}'"))
+                    })?,
+            )
+        }
+        Kind::Color => {
+            if value.is_none() {
+                Value::Color(None)
+            } else {
+                let hex = text()?;
+                Value::Color(Some(Color::parse_hex(&hex).ok_or_else(|| {
+                    scene_error(format!("{what} must be \"#rrggbb\" or None, got '{hex}'"))
+                })?))
+            }
+        }
+        Kind::Bounds => {
+            if value.is_none() {
+                Value::Bounds(None)
+            } else {
+                let wrong = || {
+                    scene_error(format!(
+                        "{what} must be ((xmin, ymin), (xmax, ymax)) or None"
+                    ))
+                };
+                let corners: Vec<Bound<'_, PyAny>> = value
+                    .try_iter()
+                    .map_err(|_| wrong())?
+                    .collect::<PyResult<_>>()?;
+                let [min, max] = &corners[..] else {
+                    return Err(wrong());
+                };
+                Value::Bounds(Some(Bounds {
+                    min: vector(min, &format!("{what}'s lower-left corner"))?,
+                    max: vector(max, &format!("{what}'s upper-right corner"))?,
+                }))
+            }
+        }
+    })
+}
+
+/// `scene` if it is valid, or a `SceneError` with every problem.
+pub(crate) fn checked(scene: physics::Scene) -> PyResult<physics::Scene> {
+    let problems = scene.validate();
+    if problems.is_empty() {
+        return Ok(scene);
+    }
+    let messages: Vec<String> = problems.into_iter().map(|p| p.message).collect();
+    Err(scene_error(messages.join("\n")))
+}
+
+/// A scene from a file's text, or a `SceneError` with every problem, each at its line and
+/// column in `source`.
+fn parse(text: &str, format: physics::SceneFormat, source: &str) -> PyResult<physics::Scene> {
+    physics::Scene::parse(text, format).map_err(|e| scene_error(e.report(source)))
+}
+
+/// Reads a scene: a file (`.toml` or `.json`), or `"example:NAME"` for a built-in one
+/// (`newtonlab.examples()` lists them).
+///
+/// Raises `SceneError` with every problem of the file, each with its line and column.
+#[pyfunction]
+pub fn load(source: PathBuf) -> PyResult<Scene> {
+    let text = source.to_string_lossy().into_owned();
+    if let Some(name) = text.strip_prefix("example:") {
+        let example = physics::example(name).ok_or_else(|| {
+            let names: Vec<&str> = physics::EXAMPLES.iter().map(|e| e.name).collect();
+            scene_error(format!(
+                "there is no example '{name}'; the examples are: {}",
+                names.join(", ")
+            ))
+        })?;
+        let inner = example.scene().map_err(|e| scene_error(e.report(&text)))?;
+        return Ok(Scene { inner });
+    }
+    let cannot = |e: &dyn std::fmt::Display| scene_error(format!("cannot read '{text}': {e}"));
+    // A file, and of a size a scene can have: a device or a FIFO would be read until
+    // memory runs out.
+    let metadata = std::fs::metadata(&source).map_err(|e| cannot(&e))?;
+    if !metadata.is_file() {
+        return Err(scene_error(format!("'{text}' is not a file")));
+    }
+    if metadata.len() > MAX_SCENE_BYTES {
+        return Err(scene_error(format!(
+            "'{text}' is {} MB; a scene file may have at most {} MB",
+            metadata.len() / 1_000_000,
+            MAX_SCENE_BYTES / 1_000_000
+        )));
+    }
+    let contents = std::fs::read_to_string(&source).map_err(|e| cannot(&e))?;
+    let inner = parse(
+        &contents,
+        physics::SceneFormat::from_file_name(&text),
+        &text,
+    )?;
+    Ok(Scene { inner })
+}
+
+/// The built-in scenes: `{name: title}`, each loadable as `load("example:NAME")`.
+#[pyfunction]
+pub fn examples() -> Vec<(String, String)> {
+    physics::EXAMPLES
+        .iter()
+        .map(|example| {
+            let title = example
+                .scene()
+                .ok()
+                .and_then(|scene| scene.name)
+                .unwrap_or_default();
+            (example.name.to_owned(), title)
+        })
+        .collect()
+}
+
+/// A scene given as a `Scene` or as what `load` takes.
+pub(crate) fn scene_of(value: &Bound<'_, PyAny>) -> PyResult<physics::Scene> {
+    if let Ok(scene) = value.cast::<Scene>() {
+        return Ok(scene.borrow().inner.clone());
+    }
+    let source: PathBuf = value.extract().map_err(|_| {
+        scene_error(format!(
+            "a scene must be a newtonlab.Scene, a file's path or \"example:NAME\", got {}",
+            type_name(value)
+        ))
+    })?;
+    Ok(load(source)?.inner)
+}
+
+#[pymethods]
+impl Scene {
+    /// An empty scene: the default world (g = 9.81 m/s² downwards) and settings.
+    #[new]
+    fn new() -> Self {
+        Self {
+            inner: physics::Scene::new(),
+        }
+    }
+
+    /// A scene from the text of a TOML scene file.
+    #[staticmethod]
+    fn from_toml(text: &str) -> PyResult<Self> {
+        Ok(Self {
+            inner: parse(text, physics::SceneFormat::Toml, "<toml>")?,
+        })
+    }
+
+    /// A scene from the text of a JSON scene file.
+    #[staticmethod]
+    fn from_json(text: &str) -> PyResult<Self> {
+        Ok(Self {
+            inner: parse(text, physics::SceneFormat::Json, "<json>")?,
+        })
+    }
+
+    /// The scene as a TOML scene file's text.
+    fn to_toml(&self) -> String {
+        self.inner.to_toml()
+    }
+
+    /// The scene as a JSON scene file's text.
+    fn to_json(&self) -> String {
+        self.inner.to_json()
+    }
+
+    /// An independent copy.
+    fn copy(&self) -> Self {
+        self.clone()
+    }
+
+    fn __copy__(&self) -> Self {
+        self.clone()
+    }
+
+    fn __deepcopy__(&self, _memo: &Bound<'_, PyAny>) -> Self {
+        self.clone()
+    }
+
+    /// The particle called `name`, its fields as attributes.
+    fn particle(slf: Bound<'_, Self>, name: &str) -> PyResult<SceneObject> {
+        SceneObject::of(slf, What::Particle(name.to_owned()))
+    }
+
+    /// The spring called `name`.
+    fn spring(slf: Bound<'_, Self>, name: &str) -> PyResult<SceneObject> {
+        SceneObject::of(slf, What::Spring(name.to_owned()))
+    }
+
+    /// The rod called `name`.
+    fn rod(slf: Bound<'_, Self>, name: &str) -> PyResult<SceneObject> {
+        SceneObject::of(slf, What::Rod(name.to_owned()))
+    }
+
+    /// The string called `name`.
+    fn string(slf: Bound<'_, Self>, name: &str) -> PyResult<SceneObject> {
+        SceneObject::of(slf, What::String(name.to_owned()))
+    }
+
+    /// The ramp called `name`.
+    fn ramp(slf: Bound<'_, Self>, name: &str) -> PyResult<SceneObject> {
+        SceneObject::of(slf, What::Ramp(name.to_owned()))
+    }
+
+    /// The world: gravity, the pair forces' constants, the bounds.
+    #[getter]
+    fn world(slf: Bound<'_, Self>) -> PyResult<SceneObject> {
+        SceneObject::of(slf, What::World)
+    }
+
+    /// The simulation's settings: integrator, time step, start time.
+    #[getter]
+    fn simulation(slf: Bound<'_, Self>) -> PyResult<SceneObject> {
+        SceneObject::of(slf, What::Simulation)
+    }
+
+    /// The particles' names, in scene order.
+    #[getter]
+    fn particles(&self) -> Vec<String> {
+        self.inner.particle_names()
+    }
+
+    /// The springs' names.
+    #[getter]
+    fn springs(&self) -> Vec<String> {
+        self.inner.springs.iter().map(|s| s.name.clone()).collect()
+    }
+
+    /// The rods' names.
+    #[getter]
+    fn rods(&self) -> Vec<String> {
+        self.ties(physics::TieKind::Rod)
+    }
+
+    /// The strings' names.
+    #[getter]
+    fn strings(&self) -> Vec<String> {
+        self.ties(physics::TieKind::String)
+    }
+
+    /// The ramps' names.
+    #[getter]
+    fn ramps(&self) -> Vec<String> {
+        self.inner.ramps.iter().map(|r| r.name.clone()).collect()
+    }
+
+    fn __repr__(&self) -> String {
+        format!(
+            "<newtonlab.Scene {}: {} particles, {} springs, {} rods and strings, {} ramps>",
+            self.inner
+                .name
+                .as_deref()
+                .map_or_else(|| "(untitled)".to_owned(), |n| format!("'{n}'")),
+            self.inner.particles.len(),
+            self.inner.springs.len(),
+            self.inner.ties.len(),
+            self.inner.ramps.len()
+        )
+    }
+}
+
+impl Scene {
+    fn ties(&self, kind: physics::TieKind) -> Vec<String> {
+        self.inner
+            .ties
+            .iter()
+            .filter(|t| t.kind == kind)
+            .map(|t| t.name.clone())
+            .collect()
+    }
+}
+
+/// One object of a scene — a particle, spring, rod, string or ramp, the world or the
+/// settings — with the scene file's keys as attributes (`ball.mass`, `ball.velocity`).
+/// Writing one checks the value by the file's rules; a bad value raises `SceneError` and
+/// leaves the scene as it was.
+#[pyclass(module = "newtonlab")]
+pub struct SceneObject {
+    scene: Py<Scene>,
+    what: What,
+}
+
+impl SceneObject {
+    fn of(scene: Bound<'_, Scene>, what: What) -> PyResult<Self> {
+        what.section(&scene.borrow().inner)?;
+        Ok(Self {
+            scene: scene.unbind(),
+            what,
+        })
+    }
+
+    /// How the object's messages name it: `particle 'Ball'`, `world`.
+    fn label(&self) -> String {
+        match self.what.name() {
+            Some(name) => format!("{} '{name}'", self.what.kind()),
+            None => self.what.kind().to_owned(),
+        }
+    }
+}
+
+#[pymethods]
+impl SceneObject {
+    fn __getattr__(&self, py: Python<'_>, key: &str) -> PyResult<Py<PyAny>> {
+        let scene = self.scene.borrow(py);
+        let section = self.what.section(&scene.inner)?;
+        if key == "name" && self.what.name().is_some() {
+            return Ok(scene
+                .inner
+                .name_of(section)
+                .unwrap_or_default()
+                .into_pyobject(py)?
+                .into_any()
+                .unbind());
+        }
+        match get(&scene.inner, section, key) {
+            Some((_, value)) => to_python(py, value),
+            None => Err(PyAttributeError::new_err(format!(
+                "{} has no field '{key}'; its fields are: {}",
+                self.label(),
+                keys(&scene.inner, section).join(", ")
+            ))),
+        }
+    }
+
+    fn __setattr__(&mut self, py: Python<'_>, key: &str, value: Bound<'_, PyAny>) -> PyResult<()> {
+        let mut scene = self.scene.borrow_mut(py);
+        let section = self.what.section(&scene.inner)?;
+        let mut changed = scene.inner.clone();
+        let what = format!("{}: {key}", self.label());
+        if key == "name" && self.what.name().is_some() {
+            let new: String = value.extract().map_err(|_| {
+                scene_error(format!(
+                    "{what} must be a string, got {}",
+                    type_name(&value)
+                ))
+            })?;
+            changed.rename(section, &new);
+            scene.inner = checked(changed)?;
+            self.what = match &self.what {
+                What::Particle(_) => What::Particle(new),
+                What::Spring(_) => What::Spring(new),
+                What::Rod(_) => What::Rod(new),
+                What::String(_) => What::String(new),
+                What::Ramp(_) => What::Ramp(new),
+                other => other.clone(),
+            };
+            return Ok(());
+        }
+        let Some((kind, _)) = get(&scene.inner, section, key) else {
+            return Err(scene_error(format!(
+                "{} has no field '{key}'; its fields are: {}",
+                self.label(),
+                keys(&scene.inner, section).join(", ")
+            )));
+        };
+        let value = from_python(kind, &value, &what)?;
+        set(&mut changed, section, key, value);
+        scene.inner = checked(changed)?;
+        Ok(())
+    }
+
+    fn __dir__(&self, py: Python<'_>) -> PyResult<Vec<&'static str>> {
+        let scene = self.scene.borrow(py);
+        let section = self.what.section(&scene.inner)?;
+        let mut keys = keys(&scene.inner, section);
+        if self.what.name().is_some() {
+            keys.insert(0, "name");
+        }
+        Ok(keys)
+    }
+
+    fn __repr__(&self, py: Python<'_>) -> PyResult<String> {
+        let scene = self.scene.borrow(py);
+        let section = self.what.section(&scene.inner)?;
+        let mut parts = Vec::new();
+        for key in keys(&scene.inner, section) {
+            if let Some((_, value)) = get(&scene.inner, section, key) {
+                let shown = to_python(py, value)?.bind(py).repr()?.to_string();
+                parts.push(format!("{key}={shown}"));
+            }
+        }
+        Ok(format!("<{}: {}>", self.label(), parts.join(", ")))
+    }
+}

@@ -455,8 +455,8 @@ cli-every-invalid = --every muss eine endliche Zahl von Sekunden größer als 0 
 cli-event-invalid = --events: { $reason }
 cli-until-negative = --until muss 0 oder mehr Sekunden sein, nicht { $until }
 cli-until-before-start = --until { $until } liegt vor der start_time { $start } s der Szene; ein Lauf geht von seinem Anfang vorwärts
-cli-too-many-rows = --until { $until } mit --every { $every } würde mehr als { $rows } Zeilen schreiben; ein größeres --every wählen
-cli-too-many-steps = --until { $until } bei einem Zeitschritt von { $step } s bräuchte { $steps } Schritte, mehr als NewtonLab rechnet ({ $most }); einen größeren time_step oder ein kürzeres --until wählen
+cli-too-many-rows = --until { $until } mit --every { $every } würde { $rows } Zeilen mit je { $columns } Zahlen schreiben, mehr als { $most } Zahlen; ein größeres --every wählen oder --no-limit angeben
+cli-too-many-steps = --until { $until } bei einem Zeitschritt von { $step } s bräuchte { $steps } Schritte, mehr als { $most }; einen größeren time_step oder ein kürzeres --until wählen oder --no-limit angeben
 cli-cannot-create = die Ausgabedatei '{ $path }' lässt sich nicht anlegen: { $error }
 cli-cannot-write-csv = das CSV lässt sich nicht schreiben: { $error }
 cli-cannot-save-state = der Zustand lässt sich nicht nach '{ $path }' schreiben: { $error }
@@ -692,3 +692,10 @@ total-momentum-y = Impuls y
 cli-not-a-file = „{ $source }“ ist keine Datei (ein Verzeichnis, ein Gerät oder eine Pipe): eine Szenendatei angeben oder example:NAME
 cli-file-too-large = „{ $source }“ ist { $megabytes } MB groß: eine Szenendatei darf höchstens { $most } MB groß sein
 cli-same-output = { $first } und { $second } nennen beide „{ $path }“: ihre Zeilen würden sich mischen; jedem eine eigene Datei geben
+scene-inside-ramp = beginnt mit seinem Mittelpunkt in der Rampe „{ $ramp }“: außerhalb der Rampe platzieren (auf ihr bleibt es liegen)
+cli-too-much-work = --until { $until } bräuchte { $steps } Schritte von { $particles } beweglichen Teilchen, { $work } Teilchen-Schritte, mehr als { $most } (Minuten bis Stunden Arbeit); einen größeren time_step, ein kürzeres --until oder weniger Teilchen wählen oder --no-limit angeben
+run-tie-not-held = bei t = { $time } s ließ sich Stange oder Seil „{ $tie }“ nicht auf seiner Länge halten: die Kräfte darauf sind zu stark für den Zeitschritt, die Massen seiner Enden zu ungleich, oder seine Länge verträgt sich nicht mit den anderen; einen kleineren time_step wählen oder Längen und Massen prüfen
+run-left-bounds = bei t = { $time } s verließ Teilchen „{ $particle }“ die Weltgrenzen mit { $speed } m/s, zu schnell, als dass der Zeitschritt seine Stöße mit den Wänden auflösen könnte; einen kleineren time_step wählen
+scene-got-null = null
+scene-json-duplicate-key = der Schlüssel „{ $key }“ steht zweimal in einem Objekt; einen behalten
+scene-number-beyond-f64 = { $text } liegt jenseits dessen, was eine 64-Bit-Zahl fasst (etwa 2,2e-308 bis 1,8e308 dem Betrag nach, oder 0)

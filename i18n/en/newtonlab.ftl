@@ -456,8 +456,8 @@ cli-every-invalid = --every must be a finite number of seconds greater than 0; g
 cli-event-invalid = --events: { $reason }
 cli-until-negative = --until must be 0 or more seconds; got { $until }
 cli-until-before-start = --until { $until } is before the scene's start_time { $start } s; a run goes forward from its start
-cli-too-many-rows = --until { $until } with --every { $every } would write more than { $rows } rows; choose a larger --every
-cli-too-many-steps = --until { $until } at a time step of { $step } s would take { $steps } steps, more than NewtonLab runs ({ $most }); choose a larger time_step or a shorter --until
+cli-too-many-rows = --until { $until } with --every { $every } would write { $rows } rows of { $columns } numbers, more than { $most } numbers; choose a larger --every, or give --no-limit
+cli-too-many-steps = --until { $until } at a time step of { $step } s would take { $steps } steps, more than { $most }; choose a larger time_step or a shorter --until, or give --no-limit
 cli-cannot-create = cannot create the output file '{ $path }': { $error }
 cli-cannot-write-csv = cannot write the CSV: { $error }
 cli-cannot-save-state = cannot write the state to '{ $path }': { $error }
@@ -693,3 +693,10 @@ total-momentum-y = momentum y
 cli-not-a-file = '{ $source }' is not a file (a directory, a device or a pipe): give a scene file, or example:NAME
 cli-file-too-large = '{ $source }' is { $megabytes } MB: a scene file may be at most { $most } MB
 cli-same-output = { $first } and { $second } both name '{ $path }': their rows would interleave; give each its own file
+scene-inside-ramp = starts with its centre inside ramp '{ $ramp }': place it outside the ramp (on it, it rests there)
+cli-too-much-work = --until { $until } would take { $steps } steps of { $particles } moving particles, { $work } particle-steps, more than { $most } (minutes to hours of work); choose a larger time_step, a shorter --until or fewer particles, or give --no-limit
+run-tie-not-held = at t = { $time } s rod or string '{ $tie }' could not be held at its length: the forces on it are too strong for the time step, its ends' masses too unequal, or its length cannot hold with the others'; choose a smaller time_step or check the lengths and masses
+run-left-bounds = at t = { $time } s particle '{ $particle }' left the world's bounds at { $speed } m/s, too fast for the time step to resolve its impacts with the walls; choose a smaller time_step
+scene-got-null = null
+scene-json-duplicate-key = the key '{ $key }' appears twice in one object; keep one
+scene-number-beyond-f64 = { $text } is beyond what a 64-bit number holds (about 2.2e-308 to 1.8e308 in size, or 0)

@@ -455,8 +455,8 @@ cli-every-invalid = --every debe ser un número finito de segundos mayor que 0, 
 cli-event-invalid = --events: { $reason }
 cli-until-negative = --until debe ser 0 o más segundos, no { $until }
 cli-until-before-start = --until { $until } es anterior al start_time { $start } s de la escena; una ejecución avanza desde su inicio
-cli-too-many-rows = --until { $until } con --every { $every } escribiría más de { $rows } filas; elija un --every mayor
-cli-too-many-steps = --until { $until } con un paso de tiempo de { $step } s llevaría { $steps } pasos, más de los que NewtonLab ejecuta ({ $most }); elija un time_step mayor o un --until más corto
+cli-too-many-rows = --until { $until } con --every { $every } escribiría { $rows } filas de { $columns } números, más de { $most } números; elija un --every mayor, o indique --no-limit
+cli-too-many-steps = --until { $until } con un paso de tiempo de { $step } s llevaría { $steps } pasos, más de { $most }; elija un time_step mayor o un --until más corto, o indique --no-limit
 cli-cannot-create = no se puede crear el archivo de salida '{ $path }': { $error }
 cli-cannot-write-csv = no se puede escribir el CSV: { $error }
 cli-cannot-save-state = no se puede escribir el estado en '{ $path }': { $error }
@@ -692,3 +692,10 @@ total-momentum-y = momento y
 cli-not-a-file = «{ $source }» no es un archivo (un directorio, un dispositivo o una tubería): indique un archivo de escena, o example:NAME
 cli-file-too-large = «{ $source }» ocupa { $megabytes } MB: un archivo de escena puede ocupar como mucho { $most } MB
 cli-same-output = { $first } y { $second } nombran ambos «{ $path }»: sus filas se mezclarían; dé a cada uno su propio archivo
+scene-inside-ramp = empieza con su centro dentro de la rampa «{ $ramp }»: colóquela fuera de la rampa (sobre ella, se queda apoyada)
+cli-too-much-work = --until { $until } llevaría { $steps } pasos de { $particles } partículas móviles, { $work } pasos-partícula, más de { $most } (de minutos a horas de trabajo); elija un time_step mayor, un --until más corto o menos partículas, o indique --no-limit
+run-tie-not-held = en t = { $time } s la varilla o cuerda «{ $tie }» no pudo mantenerse en su longitud: las fuerzas sobre ella son demasiado fuertes para el paso de tiempo, las masas de sus extremos demasiado desiguales, o su longitud no es compatible con las de las demás; elija un time_step menor o revise longitudes y masas
+run-left-bounds = en t = { $time } s la partícula «{ $particle }» salió de los límites del mundo a { $speed } m/s, demasiado rápido para que el paso de tiempo resuelva sus choques con las paredes; elija un time_step menor
+scene-got-null = null
+scene-json-duplicate-key = la clave «{ $key }» aparece dos veces en un objeto; deje una
+scene-number-beyond-f64 = { $text } está fuera de lo que cabe en un número de 64 bits (de unos 2,2e-308 a 1,8e308 en tamaño, o 0)

@@ -68,6 +68,10 @@ pub(crate) struct BenchArgs {
 
 /// The most bodies `bench` builds.
 const MOST_PARTICLES: usize = 10_000_000;
+/// The longest `--seconds`: an hour.
+const MOST_SECONDS: f64 = 3600.0;
+/// The most `--threads`: far more than any machine's cores.
+const MOST_THREADS: usize = 1024;
 
 fn parse_integrator(name: &str) -> Result<Integrator, String> {
     name.parse()
@@ -85,10 +89,19 @@ fn evaluations_per_step(integrator: Integrator) -> u64 {
 
 /// `--seconds` and `--particles` within what a benchmark can do.
 fn check_args(args: &BenchArgs) -> Result<(), Failure> {
-    if !(args.seconds.is_finite() && args.seconds > 0.0) {
+    // An hour at most: simulated seconds of the pit, or seconds of measurement.
+    if !(args.seconds.is_finite() && args.seconds > 0.0 && args.seconds <= MOST_SECONDS) {
         return Err(Failure::Input(format!(
-            "--seconds must be greater than 0; got {}",
+            "--seconds must be greater than 0 and at most {MOST_SECONDS}; got {}",
             args.seconds
+        )));
+    }
+    // Threads beyond a few per core only cost their start (10,000 took 5.8 s).
+    if let Some(threads) = args.threads
+        && !(1..=MOST_THREADS).contains(&threads)
+    {
+        return Err(Failure::Input(format!(
+            "--threads must be between 1 and {MOST_THREADS}; got {threads}"
         )));
     }
     // At least one body (none divides by zero in the figures); a bound on the count,

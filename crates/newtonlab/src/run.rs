@@ -45,6 +45,11 @@ pub(crate) struct RunArgs {
     /// what air resistance took (last: it came later).
     #[arg(long)]
     ledger: bool,
+    /// Run however long it takes: without it, a run of more than 10⁸ time steps, 10⁹
+    /// particle-steps or 10⁸ numbers of rows is refused (a mistyped time step or
+    /// interval is likelier than intent, and would look like a hang).
+    #[arg(long)]
+    no_limit: bool,
 }
 
 pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
@@ -54,6 +59,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         events: args.events.clone(),
         ledger: args.ledger,
         impacts: args.impacts.is_some(),
+        no_limit: args.no_limit,
     };
     plan.check().map_err(Failure::Input)?;
     distinct_outputs(args)?;

@@ -3,6 +3,7 @@
 
 mod common;
 
+use std::fmt::Write as _;
 use std::process::{Command, Output, Stdio};
 use std::time::{Duration, Instant};
 
@@ -179,6 +180,11 @@ fn bad_arguments_are_named() {
             "--particles",
         ),
         (vec!["bench", "--particles", "1000000000"], "--particles"),
+        (
+            vec!["bench", "--scene", "scrub", "--seconds", "1e300"],
+            "--seconds",
+        ),
+        (vec!["bench", "--threads", "10000"], "--threads"),
     ] {
         let output = within(20, &args);
         assert_eq!(
@@ -192,5 +198,95 @@ fn bad_arguments_are_named() {
             "{args:?}: {}",
             stderr(&output)
         );
+    }
+}
+
+/// Work without bounds is refused before it starts, with the estimate and the way out:
+/// 99 charged particles at a time step of 1e-7 s for 5 s (hours), 10⁸ rows of a run sampled every
+/// 5e-9 s (a gigabyte of CSV), 10⁶ s at 1 ms (10⁹ steps). `--no-limit` lifts each.
+#[test]
+fn unbounded_work_is_refused_with_the_estimate() {
+    let mut charged = "version = 1\n[simulation]\ntime_step = 1e-7\n".to_owned();
+    for i in 0..99 {
+        let _ = write!(
+            charged,
+            "[[particle]]\nname = \"p{i}\"\nmass = 1.0\nradius = 0.01\ncharge = 1e-6\nposition = [{i}.0, 0.0]\n"
+        );
+    }
+    let (_dir, charged) = scene_file("charged.toml", &charged);
+    let (_dir2, one) = scene_file(
+        "one.toml",
+        "version = 1\n[[particle]]\nname = \"a\"\nmass = 1.0\nposition = [0.0, 0.0]\n",
+    );
+    for (args, words) in [
+        (
+            vec!["run", charged.as_str(), "--until", "5"],
+            "particle-steps",
+        ),
+        (
+            vec!["run", one.as_str(), "--until", "0.5", "--every", "5e-9"],
+            "numbers",
+        ),
+        (
+            vec!["run", one.as_str(), "--until", "1e6", "--every", "1000"],
+            "steps",
+        ),
+    ] {
+        let output = within(20, &args);
+        assert_eq!(
+            output.status.code(),
+            Some(2),
+            "{args:?}: {}",
+            stderr(&output)
+        );
+        let said = stderr(&output);
+        assert!(
+            said.contains(words) && said.contains("--no-limit"),
+            "{args:?}: {said}"
+        );
+    }
+}
+
+/// What answered wrong in silence now says why: a ball 1e13 m/s fast leaves its box (exit
+/// 1, named, where it was found 25 km outside with exit 0); rods under forces far too
+/// strong for an Euler step (exit 1, named, where they were found 10¹³ m long); a ball
+/// inside a ramp 1e100 thick (exit 2: it would have been pushed out 5e99 m).
+#[test]
+fn silent_wrong_answers_are_named() {
+    let fast = "version = 1\n[world]\nbounds = { min = [-5.0, -5.0], max = [5.0, 5.0] }\n\
+                [[particle]]\nname = \"fast\"\nmass = 1.0\nradius = 0.1\nposition = [0.0, 0.0]\n\
+                velocity = [1e13, 3e12]\n";
+    let rods = "version = 1\n[world]\ngravity = [0.0, 0.0]\ngravitation = false\ncollisions = false\n\
+                [simulation]\nintegrator = \"euler\"\ntime_step = 0.05\n\
+                [[particle]]\nname = \"a\"\nmass = 2.5\nposition = [0.0, -2.0]\ncharge = -0.3\n\
+                [[particle]]\nname = \"c\"\nmass = 3.1\nposition = [0.0, 1.0]\ncharge = -8.2\n\
+                [[particle]]\nname = \"d\"\nmass = 0.01\nposition = [0.0, 0.0]\n\
+                [[rod]]\nname = \"long\"\nfrom = \"d\"\nto = \"a\"\n\
+                [[rod]]\nname = \"short\"\nfrom = \"d\"\nto = [-1.0, 0.0]\n";
+    let thick = "version = 1\n[[particle]]\nname = \"ball\"\nmass = 1.0\nradius = 0.1\nposition = [0.0, 0.0]\n\
+                 [[string]]\nname = \"s\"\nfrom = \"ball\"\nto = [0.0, 1.0]\n\
+                 [[ramp]]\nname = \"r\"\nfrom = [-1.0, 0.0]\nto = [1.0, 0.0]\nthickness = 1e100\n";
+    for (text, code, words) in [
+        (fast, 1, "particle 'fast' left the world's bounds"),
+        (
+            rods,
+            1,
+            "rod or string 'short' could not be held at its length",
+        ),
+        (
+            thick,
+            2,
+            "particle 'ball': starts with its centre inside ramp 'r'",
+        ),
+    ] {
+        let (_dir, path) = scene_file("wrong.toml", text);
+        let output = within(20, &["run", &path, "--until", "0.5", "--every", "0.05"]);
+        assert_eq!(
+            output.status.code(),
+            Some(code),
+            "{words}: {}",
+            stderr(&output)
+        );
+        assert!(stderr(&output).contains(words), "{}", stderr(&output));
     }
 }

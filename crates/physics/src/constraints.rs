@@ -233,6 +233,23 @@ impl Constraints {
         worst
     }
 
+    /// The link furthest from its length at `x` (a rod either way, a string only
+    /// stretched), and how far, relative to its length.
+    pub fn most_stretched(&self, x: &[DVec2]) -> Option<(usize, f64)> {
+        self.links
+            .iter()
+            .enumerate()
+            .map(|(k, link)| {
+                let off = link.d(x).length() / link.length - 1.0;
+                let off = match link.kind {
+                    TieKind::Rod => off.abs(),
+                    TieKind::String => off.max(0.0),
+                };
+                (k, off)
+            })
+            .max_by(|a, b| a.1.total_cmp(&b.1))
+    }
+
     /// Gauss–Newton on C = 0 for the links of `island` that must hold at `x`.
     fn project_positions(&self, island: &[usize], x: &mut [DVec2], w: &[f64]) -> f64 {
         let mut error = 0.0;

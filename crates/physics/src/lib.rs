@@ -112,4 +112,6 @@ pub use scene::{
     Section, Series, Settings, Spring, Tie, TieKind, Vector, View, World, check_value,
 };
 pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};
-pub use trajectory::{IMPACT_COLUMNS, LEDGER_COLUMNS, Plan, Row, Trajectory};
+pub use trajectory::{
+    IMPACT_COLUMNS, LEDGER_COLUMNS, MAX_NUMBERS, MAX_STEPS, MAX_WORK, Plan, Row, Trajectory,
+};

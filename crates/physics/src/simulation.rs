@@ -73,6 +73,26 @@ pub enum SimulationError {
         /// The steps allowed.
         limit: u64,
     },
+    /// A particle left the world's bounds: too fast for the time step to resolve its
+    /// impacts with the walls.
+    #[error("{}", crate::scene::say("run-left-bounds", &[("time", &time.to_string()), ("particle", particle), ("speed", &format!("{speed:.3e}"))]))]
+    LeftBounds {
+        /// The particle's name.
+        particle: String,
+        /// Seconds.
+        time: f64,
+        /// Its speed then, m/s.
+        speed: f64,
+    },
+    /// A rod or a string could not be held at its length (forces far too strong for the
+    /// time step, masses too unequal for f64 to tie, or lengths that cannot all hold).
+    #[error("{}", crate::scene::say("run-tie-not-held", &[("time", &time.to_string()), ("tie", tie)]))]
+    TieNotHeld {
+        /// The rod's or string's name.
+        tie: String,
+        /// Seconds.
+        time: f64,
+    },
 }
 
 /// What [`Simulation::step_to_observed`] calls after each step: the state before it and
@@ -478,8 +498,9 @@ impl Simulation {
         mut observe: Option<&mut Observer<'_>>,
     ) -> Result<(), SimulationError> {
         // Every loop here is bounded: dopri5 may take many more steps than the time step
-        // implies (a close pass), but not ten thousand times more: that would take seconds
-        // for one step, and says the time step is far too long for the motion.
+        // implies (a close pass), but not a thousand times more on average over the
+        // interval: that says the time step is far too long for the motion, and would
+        // take seconds for a handful of particles.
         #[expect(
             clippy::cast_possible_truncation,
             clippy::cast_sign_loss,
@@ -488,7 +509,7 @@ impl Simulation {
         let limit = ((time - self.state.time) / self.time_step)
             .ceil()
             .clamp(1.0, 1e12) as u64
-            * 10_000;
+            * 1_000;
         let mut taken_steps = 0_u64;
         while self.state.time < time {
             taken_steps += 1;
@@ -600,11 +621,23 @@ impl Simulation {
         }
         self.profiler.lap(Stage::RestingSolver);
         if !self.forces.constraints.is_empty() {
-            self.project_onto_ties();
             self.work.start_acceleration = None;
+            // A value gone non-finite is the first thing wrong, and says so.
+            self.project_onto_ties()
+                .or_else(|tie| self.check_finite().and(Err(tie)))?;
         }
         self.steps += 1;
         self.check_finite()?;
+        if let Some(i) = self
+            .contacts
+            .escaped(&self.state.position, |i| !self.forces.is_fixed(i))
+        {
+            return Err(SimulationError::LeftBounds {
+                particle: self.names[i].clone(),
+                time: self.state.time,
+                speed: self.state.velocity[i].length(),
+            });
+        }
         Ok(taken)
     }
 

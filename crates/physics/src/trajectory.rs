@@ -18,13 +18,17 @@ use crate::simulation::{ImpactRecord, ImpactTarget, Simulation, SimulationError}
 /// The largest index k of a row's instant k·DT: 2⁵², below which consecutive products
 /// are distinct f64s.
 const MAX_GRID_INDEX: f64 = 4_503_599_627_370_496.0;
-/// The most rows one run may give: beyond this a typo in the interval is likelier than
-/// intent.
-const MAX_ROWS: f64 = 1e8;
-/// The most time steps one run may take: 10⁹ steps of even the lightest scene take about
-/// a quarter of an hour here; more is a time step or an end mistyped, and would look
-/// like a hang.
-const MAX_STEPS: f64 = 1e9;
+/// The most numbers one run's rows may hold without [`Plan::no_limit`]: 10⁸, some 2 GB of
+/// CSV; beyond this a typo in the interval is likelier than intent.
+pub const MAX_NUMBERS: f64 = 1e8;
+/// The most time steps one run may take without [`Plan::no_limit`]: 10⁸ steps of the
+/// lightest scene take a minute or two here; more is a time step or an end mistyped, and
+/// would look like a hang.
+pub const MAX_STEPS: f64 = 1e8;
+/// The most particle-steps (particles × steps) one run may take without
+/// [`Plan::no_limit`]: 10⁹, a few minutes of the 1,000-ball pit (99 charged particles at
+/// a time step of 1e-9 s for half a second would be 5·10¹⁰, hours).
+pub const MAX_WORK: f64 = 1e9;
 
 /// The ledger's columns, in the order the rows give them. Drag's comes last, after the
 /// residual: it was added after files were read by column position.
@@ -61,6 +65,8 @@ pub struct Plan {
     pub ledger: bool,
     /// Whether impacts are kept, for [`Trajectory::take_impacts`].
     pub impacts: bool,
+    /// Whether to run beyond [`MAX_STEPS`], [`MAX_WORK`] and [`MAX_NUMBERS`] (`--no-limit`).
+    pub no_limit: bool,
 }
 
 /// An event as typed (trimmed) and as read.
@@ -142,7 +148,7 @@ impl Trajectory {
     /// nothing in the scene.
     pub fn new(scene: &Scene, plan: &Plan) -> Result<Self, String> {
         let (events, every) = plan.read()?;
-        check_extent(plan.until, every, &scene.simulation)?;
+        check_extent(plan, every, scene)?;
         let mut simulation = Simulation::new(scene).map_err(|e| e.to_string())?;
         if plan.ledger {
             simulation.keep_ledger();
@@ -288,10 +294,11 @@ fn row_values(simulation: &Simulation, ledger_start: Option<f64>, out: &mut Vec<
     }
 }
 
-/// Whether a run to `until` sampled every `every` stays within what it can do: it ends
-/// after it starts, its rows' instants are distinct, and neither its rows nor its steps
-/// are beyond reason.
-fn check_extent(until: f64, every: Option<f64>, settings: &Settings) -> Result<(), String> {
+/// Whether the run `plan` asks of `scene`, sampled every `every`, stays within what it
+/// can do: it ends after it starts and its rows' instants are distinct; and, unless the
+/// plan says `no_limit`, its steps, its work and its rows are within reason.
+fn check_extent(plan: &Plan, every: Option<f64>, scene: &Scene) -> Result<(), String> {
+    let (until, settings) = (plan.until, &scene.simulation);
     let start = settings.start_time;
     if until < start {
         let id = if start == 0.0 {
@@ -315,15 +322,22 @@ fn check_extent(until: f64, every: Option<f64>, settings: &Settings) -> Result<(
             &[("every", &every.to_string()), ("until", &until.to_string())],
         ));
     }
+    if plan.no_limit {
+        return Ok(());
+    }
+    let columns =
+        6 * scene.particles.len() + 6 + if plan.ledger { LEDGER_COLUMNS.len() } else { 0 };
     if let Some(every) = every
-        && span / every > MAX_ROWS
+        && (span / every + 2.0) * columns as f64 > MAX_NUMBERS
     {
         return Err(say(
             "cli-too-many-rows",
             &[
                 ("until", &until.to_string()),
                 ("every", &every.to_string()),
-                ("rows", &MAX_ROWS.to_string()),
+                ("rows", &format!("{:.1e}", span / every)),
+                ("columns", &columns.to_string()),
+                ("most", &format!("{MAX_NUMBERS:e}")),
             ],
         ));
     }
@@ -336,6 +350,20 @@ fn check_extent(until: f64, every: Option<f64>, settings: &Settings) -> Result<(
                 ("step", &format!("{:e}", settings.time_step)),
                 ("steps", &format!("{steps:.1e}")),
                 ("most", &format!("{MAX_STEPS:e}")),
+            ],
+        ));
+    }
+    let particles = scene.particles.iter().filter(|p| !p.fixed).count().max(1);
+    let work = steps * particles as f64;
+    if work > MAX_WORK {
+        return Err(say(
+            "cli-too-much-work",
+            &[
+                ("until", &until.to_string()),
+                ("steps", &format!("{steps:.1e}")),
+                ("particles", &particles.to_string()),
+                ("work", &format!("{work:.1e}")),
+                ("most", &format!("{MAX_WORK:e}")),
             ],
         ));
     }
@@ -402,6 +430,43 @@ fn sample_times(start: f64, until: f64, every: f64) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::sample_times as from;
+    use super::{Plan, Trajectory};
+    use crate::{Particle, Scene};
+
+    /// Each limit refuses the run, and `no_limit` lifts it (the run is only built, not
+    /// taken).
+    #[test]
+    fn the_limits_refuse_and_no_limit_lifts_them() {
+        let one = Scene::new().with_particle(Particle::new("a", 1.0));
+        let mut many = Scene::new();
+        for i in 0..20 {
+            many = many
+                .with_particle(Particle::new(format!("p{i}"), 1.0).position([f64::from(i), 0.0]));
+        }
+        for (scene, until, every, words) in [
+            (&one, 1e6, Some(1.0), "steps"),
+            (&many, 6e4, Some(1.0), "particle-steps"),
+            (&one, 1.0, Some(1e-8), "numbers"),
+        ] {
+            let plan = Plan {
+                until,
+                every,
+                ..Plan::default()
+            };
+            let Err(refused) = Trajectory::new(scene, &plan) else {
+                panic!("{words}: not refused");
+            };
+            assert!(
+                refused.contains(words) && refused.contains("--no-limit"),
+                "{refused}"
+            );
+            let lifted = Plan {
+                no_limit: true,
+                ..plan
+            };
+            assert!(Trajectory::new(scene, &lifted).is_ok(), "{words}: lifted");
+        }
+    }
 
     fn sample_times(until: f64, every: f64) -> Vec<f64> {
         from(0.0, until, every)

@@ -102,6 +102,12 @@ pub(crate) const FULL_LENGTH: f64 = 1e-9;
 /// rods drift in length; smaller cannot be met.
 pub(crate) const PROJECTION_TOLERANCE: f64 = 1e-15;
 
+/// A rod or string further than this from its length after the projection (relative to
+/// the length) ends the run with [`crate::SimulationError::TieNotHeld`]; dimensionless.
+/// Why: a converged projection leaves rounding, 1e-15; a millionth is an answer wrong
+/// where anyone would see it, and far above any rounding.
+pub(crate) const TIE_HELD: f64 = 1e-6;
+
 /// Most Gauss–Newton iterations of the position projection. It converges quadratically
 /// in a few; the bound only stops a degenerate island (links that cannot all hold), whose
 /// remaining error is reported.

@@ -99,6 +99,69 @@ fn syntax_errors_have_positions() {
     );
 }
 
+/// JSON's problems are told as TOML's are: at the line and column of the value or key
+/// (the JSON reader keeps ranges), a `null` as null, a key given twice refused rather
+/// than the last kept, a byte-order mark passed over; in both formats a number no f64
+/// holds is named as written, not as 0 or NaN, and an integer beyond i64 is the number it
+/// says.
+#[test]
+fn json_is_read_as_exactly_as_toml() {
+    let at = |text: &str| {
+        let error = Scene::from_json(text).expect_err("refused");
+        let p = &error.problems[0];
+        (p.line, p.column, p.message.clone())
+    };
+    let (line, column, message) = at(
+        "{\n  \"version\": 1,\n  \"particle\": [{\"name\": \"a\", \"mass\": -1, \"position\": [0, 0]}]\n}",
+    );
+    assert_eq!((line, column), (Some(3), Some(38)), "{message}");
+    assert!(
+        message.contains("mass must be greater than 0, got -1"),
+        "{message}"
+    );
+    let (_, _, message) = at(
+        "{\"version\": 1, \"particle\": [{\"name\": \"a\", \"mass\": null, \"position\": [0, 0]}]}",
+    );
+    assert!(message.ends_with("got null"), "{message}");
+    let (line, column, message) = at("{\"version\": 1,\n \"version\": 1}");
+    assert_eq!((line, column), (Some(2), Some(2)), "{message}");
+    assert!(message.contains("'version' appears twice"), "{message}");
+    assert!(
+        Scene::from_json("\u{feff}{\"version\": 1}").is_ok(),
+        "a byte-order mark"
+    );
+    for (text, format) in [
+        (
+            "{\"version\": 1, \"simulation\": {\"time_step\": 1e-400}}",
+            physics::SceneFormat::Json,
+        ),
+        (
+            "version = 1\n[simulation]\ntime_step = 1e-400\n",
+            physics::SceneFormat::Toml,
+        ),
+        (
+            "version = 1\n[simulation]\ntime_step = 1e400\n",
+            physics::SceneFormat::Toml,
+        ),
+    ] {
+        let error = Scene::parse(text, format).expect_err("refused");
+        let message = &error.problems[0].message;
+        assert!(
+            message.contains("is beyond what a 64-bit number holds"),
+            "{message}"
+        );
+        assert!(
+            message.contains("1e-400") || message.contains("1e400"),
+            "{message}"
+        );
+    }
+    let scene = Scene::from_toml(
+        "version = 1\n[[particle]]\nname = \"a\"\nmass = 99999999999999999999\nposition = [0.0, 0.0]\n",
+    )
+    .expect("an integer beyond i64 is still a number");
+    assert_eq!(scene.particles[0].mass, 1e20, "its value");
+}
+
 #[test]
 fn version_is_required_and_must_be_1() {
     assert!(

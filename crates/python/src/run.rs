@@ -73,11 +73,17 @@ fn collect(mut trajectory: Trajectory, events: bool) -> Rows {
 /// down"`), each a row at its instant, located inside its step; the `event` column names
 /// it. `ledger`: the energy ledger's columns at the end of each row. `impacts`: keep
 /// every impact for `traj.impacts` (a resting pile counts thousands a step, and keeping
-/// them costs time: off unless asked).
+/// them costs time: off unless asked). `no_limit`: run however long it takes (without it,
+/// more than 10⁸ time steps, 10⁹ particle-steps or 10⁸ numbers are refused, as the
+/// command line refuses them without `--no-limit`).
 ///
 /// Raises `SceneError` for a bad scene or argument, `SimulationError` when the run fails.
 #[pyfunction]
-#[pyo3(signature = (scene, until, every = None, events = None, ledger = false, impacts = false))]
+#[pyo3(signature = (scene, until, every = None, events = None, ledger = false, impacts = false, no_limit = false))]
+#[expect(
+    clippy::too_many_arguments,
+    reason = "Python's keyword arguments, each with its default"
+)]
 pub fn run(
     py: Python<'_>,
     scene: &Bound<'_, PyAny>,
@@ -86,6 +92,7 @@ pub fn run(
     events: Option<&Bound<'_, PyAny>>,
     ledger: bool,
     impacts: bool,
+    no_limit: bool,
 ) -> PyResult<Py<crate::table::Trajectory>> {
     let scene = scene_of(scene)?;
     let events = strings(events, "events")?;
@@ -95,6 +102,7 @@ pub fn run(
         events: events.clone(),
         ledger,
         impacts,
+        no_limit,
     };
     let trajectory = Trajectory::new(&scene, &plan).map_err(scene_error)?;
     let rows = py.detach(|| collect(trajectory, !events.is_empty()));

@@ -86,6 +86,7 @@ def test_a_file_that_does_not_parse_names_its_line(tmp_path: pathlib.Path):
         (lambda: newtonlab.run("example:projectile", until=-1.0), "before|negative|0 or more"),
         (lambda: newtonlab.run("example:projectile", until=1.0, every=0.0), "every|interval"),
         (lambda: newtonlab.run("example:projectile", until=1e300), "too fine"),
+        (lambda: newtonlab.run("example:projectile", until=2e5, every=1000.0), "no-limit"),
         (lambda: newtonlab.run("example:projectile", until=1.0, events="Ball.vx explodes"), "event"),
         (lambda: newtonlab.run("example:projectile", until=1.0, events="Nobody.vx crosses 0"), "Nobody"),
         (lambda: newtonlab.run(42, until=1.0), "a scene must be"),

@@ -211,6 +211,20 @@ impl Contacts {
         self.obstacles[k].target
     }
 
+    /// The first particle (of those `moving` says move) whose centre has left the world's
+    /// bounds, by more than a millionth of the box: a particle too fast for the time step
+    /// to resolve its impacts with the walls (1e13 m/s in a box of 10 m).
+    pub fn escaped(&self, x: &[DVec2], moving: impl Fn(usize) -> bool) -> Option<usize> {
+        let walls = self.walls?;
+        let slack = 1e-6 * (walls.max - walls.min).length();
+        let (min, max) = (walls.min - slack, walls.max + slack);
+        // Written so that a NaN position counts as inside: non-finite values are named
+        // by their own check.
+        (0..x.len()).find(|&i| {
+            moving(i) && (x[i].x < min.x || x[i].y < min.y || x[i].x > max.x || x[i].y > max.y)
+        })
+    }
+
     /// How many of the obstacles, from the first, a particle whose reach lies in `reach`
     /// may touch: all, or only the ramps when the box lies strictly inside the walls.
     /// Then [`Shape::clear_of_box`] would find it clear of each wall by the same

@@ -426,6 +426,37 @@ impl Checker<'_> {
         for (i, ramp) in self.scene.ramps.iter().enumerate() {
             self.rules(Section::Ramp(i), fields::RAMP, ramp);
         }
+        self.inside_ramps();
+    }
+
+    /// A moving particle must not start with its centre inside a ramp: pushed out to the
+    /// nearest surface it could land anywhere (half a thickness of 1e100 m away), and a
+    /// rod or string holding it could not follow.
+    fn inside_ramps(&mut self) {
+        for (i, p) in self.scene.particles.iter().enumerate() {
+            if p.fixed {
+                continue;
+            }
+            let at = p.position.to_dvec2();
+            for ramp in &self.scene.ramps {
+                let (a, b) = (ramp.from.to_dvec2(), ramp.to.to_dvec2());
+                let along = b - a;
+                let t = if along.length_squared() > 0.0 {
+                    ((at - a).dot(along) / along.length_squared()).clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                let depth = 0.5 * ramp.thickness - at.distance(a + along * t);
+                if depth > 0.0 && depth.is_finite() {
+                    self.report(
+                        Section::Particle(i),
+                        "position",
+                        &say("scene-inside-ramp", &[("ramp", ramp.name.as_str())]),
+                    );
+                    break;
+                }
+            }
+        }
     }
 
     /// A graph's quantities must be quantities, of particles that exist.

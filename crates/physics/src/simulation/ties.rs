@@ -5,8 +5,9 @@
 use glam::DVec2;
 
 use super::Simulation;
-use crate::tuning::FULL_LENGTH;
+use super::SimulationError;
 use crate::tuning::{EVENT_ITERATIONS, EVENT_TIME_TOLERANCE};
+use crate::tuning::{FULL_LENGTH, TIE_HELD};
 
 impl Simulation {
     /// At construction: the positions and velocities projected onto the rods (and onto
@@ -15,7 +16,8 @@ impl Simulation {
         if self.forces.constraints.is_empty() {
             return;
         }
-        self.project_onto_ties();
+        // A tie not held at the start is found again by the first step, which says so.
+        let _ = self.project_onto_ties();
         self.begin_ties(self.time_step);
     }
 
@@ -170,12 +172,28 @@ impl Simulation {
     }
 
     /// Puts the positions and velocities back onto the links' lengths and rates.
-    pub(super) fn project_onto_ties(&mut self) {
-        self.forces.constraints.project(
+    ///
+    /// # Errors
+    /// A link the projection could not bring within [`TIE_HELD`] of its length (forces
+    /// far too strong for the time step, masses too unequal for f64 to tie, lengths that
+    /// cannot all hold): a run that went on would answer wrong in silence.
+    pub(super) fn project_onto_ties(&mut self) -> Result<(), SimulationError> {
+        let worst = self.forces.constraints.project(
             &mut self.state.position,
             &mut self.state.velocity,
             &self.forces.inverse_mass,
         );
+        if worst <= TIE_HELD {
+            return Ok(());
+        }
+        match self.forces.constraints.most_stretched(&self.state.position) {
+            // NaN counts as not held.
+            Some((k, off)) if off.is_nan() || off > TIE_HELD => Err(SimulationError::TieNotHeld {
+                tie: self.tie_names[k].clone(),
+                time: self.state.time,
+            }),
+            _ => Ok(()),
+        }
     }
 
     /// Each rod's and string's tension now, N (pulling positive, 0 for a slack string),

@@ -149,13 +149,16 @@ def run(
     events: Union[None, str, Iterable[str]] = None,
     ledger: bool = False,
     impacts: bool = False,
+    no_limit: bool = False,
 ) -> Trajectory:
     """Runs ``scene`` to ``until`` seconds: ``newtonlab run``'s rows, bit for bit.
 
     ``every``: the sampling interval (default 0.01 s, or no samples with ``events``);
     ``events``: ``"QUANTITY crosses VALUE [up|down]"``, each a row at its located instant;
     ``ledger``: the energy ledger's columns; ``impacts``: keep every impact for
-    ``traj.impacts`` (off by default: a resting pile counts thousands a step).
+    ``traj.impacts`` (off by default: a resting pile counts thousands a step);
+    ``no_limit``: run however long it takes (otherwise more than 10⁸ steps, 10⁹
+    particle-steps or 10⁸ numbers raise ``SceneError``).
     """
 
 def sweep(

@@ -532,6 +532,7 @@ pub(super) fn read_number(node: &Node) -> Result<f64, String> {
     match node.value {
         Value::Number(x) if x.is_finite() => Ok(x),
         Value::Number(x) => Err(say("scene-must-be-finite", &[("got", &x.to_string())])),
+        Value::Beyond(ref text) => Err(say("scene-number-beyond-f64", &[("text", text)])),
         ref other => Err(say("scene-must-be-number", &[("got", &other.kind())])),
     }
 }

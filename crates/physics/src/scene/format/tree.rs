@@ -1,5 +1,6 @@
 //! The parse tree: TOML or JSON as nodes that remember where each key and value stands
-//! in the file.
+//! in the file (JSON's read by `jsonc-parser` in strict mode, for its ranges), so that
+//! every problem of either format is told with its line and column.
 
 use std::ops::Range;
 
@@ -8,7 +9,7 @@ use crate::scene::say;
 
 pub(super) type Span = Option<Range<usize>>;
 
-/// A parsed value with the byte range it came from (TOML only).
+/// A parsed value with the byte range it came from.
 pub(super) struct Node {
     pub(super) value: Value,
     pub(super) span: Span,
@@ -22,6 +23,11 @@ pub(super) enum Value {
     Table(Vec<Entry>),
     /// A TOML date or time: never valid in a scene.
     Datetime,
+    /// JSON's `null`: never valid in a scene.
+    Null,
+    /// A number as written that no f64 holds (1e-400, 1e400): kept as text, so that the
+    /// message says what was written rather than 0 or infinity.
+    Beyond(String),
 }
 
 pub(super) struct Entry {
@@ -36,11 +42,12 @@ impl Value {
         say(
             match self {
                 Self::Bool(_) => "scene-got-bool",
-                Self::Number(_) => "scene-got-number",
+                Self::Number(_) | Self::Beyond(_) => "scene-got-number",
                 Self::Text(_) => "scene-got-text",
                 Self::Array(_) => "scene-got-list",
                 Self::Table(_) => "scene-got-table",
                 Self::Datetime => "scene-got-date",
+                Self::Null => "scene-got-null",
             },
             &[],
         )
@@ -92,11 +99,19 @@ pub(super) fn toml_node(node: toml::Spanned<toml::de::DeValue<'_>>) -> Node {
     let span = Some(node.span());
     let value = match node.into_inner() {
         DeValue::String(s) => Value::Text(s.into_owned()),
-        DeValue::Integer(i) => Value::Number(
-            i64::from_str_radix(&i.as_str().replace('_', ""), i.radix())
-                .map_or(f64::NAN, |i| i as f64),
-        ),
-        DeValue::Float(f) => Value::Number(parse_toml_float(f.as_str())),
+        DeValue::Integer(i) => {
+            let digits = i.as_str().replace('_', "");
+            // Beyond i64 (99999999999999999999) a decimal integer is still a number.
+            match i64::from_str_radix(&digits, i.radix()) {
+                Ok(i) => Value::Number(i as f64),
+                Err(_) if i.radix() == 10 => number(&digits),
+                Err(_) => Value::Beyond(digits),
+            }
+        }
+        DeValue::Float(f) => match parse_toml_float(f.as_str()) {
+            x if x.is_nan() && !f.as_str().contains("nan") => Value::Beyond(f.as_str().to_owned()),
+            x => number_as_written(f.as_str(), x),
+        },
         DeValue::Boolean(b) => Value::Bool(b),
         DeValue::Datetime(_) => Value::Datetime,
         DeValue::Array(items) => Value::Array(items.into_iter().map(toml_node).collect()),
@@ -115,39 +130,140 @@ pub(super) fn parse_toml_float(raw: &str) -> f64 {
     }
 }
 
-pub(super) fn parse_json(text: &str) -> Result<Node, LoadError> {
-    match serde_json::from_str::<serde_json::Value>(text) {
-        Ok(value) => Ok(json_node(value)),
-        Err(error) => Err(LoadError {
-            problems: vec![Problem {
-                message: say("scene-bad-json", &[("error", &error.to_string())]),
-                line: Some(error.line()),
-                column: Some(error.column()),
-                field: None,
-            }],
-        }),
+/// `text` as a number: what it parses to, or [`Value::Beyond`] when that is 0 or infinite
+/// though the digits say otherwise.
+fn number(text: &str) -> Value {
+    number_as_written(text, text.parse().unwrap_or(f64::NAN))
+}
+
+/// `x`, read from `text`, or [`Value::Beyond`] when it rounded to 0 or to infinity from a
+/// number that is neither (1e-400, 1e400).
+fn number_as_written(text: &str, x: f64) -> Value {
+    let mantissa = text.split(['e', 'E']).next().unwrap_or(text);
+    let nonzero = mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b));
+    let infinite_as_written = text.contains("inf");
+    if (x == 0.0 && nonzero) || (x.is_infinite() && !infinite_as_written) {
+        Value::Beyond(text.to_owned())
+    } else {
+        Value::Number(x)
     }
 }
 
-pub(super) fn json_node(value: serde_json::Value) -> Node {
-    use serde_json::Value as J;
-    let value = match value {
-        J::Null => Value::Datetime,
-        J::Bool(b) => Value::Bool(b),
-        J::Number(n) => Value::Number(n.as_f64().unwrap_or(f64::NAN)),
-        J::String(s) => Value::Text(s),
-        J::Array(items) => Value::Array(items.into_iter().map(json_node).collect()),
-        J::Object(map) => Value::Table(
-            map.into_iter()
-                .map(|(key, value)| Entry {
-                    key,
-                    key_span: None,
-                    node: json_node(value),
-                })
-                .collect(),
-        ),
+/// A problem of the JSON text at byte `at`.
+fn json_problem(text: &str, at: usize, message: String) -> LoadError {
+    let (line, column) = line_column(text, at);
+    LoadError {
+        problems: vec![Problem {
+            message,
+            line: Some(line),
+            column: Some(column),
+            field: None,
+        }],
+    }
+}
+
+pub(super) fn parse_json(text: &str) -> Result<Node, LoadError> {
+    // A byte-order mark is no part of the JSON (TOML's reader passes over it too); the
+    // ranges stay those of the whole text.
+    let start = if text.starts_with('\u{feff}') {
+        '\u{feff}'.len_utf8()
+    } else {
+        0
     };
-    Node { value, span: None }
+    let strict = jsonc_parser::ParseOptions {
+        allow_comments: false,
+        allow_loose_object_property_names: false,
+        allow_trailing_commas: false,
+        allow_missing_commas: false,
+        allow_single_quoted_strings: false,
+        allow_hexadecimal_numbers: false,
+        allow_unary_plus_numbers: false,
+    };
+    let parsed = jsonc_parser::parse_to_ast(
+        &text[start..],
+        &jsonc_parser::CollectOptions::default(),
+        &strict,
+    )
+    .map_err(|error| {
+        json_problem(
+            text,
+            start + error.range().start,
+            say("scene-bad-json", &[("error", &error.kind().to_string())]),
+        )
+    })?;
+    let value = parsed.value.ok_or_else(|| {
+        json_problem(
+            text,
+            text.len(),
+            say("scene-bad-json", &[("error", "the file holds no value")]),
+        )
+    })?;
+    json_node(value, start, text)
+}
+
+/// A JSON value as a node; its ranges moved by `start` (the byte-order mark) into `text`.
+fn json_node(
+    value: jsonc_parser::ast::Value<'_>,
+    start: usize,
+    text: &str,
+) -> Result<Node, LoadError> {
+    use jsonc_parser::ast::Value as J;
+    let span = |range: jsonc_parser::common::Range| Some(start + range.start..start + range.end);
+    Ok(match value {
+        J::NullKeyword(null) => Node {
+            value: Value::Null,
+            span: span(null.range),
+        },
+        J::BooleanLit(b) => Node {
+            value: Value::Bool(b.value),
+            span: span(b.range),
+        },
+        J::NumberLit(n) => Node {
+            value: number(n.value),
+            span: span(n.range),
+        },
+        J::StringLit(s) => Node {
+            value: Value::Text(s.value.into_owned()),
+            span: span(s.range),
+        },
+        J::Array(array) => Node {
+            span: span(array.range),
+            value: Value::Array(
+                array
+                    .elements
+                    .into_iter()
+                    .map(|item| json_node(item, start, text))
+                    .collect::<Result<_, _>>()?,
+            ),
+        },
+        J::Object(object) => {
+            let mut entries: Vec<Entry> = Vec::with_capacity(object.properties.len());
+            for property in object.properties {
+                let (key, key_range) = match property.name {
+                    jsonc_parser::ast::ObjectPropName::String(s) => (s.value.into_owned(), s.range),
+                    jsonc_parser::ast::ObjectPropName::Word(w) => (w.value.to_owned(), w.range),
+                };
+                // TOML refuses a key given twice; so does JSON here, rather than keep the
+                // last in silence.
+                if entries.iter().any(|e| e.key == key) {
+                    return Err(json_problem(
+                        text,
+                        start + key_range.start,
+                        say("scene-json-duplicate-key", &[("key", &key)]),
+                    ));
+                }
+                entries.push(Entry {
+                    key,
+                    key_span: span(key_range),
+                    node: json_node(property.value, start, text)?,
+                });
+            }
+            Node {
+                value: Value::Table(entries),
+                span: span(object.range),
+            }
+        }
+    })
 }
 
 /// 1-based line and column (in characters) of a byte offset.

@@ -10,7 +10,9 @@ use std::time::{Duration, Instant};
 use common::{scene_file, stderr};
 
 /// The binary with `args`, killed after `seconds` (a hang is a failure, not a stuck test).
+/// Its output is read while it runs: a pipe left full would stop it.
 fn within(seconds: u64, args: &[&str]) -> Output {
+    use std::io::Read as _;
     let mut child = Command::new(env!("CARGO_BIN_EXE_newtonlab"))
         .args(args)
         .env("LC_ALL", "C")
@@ -18,15 +20,43 @@ fn within(seconds: u64, args: &[&str]) -> Output {
         .stderr(Stdio::piped())
         .spawn()
         .expect("the binary runs");
+    let drain = |pipe: Option<Box<dyn std::io::Read + Send>>| {
+        std::thread::spawn(move || {
+            let mut bytes = Vec::new();
+            if let Some(mut pipe) = pipe {
+                let _ = pipe.read_to_end(&mut bytes);
+            }
+            bytes
+        })
+    };
+    let stdout = drain(
+        child
+            .stdout
+            .take()
+            .map(|p| Box::new(p) as Box<dyn std::io::Read + Send>),
+    );
+    let stderr = drain(
+        child
+            .stderr
+            .take()
+            .map(|p| Box::new(p) as Box<dyn std::io::Read + Send>),
+    );
     let deadline = Instant::now() + Duration::from_secs(seconds);
-    while child.try_wait().expect("waits").is_none() {
+    let status = loop {
+        if let Some(status) = child.try_wait().expect("waits") {
+            break status;
+        }
         if Instant::now() > deadline {
             let _ = child.kill();
             panic!("{args:?} still running after {seconds} s");
         }
         std::thread::sleep(Duration::from_millis(20));
+    };
+    Output {
+        status,
+        stdout: stdout.join().expect("read"),
+        stderr: stderr.join().expect("read"),
     }
-    child.wait_with_output().expect("its output")
 }
 
 /// Two particles that attract each other at one point (gravitation on by default, no
@@ -289,4 +319,25 @@ fn silent_wrong_answers_are_named() {
         );
         assert!(stderr(&output).contains(words), "{}", stderr(&output));
     }
+}
+
+/// `check` costs one reading of the file however many problems it finds: 40,000 bare
+/// `[[particle]]` headers (80,000 problems) were placed each by a scan from the file's
+/// start, over 20 s.
+#[test]
+fn many_problems_are_placed_in_one_reading() {
+    let text = "version = 1\n".to_owned() + &"[[particle]]\n".repeat(40_000);
+    let (_dir, path) = scene_file("bare.toml", &text);
+    let output = within(20, &["check", &path]);
+    assert_eq!(output.status.code(), Some(2));
+    let said = stderr(&output);
+    assert!(
+        said.contains("80000 problems found"),
+        "{}",
+        &said[..200.min(said.len())]
+    );
+    assert!(
+        said.contains("bare.toml:40001:1: particle 'p40000': mass is required"),
+        "the last one placed"
+    );
 }

@@ -5,7 +5,7 @@ use std::collections::{HashMap, HashSet};
 use std::ops::Range;
 
 use super::VERSION;
-use super::tree::{Entry, Node, Span, Value, line_column};
+use super::tree::{Entry, Lines, Node, Span, Value};
 use crate::scene::error::{FieldRef, LoadError, Problem, Section};
 use crate::scene::fields::{self, Field, Kind, Value as FieldValue};
 use crate::scene::validate;
@@ -22,6 +22,9 @@ pub(super) struct Reader<'t> {
     pub(super) spans: HashMap<FieldRef, Range<usize>>,
     /// Fields that already have a problem: validation would only repeat it.
     pub(super) failed: HashSet<FieldRef>,
+    /// Where the text's lines start, found at the first problem (a file with 20,000
+    /// problems would otherwise be scanned from its start for each).
+    lines: Option<Lines>,
 }
 
 /// One table being read: which keys were used, for reporting unknown ones.
@@ -72,12 +75,21 @@ pub(super) const VIEW_KEYS: &[&str] = &[
 ];
 
 impl<'t> Reader<'t> {
+    /// 1-based line and column (in characters) of byte `offset` of the text.
+    fn line_column(&mut self, offset: usize) -> (usize, usize) {
+        let text = self.text;
+        self.lines
+            .get_or_insert_with(|| Lines::new(text))
+            .at(text, offset)
+    }
+
     pub(super) fn new(text: &'t str) -> Self {
         Self {
             text,
             problems: Vec::new(),
             spans: HashMap::new(),
             failed: HashSet::new(),
+            lines: None,
         }
     }
 
@@ -87,7 +99,7 @@ impl<'t> Reader<'t> {
         }
         let (line, column) = match &span {
             Some(span) => {
-                let (line, column) = line_column(self.text, span.start);
+                let (line, column) = self.line_column(span.start);
                 (Some(line), Some(column))
             }
             None => (None, None),
@@ -510,7 +522,7 @@ impl<'t> Reader<'t> {
             }
             let span = self.spans.get(&field).cloned();
             if let Some(span) = &span {
-                let (line, column) = line_column(self.text, span.start);
+                let (line, column) = self.line_column(span.start);
                 problem.line = Some(line);
                 problem.column = Some(column);
             }

@@ -266,6 +266,31 @@ fn json_node(
     })
 }
 
+/// Where each line of a text starts: a problem's line by binary search, so that many
+/// problems cost no more than one scan of the text.
+pub(super) struct Lines {
+    starts: Vec<usize>,
+}
+
+impl Lines {
+    pub(super) fn new(text: &str) -> Self {
+        let starts = std::iter::once(0)
+            .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+            .collect();
+        Self { starts }
+    }
+
+    /// 1-based line and column (in characters) of byte `offset` of `text`, the text the
+    /// lines were found in.
+    pub(super) fn at(&self, text: &str, offset: usize) -> (usize, usize) {
+        let offset = offset.min(text.len());
+        let line = self.starts.partition_point(|&start| start <= offset);
+        let start = self.starts[line - 1];
+        let column = text.get(start..offset).map_or(1, |s| s.chars().count() + 1);
+        (line, column)
+    }
+}
+
 /// 1-based line and column (in characters) of a byte offset.
 pub(super) fn line_column(text: &str, offset: usize) -> (usize, usize) {
     let before = text.get(..offset).unwrap_or(text);
@@ -277,3 +302,23 @@ pub(super) fn line_column(text: &str, offset: usize) -> (usize, usize) {
 
 // ---------------------------------------------------------------------------------------
 // The reader: tree → Scene, noting every structural problem.
+
+#[cfg(test)]
+mod tests {
+    use super::{Lines, line_column};
+
+    /// The table of line starts places every byte as the scan from the start does, on
+    /// lines of several lengths, with characters of several widths.
+    #[test]
+    fn lines_place_every_offset_as_a_scan_does() {
+        let text = "version = 1\n\n[[particle]]\nname = \"Bébé ünd 🐢\"\nmass = -1\n\r\nlast";
+        let lines = Lines::new(text);
+        for offset in (0..=text.len()).filter(|&i| text.is_char_boundary(i)) {
+            assert_eq!(
+                lines.at(text, offset),
+                line_column(text, offset),
+                "at {offset}"
+            );
+        }
+    }
+}

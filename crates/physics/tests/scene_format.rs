@@ -162,6 +162,30 @@ fn json_is_read_as_exactly_as_toml() {
     assert_eq!(scene.particles[0].mass, 1e20, "its value");
 }
 
+/// A section that is not a table is one problem, not three (the defaults read in its
+/// place are not checked); a problem of a field left out is placed at its section.
+#[test]
+fn a_wrong_section_is_one_problem_and_a_missing_field_has_a_place() {
+    let error = Scene::from_toml("version = 1\nrod = [\"x\"]\n").expect_err("refused");
+    assert_eq!(error.problems.len(), 1, "{error}");
+    assert!(
+        error.problems[0].message.contains("must be a table"),
+        "{error}"
+    );
+    let error = Scene::from_toml(
+        "version = 1\n[world]\ngravitation = false\n[[particle]]\nname = \"a\"\nmass = 1.0\nposition = [0.0, 0.0]\n\
+         [[particle]]\nname = \"b\"\nmass = 1.0\nposition = [0.0, 0.0]\n\
+         [[rod]]\nname = \"r\"\nfrom = \"a\"\nto = \"b\"\n",
+    )
+    .expect_err("refused");
+    let length = error
+        .problems
+        .iter()
+        .find(|p| p.message.contains("length"))
+        .expect("the rod's length");
+    assert_eq!((length.line, length.column), (Some(12), Some(1)), "{error}");
+}
+
 #[test]
 fn version_is_required_and_must_be_1() {
     assert!(

@@ -25,6 +25,9 @@ pub(super) struct Reader<'t> {
     /// Where the text's lines start, found at the first problem (a file with 20,000
     /// problems would otherwise be scanned from its start for each).
     lines: Option<Lines>,
+    /// Sections that are not tables: their checker's problems would only be about
+    /// defaults.
+    failed_sections: HashSet<Section>,
 }
 
 /// One table being read: which keys were used, for reporting unknown ones.
@@ -90,6 +93,7 @@ impl<'t> Reader<'t> {
             spans: HashMap::new(),
             failed: HashSet::new(),
             lines: None,
+            failed_sections: HashSet::new(),
         }
     }
 
@@ -123,6 +127,13 @@ impl<'t> Reader<'t> {
         label: String,
     ) -> Option<Table<'n>> {
         if let Value::Table(entries) = &node.value {
+            // Where the section stands: a problem of a field it leaves out (a rod's
+            // length taken from the distance) is placed here.
+            if let Some(span) = node.span.clone() {
+                self.spans
+                    .entry(FieldRef { section, field: "" })
+                    .or_insert(span);
+            }
             Some(Table {
                 entries,
                 span: node.span.clone(),
@@ -137,6 +148,9 @@ impl<'t> Reader<'t> {
                 None,
                 say("scene-not-a-table", &[("label", &label), ("got", &kind)]),
             );
+            // The object read in its place has only defaults: what the checker would say
+            // of them (an empty name, both ends fixed) is not the user's problem.
+            self.failed_sections.insert(section);
             None
         }
     }
@@ -517,10 +531,16 @@ impl<'t> Reader<'t> {
     pub(super) fn finish(mut self, scene: Scene) -> Result<Scene, LoadError> {
         for mut problem in scene.validate() {
             let Some(field) = problem.field else { continue };
-            if self.failed.contains(&field) {
+            if self.failed.contains(&field) || self.failed_sections.contains(&field.section) {
                 continue;
             }
-            let span = self.spans.get(&field).cloned();
+            let span = self.spans.get(&field).cloned().or_else(|| {
+                let whole = FieldRef {
+                    section: field.section,
+                    field: "",
+                };
+                self.spans.get(&whole).cloned()
+            });
             if let Some(span) = &span {
                 let (line, column) = self.line_column(span.start);
                 problem.line = Some(line);

@@ -50,6 +50,10 @@ pub(crate) struct RunArgs {
     /// interval is likelier than intent, and would look like a hang).
     #[arg(long)]
     no_limit: bool,
+    /// Threads the step may use; every core when absent. The rows are the same bits for
+    /// any number.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u16).range(1..=1024))]
+    threads: Option<u16>,
 }
 
 pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
@@ -60,6 +64,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         ledger: args.ledger,
         impacts: args.impacts.is_some(),
         no_limit: args.no_limit,
+        threads: args.threads.map_or_else(crate::every_core, usize::from),
     };
     plan.check().map_err(Failure::Input)?;
     distinct_outputs(args)?;

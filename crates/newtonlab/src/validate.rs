@@ -23,6 +23,10 @@ pub(crate) struct ValidateArgs {
     /// Run only these groups (repeatable); all of them when left out.
     #[arg(long, value_name = "GROUP", value_parser = group_names())]
     only: Vec<String>,
+    /// Threads each simulation's step may use; every core when absent. The results are
+    /// the same bits for any number.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u16).range(1..=1024))]
+    threads: Option<u16>,
 }
 
 /// `--only`'s values: the groups' names, which clap lists in the help and checks.
@@ -49,8 +53,9 @@ pub(crate) fn validate(args: &ValidateArgs) -> Result<(), Failure> {
         .into_iter()
         .filter(|g| args.only.is_empty() || args.only.iter().any(|name| name == g.name()))
         .collect();
+    let threads = args.threads.map_or_else(crate::every_core, usize::from);
     let (report, figures) =
-        check_all(&groups, args.tolerance).map_err(|failure| match failure {
+        check_all(&groups, args.tolerance, threads).map_err(|failure| match failure {
             newtonlab_validation::Failure::Simulation(why) => Failure::Simulation(why),
             newtonlab_validation::Failure::Input(why) => Failure::Input(why),
         })?;

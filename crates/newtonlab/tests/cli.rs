@@ -79,6 +79,37 @@ fn the_same_run_gives_bit_identical_csv() {
     );
 }
 
+/// `--threads` changes no bit: the ball pit through its crash (the contact search and the
+/// resting solver's work shared out) and the paper's Coulomb pair, on 1, 2, 3 and 7
+/// threads and on every core (no `--threads`).
+#[test]
+fn run_gives_the_same_bits_on_any_number_of_threads() {
+    for (example, until) in [("ball-pit", "0.4"), ("paper-coulomb", "1")] {
+        let scene = format!("example:{example}");
+        let base = ["run", scene.as_str(), "--until", until, "--every", "0.05"];
+        let everywhere = newtonlab(&base);
+        assert!(everywhere.status.success(), "{}", stderr(&everywhere));
+        for threads in ["1", "2", "3", "7"] {
+            let mut args = base.to_vec();
+            args.extend(["--threads", threads]);
+            let output = newtonlab(&args);
+            assert!(
+                output.stdout == everywhere.stdout,
+                "{example} on {threads} threads differs from every core"
+            );
+        }
+    }
+    let refused = newtonlab(&[
+        "run",
+        "example:ball-pit",
+        "--until",
+        "0.1",
+        "--threads",
+        "0",
+    ]);
+    assert_eq!(refused.status.code(), Some(2), "0 threads");
+}
+
 #[test]
 fn run_ends_with_a_row_at_until_and_writes_to_a_file() {
     let dir = tempdir::Dir::new();

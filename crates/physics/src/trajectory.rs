@@ -67,6 +67,9 @@ pub struct Plan {
     pub impacts: bool,
     /// Whether to run beyond [`MAX_STEPS`], [`MAX_WORK`] and [`MAX_NUMBERS`] (`--no-limit`).
     pub no_limit: bool,
+    /// Threads the step may use ([`Simulation::set_threads`]; 0 or 1: one). The rows are
+    /// the same bits for any number.
+    pub threads: usize,
 }
 
 /// An event as typed (trimmed) and as read.
@@ -156,6 +159,7 @@ impl Trajectory {
         if plan.impacts {
             simulation.record_impacts();
         }
+        simulation.set_threads(plan.threads);
         let watch = if events.is_empty() {
             None
         } else {

@@ -75,11 +75,12 @@ fn collect(mut trajectory: Trajectory, events: bool) -> Rows {
 /// every impact for `traj.impacts` (a resting pile counts thousands a step, and keeping
 /// them costs time: off unless asked). `no_limit`: run however long it takes (without it,
 /// more than 10⁸ time steps, 10⁹ particle-steps or 10⁸ numbers are refused, as the
-/// command line refuses them without `--no-limit`).
+/// command line refuses them without `--no-limit`). `threads`: how many the step may use
+/// (every core when left out; the same bits for any number).
 ///
 /// Raises `SceneError` for a bad scene or argument, `SimulationError` when the run fails.
 #[pyfunction]
-#[pyo3(signature = (scene, until, every = None, events = None, ledger = false, impacts = false, no_limit = false))]
+#[pyo3(signature = (scene, until, every = None, events = None, ledger = false, impacts = false, no_limit = false, threads = None))]
 #[expect(
     clippy::too_many_arguments,
     reason = "Python's keyword arguments, each with its default"
@@ -93,6 +94,7 @@ pub fn run(
     ledger: bool,
     impacts: bool,
     no_limit: bool,
+    threads: Option<usize>,
 ) -> PyResult<Py<crate::table::Trajectory>> {
     let scene = scene_of(scene)?;
     let events = strings(events, "events")?;
@@ -103,6 +105,7 @@ pub fn run(
         ledger,
         impacts,
         no_limit,
+        threads: threads.filter(|&t| t > 0).unwrap_or_else(every_core),
     };
     let trajectory = Trajectory::new(&scene, &plan).map_err(scene_error)?;
     let rows = py.detach(|| collect(trajectory, !events.is_empty()));
@@ -205,9 +208,7 @@ pub fn sweep(
         trace: false,
     };
     sweep.check(&scene).map_err(scene_error)?;
-    let threads = threads.filter(|&t| t > 0).unwrap_or_else(|| {
-        std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
-    });
+    let threads = threads.filter(|&t| t > 0).unwrap_or_else(every_core);
     let rows = py.detach(|| sweep.run(&scene, threads, &|| {}));
     let mut problems = Vec::new();
     let mut columns: Vec<Vec<f64>> = vec![Vec::new(); fields.len() + measures_typed.len()];
@@ -285,6 +286,11 @@ fn varies(vary: &Bound<'_, PyDict>, scene: &physics::Scene) -> PyResult<(Vec<Str
     Ok((fields, varies))
 }
 
+/// The machine's cores: how many threads a call uses when not told.
+fn every_core() -> usize {
+    std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
+}
+
 /// Each problem as a Python warning (what `newtonlab sweep` writes on stderr).
 fn warn(py: Python<'_>, problems: &[String]) -> PyResult<()> {
     if problems.is_empty() {
@@ -302,11 +308,12 @@ fn warn(py: Python<'_>, problems: &[String]) -> PyResult<()> {
 /// "saved-state", "events", "drag", "series") and returns one record per check: a dict
 /// with `group`, `what`, `error`, `limit` and `passed`.
 #[pyfunction]
-#[pyo3(signature = (groups = None, tolerance = 1e-6))]
+#[pyo3(signature = (groups = None, tolerance = 1e-6, threads = None))]
 pub fn validate(
     py: Python<'_>,
     groups: Option<&Bound<'_, PyAny>>,
     tolerance: f64,
+    threads: Option<usize>,
 ) -> PyResult<Vec<Py<PyDict>>> {
     use newtonlab_validation::Group;
     if !(tolerance.is_finite() && tolerance > 0.0) {
@@ -324,7 +331,8 @@ pub fn validate(
             .collect::<Result<_, _>>()
             .map_err(scene_error)?
     };
-    let outcome = py.detach(|| newtonlab_validation::validate(&groups, tolerance));
+    let threads = threads.filter(|&t| t > 0).unwrap_or_else(every_core);
+    let outcome = py.detach(|| newtonlab_validation::validate(&groups, tolerance, threads));
     let (report, _) = outcome.map_err(|failure| match failure {
         newtonlab_validation::Failure::Simulation(why) => SimulationError::new_err(why),
         newtonlab_validation::Failure::Input(why) => scene_error(why),

@@ -42,6 +42,13 @@ def test_a_run_is_the_command_lines_csv_bit_for_bit(newtonlab_cli, example, opti
     same_bits(traj, rows, traj.columns)
 
 
+def test_any_number_of_threads_gives_the_same_bits():
+    one = newtonlab.run("example:ball-pit", until=0.3, every=0.05, threads=1)
+    three = newtonlab.run("example:ball-pit", until=0.3, every=0.05, threads=3)
+    for name in one.columns:
+        assert np.array_equal(one[name].view(np.uint64), three[name].view(np.uint64)), name
+
+
 def test_events_alone_are_rows_at_their_located_instants(newtonlab_cli):
     rows = newtonlab_cli("run", "example:pendulum", "--until", "5", "--events", "bob.vx crosses 0 down")
     traj = newtonlab.run("example:pendulum", until=5.0, events="bob.vx crosses 0 down")

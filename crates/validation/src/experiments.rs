@@ -20,7 +20,9 @@ pub(super) fn load(name: &str) -> Result<Scene, Failure> {
 }
 
 pub(super) fn start(scene: &Scene) -> Result<Simulation, Failure> {
-    Simulation::new(scene).map_err(|e| Failure::Input(e.to_string()))
+    let mut simulation = Simulation::new(scene).map_err(|e| Failure::Input(e.to_string()))?;
+    simulation.set_threads(crate::THREADS.load(std::sync::atomic::Ordering::Relaxed));
+    Ok(simulation)
 }
 
 pub(super) fn step_to(simulation: &mut Simulation, t: f64) -> Outcome {

@@ -141,13 +141,23 @@ impl std::str::FromStr for Group {
     }
 }
 
+/// The threads each simulation of a validation may use: set by [`validate`] for the
+/// simulations it starts (`experiments::start`), which are many and deep in the groups.
+static THREADS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(1);
+
 /// Runs `groups`, the paper's held to `tolerance` (relative to each quantity's scale;
-/// the other groups state their own): the report of every check, and the figures.
+/// the other groups state their own), each simulation's step on `threads` threads (the
+/// same bits for any number): the report of every check, and the figures.
 ///
 /// # Errors
 /// A built-in scene that does not load, or a simulation that fails outright; a check
 /// that misses is in the report, not an error.
-pub fn validate(groups: &[Group], tolerance: f64) -> Result<(Report, Vec<Figure>), Failure> {
+pub fn validate(
+    groups: &[Group],
+    tolerance: f64,
+    threads: usize,
+) -> Result<(Report, Vec<Figure>), Failure> {
+    THREADS.store(threads, std::sync::atomic::Ordering::Relaxed);
     let mut report = Report::new(tolerance);
     let mut figures = Vec::new();
     for &group in groups {

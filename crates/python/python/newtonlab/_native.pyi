@@ -150,6 +150,7 @@ def run(
     ledger: bool = False,
     impacts: bool = False,
     no_limit: bool = False,
+    threads: Optional[int] = None,
 ) -> Trajectory:
     """Runs ``scene`` to ``until`` seconds: ``newtonlab run``'s rows, bit for bit.
 
@@ -171,6 +172,8 @@ def sweep(
     """``newtonlab sweep``: a run per combination of the varied values (in parallel), one row
     of measures each; NaN (and a warning) where a run had no such number."""
 
-def validate(groups: Union[None, str, Iterable[str]] = None, tolerance: float = 1e-6) -> List[Dict[str, Any]]:
+def validate(
+    groups: Union[None, str, Iterable[str]] = None, tolerance: float = 1e-6, threads: Optional[int] = None
+) -> List[Dict[str, Any]]:
     """``newtonlab validate``'s checks: one record per check, with ``group``, ``what``,
     ``error``, ``limit`` and ``passed``."""

@@ -209,7 +209,7 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
             );
         }
     }
-    print_profile(&simulation.profile(), steps);
+    print_profile(&simulation.profile(), steps, simulation.threads());
     Ok(())
 }
 
@@ -350,9 +350,11 @@ fn clock() -> f64 {
     EPOCH.get_or_init(Instant::now).elapsed().as_secs_f64()
 }
 
-/// The time per stage, as Box2D's profile shows it: microseconds per step and share.
+/// The time per stage, as Box2D's profile shows it: microseconds per step and share;
+/// the share of work that may be split across threads, and on one thread the speed-up
+/// Amdahl's law allows on 2, 4, 8 and 16.
 #[expect(clippy::print_stdout, reason = "the command's report")]
-fn print_profile(profile: &Profile, steps: u64) {
+fn print_profile(profile: &Profile, steps: u64, threads: usize) {
     let total = profile.total();
     if steps == 0 || total <= 0.0 {
         return;
@@ -365,6 +367,22 @@ fn print_profile(profile: &Profile, steps: u64) {
             stage.name(),
             seconds / steps as f64 * 1e6,
             seconds / total * 100.0
+        );
+    }
+    let share = profile.parallel_seconds() / total;
+    println!(
+        "  work that may be split across threads: {:.1} % of the step, serial: {:.1} %",
+        share * 100.0,
+        (1.0 - share) * 100.0
+    );
+    if threads == 1 {
+        let predicted: Vec<String> = [2, 4, 8, 16]
+            .iter()
+            .map(|&n| format!("{n}: {:.2}x", profile.amdahl(n)))
+            .collect();
+        println!(
+            "  Amdahl's bound from this profile, speed-up on N threads: {}",
+            predicted.join(", ")
         );
     }
 }

@@ -11,6 +11,7 @@
 
 use std::ops::Range;
 
+use crate::profile::Clock;
 use crate::tuning::MIN_ITEMS;
 #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
 use crate::tuning::PIECES_PER_THREAD;
@@ -20,6 +21,73 @@ use crate::tuning::PIECES_PER_THREAD;
 pub(crate) struct Workers {
     #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
     pool: Option<std::sync::Arc<rayon::ThreadPool>>,
+    /// With a clock: the wall time spent in work that may be split (whether it was split
+    /// or not), shared by the copies that the forces and the contacts hold.
+    timing: Option<std::sync::Arc<Timing>>,
+}
+
+/// The time spent in work that may be split, nanoseconds, read with a clock lent by the
+/// caller.
+#[derive(Debug)]
+struct Timing {
+    clock: Clock,
+    nanoseconds: std::sync::atomic::AtomicU64,
+}
+
+std::thread_local! {
+    /// How deep the calling thread is in timed regions: a region inside another is
+    /// counted once.
+    static DEPTH: std::cell::Cell<u32> = const { std::cell::Cell::new(0) };
+}
+
+impl Workers {
+    /// Starts timing the work that may be split with `clock` (`None` stops), from zero.
+    pub fn time_regions(&mut self, clock: Option<Clock>) {
+        self.timing = clock.map(|clock| {
+            std::sync::Arc::new(Timing {
+                clock,
+                nanoseconds: std::sync::atomic::AtomicU64::new(0),
+            })
+        });
+    }
+
+    /// The timing of `other`, shared, so that new workers go on counting.
+    pub fn keep_timing(&mut self, other: &Self) {
+        self.timing.clone_from(&other.timing);
+    }
+
+    /// Seconds spent in work that may be split since [`Self::time_regions`].
+    pub fn region_seconds(&self) -> f64 {
+        self.timing.as_ref().map_or(0.0, |t| {
+            t.nanoseconds.load(std::sync::atomic::Ordering::Relaxed) as f64 * 1e-9
+        })
+    }
+
+    /// `work()`, its wall time booked to the regions when it may be split and is timed.
+    fn region<R>(&self, splittable: bool, work: impl FnOnce() -> R) -> R {
+        let Some(timing) = self.timing.as_ref().filter(|_| splittable) else {
+            return work();
+        };
+        let outermost = DEPTH.with(|d| {
+            d.set(d.get() + 1);
+            d.get() == 1
+        });
+        let start = (timing.clock)();
+        let result = work();
+        if outermost {
+            #[expect(
+                clippy::cast_possible_truncation,
+                clippy::cast_sign_loss,
+                reason = "a duration in nanoseconds, far below u64::MAX"
+            )]
+            let nanoseconds = (((timing.clock)() - start).max(0.0) * 1e9) as u64;
+            timing
+                .nanoseconds
+                .fetch_add(nanoseconds, std::sync::atomic::Ordering::Relaxed);
+        }
+        DEPTH.with(|d| d.set(d.get() - 1));
+        result
+    }
 }
 
 impl Workers {
@@ -37,12 +105,12 @@ impl Workers {
                 })
                 .flatten()
                 .map(std::sync::Arc::new);
-            Self { pool }
+            Self { pool, timing: None }
         }
         #[cfg(not(all(feature = "parallel", not(target_arch = "wasm32"))))]
         {
             let _ = threads;
-            Self {}
+            Self { timing: None }
         }
     }
 
@@ -72,11 +140,22 @@ impl Workers {
 
     /// [`Self::collect_into`] for items that cost enough to be split from `least` of them
     /// (a Barnes–Hut tree's leaves, each a walk and the sums of its bodies).
+    pub fn collect_into_from<T: Send>(
+        &self,
+        least: usize,
+        n: usize,
+        out: &mut Vec<T>,
+        work: impl Fn(Range<usize>, &mut Vec<T>) + Sync,
+    ) {
+        self.region(n >= least, || self.split_into(least, n, out, work));
+    }
+
+    /// [`Self::collect_into_from`], untimed.
     #[cfg_attr(
         not(all(feature = "parallel", not(target_arch = "wasm32"))),
         expect(clippy::unused_self, reason = "the pool exists only where threads do")
     )]
-    pub fn collect_into_from<T: Send>(
+    fn split_into<T: Send>(
         &self,
         least: usize,
         n: usize,
@@ -133,17 +212,15 @@ impl Workers {
 
     /// `work(0)`, …, `work(pieces − 1)`, on the pool's threads where there are several,
     /// returned in the order of the pieces: the same list for any number of threads.
-    #[cfg_attr(
-        not(all(feature = "parallel", not(target_arch = "wasm32"))),
-        expect(clippy::unused_self, reason = "the pool exists only where threads do")
-    )]
     pub fn map<T: Send>(&self, pieces: usize, work: impl Fn(usize) -> T + Sync) -> Vec<T> {
-        #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
-        if let Some(pool) = self.pool.as_ref().filter(|_| pieces > 1) {
-            use rayon::prelude::*;
-            return pool.install(|| (0..pieces).into_par_iter().map(&work).collect());
-        }
-        (0..pieces).map(work).collect()
+        self.region(pieces > 1, || {
+            #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
+            if let Some(pool) = self.pool.as_ref().filter(|_| pieces > 1) {
+                use rayon::prelude::*;
+                return pool.install(|| (0..pieces).into_par_iter().map(&work).collect());
+            }
+            (0..pieces).map(work).collect()
+        })
     }
 }
 

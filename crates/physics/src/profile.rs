@@ -56,6 +56,8 @@ impl Stage {
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Profile {
     seconds: [f64; Stage::ALL.len()],
+    /// Seconds in work that may be split across threads (inside the stages).
+    pub(crate) parallel: f64,
 }
 
 impl Profile {
@@ -67,6 +69,25 @@ impl Profile {
     /// Seconds in all stages together.
     pub fn total(&self) -> f64 {
         self.seconds.iter().sum()
+    }
+
+    /// Seconds, inside the stages, spent in work that may be split across threads (the
+    /// contact search's pieces, the pair sums, the tree's leaves), whether it was split
+    /// or not. Measured on one thread, it is the work more threads could share.
+    pub fn parallel_seconds(&self) -> f64 {
+        self.parallel.min(self.total())
+    }
+
+    /// Amdahl's law on a profile measured on one thread: the speed-up `threads` threads
+    /// would give if the work that may be split were split perfectly and the rest stayed
+    /// serial, 1 / (s + p / threads). An upper bound: splitting costs something.
+    pub fn amdahl(&self, threads: usize) -> f64 {
+        let total = self.total();
+        if total <= 0.0 {
+            return 1.0;
+        }
+        let p = self.parallel_seconds() / total;
+        1.0 / ((1.0 - p) + p / threads.max(1) as f64)
     }
 }
 

@@ -301,13 +301,23 @@ impl Simulation {
 
     /// Starts measuring the time each stage of the step takes, read with
     /// [`Self::profile`], with `clock` (seconds since any fixed instant); `None` stops.
+    /// The work that may be split across threads is timed too (whether it is split or
+    /// not), for [`Profile::parallel_seconds`].
     pub fn set_clock(&mut self, clock: Option<Clock>) {
         self.profiler = Profiler::new(clock);
+        // One timing for both copies of the workers, the forces' and the contacts'.
+        let mut workers = self.contacts.workers.clone();
+        workers.time_regions(clock);
+        self.forces.workers = workers.clone();
+        self.contacts.workers = workers;
     }
 
-    /// Seconds spent in each stage since [`Self::set_clock`].
+    /// Seconds spent in each stage since [`Self::set_clock`], and in work that may be
+    /// split across threads.
     pub fn profile(&self) -> Profile {
-        self.profiler.profile
+        let mut profile = self.profiler.profile;
+        profile.parallel = self.contacts.workers.region_seconds();
+        profile
     }
 
     /// Lets the contact search and the direct pair sum use `threads` threads (0 or 1:
@@ -315,7 +325,8 @@ impl Simulation {
     /// thread count. Builds without threads (wasm32, or without the `parallel` feature)
     /// always use one.
     pub fn set_threads(&mut self, threads: usize) {
-        let workers = crate::parallel::Workers::new(threads);
+        let mut workers = crate::parallel::Workers::new(threads);
+        workers.keep_timing(&self.contacts.workers);
         self.forces.workers = workers.clone();
         self.contacts.workers = workers;
     }

@@ -283,7 +283,7 @@ file-recover-hint = Die ungespeicherte Arbeit öffnen
 file-discard = Verwerfen
 file-discard-hint = Die ungespeicherte Arbeit wegwerfen
 file-unsaved-title = Ungespeicherte Änderungen
-file-unsaved-body = „{ $title }“ hat ungespeicherte Änderungen. Verwerfen?
+file-unsaved-body = „{ $title }“ hat ungespeicherte Änderungen. Zuerst speichern?
 file-discard-changes = Änderungen verwerfen
 file-discard-changes-hint = Die ungespeicherten Änderungen verlieren
 file-keep-editing-hint = Weiter bearbeiten
@@ -699,3 +699,5 @@ run-left-bounds = bei t = { $time } s verließ Teilchen „{ $particle }“ die 
 scene-got-null = null
 scene-json-duplicate-key = der Schlüssel „{ $key }“ steht zweimal in einem Objekt; einen behalten
 scene-number-beyond-f64 = { $text } liegt jenseits dessen, was eine 64-Bit-Zahl fasst (etwa 2,2e-308 bis 1,8e308 dem Betrag nach, oder 0)
+file-save-changes = Speichern
+file-save-changes-hint = Die Änderungen speichern, dann weiter

@@ -284,7 +284,7 @@ file-recover-hint = Open the unsaved work
 file-discard = Discard
 file-discard-hint = Throw the unsaved work away
 file-unsaved-title = Unsaved changes
-file-unsaved-body = “{ $title }” has changes that are not saved. Discard them?
+file-unsaved-body = “{ $title }” has changes that are not saved. Save them first?
 file-discard-changes = Discard changes
 file-discard-changes-hint = Lose the unsaved changes
 file-keep-editing-hint = Keep editing
@@ -700,3 +700,5 @@ run-left-bounds = at t = { $time } s particle '{ $particle }' left the world's b
 scene-got-null = null
 scene-json-duplicate-key = the key '{ $key }' appears twice in one object; keep one
 scene-number-beyond-f64 = { $text } is beyond what a 64-bit number holds (about 2.2e-308 to 1.8e308 in size, or 0)
+file-save-changes = Save
+file-save-changes-hint = Save the changes, then go on

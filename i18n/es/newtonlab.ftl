@@ -283,7 +283,7 @@ file-recover-hint = Abrir el trabajo no guardado
 file-discard = Descartar
 file-discard-hint = Tirar el trabajo no guardado
 file-unsaved-title = Cambios sin guardar
-file-unsaved-body = «{ $title }» tiene cambios sin guardar. ¿Descartarlos?
+file-unsaved-body = «{ $title }» tiene cambios sin guardar. ¿Guardarlos antes?
 file-discard-changes = Descartar los cambios
 file-discard-changes-hint = Perder los cambios sin guardar
 file-keep-editing-hint = Seguir editando
@@ -699,3 +699,5 @@ run-left-bounds = en t = { $time } s la partícula «{ $particle }» salió de l
 scene-got-null = null
 scene-json-duplicate-key = la clave «{ $key }» aparece dos veces en un objeto; deje una
 scene-number-beyond-f64 = { $text } está fuera de lo que cabe en un número de 64 bits (de unos 2,2e-308 a 1,8e308 en tamaño, o 0)
+file-save-changes = Guardar
+file-save-changes-hint = Guardar los cambios y seguir

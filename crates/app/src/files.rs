@@ -53,6 +53,13 @@ pub enum Pending {
     Quit,
 }
 
+/// The unsaved-changes prompt's buttons.
+enum Answer {
+    Save,
+    Discard,
+    Cancel,
+}
+
 /// What the user chose in a dialog this frame.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Choice {
@@ -60,6 +67,8 @@ pub enum Choice {
     Path(Purpose, String),
     /// Go ahead and discard the unsaved changes.
     Discard(Pending),
+    /// Save the changes, then go ahead.
+    SaveThen(Pending),
     /// Save over this file although it changed on disk.
     Overwrite(String),
     /// Bring back the work an earlier session left unsaved.
@@ -84,6 +93,11 @@ pub struct Files {
 }
 
 impl Files {
+    /// Whether a file dialog or the overwrite prompt is waiting for the user.
+    pub fn is_asking(&self) -> bool {
+        self.dialog.is_some() || self.overwrite.is_some()
+    }
+
     /// Opens the dialog for `purpose`, starting in the folder of `current`.
     pub fn ask(&mut self, purpose: Purpose, current: Option<&str>, suggested: &str) {
         #[cfg(not(target_arch = "wasm32"))]
@@ -176,29 +190,40 @@ impl Files {
                 ui.label(tr_with("file-unsaved-body", &[("title", Arg::Text(title))]));
                 ui.horizontal(|ui| {
                     if ui
+                        .button(tr("file-save-changes"))
+                        .on_hover_text(tr("file-save-changes-hint"))
+                        .clicked()
+                    {
+                        return Some(Answer::Save);
+                    }
+                    if ui
                         .button(tr("file-discard-changes"))
                         .on_hover_text(tr("file-discard-changes-hint"))
                         .clicked()
                     {
-                        return Some(true);
+                        return Some(Answer::Discard);
                     }
                     if ui
                         .button(tr("file-cancel"))
                         .on_hover_text(tr("file-keep-editing-hint"))
                         .clicked()
                     {
-                        return Some(false);
+                        return Some(Answer::Cancel);
                     }
                     None
                 })
                 .inner
             });
             match modal.inner {
-                Some(true) => {
+                Some(Answer::Save) => {
+                    self.confirm = None;
+                    choice = Some(Choice::SaveThen(pending));
+                }
+                Some(Answer::Discard) => {
                     self.confirm = None;
                     choice = Some(Choice::Discard(pending));
                 }
-                Some(false) => self.confirm = None,
+                Some(Answer::Cancel) => self.confirm = None,
                 None if modal.should_close() => self.confirm = None,
                 None => {}
             }

@@ -146,6 +146,8 @@ pub struct App {
     shown_title: String,
     /// The user agreed to quit with unsaved changes.
     quitting: bool,
+    /// What the unsaved-changes prompt's Save waits to do once the scene is saved.
+    after_save: Option<Pending>,
     /// The scene was replaced: what was typed for the old one goes.
     forget_entries: bool,
     /// A picture asked for: the screenshot is requested at the end of this frame…
@@ -200,6 +202,7 @@ impl App {
             measured_from: None,
             shown_title: String::new(),
             quitting: false,
+            after_save: None,
             forget_entries: false,
             picture_asked: None,
             picture_awaited: None,
@@ -511,8 +514,15 @@ impl App {
                 {
                     self.document.disk = platform::stamp(path);
                 }
+                if let Some(pending) = self.after_save.take() {
+                    self.proceed(pending);
+                }
             }
-            Err(message) => self.notify(message),
+            Err(message) => {
+                // Not saved: what waited on the save does not go ahead.
+                self.after_save = None;
+                self.notify(message);
+            }
         }
     }
 
@@ -657,6 +667,10 @@ impl App {
                 let _ = path;
             }
             Some(Choice::Discard(pending)) => self.proceed(pending),
+            Some(Choice::SaveThen(pending)) => {
+                self.after_save = Some(pending);
+                self.save();
+            }
             Some(Choice::Overwrite(path)) => self.write_scene(&path),
             #[cfg(not(target_arch = "wasm32"))]
             Some(Choice::Recover(recovered)) => self.recover(recovered),
@@ -667,6 +681,11 @@ impl App {
                 }
             }
             None => {}
+        }
+        // A save asked for by the prompt that the user then called off (the Save dialog
+        // closed without a name): what waited on it waits no more.
+        if self.after_save.is_some() && !self.files.is_asking() {
+            self.after_save = None;
         }
     }
 

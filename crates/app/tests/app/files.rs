@@ -277,3 +277,106 @@ fn the_canvas_prints_at_twice_the_resolution() {
     assert!(dark > 200, "{dark} dark pixels: the bob and the rod");
     std::fs::remove_dir_all(&folder).ok();
 }
+
+/// The unsaved-changes prompt saves first when asked, then goes on: to the scene's own
+/// file when it has one; through the Save dialog when it has none; and a Save dialog
+/// closed without a name goes on with nothing (the scene stays, unsaved, and a later
+/// save opens no example).
+#[test]
+fn the_unsaved_prompt_saves_then_goes_on() {
+    let folder = std::env::temp_dir().join(format!("newtonlab-save-then-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let path = folder.join("ball.toml");
+    std::fs::write(&path, one_ball().to_toml()).unwrap();
+    let open_example = |harness: &mut Harness<'_, App>| {
+        harness.get_by_label("Examples").click();
+        harness.run();
+        harness
+            .get_by_label("Two balls colliding off-centre")
+            .click();
+        harness.run();
+    };
+
+    // A scene with a file: Save writes the change there, then the example opens.
+    let mut harness = harness(App::new(one_ball()));
+    harness.state_mut().open_path(&path.to_string_lossy());
+    harness
+        .state_mut()
+        .document
+        .apply(MASS, |s| s.particles[0].mass = 3.0);
+    open_example(&mut harness);
+    harness.get_by_label("Save").click();
+    harness.run();
+    let saved = Scene::from_toml(&std::fs::read_to_string(&path).unwrap()).unwrap();
+    assert_eq!(saved.particles[0].mass, 3.0, "the change is in the file");
+    assert_eq!(
+        harness.state().document.scene().particles.len(),
+        2,
+        "then the example is open"
+    );
+
+    // A scene without a file: Save asks where, and the example opens once it is saved.
+    let save_as = |harness: &mut Harness<'_, App>, name: &str| {
+        harness.get_by_label("folder").focus();
+        harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+        harness
+            .get_by_label("folder")
+            .type_text(&folder.to_string_lossy());
+        harness.run();
+        harness.get_by_label("file name").focus();
+        harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+        harness.get_by_label("file name").type_text(name);
+        harness.run();
+        harness.get_by_label("Save").click();
+        harness.run();
+    };
+    let mut harness = harness_for(one_ball());
+    harness
+        .state_mut()
+        .document
+        .apply(MASS, |s| s.particles[0].mass = 4.0);
+    open_example(&mut harness);
+    harness.get_by_label("Save").click();
+    harness.run();
+    save_as(&mut harness, "named.toml");
+    let saved =
+        Scene::from_toml(&std::fs::read_to_string(folder.join("named.toml")).unwrap()).unwrap();
+    assert_eq!(saved.particles[0].mass, 4.0, "saved where the dialog said");
+    assert_eq!(
+        harness.state().document.scene().particles.len(),
+        2,
+        "then the example is open"
+    );
+
+    // The Save dialog closed without a name: the scene stays, and a later save is only
+    // a save.
+    let mut harness = harness_for(one_ball());
+    harness
+        .state_mut()
+        .document
+        .apply(MASS, |s| s.particles[0].mass = 5.0);
+    open_example(&mut harness);
+    harness.get_by_label("Save").click();
+    harness.run();
+    harness.get_by_label("Cancel").click();
+    harness.run();
+    assert_eq!(
+        harness.state().document.scene().particles[0].mass,
+        5.0,
+        "the scene stays"
+    );
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::S);
+    harness.run();
+    save_as(&mut harness, "plain.toml");
+    assert!(folder.join("plain.toml").exists(), "saved");
+    assert_eq!(
+        harness.state().document.scene().particles.len(),
+        1,
+        "and nothing else happened"
+    );
+    std::fs::remove_dir_all(&folder).ok();
+}
+
+fn harness_for(scene: Scene) -> Harness<'static, App> {
+    harness(App::new(scene))
+}

@@ -158,8 +158,7 @@ impl Experiments {
         let finished = {
             let finished = Arc::new(Mutex::new(None));
             let (scene, counter, slot) = (scene.clone(), Arc::clone(&done), Arc::clone(&finished));
-            let threads =
-                std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get);
+            let threads = physics::every_core();
             std::thread::spawn(move || {
                 let rows = sweep.run(&scene, threads, &|| {
                     counter.fetch_add(1, Ordering::Relaxed);

@@ -291,7 +291,7 @@ impl Runner {
         }
         let mut simulation = Simulation::new(scene)?;
         // Every core (one in the browser): the same bits for any number.
-        simulation.set_threads(std::thread::available_parallelism().map_or(1, usize::from));
+        simulation.set_threads(physics::every_core());
         simulation.record_impacts();
         simulation.keep_ledger();
         self.start_energy = simulation.diagnostics().energy.total();

@@ -141,10 +141,7 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
     let tree_error = matches!(args.scene, BenchScene::Cluster)
         .then(|| tree_error(&scene, &simulation))
         .flatten();
-    simulation.set_threads(
-        args.threads
-            .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, usize::from)),
-    );
+    simulation.set_threads(args.threads.unwrap_or_else(physics::every_core));
     let fail = |e: physics::SimulationError| Failure::Simulation(e.to_string());
     simulation.step().map_err(fail)?;
     simulation.set_clock(Some(clock));
@@ -292,9 +289,7 @@ fn sweep(args: &BenchArgs) -> Result<(), Failure> {
         measures: vec![Measure::parse("Ball.x at Ball.y crosses 0 down").map_err(input)?],
         trace: false,
     };
-    let threads = args.threads.unwrap_or_else(|| {
-        std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
-    });
+    let threads = args.threads.unwrap_or_else(physics::every_core);
     let timed = |threads: usize| {
         let clock = Instant::now();
         let rows = sweep.run(&scene, threads, &|| {});

@@ -89,11 +89,6 @@ enum FieldView {
     Gravitational,
 }
 
-/// The machine's cores: how many threads a command uses when not told.
-pub(crate) fn every_core() -> usize {
-    std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
-}
-
 /// Why a command failed, and the exit code that says so.
 #[derive(Debug)]
 pub(crate) enum Failure {

@@ -64,7 +64,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         ledger: args.ledger,
         impacts: args.impacts.is_some(),
         no_limit: args.no_limit,
-        threads: args.threads.map_or_else(crate::every_core, usize::from),
+        threads: args.threads.map_or_else(physics::every_core, usize::from),
     };
     plan.check().map_err(Failure::Input)?;
     distinct_outputs(args)?;

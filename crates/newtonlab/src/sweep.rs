@@ -75,7 +75,7 @@ pub(crate) fn sweep(args: &SweepArgs) -> Result<(), Failure> {
         trace: false,
     };
     sweep.check(&scene).map_err(Failure::Input)?;
-    let threads = args.threads.unwrap_or_else(crate::every_core);
+    let threads = args.threads.unwrap_or_else(physics::every_core);
     let bar = crate::run::progress_bar(sweep.points().len() as u64, "runs");
     let rows = sweep.run(&scene, threads, &|| bar.inc(1));
     bar.finish_and_clear();

@@ -53,7 +53,7 @@ pub(crate) fn validate(args: &ValidateArgs) -> Result<(), Failure> {
         .into_iter()
         .filter(|g| args.only.is_empty() || args.only.iter().any(|name| name == g.name()))
         .collect();
-    let threads = args.threads.map_or_else(crate::every_core, usize::from);
+    let threads = args.threads.map_or_else(physics::every_core, usize::from);
     let (report, figures) =
         check_all(&groups, args.tolerance, threads).map_err(|failure| match failure {
             newtonlab_validation::Failure::Simulation(why) => Failure::Simulation(why),

@@ -102,6 +102,7 @@ pub use examples::{EXAMPLES, Example, example};
 pub use field::{FieldReadout, field_at};
 pub use glam::DVec2;
 pub use integrators::{Integrator, UnknownIntegrator};
+pub use parallel::every_core;
 pub use profile::{Clock, Profile, Stage};
 pub use quantity::{Anchor, Link, LinkOf, Of, Quantity, Reading, Total, angle_from_down};
 pub use scene::error::{LoadError, Problem};

@@ -16,6 +16,12 @@ use crate::tuning::MIN_ITEMS;
 #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
 use crate::tuning::PIECES_PER_THREAD;
 
+/// The machine's cores: how many threads to use when not told (1 where it cannot say,
+/// as in a browser).
+pub fn every_core() -> usize {
+    std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
+}
+
 /// The threads a simulation may use.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Workers {

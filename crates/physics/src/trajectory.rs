@@ -136,7 +136,7 @@ pub struct Trajectory {
     /// The energy at the start, when the ledger is kept.
     ledger_start: Option<f64>,
     note: Option<String>,
-    particles: Vec<String>,
+    /// The ramps' names, for the impacts' (the particles' are the simulation's).
     ramps: Vec<String>,
     values: Vec<f64>,
 }
@@ -182,7 +182,6 @@ impl Trajectory {
             watch,
             ledger_start,
             note: every.and_then(|every| sampling_note(&scene.simulation, every)),
-            particles: scene.particle_names(),
             ramps: scene.ramps.iter().map(|r| r.name.clone()).collect(),
             values: Vec::new(),
         })
@@ -273,11 +272,11 @@ impl Trajectory {
     /// An impact's particle and what it hit, by name (`wall` for a wall).
     pub fn impact_names(&self, impact: &ImpactRecord) -> (&str, &str) {
         let other = match impact.other {
-            ImpactTarget::Particle(j) => self.particles[j].as_str(),
+            ImpactTarget::Particle(j) => self.simulation.names()[j].as_str(),
             ImpactTarget::Ramp(k) => self.ramps[k].as_str(),
             ImpactTarget::Wall => "wall",
         };
-        (self.particles[impact.particle].as_str(), other)
+        (self.simulation.names()[impact.particle].as_str(), other)
     }
 }
 

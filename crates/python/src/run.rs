@@ -105,7 +105,9 @@ pub fn run(
         ledger,
         impacts,
         no_limit,
-        threads: threads.filter(|&t| t > 0).unwrap_or_else(every_core),
+        threads: threads
+            .filter(|&t| t > 0)
+            .unwrap_or_else(physics::every_core),
     };
     let trajectory = Trajectory::new(&scene, &plan).map_err(scene_error)?;
     let rows = py.detach(|| collect(trajectory, !events.is_empty()));
@@ -208,7 +210,9 @@ pub fn sweep(
         trace: false,
     };
     sweep.check(&scene).map_err(scene_error)?;
-    let threads = threads.filter(|&t| t > 0).unwrap_or_else(every_core);
+    let threads = threads
+        .filter(|&t| t > 0)
+        .unwrap_or_else(physics::every_core);
     let rows = py.detach(|| sweep.run(&scene, threads, &|| {}));
     let mut problems = Vec::new();
     let mut columns: Vec<Vec<f64>> = vec![Vec::new(); fields.len() + measures_typed.len()];
@@ -286,11 +290,6 @@ fn varies(vary: &Bound<'_, PyDict>, scene: &physics::Scene) -> PyResult<(Vec<Str
     Ok((fields, varies))
 }
 
-/// The machine's cores: how many threads a call uses when not told.
-fn every_core() -> usize {
-    std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
-}
-
 /// Each problem as a Python warning (what `newtonlab sweep` writes on stderr).
 fn warn(py: Python<'_>, problems: &[String]) -> PyResult<()> {
     if problems.is_empty() {
@@ -331,7 +330,9 @@ pub fn validate(
             .collect::<Result<_, _>>()
             .map_err(scene_error)?
     };
-    let threads = threads.filter(|&t| t > 0).unwrap_or_else(every_core);
+    let threads = threads
+        .filter(|&t| t > 0)
+        .unwrap_or_else(physics::every_core);
     let outcome = py.detach(|| newtonlab_validation::validate(&groups, tolerance, threads));
     let (report, _) = outcome.map_err(|failure| match failure {
         newtonlab_validation::Failure::Simulation(why) => SimulationError::new_err(why),

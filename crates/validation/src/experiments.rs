@@ -41,7 +41,7 @@ pub(crate) fn processing_time(report: &mut Report) -> Outcome {
         (50, "5.68"),
         (100, "6.91"),
     ];
-    let cores = std::thread::available_parallelism().map_or(1, usize::from);
+    let cores = physics::every_core();
     let mut rows = Vec::new();
     for n in [1, 5, 10, 50, 100, 1000, 10_000] {
         let scene = physics::generated::mixed(n);

@@ -344,15 +344,38 @@ fn live(ui: &mut Ui, runner: &Runner, selection: Option<Selection>) {
         let accelerations = simulation.accelerations();
         let p = simulation.particle(i, &accelerations);
         let vector = |v: physics::DVec2, unit: &str| format!("{} {unit}", format::pair(v.x, v.y));
+        let mut rows = vec![
+            ("position", vector(p.position, "m")),
+            ("velocity", vector(p.velocity, "m/s")),
+            ("acceleration", vector(p.acceleration, "m/s²")),
+            ("speed", format::with_unit(p.speed, "m/s")),
+            ("kinetic energy", format::with_unit(p.kinetic_energy, "J")),
+            ("momentum", vector(p.momentum, "kg·m/s")),
+        ];
+        if simulation.particle_turns(i) {
+            let rpm = p.spin * 60.0 / std::f64::consts::TAU;
+            rows.extend([
+                (
+                    "spin",
+                    format!(
+                        "{} ({})",
+                        format::with_unit(p.spin, "rad/s"),
+                        format::with_unit(rpm, "rpm")
+                    ),
+                ),
+                ("angle", format::with_unit(p.angle, "°")),
+                (
+                    "of which rotational",
+                    format::with_unit(p.rotational_energy, "J"),
+                ),
+                (
+                    "angular momentum",
+                    format::with_unit(p.angular_momentum, "kg·m²/s"),
+                ),
+            ]);
+        }
         egui::Grid::new("live").num_columns(2).show(ui, |ui| {
-            for (name, value) in [
-                ("position", vector(p.position, "m")),
-                ("velocity", vector(p.velocity, "m/s")),
-                ("acceleration", vector(p.acceleration, "m/s²")),
-                ("speed", format::with_unit(p.speed, "m/s")),
-                ("kinetic energy", format::with_unit(p.kinetic_energy, "J")),
-                ("momentum", vector(p.momentum, "kg·m/s")),
-            ] {
+            for (name, value) in rows {
                 ui.label(name);
                 ui.monospace(value);
                 ui.end_row();
@@ -489,6 +512,7 @@ fn selected(
                 fields::PARTICLE,
                 (move |s| &s.particles[i], move |s| &mut s.particles[i]),
             );
+            inertia_presets(ui, document, i);
         }
         Some(Selection::Spring(i)) if i < document.scene().springs.len() => {
             problem = object(
@@ -525,6 +549,41 @@ fn selected(
         Some(_) => *selection = None,
     }
     problem
+}
+
+/// Buttons that give particle `i` the moment of inertia of a point (it never turns), a
+/// solid disc or a thin ring.
+fn inertia_presets(ui: &mut Ui, document: &mut Document, i: usize) {
+    ui.horizontal_wrapped(|ui| {
+        ui.label(tr("inspector-inertia-presets"));
+        for (key, inertia) in [
+            ("inspector-inertia-point", 0.0),
+            ("inspector-inertia-disc", 0.5),
+            ("inspector-inertia-ring", 1.0),
+        ] {
+            #[expect(clippy::float_cmp, reason = "exactly the preset's value")]
+            let chosen = document.scene().particles[i].inertia == inertia;
+            if ui
+                .selectable_label(chosen, tr(key))
+                .on_hover_text(tr(&format!("{key}-hint")))
+                .clicked()
+                && !chosen
+            {
+                let field = FieldRef {
+                    section: Section::Particle(i),
+                    field: "inertia",
+                };
+                let edit = Edit::Set {
+                    kind: "particle",
+                    key: "inertia",
+                };
+                // Every preset is valid for every particle: nothing to report.
+                let _ = try_apply(document, edit, field, |scene| {
+                    scene.particles[i].inertia = inertia;
+                });
+            }
+        }
+    });
 }
 
 /// A rod or string whose ends start at another distance than its length pulls them onto
@@ -717,6 +776,7 @@ fn bounds_field<T>(
         return Some(Value::Bounds(boxed.then(|| physics::Bounds {
             min: Vector::cartesian(-20.0, -20.0),
             max: Vector::cartesian(20.0, 20.0),
+            friction: 0.0,
         })));
     }
     let bounds = bounds?;

@@ -14,7 +14,7 @@ use std::fmt::Write as _;
 
 use egui::Ui;
 use egui_plot::{AxisHints, Legend, Line, LineStyle, Plot, PlotPoints, VLine};
-use physics::{Graph, LinkOf, Of, Quantity, Total};
+use physics::{Graph, LinkOf, Of, Particle, Quantity, Total};
 
 use crate::action::Action;
 use crate::analysis;
@@ -69,6 +69,7 @@ pub fn words(quantity: &Quantity) -> String {
         Total::TotalEnergy => "total-total-energy",
         Total::MomentumX => "total-momentum-x",
         Total::MomentumY => "total-momentum-y",
+        Total::AngularMomentum => "total-angular-momentum",
     };
     format!("{} ({})", tr(key), quantity.unit())
 }
@@ -187,6 +188,8 @@ impl Graphs {
         // Only what the panel reads, not the whole scene, every frame.
         let graph = &document.scene().graphs[g].clone();
         let names = document.scene().particle_names();
+        // A turning particle's quantities are offered only where one turns.
+        let turning = document.scene().particles.iter().any(Particle::turns);
         let (x, series) = (graph.x.clone(), graph.y.clone());
         let mut action = None;
         let mut change: Option<GraphEdit> = None;
@@ -223,7 +226,7 @@ impl Graphs {
             egui::ComboBox::from_id_salt("graph quantity")
                 .selected_text(of.key())
                 .show_ui(ui, |ui| {
-                    for q in Of::ALL {
+                    for q in Of::ALL.into_iter().filter(|&q| turning || !q.turns()) {
                         ui.selectable_value(&mut of, q, q.key());
                     }
                 })
@@ -262,7 +265,10 @@ impl Graphs {
         });
         let links: Vec<Quantity> = ties.chain(springs).collect();
         ui.horizontal_wrapped(|ui| {
-            let totals = Total::ALL.into_iter().map(Quantity::Total);
+            let totals = Total::ALL
+                .into_iter()
+                .filter(|&t| turning || t != Total::AngularMomentum)
+                .map(Quantity::Total);
             for quantity in totals.chain(links) {
                 let hint = tr(match quantity {
                     Quantity::Link(_, LinkOf::Tension) => "graph-tension-hint",

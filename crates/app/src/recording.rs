@@ -20,7 +20,10 @@ const FIRST_INTERVAL: f64 = 0.005;
 /// Numbers per particle per sample: x, y, vx, vy, ax, ay, kinetic energy.
 const PER_PARTICLE: usize = 7;
 /// System numbers per sample, after the particles'.
-const TOTALS: [Total; 5] = Total::ALL;
+const TOTALS: [Total; 6] = Total::ALL;
+/// Numbers per particle per sample after the totals, when any particle turns: angle,
+/// spin, angular momentum.
+const PER_TURNING: usize = 3;
 
 /// Where a quantity is in a sample: a number stored, the speed from the velocity's two
 /// components, or a rod's, string's or spring's angle or length from its ends.
@@ -47,8 +50,11 @@ pub struct Recording {
     ties: Vec<String>,
     /// Every rod, string and spring at Play, by name, with its ends.
     links: Vec<(String, [Anchor; 2])>,
-    /// Numbers per sample: t, then each particle's, each tie's tension, then the totals.
+    /// Numbers per sample: t, then each particle's, each tie's tension, the totals, and
+    /// each particle's turning when any turns.
     width: usize,
+    /// Whether the samples hold the particles' turning.
+    turning: bool,
     /// Samples, one after another.
     data: Vec<f64>,
     /// Steps between samples.
@@ -82,7 +88,13 @@ impl Recording {
             width: 1
                 + PER_PARTICLE * simulation.len()
                 + simulation.tie_names().len()
-                + TOTALS.len(),
+                + TOTALS.len()
+                + if simulation.turns() {
+                    PER_TURNING * simulation.len()
+                } else {
+                    0
+                },
+            turning: simulation.turns(),
             data: Vec::new(),
             stride,
             first_step: simulation.steps_taken(),
@@ -129,8 +141,12 @@ impl Recording {
         }
         let accelerations = simulation.accelerations();
         self.data.push(simulation.time());
+        let mut turning = Vec::new();
         for i in 0..simulation.len() {
             let p = simulation.particle(i, &accelerations);
+            if self.turning {
+                turning.extend([p.angle, p.spin, p.angular_momentum]);
+            }
             self.data.extend([
                 p.position.x,
                 p.position.y,
@@ -149,7 +165,9 @@ impl Recording {
             Total::TotalEnergy => d.energy.total(),
             Total::MomentumX => d.momentum.x,
             Total::MomentumY => d.momentum.y,
+            Total::AngularMomentum => d.angular_momentum,
         }));
+        self.data.extend(turning);
         d
     }
 
@@ -200,7 +218,10 @@ impl Recording {
         Some(match quantity {
             Quantity::Time => Column::Plain(0),
             Quantity::Particle(name, of) => {
-                let first = 1 + PER_PARTICLE * self.names.iter().position(|n| n == name)?;
+                let i = self.names.iter().position(|n| n == name)?;
+                let first = 1 + PER_PARTICLE * i;
+                let turning =
+                    (self.width - PER_TURNING * self.names.len() + PER_TURNING * i).min(self.width);
                 match of {
                     Of::X => Column::Plain(first),
                     Of::Y => Column::Plain(first + 1),
@@ -210,7 +231,15 @@ impl Recording {
                     Of::Ax => Column::Plain(first + 4),
                     Of::Ay => Column::Plain(first + 5),
                     Of::KineticEnergy => Column::Plain(first + 6),
+                    Of::Angle if self.turning => Column::Plain(turning),
+                    Of::Spin if self.turning => Column::Plain(turning + 1),
+                    Of::AngularMomentum if self.turning => Column::Plain(turning + 2),
+                    Of::Angle | Of::Spin | Of::AngularMomentum => return None,
                 }
+            }
+            Quantity::Link(name, LinkOf::Angle) if self.names.contains(name) && self.turning => {
+                let i = self.names.iter().position(|n| n == name)?;
+                Column::Plain(self.width - PER_TURNING * (self.names.len() - i))
             }
             Quantity::Link(name, LinkOf::Tension) => {
                 let k = self.ties.iter().position(|n| n == name)?;
@@ -228,7 +257,12 @@ impl Recording {
             }
             Quantity::Total(total) => {
                 let j = TOTALS.iter().position(|t| t == total)?;
-                Column::Plain(self.width - TOTALS.len() + j)
+                let after = if self.turning {
+                    PER_TURNING * self.names.len()
+                } else {
+                    0
+                };
+                Column::Plain(self.width - after - TOTALS.len() + j)
             }
         })
     }

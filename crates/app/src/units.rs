@@ -41,7 +41,15 @@ fn units(si: &str) -> &'static [(&'static str, f64)] {
         "°" => &[
             ("deg", 1.0),
             ("rad", 180.0 / std::f64::consts::PI),
+            ("rev", 360.0),
             ("°", 1.0),
+        ],
+        "rad/s" => &[
+            ("rpm", std::f64::consts::TAU / 60.0),
+            ("rev/s", std::f64::consts::TAU),
+            ("deg/s", std::f64::consts::PI / 180.0),
+            ("°/s", std::f64::consts::PI / 180.0),
+            ("rad/s", 1.0),
         ],
         _ => &[],
     }

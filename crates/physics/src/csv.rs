@@ -1,6 +1,8 @@
 //! A simulation's state as CSV, the format of `newtonlab run` (`docs/cli.md`): the header
-//! `t`, then `NAME.x,NAME.y,NAME.vx,NAME.vy,NAME.ax,NAME.ay` per particle in scene order,
-//! then `kinetic_energy,potential_energy,total_energy,momentum_x,momentum_y`. Every number
+//! `t`, then `NAME.x,NAME.y,NAME.vx,NAME.vy,NAME.ax,NAME.ay` per particle in scene order
+//! (and `NAME.angle,NAME.spin` after them for a particle that turns), then
+//! `kinetic_energy,potential_energy,total_energy,momentum_x,momentum_y` (and
+//! `angular_momentum` when any particle turns). Every number
 //! is the shortest text that parses back to the same f64, so two rows are equal as text
 //! exactly when the states are equal bit for bit.
 
@@ -12,9 +14,12 @@ impl Simulation {
     /// The CSV header's column names, unquoted: `t`, six per particle, then the system's.
     pub fn csv_columns(&self) -> Vec<String> {
         let mut columns = vec!["t".to_owned()];
-        for name in self.names() {
+        for (i, name) in self.names().iter().enumerate() {
             for quantity in ["x", "y", "vx", "vy", "ax", "ay"] {
                 columns.push(format!("{name}.{quantity}"));
+            }
+            if self.particle_turns(i) {
+                columns.extend([format!("{name}.angle"), format!("{name}.spin")]);
             }
         }
         columns.extend(
@@ -27,6 +32,9 @@ impl Simulation {
             ]
             .map(str::to_owned),
         );
+        if self.turns() {
+            columns.push("angular_momentum".to_owned());
+        }
         columns
     }
 
@@ -49,6 +57,9 @@ impl Simulation {
                     .iter()
                     .flat_map(|v| [v.x, v.y]),
             );
+            if self.particle_turns(i) {
+                out.extend([p.angle, p.spin]);
+            }
         }
         let energy = diagnostics.energy;
         out.extend([
@@ -58,6 +69,9 @@ impl Simulation {
             diagnostics.momentum.x,
             diagnostics.momentum.y,
         ]);
+        if self.turns() {
+            out.push(diagnostics.angular_momentum);
+        }
     }
 
     /// The CSV row of this instant (without a line break): [`Self::csv_values`], each

@@ -47,6 +47,8 @@ pub struct Diagnostics {
     pub energy: Energy,
     /// Σ m v over moving particles, kg·m/s.
     pub momentum: DVec2,
+    /// Σ m x × v + I ω over moving particles, about the origin, kg·m²/s.
+    pub angular_momentum: f64,
 }
 
 /// One particle at an instant.
@@ -64,11 +66,20 @@ pub struct ParticleReadout {
     pub kinetic_energy: f64,
     /// kg·m/s.
     pub momentum: DVec2,
+    /// Radians per second, counter-clockwise (0 for a particle that does not turn).
+    pub spin: f64,
+    /// Degrees, counter-clockwise, unwrapped.
+    pub angle: f64,
+    /// ½ I ω², joules (included in `kinetic_energy`).
+    pub rotational_energy: f64,
+    /// m x × v + I ω about the origin, kg·m²/s.
+    pub angular_momentum: f64,
 }
 
 pub(crate) fn measure(forces: &ForceModel, state: &State) -> Diagnostics {
     let mut energy = Energy::default();
     let mut momentum = DVec2::ZERO;
+    let mut angular_momentum = 0.0;
     for i in 0..state.len() {
         if forces.is_fixed(i) {
             continue;
@@ -77,6 +88,7 @@ pub(crate) fn measure(forces: &ForceModel, state: &State) -> Diagnostics {
         energy.kinetic += 0.5 * m * v.length_squared();
         energy.uniform += uniform::potential(m, forces.uniform[i], state.position[i]);
         momentum += m * v;
+        angular_momentum += m * state.position[i].perp_dot(v);
     }
     // A fold from +0: `sum` of no springs is −0, which shows as "-0".
     energy.spring = forces
@@ -111,6 +123,7 @@ pub(crate) fn measure(forces: &ForceModel, state: &State) -> Diagnostics {
         time: state.time,
         energy,
         momentum,
+        angular_momentum,
     }
 }
 
@@ -163,6 +176,10 @@ pub(crate) fn particle(
         speed: velocity.length(),
         kinetic_energy: 0.5 * mass * velocity.length_squared(),
         momentum: mass * velocity,
+        spin: 0.0,
+        angle: 0.0,
+        rotational_energy: 0.0,
+        angular_momentum: mass * position.perp_dot(velocity),
     }
 }
 

@@ -95,6 +95,9 @@ examples!(
     "double-pendulum",
     "string-circle",
     "terminal-speed",
+    "galileo-incline",
+    "bowling",
+    "spin-bounce",
 );
 
 /// The built-in scene with this name.

@@ -95,6 +95,7 @@ mod state;
 mod testing;
 mod trajectory;
 mod tuning;
+mod turning;
 
 pub use diagnostics::{Diagnostics, Energy, ParticleReadout};
 pub use events::{Direction, Event, Located, Turn, Watch};

@@ -26,13 +26,19 @@ pub enum Of {
     Ax,
     /// Acceleration by the smooth forces, y.
     Ay,
-    /// ½ m v².
+    /// ½ m v² + ½ I ω².
     KineticEnergy,
+    /// A turning particle's orientation, degrees counter-clockwise, unwrapped.
+    Angle,
+    /// A turning particle's spin ω, radians per second counter-clockwise.
+    Spin,
+    /// m x × v + I ω about the origin.
+    AngularMomentum,
 }
 
 impl Of {
     /// Every particle quantity, in menu order.
-    pub const ALL: [Self; 8] = [
+    pub const ALL: [Self; 11] = [
         Self::X,
         Self::Y,
         Self::Vx,
@@ -41,7 +47,16 @@ impl Of {
         Self::Ax,
         Self::Ay,
         Self::KineticEnergy,
+        Self::Angle,
+        Self::Spin,
+        Self::AngularMomentum,
     ];
+
+    /// Whether it is offered only for scenes with a turning particle: the angle and the
+    /// spin (0 for a point), and the angular momentum.
+    pub fn turns(self) -> bool {
+        matches!(self, Self::Angle | Self::Spin | Self::AngularMomentum)
+    }
 
     /// The key after the dot in `A.vx`.
     pub fn key(self) -> &'static str {
@@ -54,16 +69,22 @@ impl Of {
             Self::Ax => "ax",
             Self::Ay => "ay",
             Self::KineticEnergy => "kinetic_energy",
+            Self::Angle => "angle",
+            Self::Spin => "spin",
+            Self::AngularMomentum => "angular_momentum",
         }
     }
 
-    /// The SI unit.
+    /// The SI unit (degrees for the angle, as the scene file writes angles).
     pub fn unit(self) -> &'static str {
         match self {
             Self::X | Self::Y => "m",
             Self::Vx | Self::Vy | Self::Speed => "m/s",
             Self::Ax | Self::Ay => "m/s²",
             Self::KineticEnergy => "J",
+            Self::Angle => "°",
+            Self::Spin => "rad/s",
+            Self::AngularMomentum => "kg·m²/s",
         }
     }
 }
@@ -116,16 +137,19 @@ pub enum Total {
     MomentumX,
     /// Σ m `v_y` of the moving particles.
     MomentumY,
+    /// Σ m x × v + I ω of the moving particles, about the origin.
+    AngularMomentum,
 }
 
 impl Total {
     /// Every system quantity, in menu order.
-    pub const ALL: [Self; 5] = [
+    pub const ALL: [Self; 6] = [
         Self::KineticEnergy,
         Self::PotentialEnergy,
         Self::TotalEnergy,
         Self::MomentumX,
         Self::MomentumY,
+        Self::AngularMomentum,
     ];
 
     /// As written in a scene file.
@@ -136,6 +160,7 @@ impl Total {
             Self::TotalEnergy => "total_energy",
             Self::MomentumX => "momentum_x",
             Self::MomentumY => "momentum_y",
+            Self::AngularMomentum => "angular_momentum",
         }
     }
 
@@ -144,6 +169,7 @@ impl Total {
         match self {
             Self::KineticEnergy | Self::PotentialEnergy | Self::TotalEnergy => "J",
             Self::MomentumX | Self::MomentumY => "kg·m/s",
+            Self::AngularMomentum => "kg·m²/s",
         }
     }
 }
@@ -252,6 +278,13 @@ impl Quantity {
             Self::Link(name, of) => {
                 if let Some(k) = find(ties, name) {
                     return Ok(Reading::Link(Link::Tie(k), *of));
+                }
+                // `NAME.angle` of a particle: a turning particle's orientation.
+                if *of == LinkOf::Angle
+                    && find(springs, name).is_none()
+                    && let Some(i) = find(particles, name)
+                {
+                    return Ok(Reading::Particle(i, Of::Angle));
                 }
                 match (find(springs, name), of) {
                     (Some(_), LinkOf::Tension) => Err(crate::scene::say(
@@ -363,11 +396,16 @@ impl Simulation {
                     Of::Vx => v.x,
                     Of::Vy => v.y,
                     Of::Speed => v.length(),
-                    Of::Ax | Of::Ay | Of::KineticEnergy => {
-                        let p = self.particle(i, &self.accelerations());
+                    Of::Ax | Of::Ay => {
+                        let a = self.particle(i, &self.accelerations()).acceleration;
+                        if of == Of::Ax { a.x } else { a.y }
+                    }
+                    Of::KineticEnergy | Of::Angle | Of::Spin | Of::AngularMomentum => {
+                        let p = self.particle(i, &[]);
                         match of {
-                            Of::Ax => p.acceleration.x,
-                            Of::Ay => p.acceleration.y,
+                            Of::Angle => p.angle,
+                            Of::Spin => p.spin,
+                            Of::AngularMomentum => p.angular_momentum,
                             _ => p.kinetic_energy,
                         }
                     }
@@ -381,6 +419,7 @@ impl Simulation {
                     Total::TotalEnergy => d.energy.total(),
                     Total::MomentumX => d.momentum.x,
                     Total::MomentumY => d.momentum.y,
+                    Total::AngularMomentum => d.angular_momentum,
                 }
             }
             Reading::Side {

@@ -149,6 +149,15 @@ pub struct Particle {
     pub linear_drag: f64,
     /// Quadratic air resistance c, kg/m: a force −c |v| v. Default 0.
     pub quadratic_drag: f64,
+    /// The moment of inertia as a multiple of m r², ≥ 0: 0 (the default) is the paper's
+    /// point particle, which never turns and feels no friction at impacts; 0.5 a solid
+    /// disc, 1 a thin ring.
+    pub inertia: f64,
+    /// Angular velocity, radians per second, counter-clockwise positive. Default 0.
+    pub spin: f64,
+    /// Orientation, degrees counter-clockwise: only where its marked radius is drawn.
+    /// Default 0.
+    pub angle: f64,
 }
 
 impl Particle {
@@ -167,7 +176,15 @@ impl Particle {
             color: None,
             linear_drag: 0.0,
             quadratic_drag: 0.0,
+            inertia: 0.0,
+            spin: 0.0,
+            angle: 0.0,
         }
+    }
+
+    /// Whether it turns: a moment of inertia above zero.
+    pub fn turns(&self) -> bool {
+        self.inertia > 0.0
     }
 
     /// The velocity it starts with, m/s: zero for a fixed particle, whatever was typed.
@@ -220,6 +237,15 @@ impl Particle {
     pub fn drag(mut self, b: f64, c: f64) -> Self {
         self.linear_drag = b;
         self.quadratic_drag = c;
+        self
+    }
+
+    /// Makes it turn: the moment of inertia `inertia` × m r² (0.5 a solid disc, 1 a
+    /// ring) and the spin, radians per second counter-clockwise.
+    #[must_use]
+    pub fn turning(mut self, inertia: f64, spin: f64) -> Self {
+        self.inertia = inertia;
+        self.spin = spin;
         self
     }
 
@@ -441,6 +467,10 @@ pub struct Bounds {
     pub min: Vector,
     /// Upper-right corner.
     pub max: Vector,
+    /// Coefficient of friction of the four walls, ≥ 0: a particle sliding along a wall
+    /// feels μN against its motion, and a turning one is gripped at its contact point.
+    /// Default 0.
+    pub friction: f64,
 }
 
 /// Fields and constants that apply to the whole scene.
@@ -467,6 +497,10 @@ pub struct World {
     pub collisions: bool,
     /// Coefficient of restitution of particle–particle impacts, 0..=1. Default 1.
     pub restitution: f64,
+    /// Coefficient of friction between particles, ≥ 0: at an impact between two turning
+    /// particles the tangential impulse grips their contact points (Coulomb: sticking
+    /// within μ times the normal impulse, sliding beyond). Default 0.
+    pub friction: f64,
     /// An optional reflecting box.
     pub bounds: Option<Bounds>,
 }
@@ -519,6 +553,7 @@ impl Default for World {
             softening: 0.0,
             collisions: true,
             restitution: 1.0,
+            friction: 0.0,
             bounds: None,
         }
     }

@@ -271,6 +271,10 @@ impl Simulation {
             if !particle.fixed {
                 particle.velocity = Vector::cartesian(v.x, v.y);
             }
+            if let Some(turning) = self.contacts.turning.as_ref().filter(|_| particle.turns()) {
+                particle.spin = turning.spin[i];
+                particle.angle = turning.angle[i].to_degrees();
+            }
         }
         saved.simulation.start_time = self.state.time;
         saved
@@ -554,6 +558,9 @@ impl Simulation {
         let begun_with = self.begin(max_step);
         let begun = self.contacts.applied.len();
         self.start.clone_from(&self.state);
+        if let Some(turning) = &mut self.contacts.turning {
+            turning.begin_step();
+        }
         let mut taken = if self.split_trial_step(max_step) {
             max_step
         } else {
@@ -572,10 +579,8 @@ impl Simulation {
         };
         // A blown-up trial step stops here: the searches below assume a sane state.
         self.check_finite()?;
-        let mut tie_event = self.find_tie_event(taken);
-        if let Some((_, time)) = tie_event {
-            taken = time;
-        }
+        let mut tie_event;
+        (tie_event, taken) = self.shorten_trial_step(taken);
         self.profiler.lap(Stage::Integration);
         let interruption = self.contacts.resolve_impacts(
             &self.start,
@@ -627,8 +632,10 @@ impl Simulation {
             self.work.start_acceleration = None;
         }
         let lifted = self.settle(taken, struck);
+        let slipped = self.end_turning(taken, begun);
         if let (Some(start), Some((power, kinetic, supported))) = (begun_with, before_settling) {
             self.book(start, (power, kinetic), begun, taken, supported + lifted);
+            self.book_friction(begun, slipped);
         }
         self.profiler.lap(Stage::RestingSolver);
         if !self.forces.constraints.is_empty() {
@@ -657,10 +664,9 @@ impl Simulation {
     /// the potential energy a catch's lift onto its surface gave) and the dissipated power
     /// then.
     fn begin(&mut self, max_step: f64) -> Option<(f64, Power)> {
-        let before = self.ledger.map(|_| {
-            let kinetic = self.forces.kinetic_energy(&self.state.velocity);
-            (kinetic, self.state.position.clone())
-        });
+        let before = self
+            .ledger
+            .map(|_| (self.kinetic_energy(), self.state.position.clone()));
         if self.contacts.begin_step(
             &mut self.state,
             &mut self.forces,
@@ -675,7 +681,7 @@ impl Simulation {
         before.map(|(kinetic, position)| {
             let (x, v) = (&self.state.position, &self.state.velocity);
             let lifted = diagnostics::potential_change(&self.forces, &position, x);
-            let caught = kinetic - self.forces.kinetic_energy(v) - lifted;
+            let caught = kinetic - self.kinetic_energy() - lifted;
             (caught, self.forces.dissipation(x, v))
         })
     }
@@ -723,7 +729,7 @@ impl Simulation {
                     impulse: effective_mass(applied, w) * (1.0 + e) * u,
                     normal_speed_before: u,
                     normal_speed_after: e * u,
-                    kinetic_energy_lost: impact_energy_lost(applied, w),
+                    kinetic_energy_lost: impact_energy_lost(applied, w) + applied.grip.lost,
                 });
             }
         }
@@ -788,6 +794,115 @@ impl Simulation {
         ledger.impacts += caught + in_step + self.contacts.caught_in_step + settled - moved;
     }
 
+    /// The trial step of `taken` seconds just integrated, shortened to the first event
+    /// inside it: a string snapping taut or going slack (returned, to apply at the step's
+    /// end), or a turning particle starting to roll. Returns the event and the step.
+    fn shorten_trial_step(&mut self, mut taken: f64) -> (Option<(usize, f64)>, f64) {
+        let mut tie_event = self.find_tie_event(taken);
+        if let Some((_, time)) = tie_event {
+            taken = time;
+        }
+        if let Some(time) = self.find_rolling_start(taken) {
+            // Slipping stops first: the step ends there, and a string's event, if still
+            // due, is found again.
+            tie_event = None;
+            taken = time;
+        }
+        (tie_event, taken)
+    }
+
+    /// The instant, seconds into the trial step of `taken` just integrated, at which the
+    /// first turning particle that slips on its surface stops slipping, if one does:
+    /// where the slip of its contact point, v·t − ω r, reaches zero. Its spin changes at
+    /// a fixed rate through the step, and under forces fixed for the step so does its
+    /// velocity: the slip is linear, and one interpolation finds the instant; otherwise
+    /// the secant method refines it on the integrated state. The state is then the one at
+    /// the instant returned.
+    fn find_rolling_start(&mut self, taken: f64) -> Option<f64> {
+        let turning = self.contacts.turning.as_ref()?;
+        let start = turning.slips(&self.start.velocity, &self.radius, 0.0);
+        if start.is_empty() {
+            return None;
+        }
+        let end = turning.slips(&self.state.velocity, &self.radius, taken);
+        let (index, mut time) = start
+            .iter()
+            .zip(&end)
+            .enumerate()
+            .filter(|(_, ((_, s0), (_, s1)))| {
+                *s0 != 0.0 && (s1.signum() != s0.signum() || *s1 == 0.0)
+            })
+            .map(|(k, ((_, s0), (_, s1)))| (k, taken * (s0 / (s0 - s1))))
+            .min_by(|a, b| a.1.total_cmp(&b.1))?;
+        if !(time > 0.0 && time < taken) {
+            return None;
+        }
+        let p = start[index].0;
+        let (mut before, mut after) = ((0.0, start[index].1), (taken, end[index].1));
+        for _ in 0..4 {
+            self.integrate_from_start(time);
+            let turning = self.contacts.turning.as_ref()?;
+            let slip = turning.slips(&self.state.velocity, &self.radius, time)[index].1;
+            let scale =
+                self.state.velocity[p].length() + (turning.start_spin[p] * self.radius[p]).abs();
+            if slip.abs() <= crate::tuning::ROLLING * scale {
+                break;
+            }
+            if slip.signum() == before.1.signum() {
+                before = (time, slip);
+            } else {
+                after = (time, slip);
+            }
+            let refined = before.0 + (after.0 - before.0) * (before.1 / (before.1 - after.1));
+            if !(refined > before.0 && refined < after.0) {
+                break;
+            }
+            time = refined;
+        }
+        Some(time)
+    }
+
+    /// Turns the turning particles through the step just taken (`taken` seconds; the
+    /// impacts inside it are those applied from `begun` on). Returns the energy their
+    /// slipping on surfaces took, joules.
+    fn end_turning(&mut self, taken: f64, begun: usize) -> f64 {
+        let Some(turning) = &mut self.contacts.turning else {
+            return 0.0;
+        };
+        let mut kicks = Vec::new();
+        for applied in &self.contacts.applied[begun..] {
+            let (first, second) = match applied.impact {
+                Impact::Pair(i, j) => (i, Some(j)),
+                Impact::Obstacle(p, _) => (p, None),
+            };
+            kicks.push((applied.time, first, applied.kick.0, applied.grip.spin.0));
+            if let Some(j) = second {
+                kicks.push((applied.time, j, applied.kick.1, applied.grip.spin.1));
+            }
+        }
+        turning.end_step(
+            taken,
+            (&self.start.position, &self.start.velocity),
+            (&self.state.position, &self.state.velocity),
+            (&self.forces.mass, &self.radius),
+            &kicks,
+        )
+    }
+
+    /// Adds friction's share of the step to the ledger: at impacts between turning
+    /// bodies (those at the step's start, applied from `begun` back, were booked with
+    /// the impacts by [`Self::begin`]'s energy) and in slipping, `slipped` joules.
+    fn book_friction(&mut self, begun: usize, slipped: f64) {
+        let Some(ledger) = &mut self.ledger else {
+            return;
+        };
+        let applied = &self.contacts.applied;
+        let at_start: f64 = applied[..begun].iter().map(|a| a.grip.lost).sum();
+        let inside: f64 = applied[begun..].iter().map(|a| a.grip.lost).sum();
+        ledger.friction += at_start + inside + slipped;
+        ledger.impacts -= at_start;
+    }
+
     /// Integrates from the step's start to the instant of `impact`, first estimated at
     /// `estimate` seconds into a step of `limit`, refined by Newton's method on the gap of
     /// the integrated state (the path used to find it is only an interpolation). Returns
@@ -837,13 +952,75 @@ impl Simulation {
 
     /// Energies by kind and total momentum at this instant.
     pub fn diagnostics(&self) -> Diagnostics {
-        diagnostics::measure(&self.forces, &self.state)
+        let mut diagnostics = diagnostics::measure(&self.forces, &self.state);
+        if let Some(turning) = &self.contacts.turning {
+            let (m, w, r) = (&self.forces.mass, &self.forces.inverse_mass, &self.radius);
+            diagnostics.energy.kinetic += turning.kinetic_energy(m, w, r);
+            diagnostics.angular_momentum += turning.angular_momentum(m, w, r);
+        }
+        diagnostics
     }
 
     /// Everything about particle `i` at this instant; `accelerations` from
     /// [`Self::accelerations`].
     pub fn particle(&self, i: usize, accelerations: &[DVec2]) -> ParticleReadout {
-        diagnostics::particle(&self.forces, &self.state, accelerations, i)
+        let mut readout = diagnostics::particle(&self.forces, &self.state, accelerations, i);
+        if let Some(turning) = &self.contacts.turning
+            && !self.forces.is_fixed(i)
+        {
+            let moment = turning.moment(i, &self.forces.mass, &self.radius);
+            let spin = turning.spin[i];
+            readout.spin = spin;
+            readout.angle = turning.angle[i].to_degrees();
+            readout.rotational_energy = 0.5 * moment * spin * spin;
+            readout.kinetic_energy += readout.rotational_energy;
+            readout.angular_momentum += moment * spin;
+        } else if let Some(turning) = &self.contacts.turning {
+            readout.spin = turning.spin[i];
+            readout.angle = turning.angle[i].to_degrees();
+        }
+        readout
+    }
+
+    /// Whether any particle turns (has a moment of inertia).
+    pub fn turns(&self) -> bool {
+        self.contacts.turning.is_some()
+    }
+
+    /// Whether particle `i` turns.
+    pub fn particle_turns(&self, i: usize) -> bool {
+        self.contacts
+            .turning
+            .as_ref()
+            .is_some_and(|turning| turning.inertia[i] > 0.0)
+    }
+
+    /// Spins, radians per second counter-clockwise (all 0 when nothing turns).
+    pub fn spins(&self) -> Vec<f64> {
+        self.contacts
+            .turning
+            .as_ref()
+            .map_or_else(|| vec![0.0; self.len()], |turning| turning.spin.clone())
+    }
+
+    /// Orientations, degrees counter-clockwise, unwrapped (all 0 when nothing turns).
+    pub fn angles(&self) -> Vec<f64> {
+        self.contacts.turning.as_ref().map_or_else(
+            || vec![0.0; self.len()],
+            |turning| turning.angle.iter().map(|a| a.to_degrees()).collect(),
+        )
+    }
+
+    /// Total kinetic energy, translational and rotational, joules.
+    fn kinetic_energy(&self) -> f64 {
+        let translational = self.forces.kinetic_energy(&self.state.velocity);
+        self.contacts
+            .turning
+            .as_ref()
+            .map_or(translational, |turning| {
+                let (m, w, r) = (&self.forces.mass, &self.forces.inverse_mass, &self.radius);
+                translational + turning.kinetic_energy(m, w, r)
+            })
     }
 }
 

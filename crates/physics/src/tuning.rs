@@ -20,6 +20,14 @@
 /// and resting contact flickers between touching and not, with impacts at every step.
 pub(crate) const TOUCHING: f64 = 1e-6;
 
+/// A turning particle on a surface whose contact point slips slower than this fraction
+/// of its speeds (along the surface, and of its rim) rolls; dimensionless. Why: the
+/// instant slipping stops is located to rounding, which leaves a slip of some ulps of
+/// those speeds; smaller, and the step after it would locate that rounding's crossing
+/// again; larger, and a slipping ball would be caught rolling early (the catch changes
+/// its spin by at most this fraction, so 1e-9 is below anything a run reports).
+pub(crate) const ROLLING: f64 = 1e-9;
+
 /// A particle's fat box (the broad phase's) is its box grown by this fraction of its
 /// radius, plus its travel over [`FAT_STEPS`] steps; dimensionless. Why: a resting pile
 /// keeps its boxes for many steps and a ball in flight gets a new one every few. Only the

@@ -238,6 +238,7 @@ fn balls_on_a_floor(restitution: f64, balls: &[(f64, f64)]) -> Scene {
         bounds: Some(Bounds {
             min: Vector::cartesian(-20.0, 0.0),
             max: Vector::cartesian(20.0, 10.0),
+            friction: 0.0,
         }),
         ..World::gravity_only()
     });
@@ -348,6 +349,7 @@ fn bounds_reflect_with_the_world_restitution() {
     world.bounds = Some(physics::Bounds {
         min: [0.0, 0.0].into(),
         max: [10.0, 10.0].into(),
+        friction: 0.0,
     });
     let scene = Scene::new().with_world(world).with_particle(
         Particle::new("ball", 1.0)
@@ -395,6 +397,7 @@ fn one_step_in_a_box(h: f64, particles: &[Particle], theory: &[f64]) -> Simulati
     world.bounds = Some(Bounds {
         min: [-10.0, -5.0].into(),
         max: [6.0, 5.0].into(),
+        friction: 0.0,
     });
     let mut scene = Scene::new()
         .with_world(world)
@@ -518,6 +521,7 @@ fn without_collisions(min: [f64; 2], max: [f64; 2]) -> World {
     world.bounds = Some(Bounds {
         min: min.into(),
         max: max.into(),
+        friction: 0.0,
     });
     world
 }
@@ -624,6 +628,7 @@ fn box_with_a_floor(height: f64) -> World {
         bounds: Some(physics::Bounds {
             min: [-1.0, 0.0].into(),
             max: [1.0, height].into(),
+            friction: 0.0,
         }),
         ..World::gravity_only()
     }

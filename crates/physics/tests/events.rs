@@ -170,6 +170,7 @@ fn a_bounce_reverses_the_velocity_at_the_impacts_instant() {
     world.bounds = Some(physics::Bounds {
         min: [-5.0, 0.0].into(),
         max: [5.0, 10.0].into(),
+        friction: 0.0,
     });
     let scene = Scene::new()
         .with_world(world)

@@ -226,13 +226,15 @@ fn world() -> impl Strategy<Value = String> {
         any::<bool>(),
         prop::option::of(prop_oneof![
             4 => Just("{ min = [-5.0, -5.0], max = [5.0, 5.0] }".to_owned()),
+            1 => Just("{ min = [-5.0, -5.0], max = [5.0, 5.0], friction = 0.6 }".to_owned()),
             1 => (near(), near()).prop_map(|(min, max)| format!("{{ min = {min}, max = {max} }}")),
         ]),
         prop_oneof![20 => (0.0f64..=1.0).prop_map(|e| format!("{e:?}")), 1 => number()],
+        prop_oneof![2 => Just("0.0".to_owned()), 1 => positive()],
     )
-        .prop_map(|(gravity, gravitation, electrostatics, collisions, bounds, restitution)| {
+        .prop_map(|(gravity, gravitation, electrostatics, collisions, bounds, restitution, friction)| {
             let mut text = format!(
-                "[world]\ngravity = {gravity}\ngravitation = {gravitation}\nelectrostatics = {electrostatics}\ncollisions = {collisions}\nrestitution = {restitution}\n"
+                "[world]\ngravity = {gravity}\ngravitation = {gravitation}\nelectrostatics = {electrostatics}\ncollisions = {collisions}\nrestitution = {restitution}\nfriction = {friction}\n"
             );
             if let Some(bounds) = bounds {
                 let _ = writeln!(text, "bounds = {bounds}");
@@ -266,8 +268,13 @@ fn particle() -> impl Strategy<Value = String> {
         prop::option::of(vector()),
         prop::bool::weighted(0.15),
         prop::option::of(positive()),
+        // Turning: a disc, a ring or any inertia, with any spin.
+        prop::option::of((
+            prop_oneof![Just("0.5".to_owned()), Just("1.0".to_owned()), positive()],
+            number(),
+        )),
     )
-        .prop_map(|((), mass, radius, charge, position, velocity, fixed, drag)| {
+        .prop_map(|((), mass, radius, charge, position, velocity, fixed, drag, turning)| {
             let mut text = format!(
                 "[[particle]]\nname = \"{{}}\"\nmass = {mass}\nposition = {position}\nfixed = {fixed}\n"
             );
@@ -282,6 +289,9 @@ fn particle() -> impl Strategy<Value = String> {
             }
             if let Some(drag) = drag {
                 let _ = writeln!(text, "quadratic_drag = {drag}");
+            }
+            if let Some((inertia, spin)) = turning {
+                let _ = writeln!(text, "inertia = {inertia}\nspin = {spin}");
             }
             text
         })

@@ -95,6 +95,7 @@ fn impacts_take_what_a_bouncing_ball_loses() {
     world.bounds = Some(Bounds {
         min: Vector::cartesian(-5.0, 0.0),
         max: Vector::cartesian(5.0, 10.0),
+        friction: 0.0,
     });
     let scene = Scene::new()
         .with_world(world)
@@ -200,6 +201,7 @@ fn a_pair_too_stiff_for_an_answer_closes_its_books_as_the_integrator_does() {
         bounds: Some(Bounds {
             min: Vector::cartesian(-2.0, 0.0),
             max: Vector::cartesian(2.0, 4.0),
+            friction: 0.0,
         }),
         ..World::default()
     };
@@ -249,6 +251,7 @@ fn a_ball_sent_off_its_wall_and_floor_at_once_closes_its_books() {
             bounds: Some(Bounds {
                 min: [-1.0, 0.0].into(),
                 max: [1.0, 2.0].into(),
+                friction: 0.0,
             }),
             ..World::gravity_only()
         })

@@ -139,6 +139,7 @@ fn a_bounce_off_a_surface_has_its_restitution_free_or_coupled() {
                     world.bounds = Some(Bounds {
                         min: [-5.0, 0.0].into(),
                         max: [5.0, 10.0].into(),
+                        friction: 0.0,
                     });
                 } else {
                     scene = scene.with_ramp(
@@ -270,6 +271,7 @@ fn a_ball_pulled_onto_a_wall_by_a_spring_bounces_then_rests() {
         bounds: Some(Bounds {
             min: [0.0, -5.0].into(),
             max: [10.0, 5.0].into(),
+            friction: 0.0,
         }),
         ..world(false, e)
     };
@@ -344,6 +346,7 @@ fn the_impact_log_names_the_ramp_the_wall_or_the_particle_struck() {
         bounds: Some(Bounds {
             min: [-10.0, 0.0].into(),
             max: [10.0, 10.0].into(),
+            friction: 0.0,
         }),
         ..world(false, 0.5)
     };
@@ -489,6 +492,7 @@ fn a_coupled_ball_rattling_between_walls_strikes_at_its_closed_form_instants() {
             bounds: Some(Bounds {
                 min: [-half, -1.0].into(),
                 max: [half, 1.0].into(),
+                friction: 0.0,
             }),
             ..world(false, e)
         })
@@ -554,6 +558,7 @@ fn a_free_ball_struck_by_a_coupled_one_is_followed_through_the_step() {
             bounds: Some(Bounds {
                 min: [-1.0, -1.0].into(),
                 max: [0.5, 1.0].into(),
+                friction: 0.0,
             }),
             ..world(false, 1.0)
         })
@@ -647,6 +652,7 @@ fn a_coupled_ball_struck_hard_into_its_floor_bounces_off_it() {
         bounds: Some(Bounds {
             min: [-5.0, 0.0].into(),
             max: [5.0, 10.0].into(),
+            friction: 0.0,
         }),
         ..World::gravity_only()
     });
@@ -831,6 +837,7 @@ fn a_sprung_ball_on_the_floor_stays_on_it_through_its_impacts() {
             bounds: Some(Bounds {
                 min: [-0.2 - radius, 0.0].into(),
                 max: [0.2 + radius, 10.0].into(),
+                friction: 0.0,
             }),
             ..World::gravity_only()
         })

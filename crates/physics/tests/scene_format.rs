@@ -450,7 +450,7 @@ follow = "B"
         found,
         [
             "8:5 graph #1: y must be a list of quantities in quotes, like [\"A.x\", \"total_energy\"], got a number",
-            "11:5 graph 'energy': y: 'energy' is not a quantity: write t, NAME.x (or .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy), ROD.angle (or .length, .tension), or one of kinetic_energy, potential_energy, total_energy, momentum_x, momentum_y",
+            "11:5 graph 'energy': y: 'energy' is not a quantity: write t, NAME.x (or .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy; turning: .angle, .spin), ROD.angle (or .length, .tension), or one of kinetic_energy, potential_energy, total_energy, momentum_x, momentum_y, angular_momentum",
             "12:1 graph 'energy': unknown key 'colour'; the keys here are title, x, y",
             "14:9 [view]: width must be greater than 0, got -1",
             "15:10 [view]: follow: there is no particle 'B'; follow a particle's name, or \"all\"",
@@ -472,7 +472,7 @@ y = ["B.x", "A.z", "t"]
         [
             "7:5 graph #1: x: 'B.vx' names no particle; there is no particle 'B'",
             // A name that is no quantity is found as the file is read, before the checks.
-            "8:5 graph #1: y: 'A.z': a particle's quantity is one of x, y, vx, vy, speed, ax, ay, kinetic_energy; a rod's, string's or spring's is angle or length, and a rod's or string's also tension",
+            "8:5 graph #1: y: 'A.z': a particle's quantity is one of x, y, vx, vy, speed, ax, ay, kinetic_energy, angle, spin, angular_momentum; a rod's, string's or spring's is angle or length, and a rod's or string's also tension",
             "8:5 graph #1: y: 'B.x' names no particle; there is no particle 'B'",
             "8:5 graph #1: y: time goes on the x axis (x = \"t\")",
         ]

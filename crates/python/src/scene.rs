@@ -206,6 +206,11 @@ fn to_python(py: Python<'_>, value: Value) -> PyResult<Py<PyAny>> {
             .into_pyobject(py)?
             .into_any()
             .unbind(),
+        // The walls' friction, when they have any, as a third item.
+        Value::Bounds(Some(b)) if b.friction != 0.0 => (pair(b.min), pair(b.max), b.friction)
+            .into_pyobject(py)?
+            .into_any()
+            .unbind(),
         Value::Bounds(bounds) => bounds
             .map(|b| (pair(b.min), pair(b.max)))
             .into_pyobject(py)?
@@ -327,19 +332,24 @@ fn from_python(kind: Kind, value: &Bound<'_, PyAny>, what: &str) -> PyResult<Val
             } else {
                 let wrong = || {
                     scene_error(format!(
-                        "{what} must be ((xmin, ymin), (xmax, ymax)) or None"
+                        "{what} must be ((xmin, ymin), (xmax, ymax)), with the walls' friction as a third item if they have any, or None"
                     ))
                 };
-                let corners: Vec<Bound<'_, PyAny>> = value
+                let items: Vec<Bound<'_, PyAny>> = value
                     .try_iter()
                     .map_err(|_| wrong())?
                     .collect::<PyResult<_>>()?;
-                let [min, max] = &corners[..] else {
-                    return Err(wrong());
+                let (min, max, friction) = match &items[..] {
+                    [min, max] => (min, max, 0.0),
+                    [min, max, friction] => {
+                        (min, max, number(friction, &format!("{what}'s friction"))?)
+                    }
+                    _ => return Err(wrong()),
                 };
                 Value::Bounds(Some(Bounds {
                     min: vector(min, &format!("{what}'s lower-left corner"))?,
                     max: vector(max, &format!("{what}'s upper-right corner"))?,
+                    friction,
                 }))
             }
         }

@@ -29,6 +29,7 @@ def same_bits(table, rows, columns):
         ("collision", dict(until=3.0, every=0.003, ledger=True)),
         ("pendulum", dict(until=4.0, every=0.1, events=["bob.vx crosses 0 down"], ledger=True)),
         ("ball-pit", dict(until=0.5, every=0.05)),
+        ("bowling", dict(until=2.0, every=0.01, ledger=True)),
     ],
 )
 def test_a_run_is_the_command_lines_csv_bit_for_bit(newtonlab_cli, example, options):
@@ -146,3 +147,33 @@ def test_setting_the_state_continues_from_it():
     with pytest.raises(newtonlab.SceneError):
         sim.velocities = np.array([[float("nan"), 0.0]])
     assert sim.time == pytest.approx(1.3), "a refused state leaves the simulation as it was"
+
+
+def test_a_bowled_disc_rolls_on_at_two_thirds_of_its_speed():
+    """A disc (inertia ½) bowled at v₀ on a lane of friction μ rolls on at 2v₀/3 from
+    t* = v₀/(3μg); its spin is then −v/r, and the run has its turning columns."""
+    scene = newtonlab.load("example:bowling")
+    ball = scene.particle("Ball")
+    v0, r, mu = ball.velocity[0], ball.radius, scene.ramp("lane").friction
+    trajectory = newtonlab.run(scene, until=2.0, every=0.5)
+    assert "Ball.spin" in trajectory.columns and "angular_momentum" in trajectory.columns
+    assert trajectory.columns.index("Ball.angle") == trajectory.columns.index("Ball.ay") + 1
+    assert trajectory["Ball.vx"][-1] == pytest.approx(2 * v0 / 3, abs=1e-12)
+    assert trajectory["Ball.spin"][-1] == pytest.approx(-2 * v0 / 3 / r, abs=1e-9)
+    assert v0 / (3 * mu * 9.81) < 2.0
+
+
+def test_turning_keys_are_checked_and_the_walls_friction_round_trips():
+    scene = newtonlab.load("example:spin-bounce")
+    ball = scene.particle("Ball")
+    with pytest.raises(newtonlab.SceneError, match="inertia"):
+        ball.inertia = -1.0
+    assert ball.inertia == 0.4
+    ball.spin = 10.0
+    assert scene.particle("Ball").spin == 10.0
+    (low, high, friction) = scene.world.bounds
+    assert friction == 0.8
+    scene.world.bounds = (low, high)
+    assert len(scene.world.bounds) == 2
+    with pytest.raises(newtonlab.SceneError, match="friction"):
+        scene.world.bounds = (low, high, -1.0)

@@ -11,7 +11,7 @@ use crate::theory;
 const G: f64 = 9.81;
 
 /// The instants of `event` in `scene` up to `until`.
-fn instants(scene: &Scene, event: &str, until: f64) -> Result<Vec<Located>, Failure> {
+pub(crate) fn instants(scene: &Scene, event: &str, until: f64) -> Result<Vec<Located>, Failure> {
     let event = Event::parse(event).map_err(Failure::Input)?;
     let mut simulation = start(scene)?;
     let mut watch = Watch::new(&[event], &simulation).map_err(Failure::Input)?;

@@ -17,6 +17,7 @@ pub mod report;
 mod series;
 mod theory;
 mod ties;
+mod turning;
 
 use figures::Figure;
 use report::Report;
@@ -49,11 +50,12 @@ pub enum Group {
     Events,
     Drag,
     Series,
+    Turning,
 }
 
 impl Group {
     /// Every group, in the report's order.
-    pub const ALL: [Self; 12] = [
+    pub const ALL: [Self; 13] = [
         Self::Paper,
         Self::Rods,
         Self::Strings,
@@ -66,6 +68,7 @@ impl Group {
         Self::Events,
         Self::Drag,
         Self::Series,
+        Self::Turning,
     ];
 
     /// Its name, as `--only` takes it.
@@ -83,6 +86,7 @@ impl Group {
             Self::Events => "events",
             Self::Drag => "drag",
             Self::Series => "series",
+            Self::Turning => "turning",
         }
     }
 
@@ -122,6 +126,9 @@ impl Group {
             }
             Self::Series => {
                 "laws measured as series: a pendulum's period against its amplitude, a baseball's range against its angle with drag"
+            }
+            Self::Turning => {
+                "bodies that turn: Galileo's inclined plane (slider, disc, ring), a bowled ball's slip-to-roll instant, spin at an impact"
             }
         }
     }
@@ -184,6 +191,7 @@ pub fn validate(
             Group::Events => events::events(report)?,
             Group::Drag => drag::drag(report)?,
             Group::Series => series::series(report)?,
+            Group::Turning => turning::turning(report)?,
         }
     }
     Ok((report, figures))

@@ -249,6 +249,17 @@ impl Canvas {
                     Stroke::new(w, p.outline.unwrap_or(colour.gamma_multiply(0.6))),
                 );
             }
+            if particle.turns() && !many {
+                // The marked radius that shows it turning.
+                let angle = frame
+                    .angles
+                    .get(i)
+                    .copied()
+                    .unwrap_or(particle.angle)
+                    .to_radians();
+                let rim = centre + Vec2::new(angle.cos() as f32, -angle.sin() as f32) * radius;
+                painter.line_segment([centre, rim], Stroke::new(w * 1.5, p.ink));
+            }
             if particle.fixed {
                 anchor(painter, centre, p.ink);
             }

@@ -197,6 +197,9 @@ struct Frame {
     /// search by name for each end cost springs × particles comparisons a frame).
     spring_ends: Vec<Option<(DVec2, DVec2)>>,
     tie_ends: Vec<Option<(DVec2, DVec2)>>,
+    /// Each particle's orientation, degrees counter-clockwise (drawn for those that
+    /// turn).
+    angles: Vec<f64>,
 }
 
 impl Frame {
@@ -217,6 +220,7 @@ impl Frame {
             accelerations,
             spring_ends,
             tie_ends,
+            angles: scene.particles.iter().map(|p| p.angle).collect(),
         }
     }
 }
@@ -477,12 +481,16 @@ impl Canvas {
         }
         if let Some(simulation) = runner.simulation() {
             let needs_acceleration = self.overlays.acceleration || self.overlays.force;
-            Frame::new(
+            let mut frame = Frame::new(
                 scene,
                 simulation.positions().to_vec(),
                 simulation.velocities().to_vec(),
                 needs_acceleration.then(|| simulation.accelerations()),
-            )
+            );
+            if simulation.turns() {
+                frame.angles = simulation.angles();
+            }
+            frame
         } else {
             Frame::new(
                 scene,

@@ -335,3 +335,32 @@ fn a_new_scene_forgets_the_last_runs_sentence() {
     harness.run();
     assert!(harness.state().announcer.text.is_empty(), "forgotten");
 }
+
+/// A particle is made a solid disc by its preset, its spin typed in rpm is stored in
+/// rad/s, and undo brings the point back.
+#[test]
+fn a_preset_makes_a_particle_turn_and_its_spin_is_typed_in_rpm() {
+    let mut harness = harness(App::new(one_ball()));
+    harness.state_mut().selection = Some(Selection::Particle(0));
+    harness.run();
+    harness.get_by_label("a solid disc").click();
+    harness.run();
+    assert!((harness.state().document.scene().particles[0].inertia - 0.5).abs() < 1e-15);
+    harness.get_by_label("spin").focus();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.get_by_label("spin").type_text("60 rpm");
+    harness.key_press(Key::Enter);
+    harness.run();
+    let spin = harness.state().document.scene().particles[0].spin;
+    assert!(
+        (spin - std::f64::consts::TAU).abs() < 1e-12,
+        "60 rpm is 2π rad/s: {spin}"
+    );
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.run();
+    assert!(
+        harness.state().document.scene().particles[0].inertia.abs() < 1e-15,
+        "undone"
+    );
+}

@@ -24,6 +24,7 @@ use crate::forces::ForceModel;
 use crate::profile::{Profiler, Stage};
 use crate::state::State;
 use crate::tuning::{APART, RESTART};
+use crate::turning::Grip;
 
 /// The impact search's state through one step.
 #[derive(Clone, Debug, Default)]
@@ -415,15 +416,25 @@ impl Contacts {
             return false;
         }
         let restitution = self.restitution_at(impact, approach, self.resting_speed(h));
-        self.applied.push(Applied {
+        let mut applied = Applied {
             time,
             impact,
             approach,
             restitution,
-        });
+            grip: Grip::default(),
+            kick: (DVec2::ZERO, DVec2::ZERO),
+        };
         let (first, second) = particles_of(impact);
+        if self.turning.is_some() {
+            let velocities = self.velocities_inside(impact, time, h, members.as_deref());
+            applied.grip = self.grip(&applied, normal, velocities, forces);
+            self.turn(&applied);
+        }
         let (dv_first, dv_second) =
             velocity_changes(impact, normal, approach * (1.0 + restitution), forces);
+        applied.kick = (dv_first + applied.grip.dv.0, dv_second + applied.grip.dv.1);
+        let (dv_first, dv_second) = applied.kick;
+        self.applied.push(applied);
         let mut kicked = Vec::with_capacity(2);
         for (p, dv) in std::iter::once((first, dv_first)).chain(second.map(|j| (j, dv_second))) {
             if dv == DVec2::ZERO {
@@ -612,11 +623,37 @@ impl Contacts {
         members: Option<&Members<'_>>,
     ) -> (f64, DVec2, f64) {
         let (first, second) = particles_of(impact);
-        let at = |p: usize| match members.and_then(|m| Some((m.local[p]? as usize, m))) {
+        let at = |p| self.motion_inside(p, time, h, members);
+        self.geometry(impact, at(first), second.map(at))
+    }
+
+    /// The velocities of an impact's particles `time` seconds into the step, as
+    /// [`Self::measure_inside`] finds them.
+    fn velocities_inside(
+        &self,
+        impact: Impact,
+        time: f64,
+        h: f64,
+        members: Option<&Members<'_>>,
+    ) -> (DVec2, Option<DVec2>) {
+        let (first, second) = particles_of(impact);
+        let velocity = |p| self.motion_inside(p, time, h, members).1;
+        (velocity(first), second.map(velocity))
+    }
+
+    /// Particle `p`'s position and velocity `time` seconds into the step: on the
+    /// coupled system's integrated state for its members, on its path otherwise.
+    fn motion_inside(
+        &self,
+        p: usize,
+        time: f64,
+        h: f64,
+        members: Option<&Members<'_>>,
+    ) -> (DVec2, DVec2) {
+        match members.and_then(|m| Some((m.local[p]? as usize, m))) {
             Some((k, m)) => (m.state.position[k], m.state.velocity[k]),
             None => self.search.paths[p].at(time, h),
-        };
-        self.geometry(impact, at(first), second.map(at))
+        }
     }
 
     /// Applies a coupled impact at `time` seconds into the step on the coupled system's
@@ -841,6 +878,8 @@ impl Contacts {
             impact,
             approach,
             restitution,
+            grip: Grip::default(),
+            kick: (DVec2::ZERO, DVec2::ZERO),
         };
         self.strike(applied, normal, state, forces);
     }

@@ -70,6 +70,7 @@ use crate::scene::Scene;
 use crate::simulation::ImpactTarget;
 use crate::state::State;
 use crate::tuning::{FAT_RADII, FAT_STEPS, FAT_TRAVEL_RADII, TOUCHING};
+use crate::turning::{Body, Grip, Turning};
 
 /// What hits what.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
@@ -129,6 +130,8 @@ pub(crate) struct Contacts {
     /// sent off them inside it, up to the blow (`simulation/coupled/response.rs`), J:
     /// their contacts are off the step's books after it.
     pub released_in_step: f64,
+    /// The spins, when any particle turns.
+    pub turning: Option<Turning>,
 }
 
 /// An impact as it was applied.
@@ -142,6 +145,11 @@ pub(crate) struct Applied {
     /// The restitution it was given: the separation speed after is `restitution ×
     /// approach`.
     pub restitution: f64,
+    /// Friction's part, between turning bodies: the velocity and spin changes of the
+    /// impact's first and second particle ([`particles_of`]), and the energy it took.
+    pub grip: Grip,
+    /// The whole velocity changes of the first and the second particle, m/s.
+    pub kick: (DVec2, DVec2),
 }
 
 impl Contacts {
@@ -179,6 +187,7 @@ impl Contacts {
             applied: Vec::new(),
             caught_in_step: 0.0,
             released_in_step: 0.0,
+            turning: Turning::new(scene),
         }
     }
 
@@ -291,11 +300,97 @@ impl Contacts {
     }
 
     /// Applies an impact's impulse along `normal` to `state` (the paper's 8–10 or
-    /// 17–22: the approach reversed and scaled by the restitution) and records it.
-    fn strike(&mut self, applied: Applied, normal: DVec2, state: &mut State, forces: &ForceModel) {
+    /// 17–22: the approach reversed and scaled by the restitution), with friction's
+    /// between turning bodies, and records it.
+    fn strike(
+        &mut self,
+        mut applied: Applied,
+        normal: DVec2,
+        state: &mut State,
+        forces: &ForceModel,
+    ) {
         let change = applied.approach * (1.0 + applied.restitution);
-        apply_impulse(applied.impact, normal, change, state, forces);
+        let (first, second) = particles_of(applied.impact);
+        let velocities = (state.velocity[first], second.map(|j| state.velocity[j]));
+        applied.grip = self.grip(&applied, normal, velocities, forces);
+        let (dv_first, dv_second) = velocity_changes(applied.impact, normal, change, forces);
+        applied.kick = (dv_first + applied.grip.dv.0, dv_second + applied.grip.dv.1);
+        state.velocity[first] += applied.kick.0;
+        if let Some(j) = second {
+            state.velocity[j] += applied.kick.1;
+        }
+        self.turn(&applied);
         self.applied.push(applied);
+    }
+
+    /// Friction's part of an impact (`applied`, without it yet) whose particles move at
+    /// `velocities` just before it: nothing unless both bodies turn (or cannot move)
+    /// and their surfaces grip.
+    fn grip(
+        &self,
+        applied: &Applied,
+        normal: DVec2,
+        (v_first, v_second): (DVec2, Option<DVec2>),
+        forces: &ForceModel,
+    ) -> Grip {
+        let Some(turning) = &self.turning else {
+            return Grip::default();
+        };
+        let w = &forces.inverse_mass;
+        let body = |p: usize, velocity: DVec2| Body {
+            inverse_mass: w[p],
+            inertia: turning.inertia[p],
+            radius: self.radius[p],
+            velocity,
+            spin: turning.spin_at(p, applied.time, velocity, self.radius[p]),
+        };
+        let change = applied.approach * (1.0 + applied.restitution);
+        let grip = match (applied.impact, v_second) {
+            (Impact::Pair(i, j), Some(v_j)) => {
+                let inverse = w[i] + w[j];
+                if inverse == 0.0 {
+                    return Grip::default();
+                }
+                Grip::at_impact(
+                    turning.friction,
+                    normal,
+                    change / inverse,
+                    (body(i, v_first), body(j, v_j)),
+                )
+            }
+            (Impact::Obstacle(p, k), _) | (Impact::Pair(p, k), None) => {
+                if w[p] == 0.0 {
+                    return Grip::default();
+                }
+                // The surface is the first body (the normal points from it), the
+                // particle the second: their changes swap to the impact's order.
+                Grip::at_impact(
+                    self.obstacles[k].friction,
+                    normal,
+                    change / w[p],
+                    (Body::SURFACE, body(p, v_first)),
+                )
+                .map(|grip| Grip {
+                    dv: (grip.dv.1, DVec2::ZERO),
+                    spin: (grip.spin.1, 0.0),
+                    lost: grip.lost,
+                })
+            }
+        };
+        grip.unwrap_or_default()
+    }
+
+    /// Applies an impact's spin changes.
+    fn turn(&mut self, applied: &Applied) {
+        if let Some(turning) = &mut self.turning
+            && applied.grip != Grip::default()
+        {
+            let (first, second) = particles_of(applied.impact);
+            turning.spin[first] += applied.grip.spin.0;
+            if let Some(j) = second {
+                turning.spin[j] += applied.grip.spin.1;
+            }
+        }
     }
 
     /// The reach of an impact: the distance scale its gap is judged against.
@@ -400,20 +495,5 @@ fn velocity_changes(
             (-impulse * wi, impulse * wj)
         }
         Impact::Obstacle(..) => (normal * change, DVec2::ZERO),
-    }
-}
-
-fn apply_impulse(
-    impact: Impact,
-    normal: DVec2,
-    change: f64,
-    state: &mut State,
-    forces: &ForceModel,
-) {
-    let (first, second) = particles_of(impact);
-    let (dv_first, dv_second) = velocity_changes(impact, normal, change, forces);
-    state.velocity[first] += dv_first;
-    if let Some(j) = second {
-        state.velocity[j] += dv_second;
     }
 }

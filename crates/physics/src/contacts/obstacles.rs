@@ -116,7 +116,7 @@ pub(crate) fn obstacles(scene: &Scene) -> Vec<Obstacle> {
                 target: ImpactTarget::Wall,
                 shape: Shape::HalfPlane { point, normal },
                 restitution: scene.world.restitution,
-                friction: 0.0,
+                friction: bounds.friction,
             });
         }
     }

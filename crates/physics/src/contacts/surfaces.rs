@@ -13,9 +13,12 @@ use glam::DVec2;
 
 use super::broad_phase::Aabb;
 use super::{Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness, separation};
+use crate::forces::normal::Grip;
 use crate::forces::{ForceModel, SurfaceContact};
 use crate::profile::{Profiler, Stage};
 use crate::state::State;
+use crate::tuning::ROLLING;
+use crate::turning::{Mode, Turning};
 
 /// What touches at the start of the step: the resting solver's rows, and what the
 /// impact search leaves alone.
@@ -70,6 +73,9 @@ impl Contacts {
             free.resize(state.len(), DVec2::ZERO);
             forces.accelerations(&state.position, &state.velocity, &mut free);
         }
+        if let Some(turning) = &mut self.turning {
+            turning.mode.fill(Mode::Free);
+        }
         for &(p, k) in &self.touching.surfaces {
             let (p, obstacle) = (p as usize, &self.obstacles[k as usize]);
             // Measured again, not taken from the touching test: sitting on an earlier
@@ -88,7 +94,18 @@ impl Contacts {
                 state.position[p] += normal * (self.radius[p] - distance);
             }
             let tangential = state.velocity[p] - normal * state.velocity[p].dot(normal);
-            let sliding = if obstacle.friction > 0.0 {
+            // A turning particle rolls or slips on the first surface with friction it
+            // rests on; on any other, friction acts on it as on a point.
+            let turning = self.turning.as_mut().filter(|turning| {
+                obstacle.friction > 0.0 && turning.inertia[p] > 0.0 && turning.mode[p] == Mode::Free
+            });
+            let grip = turning.and_then(|turning| {
+                let motion = (state.velocity[p], self.radius[p]);
+                roll_or_slip(turning, p, normal, free[p], obstacle.friction, motion)
+            });
+            let sliding = if grip.is_some() {
+                None
+            } else if obstacle.friction > 0.0 {
                 let (pressing, pull) =
                     (-free[p].dot(normal), free[p] - normal * free[p].dot(normal));
                 let limit = obstacle.friction * pressing.max(0.0);
@@ -109,6 +126,7 @@ impl Contacts {
                 normal,
                 friction: obstacle.friction,
                 sliding,
+                turning: grip,
             });
         }
         profiler.lap(Stage::StartContacts);
@@ -192,6 +210,9 @@ impl Contacts {
         // kinds was 26 % of the time).
         let mut normals = std::mem::take(&mut self.touching.normals);
         normals.surfaces.clear();
+        if let Some(turning) = &mut self.turning {
+            turning.mode.fill(Mode::Free);
+        }
         for &(p, k) in &self.touching.surfaces {
             let normal = self
                 .measure(Impact::Obstacle(p as usize, k as usize), state)
@@ -214,6 +235,8 @@ impl Contacts {
                     impact,
                     approach,
                     restitution,
+                    grip: crate::turning::Grip::default(),
+                    kick: (DVec2::ZERO, DVec2::ZERO),
                 };
                 this.strike(applied, normal, state, forces);
                 any = true;
@@ -246,6 +269,53 @@ impl Contacts {
         self.touching.normals = normals;
         changed
     }
+}
+
+/// How turning particle `p`, resting on a surface of normal `normal` and coefficient of
+/// friction `friction`, with the other forces accelerating it by `free` and moving at
+/// `velocity` (its radius `radius`), turns through the step: it rolls when its contact
+/// point does not slip (to [`ROLLING`]; the spin is set to roll exactly) and rolling
+/// needs at most μN, and slips otherwise, with μN against the slip (or, not slipping,
+/// against the pull that makes it). `None` when the surface does not press on it.
+fn roll_or_slip(
+    turning: &mut Turning,
+    p: usize,
+    normal: DVec2,
+    free: DVec2,
+    friction: f64,
+    (velocity, radius): (DVec2, f64),
+) -> Option<Grip> {
+    let pressing = -free.dot(normal);
+    if pressing.is_nan() || pressing <= 0.0 {
+        return None;
+    }
+    let (tangent, k) = (normal.perp(), turning.inertia[p]);
+    let limit = friction * pressing;
+    let (pull, along, rim) = (
+        free.dot(tangent),
+        velocity.dot(tangent),
+        turning.spin[p] * radius,
+    );
+    // The contact point's velocity along the tangent: v·t + (ω × −r n)·t = v·t − ω r.
+    let slip = along - rim;
+    let share = k / (1.0 + k);
+    let stuck = slip.abs() <= ROLLING * (along.abs() + rim.abs());
+    if stuck && (pull * share).abs() <= limit {
+        turning.spin[p] = along / radius;
+        turning.mode[p] = Mode::Rolls {
+            tangent,
+            speed: along,
+        };
+        return Some(Grip::Rolls { share });
+    }
+    let against = -limit * if stuck { pull.signum() } else { slip.signum() };
+    turning.mode[p] = Mode::Slips {
+        tangent,
+        friction: against,
+        // The friction m f t at the contact point −r n turns it by −m f r: I α = −m f r.
+        angular: -against / (k * radius),
+    };
+    Some(Grip::Slips { friction: against })
 }
 
 /// The touching contacts' normals at the step's start, as [`Contacts::impacts_now`]

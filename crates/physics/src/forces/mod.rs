@@ -231,7 +231,9 @@ impl ForceModel {
         if self.surface_contacts.iter().any(|c| c.friction > 0.0) {
             let mut a = vec![DVec2::ZERO; x.len()];
             self.accelerations_off_surfaces(x, v, &mut a);
-            for contact in &self.surface_contacts {
+            // A turning particle's friction also works on its spin, which is not here:
+            // the step's end books it (`Simulation::book_turning`).
+            for contact in self.surface_contacts.iter().filter(|c| c.turning.is_none()) {
                 let p = contact.particle;
                 let before = a[p];
                 contact.apply(&mut a[p]);

@@ -20,6 +20,20 @@ pub(crate) struct SurfaceContact {
     pub friction: f64,
     /// Unit direction of sliding, or `None` when at rest (static friction).
     pub sliding: Option<DVec2>,
+    /// For a particle that turns, how friction grips it (`sliding` is then unused).
+    pub turning: Option<Grip>,
+}
+
+/// How a surface's friction acts on a particle that turns (`crate::turning`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Grip {
+    /// Rolling without slipping: friction takes `share` = k/(1 + k) of the pull along the
+    /// surface (a disc, k = ½, rolls down a slope at ⅔ g sin θ), at most μN.
+    Rolls { share: f64 },
+    /// Slipping: a friction acceleration of `friction` m/s² along the surface's tangent
+    /// (the normal turned a quarter counter-clockwise), μN fixed at the step's start so
+    /// that the spin, which the integrators do not see, takes the same impulse.
+    Slips { friction: f64 },
 }
 
 impl SurfaceContact {
@@ -35,7 +49,14 @@ impl SurfaceContact {
             return;
         }
         let limit = self.friction * pressing;
-        if let Some(direction) = self.sliding {
+        if let Some(grip) = self.turning {
+            let tangent = self.normal.perp();
+            let friction = match grip {
+                Grip::Rolls { share } => (-a.dot(tangent) * share).max(-limit).min(limit),
+                Grip::Slips { friction } => friction,
+            };
+            *a += tangent * friction;
+        } else if let Some(direction) = self.sliding {
             *a -= direction * limit;
         } else {
             let tangent = self.normal.perp();
@@ -61,6 +82,7 @@ mod tests {
             normal: DVec2::Y,
             friction: 0.5,
             sliding: None,
+            turning: None,
         };
         let mut held = DVec2::new(3.0, -10.0);
         contact.apply(&mut held);

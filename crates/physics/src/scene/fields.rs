@@ -246,6 +246,15 @@ pub const WORLD: &[Field<World>] = &[
         Some("1.0"),
         "Particle–particle impacts: 0 (sticky) to 1 (elastic)"
     ),
+    number!(
+        "friction",
+        "friction between particles",
+        friction,
+        Rule::NonNegative,
+        "",
+        Some("0.0"),
+        "μ between turning particles at impacts: their contact points grip within μ times the normal impulse"
+    ),
     Field {
         key: "bounds",
         label: "bounds",
@@ -415,6 +424,33 @@ pub const PARTICLE: &[Field<Particle>] = &[
         "kg/m",
         Some("0.0"),
         "Air resistance c: a force of c v² against the motion (a ball through air: c = ½ ρ C_d A)"
+    ),
+    number!(
+        "inertia",
+        "moment of inertia",
+        inertia,
+        Rule::NonNegative,
+        "m r²",
+        Some("0.0"),
+        "I/(m r²): 0 a point that never turns, 0.5 a solid disc, 1 a thin ring"
+    ),
+    number!(
+        "spin",
+        "spin",
+        spin,
+        Rule::Finite,
+        "rad/s",
+        Some("0.0"),
+        "Angular velocity ω, counter-clockwise positive (a turning particle's)"
+    ),
+    number!(
+        "angle",
+        "angle",
+        angle,
+        Rule::Finite,
+        "°",
+        Some("0.0"),
+        "Orientation, counter-clockwise: where the turning particle's marked radius points"
     ),
     Field {
         key: "color",
@@ -634,6 +670,7 @@ mod tests {
         world.bounds = Some(Bounds {
             min: Vector::cartesian(-1.0, -1.0),
             max: Vector::cartesian(1.0, 1.0),
+            friction: 0.0,
         });
         world.restitution = 0.3;
         check(WORLD, &world, &mut World::default());

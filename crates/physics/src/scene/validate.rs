@@ -221,6 +221,9 @@ impl Checker<'_> {
                     &say_numbers("scene-bounds-order", &[min.x, min.y, max.x, max.y]),
                 );
             }
+            if let Err(reason) = check_value(Rule::NonNegative, "friction", bounds.friction) {
+                self.report(s, "bounds", &format!("bounds {reason}"));
+            }
         }
     }
 

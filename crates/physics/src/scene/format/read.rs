@@ -645,18 +645,34 @@ pub(super) fn read_vector(node: &Node) -> Result<Vector, String> {
 }
 
 pub(super) fn read_bounds(node: &Node) -> Result<Bounds, String> {
-    let wrong = |id, arg: (&str, &str)| say(id, &[("form", "{ min = [x, y], max = [x, y] }"), arg]);
+    let wrong = |id, arg: (&str, &str)| {
+        say(
+            id,
+            &[
+                ("form", "{ min = [x, y], max = [x, y], friction = μ }"),
+                arg,
+            ],
+        )
+    };
     let Value::Table(entries) = &node.value else {
         return Err(wrong("scene-bounds-got", ("got", &node.value.kind())));
     };
-    if let Some(extra) = entries.iter().find(|e| e.key != "min" && e.key != "max") {
+    if let Some(extra) = entries
+        .iter()
+        .find(|e| !["min", "max", "friction"].contains(&e.key.as_str()))
+    {
         return Err(wrong("scene-bounds-extra", ("key", &extra.key)));
     }
     let get = |key: &str| entries.iter().find(|e| e.key == key).map(|e| &e.node);
+    let friction = match get("friction") {
+        Some(node) => read_number(node).map_err(|e| format!("friction {e}"))?,
+        None => 0.0,
+    };
     match (get("min"), get("max")) {
         (Some(min), Some(max)) => Ok(Bounds {
             min: read_vector(min).map_err(|e| format!("min {e}"))?,
             max: read_vector(max).map_err(|e| format!("max {e}"))?,
+            friction,
         }),
         _ => Err(wrong("scene-bounds-both", ("got", ""))),
     }

@@ -180,11 +180,20 @@ impl Scene {
 
 /// A section's fields as written: every field in table order, optional ones only when
 /// set.
-/// Keys added to version 1 after files were first written: a writer leaves each out
-/// while it holds its default, so a file saved without using it reads, and is written,
-/// exactly as before the key existed.
-pub(super) const WRITTEN_WHEN_USED: &[&str] =
-    &["softening", "collisions", "linear_drag", "quadratic_drag"];
+/// Fields added to version 1 after files were first written, by label (a key alone can
+/// be older in another section: a ramp's `friction`): a writer leaves each out while it
+/// holds its default, so a file saved without using it reads, and is written, exactly
+/// as before the field existed.
+pub(super) const WRITTEN_WHEN_USED: &[&str] = &[
+    "softening",
+    "collisions between particles",
+    "air resistance, linear",
+    "air resistance, quadratic",
+    "friction between particles",
+    "moment of inertia",
+    "spin",
+    "angle",
+];
 
 pub(super) fn out_fields<T>(fields: &[Field<T>], target: &T) -> Vec<(&'static str, Out)> {
     fields
@@ -201,7 +210,7 @@ pub(super) fn out_fields<T>(fields: &[Field<T>], target: &T) -> Vec<(&'static st
                 FieldValue::Color(color) => Out::Text(color?.to_hex()),
                 FieldValue::Bounds(bounds) => Out::Bounds(bounds?),
             };
-            let unused = WRITTEN_WHEN_USED.contains(&f.key) && f.default == Some(&out.to_toml());
+            let unused = WRITTEN_WHEN_USED.contains(&f.label) && f.default == Some(&out.to_toml());
             (!unused).then_some((f.key, out))
         })
         .collect()
@@ -269,10 +278,16 @@ impl Out {
                 format!("[{}]", items.join(", "))
             }
             Self::Vector(v) => toml_vector(*v),
-            Self::Bounds(b) => format!(
+            Self::Bounds(b) if b.friction == 0.0 => format!(
                 "{{ min = {}, max = {} }}",
                 toml_vector(b.min),
                 toml_vector(b.max)
+            ),
+            Self::Bounds(b) => format!(
+                "{{ min = {}, max = {}, friction = {} }}",
+                toml_vector(b.min),
+                toml_vector(b.max),
+                toml_float(b.friction)
             ),
         }
     }
@@ -286,7 +301,12 @@ impl Out {
             Self::TextList(list) => list.clone().into(),
             Self::Vector(v) => json_vector(*v),
             Self::Bounds(b) => {
-                serde_json::json!({ "min": json_vector(b.min), "max": json_vector(b.max) })
+                let mut bounds =
+                    serde_json::json!({ "min": json_vector(b.min), "max": json_vector(b.max) });
+                if b.friction != 0.0 {
+                    bounds["friction"] = b.friction.into();
+                }
+                bounds
             }
         }
     }

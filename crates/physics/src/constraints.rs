@@ -233,6 +233,29 @@ impl Constraints {
         worst
     }
 
+    /// Whether every link already holds at `x` and `v` to rounding: each rod (and each
+    /// string at its full length) at its length to [`PROJECTION_TOLERANCE`], with its ends
+    /// neither closing nor separating by more than 1e-13 of their relative speed (a
+    /// state a step's projection left: a saved state). Projecting it again would move it
+    /// by an ulp, and a run continued from a saved state would no longer be the run that
+    /// saved it, bit for bit.
+    pub fn holds(&self, x: &[DVec2], v: &[DVec2]) -> bool {
+        self.links.iter().all(|link| {
+            let d = link.d(x);
+            let length = link.length;
+            let off = 0.5 * (d.length_squared() - length * length) / (length * length);
+            let at_length = off.abs() <= PROJECTION_TOLERANCE;
+            match link.kind {
+                TieKind::String if off < -PROJECTION_TOLERANCE => true, // slack
+                _ if !at_length => false,
+                _ => {
+                    let u = link.relative_velocity(v);
+                    d.dot(u).abs() <= 1e-13 * d.length() * u.length()
+                }
+            }
+        })
+    }
+
     /// The link furthest from its length at `x` (a rod either way, a string only
     /// stretched), and how far, relative to its length.
     pub fn most_stretched(&self, x: &[DVec2]) -> Option<(usize, f64)> {

@@ -7,7 +7,9 @@
 //!
 //! Velocity-dependent forces (spring damping) need v' before it is known; they are
 //! evaluated at the predicted v + a h, which keeps the method second order but makes it
-//! no longer symplectic — as it should not be for a dissipative system.
+//! no longer symplectic — as it should not be for a dissipative system. The next step
+//! then evaluates the acceleration again at the velocity reached (two evaluations a
+//! step), as a run started from that state would.
 
 use crate::forces::ForceModel;
 use crate::integrators::Workspace;
@@ -28,7 +30,13 @@ pub(crate) fn step(forces: &ForceModel, state: &mut State, h: f64, work: &mut Wo
     for (v, a) in state.velocity.iter_mut().zip(end.iter()) {
         *v += *a * (0.5 * h);
     }
-    let mut start = start;
-    start.copy_from_slice(end);
-    work.start_acceleration = Some(start);
+    // Kept only when it is the acceleration at the state reached: with a force that
+    // depends on velocity it was taken at the predicted velocity, and the next step
+    // evaluates it again at the velocity reached, which is all a saved state carries (a
+    // run continued from one is then the run that saved it, bit for bit).
+    if !forces.depends_on_velocity() {
+        let mut start = start;
+        start.copy_from_slice(end);
+        work.start_acceleration = Some(start);
+    }
 }

@@ -17,7 +17,14 @@ impl Simulation {
             return;
         }
         // A tie not held at the start is found again by the first step, which says so.
-        let _ = self.project_onto_ties();
+        // One already held (a saved state's) is left exactly as it is.
+        if !self
+            .forces
+            .constraints
+            .holds(&self.state.position, &self.state.velocity)
+        {
+            let _ = self.project_onto_ties();
+        }
         self.begin_ties(self.time_step);
     }
 

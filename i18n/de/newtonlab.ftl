@@ -228,6 +228,7 @@ status-physics-time = Physik { $ms } ms pro Bild
 status-physics-time-hint = Rechenzeit, die in jedem Bild auf die Simulation entfällt
 inspector-title = Inspektor
 timeline-step-back = Schritt zurück
+timeline-before-play = Die Zeitmaschine: Start drücken, dann zurückgehen oder zu jedem Moment des Laufs springen
 timeline-step-back-hint = Einen Zeitschritt im Lauf zurück (,)
 timeline-slider-hint = Zu einem beliebigen Moment des Laufs ziehen: er wird genau so gezeigt, wie er war
 timeline-time = t = { $now } s von { $last } s

@@ -229,6 +229,7 @@ status-physics-time = physics { $ms } ms per frame
 status-physics-time-hint = Computing time spent on the simulation in each frame
 inspector-title = Inspector
 timeline-step-back = Step back
+timeline-before-play = The time machine: press Play, then step back or go to any moment of the run
 timeline-step-back-hint = One time step back in the run (,)
 timeline-slider-hint = Drag to any moment of the run: it is shown exactly as it was
 timeline-time = t = { $now } s of { $last } s

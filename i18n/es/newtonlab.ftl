@@ -228,6 +228,7 @@ status-physics-time = física { $ms } ms por fotograma
 status-physics-time-hint = Tiempo de cálculo dedicado a la simulación en cada fotograma
 inspector-title = Inspector
 timeline-step-back = Paso atrás
+timeline-before-play = La máquina del tiempo: pulse Reproducir y luego retroceda o vaya a cualquier momento de la ejecución
 timeline-step-back-hint = Un paso de tiempo atrás en la ejecución (,)
 timeline-slider-hint = Arrastrar a cualquier momento de la ejecución: se muestra exactamente como fue
 timeline-time = t = { $now } s de { $last } s

@@ -104,6 +104,10 @@ pub struct Panels {
     pub help: bool,
 }
 
+/// The time machine bar's height, points: its two rows of controls and the panel's
+/// margins, at the default text size.
+const TIMELINE_HEIGHT: f32 = 54.0;
+
 impl Default for Panels {
     fn default() -> Self {
         Self {
@@ -757,9 +761,11 @@ impl App {
             ));
         });
         egui::Panel::bottom("status").show(ui, |ui| actions.extend(self.status(ui)));
-        if self.runner.timeline.is_some() {
-            egui::Panel::bottom("timeline").show(ui, |ui| actions.extend(self.timeline_bar(ui)));
-        }
+        // Of a fixed height, before a run as during it: Play does not resize the canvas.
+        egui::Panel::bottom("timeline")
+            .resizable(false)
+            .exact_size(TIMELINE_HEIGHT)
+            .show(ui, |ui| actions.extend(self.timeline_bar(ui)));
         let side_panels = !self.panels.projector;
         if side_panels && self.panels.inspector {
             // A fixed width: the canvas does not move when the selection changes.

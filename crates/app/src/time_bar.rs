@@ -10,15 +10,25 @@ use crate::{canvas, format, stopwatch};
 use egui::Ui;
 
 impl App {
-    /// The time machine's bar while a run exists: a slider over every step of the run,
-    /// Step back, and, at a moment gone back to, the way back to the end and Edit from
-    /// here.
+    /// The time machine's bar: a slider over every step of the run, Step back, and, at a
+    /// moment gone back to, the way back to the end and Edit from here. Before a run it
+    /// is there, greyed out, so that Play does not shrink the canvas (which would rescale
+    /// the view to keep all it showed).
     pub(crate) fn timeline_bar(&mut self, ui: &mut Ui) -> Option<Action> {
-        let mut action = None;
         let Some(timeline) = &self.runner.timeline else {
+            ui.add_enabled_ui(false, |ui| self.bar(ui, 0, None))
+                .response
+                .on_disabled_hover_text(tr("timeline-before-play"));
             return None;
         };
         let (end, shown) = (timeline.end, timeline.shown);
+        self.bar(ui, end, shown)
+    }
+
+    /// [`Self::timeline_bar`] over a run of `end` steps, showing step `shown` (`None`:
+    /// the end).
+    fn bar(&mut self, ui: &mut Ui, end: u64, shown: Option<u64>) -> Option<Action> {
+        let mut action = None;
         let step = self
             .runner
             .simulation()

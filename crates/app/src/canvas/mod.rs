@@ -143,6 +143,10 @@ enum Framing {
     Scene(physics::View),
 }
 
+/// A canvas shrunk below this fraction of the size its scale was set for rescales the
+/// view to keep showing all it showed; less shrinking keeps the scale.
+const SHRINK_RESCALES: f32 = 0.97;
+
 pub struct Canvas {
     pub view: View,
     pub tool: Tool,
@@ -155,6 +159,8 @@ pub struct Canvas {
     framing: Option<Framing>,
     /// The canvas rectangle of the last frame, for fitting from menus.
     pub rect: Rect,
+    /// The canvas's size when the scale last followed it (see [`Self::ui`]).
+    scaled_for: Vec2,
     /// The tape measure, the probe and the field view.
     pub instruments: Instruments,
     /// The canvas's widget id, once drawn: the keys it keeps while focused.
@@ -179,6 +185,7 @@ impl Default for Canvas {
             drag: None,
             framing: Some(Framing::Fit),
             rect: Rect::from_min_size(Pos2::ZERO, Vec2::new(800.0, 600.0)),
+            scaled_for: Vec2::ZERO,
             instruments: Instruments::default(),
             id: None,
             palette: Palette::USUAL,
@@ -319,11 +326,20 @@ impl Canvas {
         let rect = response.rect;
         self.id = Some(response.id);
         self.palette = Palette::of(ui);
-        // A canvas that changes size (a panel hidden, projector mode, a resized window)
+        // A canvas that shrinks (a panel shown, projector mode left, a resized window)
         // still shows all it showed: the scale follows the dimension that shrank most.
-        if self.rect.area() > 0.0 && (rect.size() - self.rect.size()).length() > 0.5 {
-            let ratio = (rect.size() / self.rect.size()).min_elem();
-            self.view.pixels_per_metre *= f64::from(ratio.min(1.0));
+        // By a few points only (a panel widened by its numbers when Play fills them in),
+        // it keeps its scale: a view that jumps on Play is what a class notices.
+        if self.scaled_for.x > 0.0 && self.scaled_for.y > 0.0 {
+            let ratio = (rect.size() / self.scaled_for).min_elem();
+            if ratio < SHRINK_RESCALES {
+                self.view.pixels_per_metre *= f64::from(ratio);
+                self.scaled_for = rect.size();
+            } else if ratio > 1.0 {
+                self.scaled_for = self.scaled_for.max(rect.size());
+            }
+        } else {
+            self.scaled_for = rect.size();
         }
         self.rect = rect;
         let frame = self.frame(document.scene(), runner);
@@ -432,6 +448,7 @@ impl Canvas {
                     self.view.pixels_per_metre = f64::from(rect.width()) / width;
                 }
             }
+            self.scaled_for = rect.size();
         }
         if runner.is_editing() {
             self.followed = None;

@@ -182,3 +182,21 @@ fn the_canvas_toggles_open_and_save_with_the_scene() {
     let again = physics::Scene::from_toml(&saved.to_toml()).expect("reads back");
     assert_eq!(again.view, Some(view));
 }
+
+/// Play keeps the view as it was: the time machine's bar is there before a run (greyed
+/// out), and the readouts' numbers widening their panel by a few points do not rescale
+/// the canvas.
+#[test]
+fn play_does_not_rescale_the_canvas() {
+    let mut harness = harness(App::new(crate::common::example_scene("galileo-incline")));
+    let before = harness.state().canvas.view;
+    play_frames(&mut harness, 30);
+    let after = harness.state().canvas.view;
+    assert!(
+        (after.pixels_per_metre - before.pixels_per_metre).abs() < 1e-9,
+        "{} px/m before Play, {} after",
+        before.pixels_per_metre,
+        after.pixels_per_metre
+    );
+    assert_eq!(after.center, before.center);
+}

@@ -28,6 +28,15 @@ pub enum Action {
     Undo,
     Redo,
     Delete,
+    /// The selected object (with the particles a link ties) to the clipboard, as
+    /// scene-file text.
+    Copy,
+    /// Copy, then delete.
+    Cut,
+    /// What was last copied in the app, pasted beside where it was.
+    Paste,
+    /// The selected object copied and pasted at once, beside itself.
+    Duplicate,
     PlayPause,
     Step,
     Reset,
@@ -63,6 +72,8 @@ pub enum Action {
     EditFromHere,
     /// Show or hide the list of keys (F1).
     ToggleHelp,
+    /// Show or hide the Getting started page.
+    ToggleGettingStarted,
 }
 
 const fn command(key: Key) -> KeyboardShortcut {
@@ -104,6 +115,7 @@ pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
     (plain(Key::P), Action::Instrument(Instrument::Probe)),
     (plain(Key::T), Action::ToggleStopwatch),
     (plain(Key::A), Action::Instrument(Instrument::Protractor)),
+    (command(Key::D), Action::Duplicate),
     (plain(Key::Delete), Action::Delete),
     (plain(Key::Backspace), Action::Delete),
     (plain(Key::F9), Action::ToggleInspector),
@@ -135,6 +147,7 @@ impl Action {
             Self::Undo => "key-undo",
             Self::Redo => "key-redo",
             Self::Delete => "key-delete",
+            Self::Duplicate => "key-duplicate",
             Self::PlayPause => "key-play-pause",
             Self::Step => "key-step",
             Self::StepBack => "key-step-back",

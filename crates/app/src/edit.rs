@@ -46,12 +46,14 @@ pub enum Edit {
     AddExperiment,
     ChangeExperiment,
     RemoveExperiment,
+    /// Objects pasted or duplicated.
+    Paste,
 }
 
 impl Edit {
     /// Every edit but [`Edit::Set`]'s fields, for the tests.
     #[cfg(test)]
-    const ALL: [Self; 27] = [
+    const ALL: [Self; 28] = [
         Self::Add(Object::Particle),
         Self::Add(Object::Spring),
         Self::Add(Object::Rod),
@@ -79,6 +81,7 @@ impl Edit {
         Self::AddExperiment,
         Self::ChangeExperiment,
         Self::RemoveExperiment,
+        Self::Paste,
     ];
 
     /// The message of its words, but for [`Edit::Set`] (whose words name the field).
@@ -112,6 +115,7 @@ impl Edit {
             Self::AddExperiment => "edit-add-experiment",
             Self::ChangeExperiment => "edit-change-experiment",
             Self::RemoveExperiment => "edit-remove-experiment",
+            Self::Paste => "edit-paste",
         }
     }
 

@@ -254,10 +254,14 @@ impl Files {
                         .labelled_by(label.id)
                         .on_hover_text(tr("file-folder-hint"));
                 });
+                // A file double-clicked in the list is chosen at once.
+                #[cfg(target_arch = "wasm32")]
+                let chosen_now = false;
                 #[cfg(not(target_arch = "wasm32"))]
-                egui::ScrollArea::vertical()
+                let chosen_now = egui::ScrollArea::vertical()
                     .max_height(220.0)
                     .show(ui, |ui| {
+                        let mut chosen_now = false;
                         if ui
                             .small_button(tr("file-parent"))
                             .on_hover_text(tr("file-parent-hint"))
@@ -280,7 +284,11 @@ impl Files {
                             } else {
                                 name.clone()
                             };
-                            if ui.selectable_label(dialog.name == name, shown).clicked() {
+                            let entry = ui.selectable_label(dialog.name == name, shown);
+                            if entry.double_clicked() && !is_folder {
+                                dialog.name.clone_from(&name);
+                                chosen_now = true;
+                            } else if entry.clicked() {
                                 if is_folder {
                                     dialog.folder = std::path::Path::new(&dialog.folder)
                                         .join(&name)
@@ -291,8 +299,10 @@ impl Files {
                                 }
                             }
                         }
-                    });
-                let mut submit = false;
+                        chosen_now
+                    })
+                    .inner;
+                let mut submit = chosen_now;
                 ui.horizontal(|ui| {
                     let label = ui.label(tr("file-name"));
                     let field = ui

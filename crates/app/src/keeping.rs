@@ -51,6 +51,18 @@ impl App {
         self.with_settings(settings)
     }
 
+    /// Opens the Getting started page if these settings never showed it, and remembers
+    /// that it was (the first run of the desktop app, the first visit of the page).
+    #[must_use]
+    pub fn welcome_first_run(mut self) -> Self {
+        if !self.settings.welcomed {
+            self.settings.welcomed = true;
+            self.panels.getting_started = true;
+            self.keep_settings();
+        }
+        self
+    }
+
     /// Starts with the settings of the last session: its text size, theme and language
     /// (or the system's language, if none was chosen).
     #[must_use]

@@ -102,6 +102,8 @@ pub struct Panels {
     pub graphs: bool,
     pub projector: bool,
     pub help: bool,
+    /// The Getting started page (Help), open on the first run.
+    pub getting_started: bool,
 }
 
 /// The time machine bar's height, points: its two rows of controls and the panel's
@@ -115,6 +117,7 @@ impl Default for Panels {
             graphs: true,
             projector: false,
             help: false,
+            getting_started: false,
         }
     }
 }
@@ -137,6 +140,10 @@ pub struct App {
     /// Where the desktop keeps them; none: not kept.
     #[cfg(not(target_arch = "wasm32"))]
     settings_file: Option<std::path::PathBuf>,
+    /// What Copy last took, as scene-file text: what Paste adds.
+    pub clipboard: Option<String>,
+    /// Text for the system's clipboard at the end of the frame.
+    to_system_clipboard: Option<String>,
     pub files: Files,
     pub selection: Option<Selection>,
     pub panels: Panels,
@@ -196,6 +203,8 @@ impl App {
             table_ready: None,
             #[cfg(not(target_arch = "wasm32"))]
             settings_file: None,
+            clipboard: None,
+            to_system_clipboard: None,
             files: Files::default(),
             selection: None,
             panels: Panels::default(),
@@ -281,6 +290,9 @@ impl App {
             Action::Undo => self.undo(),
             Action::Redo => self.redo(),
             Action::Delete => self.delete(),
+            Action::Copy | Action::Cut | Action::Paste | Action::Duplicate => {
+                self.clipboard_action(action);
+            }
             Action::PlayPause => self.play_pause(),
             Action::Step => self.step(),
             Action::Reset => self.reset(),
@@ -310,6 +322,9 @@ impl App {
             Action::FieldView(kind) => self.canvas.instruments.field_view = kind,
             Action::ToggleStopwatch => self.stopwatch.shown = !self.stopwatch.shown,
             Action::ToggleHelp => self.panels.help = !self.panels.help,
+            Action::ToggleGettingStarted => {
+                self.panels.getting_started = !self.panels.getting_started;
+            }
             Action::StepBack => self.runner.step_back(),
             Action::GoTo(step) => self.runner.go_to(step),
             Action::TurningPoint(forward) => {
@@ -407,6 +422,67 @@ impl App {
     }
 
     /// Removes the selected object (and, for a particle, what refers to it).
+    /// Copy, Cut, Paste or Duplicate.
+    fn clipboard_action(&mut self, action: Action) {
+        match action {
+            Action::Copy | Action::Cut => {
+                if let Some(text) = self.copy() {
+                    self.to_system_clipboard = Some(text);
+                    if action == Action::Cut {
+                        self.delete();
+                    }
+                }
+            }
+            Action::Paste => {
+                if let Some(text) = self.clipboard.clone() {
+                    self.paste_text(&text);
+                }
+            }
+            Action::Duplicate => {
+                if let Some(text) = self.copy() {
+                    self.paste_text(&text);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    /// The selected object as scene-file text (a link with the particles it ties),
+    /// kept for Paste; `None` without a selection.
+    fn copy(&mut self) -> Option<String> {
+        let part = self.document.scene().extract(self.selection?.section())?;
+        let text = part.to_toml();
+        self.clipboard = Some(text.clone());
+        Some(text)
+    }
+
+    /// Adds the objects of scene-file `text` to the scene, beside where they were (a
+    /// step down and to the right, so that a copy does not hide its original), renamed
+    /// where their names are taken, and selects the first; text that is no scene says
+    /// why and changes nothing.
+    fn paste_text(&mut self, text: &str) {
+        if !self.runner.is_editing() {
+            return;
+        }
+        let part = match Scene::from_toml(text).or_else(|_| Scene::from_json(text)) {
+            Ok(part) => part,
+            Err(error) => {
+                self.notify(tr_with(
+                    "notice-paste-no-scene",
+                    &[("reason", Arg::Text(&error.to_string()))],
+                ));
+                return;
+            }
+        };
+        let step = 20.0 / self.canvas.view.pixels_per_metre;
+        let offset = physics::DVec2::new(step, -step);
+        let mut added = Vec::new();
+        self.document.apply(Edit::Paste, |scene| {
+            added = scene.paste(&part, offset);
+        });
+        self.selection = added.first().and_then(|&section| Selection::of(section));
+    }
+
     fn delete(&mut self) {
         if !self.runner.is_editing() {
             return;
@@ -749,6 +825,9 @@ impl App {
         }
         self.apply_settings(ui);
         let mut actions = Self::shortcuts(ui, self.canvas.id);
+        if let Some(text) = Self::pasted_text(ui, self.canvas.id) {
+            self.paste_text(&text);
+        }
 
         egui::Panel::top("menu").show(ui, |ui| actions.extend(self.menu(ui)));
         egui::Panel::top("toolbar").show(ui, |ui| {
@@ -809,8 +888,12 @@ impl App {
         for action in actions {
             self.perform(action);
         }
+        if let Some(text) = self.to_system_clipboard.take() {
+            ui.ctx().copy_text(text);
+        }
         self.stopwatch_window(ui);
         help::window(ui.ctx(), &mut self.panels.help);
+        help::getting_started(ui.ctx(), &mut self.panels.getting_started);
         self.take_picture(ui);
         #[cfg(not(target_arch = "wasm32"))]
         self.keep_copy();
@@ -833,7 +916,7 @@ pub fn run_native(app: App) -> eframe::Result {
     // The last session's settings; the system's language (LANG on Linux) unless one was
     // chosen. View → Language switches it live.
     let app = match settings::default_file() {
-        Some(path) => app.with_settings_file(path),
+        Some(path) => app.with_settings_file(path).welcome_first_run(),
         None => app.with_settings(settings::Settings::default()),
     };
     if let Some(language) = app.launch.language {

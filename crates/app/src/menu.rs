@@ -88,6 +88,29 @@ impl App {
                 let can_redo = editable && self.document.redo_edit().is_some();
                 item(ui, &redo, &tr("menu-redo-hint"), Action::Redo, can_redo);
                 let can_delete = editable && self.selection.is_some();
+                for (label, hint, action, enabled) in [
+                    ("menu-cut", "menu-cut-hint", Action::Cut, can_delete),
+                    (
+                        "menu-copy",
+                        "menu-copy-hint",
+                        Action::Copy,
+                        self.selection.is_some(),
+                    ),
+                    (
+                        "menu-paste",
+                        "menu-paste-hint",
+                        Action::Paste,
+                        editable && self.clipboard.is_some(),
+                    ),
+                    (
+                        "menu-duplicate",
+                        "menu-duplicate-hint",
+                        Action::Duplicate,
+                        can_delete,
+                    ),
+                ] {
+                    item(ui, &tr(label), &tr(hint), action, enabled);
+                }
                 item(
                     ui,
                     &tr("menu-delete"),
@@ -230,6 +253,13 @@ impl App {
             ui.menu_button(tr("menu-help"), |ui| {
                 item(
                     ui,
+                    &tr("menu-getting-started"),
+                    &tr("menu-getting-started-hint"),
+                    Action::ToggleGettingStarted,
+                    true,
+                );
+                item(
+                    ui,
                     &tr("menu-keys"),
                     &tr("menu-keys-hint"),
                     Action::ToggleHelp,
@@ -252,12 +282,40 @@ impl App {
         let focused = ui.ctx().memory(egui::Memory::focused);
         let typing = focused.is_some() && focused != canvas;
         ui.input_mut(|i| {
-            action::SHORTCUTS
+            let mut actions: Vec<Action> = action::SHORTCUTS
                 .iter()
                 .filter(|(shortcut, _)| !(typing && Action::is_plain(shortcut)))
                 .filter(|(shortcut, _)| i.consume_shortcut(shortcut))
                 .map(|(_, action)| *action)
-                .collect()
+                .collect();
+            // The system's copy and cut (Ctrl+C, Ctrl+X) copy objects unless a field
+            // has the focus, which copies its text.
+            if !typing {
+                actions.extend(i.events.iter().filter_map(|event| match event {
+                    egui::Event::Copy => Some(Action::Copy),
+                    egui::Event::Cut => Some(Action::Cut),
+                    _ => None,
+                }));
+            }
+            actions
+        })
+    }
+
+    /// The text the system pasted (Ctrl+V) this frame, unless a field has the focus,
+    /// which takes it.
+    pub(crate) fn pasted_text(ui: &Ui, canvas: Option<egui::Id>) -> Option<String> {
+        if ui.ctx().current_pass_index() > 0 {
+            return None;
+        }
+        let focused = ui.ctx().memory(egui::Memory::focused);
+        if focused.is_some() && focused != canvas {
+            return None;
+        }
+        ui.input(|i| {
+            i.events.iter().find_map(|event| match event {
+                egui::Event::Paste(text) => Some(text.clone()),
+                _ => None,
+            })
         })
     }
 }

@@ -1,5 +1,6 @@
 //! What the app remembers from one session to the next: the text size, the high-contrast
-//! theme and the language (so a user who needs them sets them once). On the desktop a small TOML file, `settings.toml` in the data directory
+//! theme and the language (so a user who needs them sets them once), and whether the
+//! Getting started page was shown. On the desktop a small TOML file, `settings.toml` in the data directory
 //! (`~/.local/share/newtonlab` on Linux; `NEWTONLAB_DATA_DIR` overrides it), written
 //! atomically; in the browser, its local storage. An app made by `App::new` (the tests)
 //! keeps none until it is given a file. A file that does not read (hand-edited,
@@ -21,6 +22,8 @@ pub struct Settings {
     pub high_contrast: bool,
     /// The language chosen in the View menu (`en`, `de`, `es`); none: the system's.
     pub language: Option<String>,
+    /// Whether the Getting started page was shown (on the first run, once).
+    pub welcomed: bool,
 }
 
 impl Default for Settings {
@@ -29,6 +32,7 @@ impl Default for Settings {
             text_size: 1.0,
             high_contrast: false,
             language: None,
+            welcomed: false,
         }
     }
 }
@@ -137,6 +141,7 @@ mod tests {
             text_size: 1.5,
             high_contrast: true,
             language: Some("de".to_owned()),
+            welcomed: true,
         };
         assert_eq!(Settings::parse(&settings.to_text()), settings);
         assert_eq!(settings.language(), Some(Language::German));

@@ -69,7 +69,9 @@ pub async fn start(canvas_id: String) -> Result<(), JsValue> {
         .dyn_into::<web_sys::HtmlCanvasElement>()
         .map_err(|_| format!("'{canvas_id}' is not a canvas"))?;
     // The last visit's settings; the browser's language unless one was chosen.
-    let app = initial_app().with_settings(crate::settings::Settings::load());
+    let app = initial_app()
+        .with_settings(crate::settings::Settings::load())
+        .welcome_first_run();
     let runner = eframe::WebRunner::new();
     runner
         .start(

@@ -94,6 +94,17 @@ pub enum Selection {
 }
 
 impl Selection {
+    /// The selection of the object of `section`, if it is an object.
+    pub fn of(section: Section) -> Option<Self> {
+        match section {
+            Section::Particle(i) => Some(Self::Particle(i)),
+            Section::Spring(i) => Some(Self::Spring(i)),
+            Section::Tie(i) => Some(Self::Tie(i)),
+            Section::Ramp(i) => Some(Self::Ramp(i)),
+            _ => None,
+        }
+    }
+
     /// The scene section of the selected object.
     pub fn section(self) -> Section {
         match self {

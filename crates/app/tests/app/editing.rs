@@ -364,3 +364,61 @@ fn a_preset_makes_a_particle_turn_and_its_spin_is_typed_in_rpm() {
         "undone"
     );
 }
+
+/// Duplicate (Ctrl+D) adds a copy of the selected particle beside it, renamed and
+/// selected, and undo takes it away; Copy (the system's Ctrl+C) and Paste (its Ctrl+V,
+/// here the text another window copied) add a pendulum's rod with its bob to another
+/// scene; text that is no scene is refused with a message and changes nothing.
+#[test]
+fn duplicate_copy_and_paste_add_objects_beside_their_originals() {
+    let mut harness = harness(App::new(one_ball()));
+    harness.state_mut().selection = Some(Selection::Particle(0));
+    harness.run();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::D);
+    harness.run();
+    let scene = harness.state().document.scene().clone();
+    assert_eq!(scene.particles.len(), 2);
+    assert_eq!(scene.particles[1].name, "ball 2");
+    assert_eq!(harness.state().selection, Some(Selection::Particle(1)));
+    let (a, b) = (
+        scene.particles[0].position.to_dvec2(),
+        scene.particles[1].position.to_dvec2(),
+    );
+    assert!(b.x > a.x && b.y < a.y, "beside it, down and right: {a} {b}");
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.run();
+    assert_eq!(
+        harness.state().document.scene().particles.len(),
+        1,
+        "undone"
+    );
+
+    let mut pendulum = harness_with(crate::common::example_scene("pendulum"));
+    pendulum.state_mut().selection = Some(Selection::Tie(0));
+    pendulum.run();
+    pendulum.event(egui::Event::Copy);
+    pendulum.run();
+    let copied = pendulum.state().clipboard.clone().expect("copied");
+    assert!(
+        copied.contains("[[rod]]") && copied.contains("name = \"bob\""),
+        "{copied}"
+    );
+    harness.event(egui::Event::Paste(copied));
+    harness.run();
+    let scene = harness.state().document.scene();
+    assert_eq!(scene.particles.len(), 2, "the bob came with its rod");
+    assert_eq!(scene.ties.len(), 1);
+    assert!(scene.validate().is_empty());
+    harness.event(egui::Event::Paste("no scene at all [".to_owned()));
+    harness.run();
+    assert_eq!(
+        harness.state().document.scene().particles.len(),
+        2,
+        "nothing pasted"
+    );
+    harness.get_by_label_contains("Nothing pasted");
+}
+
+fn harness_with(scene: Scene) -> Harness<'static, App> {
+    harness(App::new(scene))
+}

@@ -62,6 +62,7 @@ fn nothing_on_screen_stays_english_after_a_switch() {
         harness.key_press(Key::T);
         harness.key_press(Key::F1);
         harness.run();
+        harness.state_mut().panels.getting_started = true;
         harness.state_mut().selection = Some(Selection::Particle(0));
         set_language(language);
         harness.run();
@@ -124,5 +125,43 @@ fn text_size_and_high_contrast_apply_and_are_kept() {
         kept.high_contrast && (kept.text_size - 1.5).abs() < 1e-6,
         "{kept:?}"
     );
+    std::fs::remove_dir_all(&dir).ok();
+}
+
+/// The Getting started page opens on the first run (settings that never showed it) and
+/// not on the next, and Help → Getting started opens it any time; its three tasks are
+/// there, in German too.
+#[test]
+fn getting_started_opens_on_the_first_run_and_from_help() {
+    let dir = std::env::temp_dir().join(format!("newtonlab-welcome-{}", std::process::id()));
+    let file = dir.join("settings.toml");
+    let first = App::new(one_ball())
+        .with_settings_file(file.clone())
+        .welcome_first_run();
+    let shown = harness(first);
+    shown.get_by_label("Getting started");
+    shown.get_by_label("Place and run");
+    shown.get_by_label_contains("tick extremes and zeros");
+    shown.get_by_label_contains("Use as x axis: a phase plot");
+    let kept =
+        newtonlab_app::settings::Settings::parse(&std::fs::read_to_string(&file).expect("kept"));
+    assert!(kept.welcomed, "remembered");
+    let again = App::new(one_ball())
+        .with_settings_file(file.clone())
+        .welcome_first_run();
+    let mut harness = harness(again);
+    assert!(
+        harness.query_by_label("Place and run").is_none(),
+        "once only"
+    );
+    harness.get_by_label("Help").click();
+    harness.run();
+    harness.get_by_label("Getting started").click();
+    harness.run();
+    harness.get_by_label("Place and run");
+    newtonlab_app::i18n::set_language(newtonlab_app::i18n::Language::German);
+    harness.run();
+    harness.get_by_label("Setzen und laufen lassen");
+    newtonlab_app::i18n::set_language(newtonlab_app::i18n::Language::English);
     std::fs::remove_dir_all(&dir).ok();
 }

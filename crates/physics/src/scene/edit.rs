@@ -72,6 +72,114 @@ impl Scene {
     }
 }
 
+impl Scene {
+    /// The object of `section` alone, as a scene of its own: what Copy puts on the
+    /// clipboard as scene-file text. A spring, rod or string brings the particles it ties
+    /// (a rod copied from a pendulum is a pendulum), so the scene stands by itself.
+    pub fn extract(&self, section: Section) -> Option<Scene> {
+        let mut part = Scene {
+            world: self.world.clone(),
+            simulation: self.simulation.clone(),
+            ..Scene::new()
+        };
+        let ends = |from: &Endpoint, to: &Endpoint| {
+            [from, to]
+                .into_iter()
+                .filter_map(|end| match end {
+                    Endpoint::Particle(name) => self.particles.iter().find(|p| p.name == *name),
+                    Endpoint::Point(_) => None,
+                })
+                .cloned()
+                .collect::<Vec<_>>()
+        };
+        match section {
+            Section::Particle(i) => part.particles.push(self.particles.get(i)?.clone()),
+            Section::Spring(i) => {
+                let spring = self.springs.get(i)?;
+                part.particles = ends(&spring.from, &spring.to);
+                part.springs.push(spring.clone());
+            }
+            Section::Tie(i) => {
+                let tie = self.ties.get(i)?;
+                part.particles = ends(&tie.from, &tie.to);
+                part.ties.push(tie.clone());
+            }
+            Section::Ramp(i) => part.ramps.push(self.ramps.get(i)?.clone()),
+            _ => return None,
+        }
+        part.particles.dedup_by(|a, b| a.name == b.name);
+        Some(part)
+    }
+
+    /// Adds `other`'s particles, springs, rods, strings and ramps to this scene (not its
+    /// world, settings, graphs or view), each moved by `offset` metres and renamed where
+    /// its name is taken here (`ball` → `ball 2`), what ties a renamed particle following
+    /// it. Returns the sections of the objects added, in this scene.
+    pub fn paste(&mut self, other: &Scene, offset: glam::DVec2) -> Vec<Section> {
+        let mut taken: std::collections::HashSet<String> =
+            self.object_names().into_iter().map(str::to_owned).collect();
+        let mut fresh = |name: &str| {
+            let mut candidate = name.to_owned();
+            let mut k = 2;
+            while taken.contains(&candidate) {
+                candidate = format!("{name} {k}");
+                k += 1;
+            }
+            taken.insert(candidate.clone());
+            candidate
+        };
+        let moved = |v: super::Vector| super::Vector::from(v.to_dvec2() + offset);
+        let mut renamed = std::collections::HashMap::new();
+        let mut added = Vec::new();
+        for particle in &other.particles {
+            let mut particle = particle.clone();
+            let name = fresh(&particle.name);
+            renamed.insert(particle.name.clone(), name.clone());
+            particle.name = name;
+            particle.position = moved(particle.position);
+            added.push(Section::Particle(self.particles.len()));
+            self.particles.push(particle);
+        }
+        let end = |end: &Endpoint| match end {
+            Endpoint::Particle(name) => {
+                Endpoint::Particle(renamed.get(name).cloned().unwrap_or_else(|| name.clone()))
+            }
+            Endpoint::Point(point) => Endpoint::Point(moved(*point)),
+        };
+        for spring in &other.springs {
+            let mut spring = spring.clone();
+            spring.name = fresh(&spring.name);
+            (spring.from, spring.to) = (end(&spring.from), end(&spring.to));
+            added.push(Section::Spring(self.springs.len()));
+            self.springs.push(spring);
+        }
+        for tie in &other.ties {
+            let mut tie = tie.clone();
+            tie.name = fresh(&tie.name);
+            (tie.from, tie.to) = (end(&tie.from), end(&tie.to));
+            added.push(Section::Tie(self.ties.len()));
+            self.ties.push(tie);
+        }
+        for ramp in &other.ramps {
+            let mut ramp = ramp.clone();
+            ramp.name = fresh(&ramp.name);
+            (ramp.from, ramp.to) = (moved(ramp.from), moved(ramp.to));
+            added.push(Section::Ramp(self.ramps.len()));
+            self.ramps.push(ramp);
+        }
+        added
+    }
+
+    /// Every object's name: particles, springs, rods, strings and ramps.
+    fn object_names(&self) -> Vec<&str> {
+        let particles = self.particles.iter().map(|p| p.name.as_str());
+        let springs = self.springs.iter().map(|s| s.name.as_str());
+        let ties = self.ties.iter().map(|t| t.name.as_str());
+        let ramps = self.ramps.iter().map(|r| r.name.as_str());
+        particles.chain(springs).chain(ties).chain(ramps).collect()
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use crate::{Follow, Graph, Particle, Quantity, Scene, Section, Spring, View};
@@ -124,5 +232,35 @@ mod tests {
         );
         assert_eq!(scene.view.as_ref().unwrap().follow, None);
         assert!(scene.validate().is_empty());
+    }
+
+    /// A rod copied from a pendulum is a pendulum: pasted into the same scene, its bob
+    /// comes along renamed, the rod ties the new bob, and both are moved by the offset;
+    /// the scene is valid.
+    #[test]
+    fn a_copied_rod_pastes_as_a_new_pendulum() {
+        let scene = Scene::new()
+            .with_particle(Particle::new("bob", 1.0).position([0.0, -2.0]))
+            .with_tie(crate::Tie::rod("rod", [0.0, 0.0], "bob", 2.0));
+        let part = scene.extract(Section::Tie(0)).expect("an object");
+        let text = part.to_toml();
+        let mut pasted = scene.clone();
+        let added = pasted.paste(
+            &Scene::from_toml(&text).expect("scene-file text"),
+            glam::DVec2::new(1.0, 0.0),
+        );
+        assert_eq!(added, [Section::Particle(1), Section::Tie(1)]);
+        assert_eq!(pasted.particles[1].name, "bob 2");
+        assert_eq!(
+            pasted.particles[1].position.to_dvec2(),
+            glam::DVec2::new(1.0, -2.0)
+        );
+        assert_eq!(pasted.ties[1].name, "rod 2");
+        assert_eq!(pasted.ties[1].to, "bob 2".into());
+        assert_eq!(
+            pasted.ties[1].from,
+            crate::Endpoint::Point([1.0, 0.0].into())
+        );
+        assert!(pasted.validate().is_empty(), "{:?}", pasted.validate());
     }
 }

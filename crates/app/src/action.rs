@@ -72,6 +72,10 @@ pub enum Action {
     EditFromHere,
     /// Show or hide the list of keys (F1).
     ToggleHelp,
+    /// The keyboard focus to the next region of the window (F6).
+    NextRegion,
+    /// The keyboard focus to the previous region (Shift+F6).
+    PreviousRegion,
     /// Show or hide the Getting started page.
     ToggleGettingStarted,
 }
@@ -122,6 +126,12 @@ pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
     (plain(Key::F10), Action::ToggleGraphs),
     (plain(Key::F11), Action::ToggleProjector),
     (plain(Key::F1), Action::ToggleHelp),
+    // Shift+F6 first: a shortcut without Shift also matches with it.
+    (
+        KeyboardShortcut::new(Modifiers::SHIFT, Key::F6),
+        Action::PreviousRegion,
+    ),
+    (plain(Key::F6), Action::NextRegion),
 ];
 
 impl Action {
@@ -162,6 +172,8 @@ impl Action {
             Self::ToggleGraphs => "key-graphs",
             Self::ToggleProjector => "key-projector",
             Self::ToggleHelp => "key-help",
+            Self::NextRegion => "key-next-region",
+            Self::PreviousRegion => "key-previous-region",
             _ => return String::new(),
         };
         crate::i18n::tr(id)
@@ -169,6 +181,11 @@ impl Action {
 
     /// Whether the shortcut is a bare key, which a focused text field must keep.
     pub fn is_plain(shortcut: &KeyboardShortcut) -> bool {
-        shortcut.modifiers.is_none()
+        // A function key types nothing: F6 leaves a field for the next region.
+        let function = matches!(
+            shortcut.logical_key,
+            Key::F1 | Key::F6 | Key::F9 | Key::F10 | Key::F11
+        );
+        shortcut.modifiers.is_none() && !function
     }
 }

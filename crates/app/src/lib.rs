@@ -37,6 +37,7 @@ pub mod format;
 pub mod help;
 pub use newtonlab_i18n as i18n;
 pub mod inspector;
+pub mod landmarks;
 pub mod picture;
 pub mod platform;
 pub mod plots;
@@ -144,6 +145,9 @@ pub struct App {
     pub clipboard: Option<String>,
     /// Text for the system's clipboard at the end of the frame.
     to_system_clipboard: Option<String>,
+    /// F6 (`true`) or Shift+F6 pressed: the focus moves to the next or previous region
+    /// at the end of the frame.
+    next_region: Option<bool>,
     pub files: Files,
     pub selection: Option<Selection>,
     pub panels: Panels,
@@ -205,6 +209,7 @@ impl App {
             settings_file: None,
             clipboard: None,
             to_system_clipboard: None,
+            next_region: None,
             files: Files::default(),
             selection: None,
             panels: Panels::default(),
@@ -322,6 +327,8 @@ impl App {
             Action::FieldView(kind) => self.canvas.instruments.field_view = kind,
             Action::ToggleStopwatch => self.stopwatch.shown = !self.stopwatch.shown,
             Action::ToggleHelp => self.panels.help = !self.panels.help,
+            Action::NextRegion => self.next_region = Some(true),
+            Action::PreviousRegion => self.next_region = Some(false),
             Action::ToggleGettingStarted => {
                 self.panels.getting_started = !self.panels.getting_started;
             }
@@ -854,7 +861,11 @@ impl App {
                 .show(ui, |ui| {
                     egui::ScrollArea::vertical().show(ui, |ui| {
                         ui.set_width(ui.available_width());
-                        ui.heading(tr("inspector-title"));
+                        let heading = ui.add(
+                            egui::Label::new(egui::RichText::new(tr("inspector-title")).heading())
+                                .sense(egui::Sense::focusable_noninteractive()),
+                        );
+                        landmarks::mark(ui, landmarks::Region::Inspector, heading.id);
                         actions.extend(inspector::ui(
                             ui,
                             &mut self.document,
@@ -885,11 +896,20 @@ impl App {
         self.central(ui);
 
         self.file_dialogs(ui);
+        self.end_frame(ui, actions);
+    }
+
+    /// The frame's end: the actions asked for carried out, then what needs the
+    /// context (the clipboard, the focus), the windows, the picture, the autosave.
+    fn end_frame(&mut self, ui: &mut Ui, actions: Vec<Action>) {
         for action in actions {
             self.perform(action);
         }
         if let Some(text) = self.to_system_clipboard.take() {
             ui.ctx().copy_text(text);
+        }
+        if let Some(forward) = self.next_region.take() {
+            landmarks::step(ui.ctx(), forward);
         }
         self.stopwatch_window(ui);
         help::window(ui.ctx(), &mut self.panels.help);

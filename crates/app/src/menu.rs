@@ -31,50 +31,52 @@ impl App {
             }
         };
         egui::MenuBar::new().ui(ui, |ui| {
-            ui.menu_button(tr("menu-file"), |ui| {
-                item(ui, &tr("menu-new"), &tr("menu-new-hint"), Action::New, true);
-                item(
-                    ui,
-                    &tr("menu-open"),
-                    &tr("menu-open-hint"),
-                    Action::Open,
-                    true,
-                );
-                item(
-                    ui,
-                    &tr("menu-save"),
-                    &tr("menu-save-hint"),
-                    Action::Save,
-                    true,
-                );
-                item(
-                    ui,
-                    &tr("menu-save-canvas"),
-                    &tr("menu-save-canvas-hint"),
-                    Action::ExportPicture(picture::Subject::Canvas),
-                    true,
-                );
-                item(
-                    ui,
-                    &tr("menu-save-as"),
-                    &tr("menu-save-as-hint"),
-                    Action::SaveAs,
-                    true,
-                );
-                #[cfg(target_arch = "wasm32")]
-                if ui
-                    .button(tr("menu-copy-link"))
-                    .on_hover_text(tr("menu-copy-link-hint"))
-                    .clicked()
-                {
-                    self.files.message = Some(match web::copy_link(self.document.scene()) {
-                        Ok(_) => tr("menu-link-copied"),
-                        Err(reason) => reason,
-                    });
-                }
-            })
-            .response
-            .on_hover_text(tr("menu-file-hint"));
+            let file = ui
+                .menu_button(tr("menu-file"), |ui| {
+                    item(ui, &tr("menu-new"), &tr("menu-new-hint"), Action::New, true);
+                    item(
+                        ui,
+                        &tr("menu-open"),
+                        &tr("menu-open-hint"),
+                        Action::Open,
+                        true,
+                    );
+                    item(
+                        ui,
+                        &tr("menu-save"),
+                        &tr("menu-save-hint"),
+                        Action::Save,
+                        true,
+                    );
+                    item(
+                        ui,
+                        &tr("menu-save-canvas"),
+                        &tr("menu-save-canvas-hint"),
+                        Action::ExportPicture(picture::Subject::Canvas),
+                        true,
+                    );
+                    item(
+                        ui,
+                        &tr("menu-save-as"),
+                        &tr("menu-save-as-hint"),
+                        Action::SaveAs,
+                        true,
+                    );
+                    #[cfg(target_arch = "wasm32")]
+                    if ui
+                        .button(tr("menu-copy-link"))
+                        .on_hover_text(tr("menu-copy-link-hint"))
+                        .clicked()
+                    {
+                        self.files.message = Some(match web::copy_link(self.document.scene()) {
+                            Ok(_) => tr("menu-link-copied"),
+                            Err(reason) => reason,
+                        });
+                    }
+                })
+                .response
+                .on_hover_text(tr("menu-file-hint"));
+            crate::landmarks::mark(ui, crate::landmarks::Region::Menu, file.id);
             ui.menu_button(tr("menu-edit"), |ui| {
                 let editable = self.runner.is_editing();
                 let undo = self.document.undo_edit().map_or(tr("menu-undo"), |edit| {

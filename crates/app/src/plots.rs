@@ -858,7 +858,11 @@ pub fn impact_marks(recording: &Recording, series: &[Quantity]) -> Vec<f64> {
 /// Energies by kind, the energy ledger, momentum: live while running, the last recorded
 /// values after a failure.
 fn readouts(ui: &mut Ui, runner: &Runner) {
-    ui.heading(tr("readout-heading"));
+    let heading = ui.add(
+        egui::Label::new(egui::RichText::new(tr("readout-heading")).heading())
+            .sense(egui::Sense::focusable_noninteractive()),
+    );
+    crate::landmarks::mark(ui, crate::landmarks::Region::Graphs, heading.id);
     let energy = match (runner.simulation(), &runner.failure, &runner.recording) {
         (Some(_), Some(_), Some(recording)) => {
             ui.label(tr("readout-failed"));

@@ -43,6 +43,9 @@ impl App {
             if back.clicked() {
                 action = Some(Action::StepBack);
             }
+            if ui.is_enabled() {
+                crate::landmarks::mark(ui, crate::landmarks::Region::TimeBar, back.id);
+            }
             let mut at = shown.unwrap_or(end);
             ui.spacing_mut().slider_width = (ui.available_width() - 300.0).max(120.0);
             let slider = ui

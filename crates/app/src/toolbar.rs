@@ -70,11 +70,13 @@ pub fn ui(
             (step, tr("toolbar-step-hint"), Action::Step),
             (reset, tr("toolbar-reset-hint"), Action::Reset),
         ] {
-            if ui
+            let button = ui
                 .add_sized([width, 20.0], egui::Button::new(label))
-                .on_hover_text(hint)
-                .clicked()
-            {
+                .on_hover_text(hint);
+            if pressed == Action::PlayPause {
+                crate::landmarks::mark(ui, crate::landmarks::Region::Toolbar, button.id);
+            }
+            if button.clicked() {
                 action = Some(pressed);
             }
         }

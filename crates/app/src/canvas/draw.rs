@@ -320,6 +320,32 @@ impl Canvas {
                     }
                 }
             }
+            Some(Drag::Velocity { index }) => {
+                // The launcher's reading beside the tip: speed and angle as it moves.
+                if let (Some(&x), Some(&v)) =
+                    (frame.positions.get(index), frame.velocities.get(index))
+                {
+                    let tip = screen(x + v * VELOCITY_ARROW_SECONDS);
+                    let angle = v.y.atan2(v.x).to_degrees();
+                    let speed = crate::format::with_unit(v.length(), "m/s");
+                    let angle = crate::format::number(angle);
+                    let text = crate::i18n::tr_with(
+                        "canvas-launch",
+                        &[
+                            ("speed", crate::i18n::Arg::Text(&speed)),
+                            ("angle", crate::i18n::Arg::Text(&angle)),
+                        ],
+                    );
+                    let colour = self.palette.ink;
+                    painter.text(
+                        tip + Vec2::new(10.0, -10.0),
+                        Align2::LEFT_BOTTOM,
+                        text,
+                        FontId::proportional(13.0),
+                        colour,
+                    );
+                }
+            }
             Some(Drag::NewRamp { from, to }) => {
                 painter.line_segment(
                     [screen(from), screen(to)],

@@ -336,6 +336,7 @@ impl Canvas {
         let (response, painter) = ui.allocate_painter(ui.available_size(), Sense::click_and_drag());
         let rect = response.rect;
         self.id = Some(response.id);
+        crate::landmarks::mark(ui, crate::landmarks::Region::Canvas, response.id);
         self.palette = Palette::of(ui);
         // A canvas that shrinks (a panel shown, projector mode left, a resized window)
         // still shows all it showed: the scale follows the dimension that shrank most.

@@ -146,7 +146,7 @@ impl Canvas {
             };
         }
         if response.dragged_by(egui::PointerButton::Primary) {
-            self.drag_to(response.drag_delta(), world, &snap, document, frame);
+            self.drag_to(response.drag_delta(), world, (&snap, free), document, frame);
         }
         if response.drag_stopped_by(egui::PointerButton::Primary) {
             self.release(rect, document, frame, selection, free);
@@ -290,12 +290,13 @@ impl Canvas {
         drag
     }
 
-    /// The gesture follows the pointer, at `world`; `snap` puts a point on the grid.
+    /// The gesture follows the pointer, at `world`; `snap` puts a point on the grid, and
+    /// `free` (Alt held) says it does not.
     fn drag_to(
         &mut self,
         delta: egui::Vec2,
         world: DVec2,
-        snap: &dyn Fn(DVec2) -> DVec2,
+        (snap, free): (&dyn Fn(DVec2) -> DVec2, bool),
         document: &mut Document,
         frame: &Frame,
     ) {
@@ -330,7 +331,11 @@ impl Canvas {
                 let velocity = (world - frame.positions[index]) / VELOCITY_ARROW_SECONDS;
                 document.apply(Edit::SetVelocity, |scene| {
                     let particle = &mut scene.particles[index];
-                    particle.velocity = keep_form(particle.velocity, velocity);
+                    particle.velocity = if free {
+                        keep_form(particle.velocity, velocity)
+                    } else {
+                        launched(velocity)
+                    };
                 });
             }
             Some(Drag::NewLink { tip, .. }) => *tip = world,
@@ -473,3 +478,17 @@ fn segment_distance(p: DVec2, a: DVec2, b: DVec2) -> f64 {
     };
     p.distance(a + ab * s)
 }
+
+/// A velocity drawn by its arrow's tip, as a launcher sets it: in polar form, the speed
+/// to the nearest [`LAUNCH_SPEED_STEP`] and the angle to the nearest degree (Alt held
+/// sets it freely).
+fn launched(velocity: DVec2) -> physics::Vector {
+    let speed = (velocity.length() / LAUNCH_SPEED_STEP).round() * LAUNCH_SPEED_STEP;
+    let angle = velocity.y.atan2(velocity.x).to_degrees().round();
+    // −180° and 180° are one direction: written as 180.
+    let angle = if angle <= -180.0 { 180.0 } else { angle };
+    physics::Vector::polar(speed, if speed > 0.0 { angle } else { 0.0 })
+}
+
+/// The speed a launched velocity snaps to, m/s.
+pub const LAUNCH_SPEED_STEP: f64 = 0.5;

@@ -114,7 +114,8 @@ fn undo_and_redo_with_the_keyboard() {
 }
 
 /// Dragging a velocity arrow's tip sets the velocity, even when the pointer moves far
-/// at once (the gesture starts where the button went down).
+/// at once (the gesture starts where the button went down), as a launcher does: in polar
+/// form, to the nearest 0.5 m/s and whole degree (Alt sets it freely).
 #[test]
 fn dragging_the_arrow_tip_sets_the_velocity() {
     let mut harness = harness(App::new(one_ball()));
@@ -133,11 +134,12 @@ fn dragging_the_arrow_tip_sets_the_velocity() {
     harness.drop_at(end);
     harness.run();
     let app = harness.state();
-    let velocity = app.document.scene().particles[0].velocity.to_dvec2();
-    assert!(
-        velocity.distance(expected) < 1e-6,
-        "velocity {velocity}, expected {expected}"
+    let velocity = app.document.scene().particles[0].velocity;
+    let snapped = physics::Vector::polar(
+        (expected.length() / 0.5).round() * 0.5,
+        expected.y.atan2(expected.x).to_degrees().round(),
     );
+    assert_eq!(velocity, snapped, "drawn {expected}");
     assert_eq!(
         app.document.undo_edit(),
         Some(Edit::SetVelocity),

@@ -175,3 +175,56 @@ fn an_impact_is_announced_in_a_live_region() {
         "a live region"
     );
 }
+
+/// F6 moves the focus from region to region — the menu bar, the tool bar, the canvas,
+/// the inspector, the graphs, and the time bar once a run exists — and Shift+F6 back;
+/// from a field it leaves for a region.
+#[test]
+fn f6_moves_the_focus_from_region_to_region() {
+    let mut harness = harness(App::new(one_ball()));
+    let press = |harness: &mut Harness<'_, App>, modifiers| {
+        harness.key_press_modifiers(modifiers, Key::F6);
+        harness.run();
+    };
+    let focused =
+        |harness: &Harness<'_, App>, label: &str| harness.get_by_label(label).is_focused();
+    press(&mut harness, Modifiers::NONE);
+    assert!(focused(&harness, "File"), "first the menu bar");
+    press(&mut harness, Modifiers::NONE);
+    assert!(focused(&harness, "Play"), "then the tool bar");
+    press(&mut harness, Modifiers::NONE);
+    assert!(canvas_focused(&harness), "then the canvas");
+    press(&mut harness, Modifiers::NONE);
+    assert!(focused(&harness, "Inspector"), "then the inspector");
+    press(&mut harness, Modifiers::NONE);
+    assert!(focused(&harness, "Energy and momentum"), "then the graphs");
+    press(&mut harness, Modifiers::NONE);
+    assert!(
+        focused(&harness, "File"),
+        "no time bar before a run: round to the menu"
+    );
+    press(&mut harness, Modifiers::SHIFT);
+    assert!(
+        focused(&harness, "Energy and momentum"),
+        "Shift+F6 goes back"
+    );
+    crate::common::play_frames(&mut harness, 3);
+    harness.get_by_label("Energy and momentum").focus();
+    harness.run();
+    press(&mut harness, Modifiers::NONE);
+    assert!(
+        focused(&harness, "Step back"),
+        "a run's time bar is a region"
+    );
+    harness.get_by_label("Reset").click();
+    harness.run();
+    harness.state_mut().selection = Some(Selection::Particle(0));
+    harness.run();
+    harness.get_by_label("mass").focus();
+    harness.run();
+    press(&mut harness, Modifiers::NONE);
+    assert!(
+        !harness.get_by_label("mass").is_focused(),
+        "F6 leaves a field"
+    );
+}

@@ -31,19 +31,22 @@ pub fn ui(
         // Projector mode keeps the run controls only: the tools, the method and the
         // overlays are for preparing a lesson, not for showing it.
         let measuring = canvas.instruments.active;
-        ui.add_enabled_ui(editable, |ui| {
-            for tool in Tool::ALL.into_iter().filter(|_| !compact) {
-                if ui
-                    .selectable_label(canvas.tool == tool && measuring.is_none(), tool.label())
-                    .on_hover_text(tool.hint())
-                    .clicked()
-                {
-                    action = Some(Action::Tool(tool));
+        // In projector mode no empty group or separator is left behind: each drew a
+        // stray mark beside Play and set Fit below the row.
+        if !compact {
+            ui.add_enabled_ui(editable, |ui| {
+                for tool in Tool::ALL {
+                    if ui
+                        .selectable_label(canvas.tool == tool && measuring.is_none(), tool.label())
+                        .on_hover_text(tool.hint())
+                        .clicked()
+                    {
+                        action = Some(Action::Tool(tool));
+                    }
                 }
-            }
-        });
-
-        ui.separator();
+            });
+            ui.separator();
+        }
         // One width for the three, the widest label's in this language: the row does not
         // re-wrap when Play becomes Pause.
         let labels = [
@@ -101,68 +104,69 @@ pub fn ui(
             document.end_gesture();
         }
         ui.separator();
-        ui.add_enabled_ui(editable, |ui| {
-            if compact {
-                return;
-            }
-            let label = ui.label(tr("field-simulation-integrator"));
-            egui::ComboBox::from_id_salt("toolbar integrator")
-                .selected_text(settings.integrator.as_str())
-                .show_ui(ui, |ui| {
-                    for method in Integrator::ALL {
-                        if ui
-                            .selectable_label(settings.integrator == method, method.as_str())
-                            .on_hover_text(method.describe())
-                            .clicked()
-                        {
-                            document.apply(Edit::SetIntegrator, |scene| {
-                                scene.simulation.integrator = method;
-                            });
+        if !compact {
+            ui.add_enabled_ui(editable, |ui| {
+                let label = ui.label(tr("field-simulation-integrator"));
+                egui::ComboBox::from_id_salt("toolbar integrator")
+                    .selected_text(settings.integrator.as_str())
+                    .show_ui(ui, |ui| {
+                        for method in Integrator::ALL {
+                            if ui
+                                .selectable_label(settings.integrator == method, method.as_str())
+                                .on_hover_text(method.describe())
+                                .clicked()
+                            {
+                                document.apply(Edit::SetIntegrator, |scene| {
+                                    scene.simulation.integrator = method;
+                                });
+                            }
                         }
-                    }
-                })
-                .response
-                .labelled_by(label.id)
-                .on_hover_text(tr("toolbar-integrator-hint"));
-            // The step, its field and its unit wrap as one.
-            ui.horizontal(|ui| {
-                let id = egui::Id::unique("toolbar time step");
-                let mut text: String = ui
-                    .data(|d| d.get_temp(id))
-                    .unwrap_or_else(|| crate::format::field(settings.time_step));
-                let label = ui.label("dt");
-                let response = ui
-                    .add(egui::TextEdit::singleline(&mut text).desired_width(70.0))
+                    })
+                    .response
                     .labelled_by(label.id)
-                    .on_hover_text(tr("toolbar-time-step-hint"));
-                ui.label("s");
-                let parsed = text
-                    .trim()
-                    .parse::<f64>()
-                    .map_err(|_| "not a number".to_owned())
-                    .and_then(|v| {
-                        check_value(Rule::Positive, &tr("field-simulation-time-step"), v)
-                            .map(|()| v)
-                    });
-                if response.has_focus() || parsed.is_err() {
-                    ui.data_mut(|d| d.insert_temp(id, text.clone()));
-                } else {
-                    ui.data_mut(|d| d.remove::<String>(id));
-                }
-                match parsed {
-                    Ok(v)
-                        if response.lost_focus() && v.to_bits() != settings.time_step.to_bits() =>
-                    {
-                        document.apply(Edit::SetTimeStep, |scene| scene.simulation.time_step = v);
+                    .on_hover_text(tr("toolbar-integrator-hint"));
+                // The step, its field and its unit wrap as one.
+                ui.horizontal(|ui| {
+                    let id = egui::Id::unique("toolbar time step");
+                    let mut text: String = ui
+                        .data(|d| d.get_temp(id))
+                        .unwrap_or_else(|| crate::format::field(settings.time_step));
+                    let label = ui.label("dt");
+                    let response = ui
+                        .add(egui::TextEdit::singleline(&mut text).desired_width(70.0))
+                        .labelled_by(label.id)
+                        .on_hover_text(tr("toolbar-time-step-hint"));
+                    ui.label("s");
+                    let parsed = text
+                        .trim()
+                        .parse::<f64>()
+                        .map_err(|_| "not a number".to_owned())
+                        .and_then(|v| {
+                            check_value(Rule::Positive, &tr("field-simulation-time-step"), v)
+                                .map(|()| v)
+                        });
+                    if response.has_focus() || parsed.is_err() {
+                        ui.data_mut(|d| d.insert_temp(id, text.clone()));
+                    } else {
+                        ui.data_mut(|d| d.remove::<String>(id));
                     }
-                    Err(reason) => {
-                        ui.colored_label(egui::Color32::from_rgb(200, 30, 30), reason.clone());
+                    match parsed {
+                        Ok(v)
+                            if response.lost_focus()
+                                && v.to_bits() != settings.time_step.to_bits() =>
+                        {
+                            document
+                                .apply(Edit::SetTimeStep, |scene| scene.simulation.time_step = v);
+                        }
+                        Err(reason) => {
+                            ui.colored_label(egui::Color32::from_rgb(200, 30, 30), reason.clone());
+                        }
+                        _ => {}
                     }
-                    _ => {}
-                }
+                });
             });
-        });
-        ui.separator();
+            ui.separator();
+        }
         let overlays = &mut canvas.overlays;
         if !compact {
             overlays_ui(ui, overlays);

@@ -242,9 +242,11 @@ impl Instruments {
                     to_precision(angle, (spread / length.max(spread)).to_degrees())
                 )
             };
+            let size = label_size(painter, &text);
+            let centre = beside_tape((pa, pb), size, &occupied(view, rect, scene, positions));
             let at = label(
                 painter,
-                pa.lerp(pb, 0.5) + Vec2::new(0.0, -8.0),
+                centre + Vec2::new(-size.x / 2.0, size.y / 2.0),
                 &text,
                 tape_colour,
             );
@@ -295,6 +297,67 @@ impl Instruments {
             );
         }
     }
+}
+
+/// Where a tape's reading of `size` goes: beside the tape, not on it — on either side
+/// of its middle (or a third of the way along), the first place clear of `occupied`.
+fn beside_tape((pa, pb): (Pos2, Pos2), size: Vec2, occupied: &[Rect]) -> Pos2 {
+    let along = (pb - pa).normalized();
+    let side = if along == Vec2::ZERO {
+        Vec2::new(0.0, -1.0)
+    } else {
+        along.rot90()
+    };
+    // The box's half-extent across the tape, and a gap.
+    let away = 6.0 + f32::midpoint(size.x * side.x.abs(), size.y * side.y.abs());
+    let candidates: Vec<Pos2> = [0.5, 0.3, 0.7]
+        .into_iter()
+        .flat_map(|t| {
+            let middle = pa.lerp(pb, t);
+            [middle + side * away, middle - side * away]
+        })
+        .collect();
+    clear_spot(&candidates, size, occupied)
+}
+
+/// The size of [`label`]'s box for `text`, points.
+fn label_size(painter: &egui::Painter, text: &str) -> Vec2 {
+    let galley =
+        painter.layout_no_wrap(text.to_owned(), FontId::proportional(12.0), Color32::BLACK);
+    galley.size() + Vec2::splat(6.0)
+}
+
+/// What a reading's label should not cover, on the screen: each particle's disc and the
+/// scale bar in the canvas's lower right corner.
+fn occupied(view: &View, rect: Rect, scene: &Scene, positions: &[DVec2]) -> Vec<Rect> {
+    let mut boxes: Vec<Rect> = scene
+        .particles
+        .iter()
+        .zip(positions)
+        .map(|(particle, &x)| {
+            let r = (particle.radius * view.pixels_per_metre) as f32;
+            Rect::from_center_size(view.to_screen(rect, x), Vec2::splat(2.0 * r.max(2.0) + 4.0))
+        })
+        .collect();
+    boxes.push(Rect::from_min_max(
+        Pos2::new(rect.right() - 280.0, rect.bottom() - 50.0),
+        rect.right_bottom(),
+    ));
+    boxes
+}
+
+/// The first of `candidates` (centres) where a box of `size` covers none of `occupied`,
+/// or the first when none is clear.
+fn clear_spot(candidates: &[Pos2], size: Vec2, occupied: &[Rect]) -> Pos2 {
+    candidates
+        .iter()
+        .copied()
+        .find(|&c| {
+            let spot = Rect::from_center_size(c, size);
+            !occupied.iter().any(|o| o.intersects(spot))
+        })
+        .or_else(|| candidates.first().copied())
+        .unwrap_or_default()
 }
 
 /// Text on a pale box, so that it reads over the grid and the particles. Returns the box.
@@ -614,5 +677,23 @@ mod precision_tests {
         let scene = Scene::new();
         assert!(is_free(Mark::Point(DVec2::new(0.3, 0.1)), &scene));
         assert!(!is_free(Mark::Particle(0), &scene));
+    }
+}
+
+#[cfg(test)]
+mod label_tests {
+    use super::*;
+
+    /// A label goes to the first candidate clear of what is drawn, and to the first
+    /// when none is.
+    #[test]
+    fn a_label_takes_the_first_clear_spot() {
+        let ball = Rect::from_center_size(Pos2::new(100.0, 100.0), Vec2::splat(20.0));
+        let candidates = [Pos2::new(100.0, 95.0), Pos2::new(100.0, 140.0)];
+        let size = Vec2::new(60.0, 16.0);
+        assert_eq!(clear_spot(&candidates, size, &[ball]), candidates[1]);
+        assert_eq!(clear_spot(&candidates, size, &[]), candidates[0]);
+        let everywhere = Rect::from_min_max(Pos2::ZERO, Pos2::new(500.0, 500.0));
+        assert_eq!(clear_spot(&candidates, size, &[everywhere]), candidates[0]);
     }
 }

@@ -311,7 +311,10 @@ impl App {
             }
             Action::ToggleInspector => self.panels.inspector = !self.panels.inspector,
             Action::ToggleGraphs => self.panels.graphs = !self.panels.graphs,
-            Action::ToggleProjector => self.panels.projector = !self.panels.projector,
+            Action::ToggleProjector => {
+                self.panels.projector = !self.panels.projector;
+                self.canvas.projector(self.panels.projector);
+            }
             Action::Instrument(instrument) => {
                 let instruments = &mut self.canvas.instruments;
                 if instruments.active == Some(instrument) {

@@ -152,6 +152,11 @@ enum Framing {
     Fit,
     /// The scene file's `[view]`: a centre and a width, each defaulting to the fit's.
     Scene(physics::View),
+    /// The world box that was in view (centre, size in metres), fitted to the canvas
+    /// as it settles after a change of layout (projector mode on).
+    Keep(DVec2, DVec2),
+    /// Exactly this view, as the canvas settles (projector mode off: the view before).
+    Restore(View),
 }
 
 /// A canvas shrunk below this fraction of the size its scale was set for rescales the
@@ -172,6 +177,8 @@ pub struct Canvas {
     pub rect: Rect,
     /// The canvas's size when the scale last followed it (see [`Self::ui`]).
     scaled_for: Vec2,
+    /// The view before projector mode, given back when it ends.
+    before_projector: Option<View>,
     /// The tape measure, the probe and the field view.
     pub instruments: Instruments,
     /// The canvas's widget id, once drawn: the keys it keeps while focused.
@@ -197,6 +204,7 @@ impl Default for Canvas {
             framing: Some(Framing::Fit),
             rect: Rect::from_min_size(Pos2::ZERO, Vec2::new(800.0, 600.0)),
             scaled_for: Vec2::ZERO,
+            before_projector: None,
             instruments: Instruments::default(),
             id: None,
             palette: Palette::USUAL,
@@ -244,6 +252,19 @@ impl Frame {
 }
 
 impl Canvas {
+    /// Projector mode switched on (`true`) or off: the view shows the same world box
+    /// in the new layout, and leaving gives back the view from before.
+    pub fn projector(&mut self, on: bool) {
+        if on {
+            let size = DVec2::new(f64::from(self.rect.width()), f64::from(self.rect.height()))
+                / self.view.pixels_per_metre;
+            self.before_projector = Some(self.view);
+            self.framing = Some(Framing::Keep(self.view.center, size));
+        } else if let Some(view) = self.before_projector.take() {
+            self.framing = Some(Framing::Restore(view));
+        }
+    }
+
     /// Fits the view to the scene and the recent paths at the next frame.
     pub fn request_fit(&mut self) {
         self.framing = Some(Framing::Fit);
@@ -353,9 +374,10 @@ impl Canvas {
         } else {
             self.scaled_for = rect.size();
         }
+        let settled = (rect.size() - self.rect.size()).length() <= 0.5;
         self.rect = rect;
         let frame = self.frame(document.scene(), runner);
-        self.place_camera(document.scene(), &frame, runner);
+        self.place_camera(document.scene(), &frame, runner, settled);
         let editable = runner.is_editing();
 
         // Zoom around the pointer, and pinch.
@@ -440,9 +462,25 @@ impl Canvas {
     }
 
     /// Sets the view as asked (fit, the scene's framing), then follows while running.
-    fn place_camera(&mut self, scene: &Scene, frame: &Frame, runner: &Runner) {
+    fn place_camera(&mut self, scene: &Scene, frame: &Frame, runner: &Runner, settled: bool) {
         let rect = self.rect;
-        if let Some(framing) = self.framing.take() {
+        if let Some(framing @ (Framing::Keep(..) | Framing::Restore(_))) = &self.framing {
+            // Set again every frame until the canvas stops changing size: a change of
+            // layout takes a frame or two to settle, and the scale must not follow it.
+            match *framing {
+                Framing::Keep(center, size) => {
+                    self.view.center = center;
+                    self.view.pixels_per_metre =
+                        (f64::from(rect.width()) / size.x).min(f64::from(rect.height()) / size.y);
+                }
+                Framing::Restore(view) => self.view = view,
+                _ => {}
+            }
+            self.scaled_for = rect.size();
+            if settled {
+                self.framing = None;
+            }
+        } else if let Some(framing) = self.framing.take() {
             // The recent paths: the trails when drawn, and the recording's last seconds.
             let recent = match (runner.simulation(), &runner.recording) {
                 (Some(_), Some(recording)) => recording.recent_positions(RECENT_SECONDS),

@@ -13,7 +13,7 @@ use egui::{Pos2, Rect};
 use physics::DVec2;
 
 /// Where the world is on screen.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub struct View {
     /// The world point at the canvas centre, metres.
     pub center: DVec2,

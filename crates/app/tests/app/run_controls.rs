@@ -200,3 +200,44 @@ fn play_does_not_rescale_the_canvas() {
     );
     assert_eq!(after.center, before.center);
 }
+
+/// Projector mode and back keeps the view: the same centre, and the scale it had (the
+/// canvas grows when the panels go, and shows more; it never resets to a default zoom).
+#[test]
+fn projector_mode_and_back_keeps_the_view() {
+    let mut harness = harness(App::new(crate::common::example_scene("pendulum")));
+    let before = harness.state().canvas.view;
+    let shown = |harness: &egui_kittest::Harness<'_, App>| {
+        let canvas = &harness.state().canvas;
+        DVec2::new(
+            f64::from(canvas.rect.width()),
+            f64::from(canvas.rect.height()),
+        ) / canvas.view.pixels_per_metre
+    };
+    let box_before = shown(&harness);
+    harness.key_press(Key::F11);
+    harness.run();
+    harness.run();
+    let in_projector = shown(&harness);
+    assert_eq!(harness.state().canvas.view.center, before.center);
+    assert!(
+        in_projector.x >= box_before.x * (1.0 - 1e-9)
+            && in_projector.y >= box_before.y * (1.0 - 1e-9),
+        "all that was shown is shown: {box_before} then {in_projector}"
+    );
+    assert!(
+        in_projector.x <= box_before.x * 1.001 || in_projector.y <= box_before.y * 1.001,
+        "and no more than needed: {box_before} then {in_projector}"
+    );
+    harness.key_press(Key::F11);
+    harness.run();
+    harness.run();
+    let after = harness.state().canvas.view;
+    assert_eq!(after.center, before.center);
+    assert!(
+        (after.pixels_per_metre / before.pixels_per_metre - 1.0).abs() < 1e-9,
+        "{} px/m before, {} after",
+        before.pixels_per_metre,
+        after.pixels_per_metre
+    );
+}

@@ -481,6 +481,7 @@ scene-not-colour = muss eine Farbe wie "#d94f4f" sein, nicht "{ $text }"
 
 ## The command line
 run-non-finite = bei t = { $time } s erreichte das Teilchen '{ $particle }' einen nicht endlichen Ort oder eine nicht endliche Geschwindigkeit (zwei Körper kamen sich zu nahe, oder der Zeitschritt ist für die Kräfte zu groß)
+run-value-not-finite = bei t = { $time } s ist { $quantity } gleich { $value }, keine Zahl, die eine Zeile fassen kann: zwei Körper sind sich so nahe, dass die Kraft zwischen ihnen überläuft
 run-step-too-small = bei t = { $time } s brauchte der adaptive Integrator einen zu kleinen Schritt, um mit der Toleranz { $tolerance } voranzukommen; die Toleranz lockern oder prüfen, ob Körper einander durchdringen
 run-too-many-steps = bei t = { $time } s brauchte es mehr als { $limit } adaptive Schritte bis { $target } s (der Zeitschritt von { $step } s ist für die Bewegung dieser Szene viel zu lang); einen kleineren time_step wählen
 cli-no-window = die App konnte kein Fenster öffnen: { $error }

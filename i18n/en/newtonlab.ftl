@@ -482,6 +482,7 @@ scene-not-colour = must be a colour like "#d94f4f", got "{ $text }"
 
 ## The command line
 run-non-finite = at t = { $time } s particle '{ $particle }' reached a non-finite position or velocity (two bodies came too close, or the time step is too large for the forces)
+run-value-not-finite = at t = { $time } s { $quantity } is { $value }, not a number a row can hold: two bodies are so close that the force between them overflows
 run-step-too-small = at t = { $time } s the adaptive integrator needed a step too small to make progress with tolerance { $tolerance }; loosen the tolerance or check for bodies passing through each other
 run-too-many-steps = at t = { $time } s reaching { $target } s took more than { $limit } adaptive steps (the time step of { $step } s is far too long for this scene's motion); choose a smaller time_step
 cli-no-window = the app could not open a window: { $error }

@@ -481,6 +481,7 @@ scene-not-colour = debe ser un color como "#d94f4f", no "{ $text }"
 
 ## The command line
 run-non-finite = en t = { $time } s la partícula '{ $particle }' alcanzó una posición o velocidad no finita (dos cuerpos se acercaron demasiado, o el paso de tiempo es demasiado grande para las fuerzas)
+run-value-not-finite = en t = { $time } s { $quantity } es { $value }, no un número que quepa en una fila: dos cuerpos están tan cerca que la fuerza entre ellos desborda
 run-step-too-small = en t = { $time } s el integrador adaptativo necesitó un paso demasiado pequeño para avanzar con la tolerancia { $tolerance }; afloje la tolerancia o compruebe si hay cuerpos que se atraviesan
 run-too-many-steps = en t = { $time } s llegar a { $target } s llevó más de { $limit } pasos adaptativos (el paso de tiempo de { $step } s es demasiado largo para el movimiento de esta escena); elija un time_step menor
 cli-no-window = la app no pudo abrir una ventana: { $error }

@@ -47,6 +47,18 @@ pub enum SimulationError {
         /// Seconds.
         time: f64,
     },
+    /// A quantity of the state (an acceleration, an energy) is infinite or NaN though
+    /// the positions and velocities are finite: bodies so close that the force between
+    /// them overflows.
+    #[error("{}", crate::scene::say("run-value-not-finite", &[("time", &time.to_string()), ("quantity", quantity), ("value", &value.to_string())]))]
+    ValueNotFinite {
+        /// The column: `NAME.ax`, `potential_energy`, ….
+        quantity: String,
+        /// What it came out as: inf, −inf or NaN.
+        value: f64,
+        /// Seconds.
+        time: f64,
+    },
     /// The adaptive integrator could not meet its tolerance with any step f64 can take.
     #[error("{}", crate::scene::say("run-step-too-small", &[("time", &time.to_string()), ("tolerance", &tolerance.to_string())]))]
     StepTooSmall {

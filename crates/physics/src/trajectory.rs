@@ -237,31 +237,40 @@ impl Trajectory {
         let stepped = match &mut self.watch {
             Some((watch, names)) => match self.simulation.step_to_watching(t, watch) {
                 Ok(found) => {
+                    let mut result = Ok(());
                     for event in &found {
                         row_values(&event.at, self.ledger_start, &mut self.values);
+                        result = finite_row(&self.values, &self.simulation, self.ledger_start);
+                        if result.is_err() {
+                            break;
+                        }
                         each(Row {
                             values: &self.values,
                             event: Some(&names[event.event]),
                         });
                     }
-                    Ok(())
+                    result
                 }
                 Err(error) => Err(error),
             },
             None => self.simulation.step_to(t),
         };
-        if stepped.is_err() {
-            self.next = self.times.len();
-            return Some(stepped);
-        }
-        if self.regular {
+        let stepped = stepped.and_then(|()| {
+            if !self.regular {
+                return Ok(());
+            }
             row_values(&self.simulation, self.ledger_start, &mut self.values);
+            finite_row(&self.values, &self.simulation, self.ledger_start)?;
             each(Row {
                 values: &self.values,
                 event: None,
             });
+            Ok(())
+        });
+        if stepped.is_err() {
+            self.next = self.times.len();
         }
-        Some(Ok(()))
+        Some(stepped)
     }
 
     /// The impacts since the last call, when the plan keeps them.
@@ -278,6 +287,30 @@ impl Trajectory {
         };
         (self.simulation.names()[impact.particle].as_str(), other)
     }
+}
+
+/// `values`, a row of `simulation` (with the ledger's columns when `ledger_start` is
+/// set), if every value in it is finite; otherwise the run has failed there, at the
+/// first such column (an acceleration that overflowed between two bodies 1e-100 m apart
+/// is infinite while their positions are not): a row is never written with a number
+/// that is not one.
+fn finite_row(
+    values: &[f64],
+    simulation: &Simulation,
+    ledger_start: Option<f64>,
+) -> Result<(), SimulationError> {
+    let Some(k) = values.iter().position(|v| !v.is_finite()) else {
+        return Ok(());
+    };
+    let mut columns = simulation.csv_columns();
+    if ledger_start.is_some() {
+        columns.extend(LEDGER_COLUMNS.map(str::to_owned));
+    }
+    Err(SimulationError::ValueNotFinite {
+        quantity: columns.swap_remove(k),
+        value: values[k],
+        time: values[0],
+    })
 }
 
 /// `simulation`'s row: its state, then the ledger when `ledger_start` is the energy it

@@ -35,6 +35,25 @@ const PATIENCE: Duration = Duration::from_secs(60);
 /// The scenes the fuzzing campaign broke (`issues`: "Unbreakable, round two"), kept so
 /// that every run of the harness tries them first.
 const SEEDS: &[&str] = &[
+    // Found by the generator: two charges 1e-100 m apart, whose Coulomb acceleration
+    // overflows to infinity at t = 0 while their positions are finite. The run must fail
+    // in words, not write a row of inf.
+    r#"version = 1
+[world]
+gravity = [0.0, 0.0]
+gravitation = false
+collisions = false
+[[particle]]
+name = "a"
+mass = 0.01
+position = { magnitude = 1e-100, angle = 0.0 }
+charge = 6.509064164016301
+[[particle]]
+name = "b"
+mass = 0.01
+position = [0.0, 0.0]
+charge = -0.9539060574896102
+"#,
     // A panic in the friction of a surface contact: two particles at one point above a
     // ramp with friction.
     r#"version = 1

@@ -220,8 +220,7 @@ impl Recording {
             Quantity::Particle(name, of) => {
                 let i = self.names.iter().position(|n| n == name)?;
                 let first = 1 + PER_PARTICLE * i;
-                let turning =
-                    (self.width - PER_TURNING * self.names.len() + PER_TURNING * i).min(self.width);
+                let turning = self.turning_start() + PER_TURNING * i;
                 match of {
                     Of::X => Column::Plain(first),
                     Of::Y => Column::Plain(first + 1),
@@ -237,9 +236,10 @@ impl Recording {
                     Of::Angle | Of::Spin | Of::AngularMomentum => return None,
                 }
             }
+            // A particle's `NAME.angle` reads as a link's: its turning's first column.
             Quantity::Link(name, LinkOf::Angle) if self.names.contains(name) && self.turning => {
                 let i = self.names.iter().position(|n| n == name)?;
-                Column::Plain(self.width - PER_TURNING * (self.names.len() - i))
+                Column::Plain(self.turning_start() + PER_TURNING * i)
             }
             Quantity::Link(name, LinkOf::Tension) => {
                 let k = self.ties.iter().position(|n| n == name)?;
@@ -257,14 +257,19 @@ impl Recording {
             }
             Quantity::Total(total) => {
                 let j = TOTALS.iter().position(|t| t == total)?;
-                let after = if self.turning {
-                    PER_TURNING * self.names.len()
-                } else {
-                    0
-                };
-                Column::Plain(self.width - after - TOTALS.len() + j)
+                Column::Plain(self.turning_start() - TOTALS.len() + j)
             }
         })
+    }
+
+    /// Where the particles' turning begins in a sample: after the totals, at the end of
+    /// the row when nothing turns.
+    fn turning_start(&self) -> usize {
+        if self.turning {
+            self.width - PER_TURNING * self.names.len()
+        } else {
+            self.width
+        }
     }
 
     /// The value in `column` at sample `k`.
@@ -414,5 +419,33 @@ mod tests {
             recording.value(0, &Quantity::Particle("nobody".into(), Of::X)),
             None
         );
+    }
+
+    /// A scene with a turning particle records its angle, spin and angular momentum
+    /// (the angle also as `NAME.angle`, as a file writes it) and the system's angular
+    /// momentum, each the simulation's own value; the totals stay where they are.
+    #[test]
+    fn a_turning_particles_quantities_are_recorded() {
+        let scene = physics::example("spin-bounce")
+            .expect("the example")
+            .scene()
+            .expect("a scene");
+        let mut simulation = Simulation::new(&scene).expect("valid");
+        simulation.step_to(0.3).expect("runs");
+        let recording = Recording::start(&simulation);
+        let d = simulation.diagnostics();
+        let p = simulation.particle(0, &[]);
+        for (text, expected) in [
+            ("Ball.spin", p.spin),
+            ("Ball.angle", p.angle),
+            ("Ball.angular_momentum", p.angular_momentum),
+            ("Ball.x", simulation.positions()[0].x),
+            ("angular_momentum", d.angular_momentum),
+            ("kinetic_energy", d.energy.kinetic),
+        ] {
+            let quantity = Quantity::parse(text).expect("a quantity");
+            let value = recording.value(0, &quantity).expect("recorded");
+            assert_eq!(value.to_bits(), expected.to_bits(), "{text}");
+        }
     }
 }

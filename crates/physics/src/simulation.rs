@@ -171,7 +171,9 @@ pub struct ImpactRecord {
 pub struct Ledger {
     /// Spring damping: ∫ b (closing speed)² dt, by Simpson's rule over each step.
     pub damping: f64,
-    /// Surface friction: ∫ −F·v dt of the surfaces' tangential force, the same way.
+    /// Friction: ∫ −F·v dt of the surfaces' tangential force on points, the same way;
+    /// for turning particles, what it takes at impacts and in slipping (exactly: its
+    /// force is fixed through a step, `crate::turning`).
     pub friction: f64,
     /// Air resistance: ∫ (b |v|² + c |v|³) dt, the same way.
     pub drag: f64,
@@ -977,19 +979,17 @@ impl Simulation {
     /// [`Self::accelerations`].
     pub fn particle(&self, i: usize, accelerations: &[DVec2]) -> ParticleReadout {
         let mut readout = diagnostics::particle(&self.forces, &self.state, accelerations, i);
-        if let Some(turning) = &self.contacts.turning
-            && !self.forces.is_fixed(i)
-        {
-            let moment = turning.moment(i, &self.forces.mass, &self.radius);
+        if let Some(turning) = &self.contacts.turning {
             let spin = turning.spin[i];
             readout.spin = spin;
             readout.angle = turning.angle[i].to_degrees();
-            readout.rotational_energy = 0.5 * moment * spin * spin;
-            readout.kinetic_energy += readout.rotational_energy;
-            readout.angular_momentum += moment * spin;
-        } else if let Some(turning) = &self.contacts.turning {
-            readout.spin = turning.spin[i];
-            readout.angle = turning.angle[i].to_degrees();
+            // A fixed particle, of infinite inertia, has no energy or momentum to count.
+            if !self.forces.is_fixed(i) {
+                let moment = turning.moment(i, &self.forces.mass, &self.radius);
+                readout.rotational_energy = 0.5 * moment * spin * spin;
+                readout.kinetic_energy += readout.rotational_energy;
+                readout.angular_momentum += moment * spin;
+            }
         }
         readout
     }

@@ -395,7 +395,7 @@ fn duplicate_copy_and_paste_add_objects_beside_their_originals() {
         "undone"
     );
 
-    let mut pendulum = harness_with(crate::common::example_scene("pendulum"));
+    let mut pendulum = crate::common::harness(App::new(crate::common::example_scene("pendulum")));
     pendulum.state_mut().selection = Some(Selection::Tie(0));
     pendulum.run();
     pendulum.event(egui::Event::Copy);
@@ -419,8 +419,4 @@ fn duplicate_copy_and_paste_add_objects_beside_their_originals() {
         "nothing pasted"
     );
     harness.get_by_label_contains("Nothing pasted");
-}
-
-fn harness_with(scene: Scene) -> Harness<'static, App> {
-    harness(App::new(scene))
 }

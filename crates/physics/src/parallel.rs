@@ -14,7 +14,7 @@ use std::ops::Range;
 use crate::profile::Clock;
 use crate::tuning::MIN_ITEMS;
 #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
-use crate::tuning::PIECES_PER_THREAD;
+use crate::tuning::{MIN_ITEMS_IN_POOL, PIECES_PER_THREAD};
 
 /// The machine's cores: how many threads to use when not told (1 where it cannot say,
 /// as in a browser).
@@ -153,6 +153,13 @@ impl Workers {
         out: &mut Vec<T>,
         work: impl Fn(Range<usize>, &mut Vec<T>) + Sync,
     ) {
+        // On a thread of the pool the other threads are awake: smaller work pays.
+        #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
+        let least = if rayon::current_thread_index().is_some() {
+            least.min(MIN_ITEMS_IN_POOL)
+        } else {
+            least
+        };
         self.region(n >= least, || self.split_into(least, n, out, work));
     }
 
@@ -214,6 +221,20 @@ impl Workers {
             return pool.install(f);
         }
         f()
+    }
+
+    /// `work` on each of `items`, on the pool's threads where there are several: each
+    /// item is its own, so the items come out the same for any number of threads.
+    pub fn each_mut<T: Send>(&self, items: &mut [T], work: impl Fn(&mut T) + Sync) {
+        self.region(items.len() > 1, || {
+            #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
+            if let Some(pool) = self.pool.as_ref().filter(|_| items.len() > 1) {
+                use rayon::prelude::*;
+                pool.install(|| items.par_iter_mut().for_each(&work));
+                return;
+            }
+            items.iter_mut().for_each(work);
+        });
     }
 
     /// `work(0)`, …, `work(pieces − 1)`, on the pool's threads where there are several,

@@ -307,6 +307,7 @@ impl Simulation {
     /// Starts keeping a log of impacts, read with [`Self::take_impacts`].
     pub fn record_impacts(&mut self) {
         self.impact_log.get_or_insert_with(Vec::new);
+        self.contacts.logs_start = true;
     }
 
     /// The impacts since the last call (empty unless [`Self::record_impacts`] was called).
@@ -512,7 +513,7 @@ impl Simulation {
         // Run on a thread of the pool when a step has work to share out: see
         // `Workers::inside` (entering the pool costs about 30 µs, which a small scene's
         // step does not win back).
-        let shares = self.forces.shares_pairs() || self.state.len() >= crate::tuning::MIN_ITEMS;
+        let shares = self.forces.shares_pairs() || self.state.len() >= crate::tuning::STRIPS_FROM;
         if shares && self.contacts.workers.threads() > 1 {
             let workers = self.contacts.workers.clone();
             return workers.inside(|| self.step_to_here(time, observe));

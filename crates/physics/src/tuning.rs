@@ -203,7 +203,27 @@ pub(crate) const SPLIT_LEAVES: usize = 32;
 #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
 pub(crate) const PIECES_PER_THREAD: usize = 4;
 
-/// Fewer items than this run on the calling thread, and a step of fewer particles runs
-/// outside the pool: waking a thread costs some 30 µs on shared cores. From 4,096 the
-/// 10,000-ball pit ran 10 % slower on two threads than on one; from 16,384 as fast.
+/// Fewer items than this run on the calling thread when it is outside the pool: waking
+/// a thread costs some 30 µs on shared cores. Split from 4,096, the 10,000-ball pit ran
+/// 10 % slower on two threads than on one, and the 1,000-ball pit 25 % slower; from
+/// 16,384 as fast.
 pub(crate) const MIN_ITEMS: usize = 16_384;
+
+/// [`MIN_ITEMS`] for a step running on a thread of the pool (one of [`STRIPS_FROM`]
+/// particles or more), whose threads are awake and take a share at once.
+#[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
+pub(crate) const MIN_ITEMS_IN_POOL: usize = 4_096;
+
+/// From this many particles the impacts at a step's start are swept strip by strip
+/// (`contacts/strips.rs`), so that threads can share the sweep: the sweep's order, and so
+/// the bits, change once at this size, never with the thread count.
+pub(crate) const STRIPS_FROM: usize = 4_096;
+
+/// Particles per strip, about: fewer make more pairs cross between strips (swept on one
+/// thread) and blows more passes to cross them, more leave fewer pieces to share among
+/// many threads. The settling 10,000-ball pit on one thread: 185 steps a second with
+/// strips of 512, 191 with 1,024, 200 with 2,048 (205–207 swept in ascending order).
+pub(crate) const PARTICLES_PER_STRIP: usize = 1_024;
+
+/// The most strips.
+pub(crate) const STRIPS: usize = 32;

@@ -230,6 +230,109 @@ fn newtons_cradle_passes_the_blow_to_the_last_ball() {
     );
 }
 
+/// Newton's cradle 5,000 balls long, so that the impacts at the step's start are swept
+/// strip by strip (`contacts/strips.rs`): the row is cut across its length, and the blow
+/// crosses from strip to strip through the pairs across them. The last ball leaves at
+/// 2 m/s and every other stays still, as in the five-ball cradle; on one thread and on
+/// three. The same with 4,095 balls, swept in ascending order.
+#[test]
+fn a_long_cradle_passes_the_blow_across_the_strips() {
+    for n in [4_095_u32, 5_000] {
+        let mut scene = Scene::new().with_world(World::no_forces());
+        for i in 0..n {
+            let velocity = if i == 0 { [2.0, 0.0] } else { [0.0, 0.0] };
+            scene = scene.with_particle(
+                Particle::new(format!("ball {i}"), 1.0)
+                    .position([f64::from(i), 0.0])
+                    .velocity(velocity),
+            );
+        }
+        for threads in [1, 3] {
+            let mut simulation = Simulation::new(&scene).unwrap();
+            simulation.set_threads(threads);
+            simulation.step_to(0.5).unwrap();
+            let last = n as usize - 1;
+            for (i, v) in simulation.velocities().iter().enumerate() {
+                let expected = if i == last {
+                    DVec2::new(2.0, 0.0)
+                } else {
+                    DVec2::ZERO
+                };
+                assert!(
+                    v.distance(expected) < 1e-12,
+                    "{n} balls, {threads} threads: ball {i} at {v}, theory {expected}"
+                );
+            }
+            let x = simulation.positions()[last].x;
+            assert!(
+                (x - (f64::from(n - 1) + 1.0)).abs() < 1e-9,
+                "{n} balls: the last ball leaves at once (x = {x})"
+            );
+        }
+    }
+}
+
+/// 4,096 balls of unequal masses (1 to 3 kg) packed in touching rows, no forces and no
+/// walls, each moving at its own (pseudo-random) velocity: nearly every touching pair
+/// strikes at the first step's start, swept strip by strip. Every impact is a pair's
+/// equal and opposite impulse, so the step keeps the momentum (to 1e-12 of Σ m|v|, the
+/// rounding of the sums), and with restitution 0.5 it cannot add kinetic energy.
+#[test]
+fn impacts_swept_in_strips_keep_momentum_and_take_energy() {
+    let mut world = World::no_forces();
+    world.restitution = 0.5;
+    let mut scene = Scene::new().with_world(world);
+    let mut seed = 12_345_u64;
+    let mut random = move || {
+        seed = seed
+            .wrapping_mul(6_364_136_223_846_793_005)
+            .wrapping_add(1_442_695_040_888_963_407);
+        (seed >> 11) as f64 / (1_u64 << 53) as f64
+    };
+    for i in 0..4_096 {
+        let (row, column) = (i / 64, i % 64);
+        let mass = 1.0 + 2.0 * random();
+        scene = scene.with_particle(
+            Particle::new(format!("b{i}"), mass)
+                .radius(0.1)
+                .position([0.2 * f64::from(column), 0.2 * f64::from(row)])
+                .velocity([2.0 * random() - 1.0, 2.0 * random() - 1.0]),
+        );
+    }
+    let (mut before, mut energy, mut scale) = (DVec2::ZERO, 0.0, 0.0);
+    for p in &scene.particles {
+        let v = p.velocity.to_dvec2();
+        before += v * p.mass;
+        energy += 0.5 * p.mass * v.length_squared();
+        scale += p.mass * v.length();
+    }
+    // The impacts at t = 0 are applied as the simulation is built.
+    let mut simulation = Simulation::new(&scene).unwrap();
+    simulation.step().unwrap();
+    let struck = scene
+        .particles
+        .iter()
+        .zip(simulation.velocities())
+        .filter(|(p, v)| p.velocity.to_dvec2() != **v)
+        .count();
+    assert!(struck > 4_000, "the balls are struck: {struck}");
+    let after = scene
+        .particles
+        .iter()
+        .zip(simulation.velocities())
+        .map(|(p, v)| *v * p.mass)
+        .sum::<DVec2>();
+    assert!(
+        after.distance(before) < 1e-12 * scale,
+        "momentum {before} before, {after} after"
+    );
+    let kinetic = simulation.diagnostics().energy.kinetic;
+    assert!(
+        kinetic < energy,
+        "kinetic energy {energy} J before, {kinetic} J after"
+    );
+}
+
 /// Balls of radius 0.5 m resting on a floor under gravity, restitution `e`, each at its
 /// (x, vx). Gravity sets the resting speed, 2 g h = 0.01962 m/s at the 1 ms step.
 fn balls_on_a_floor(restitution: f64, balls: &[(f64, f64)]) -> Scene {

@@ -353,7 +353,6 @@ impl Contacts {
         // Touching pairs are the resting solver's: both lists are ascending, so one walk
         // through the touching list takes them out.
         let touching = self.touching.pairs.as_slice();
-        let mut next_touching = 0;
         let (radius, boxes) = (&self.radius, &self.boxes);
         let candidates = self.proxies.update(
             boxes,
@@ -361,19 +360,28 @@ impl Contacts {
             |i, j| forces.is_fixed(i) && forces.is_fixed(j),
             &self.workers,
         );
-        // A plain loop, as the touching test's (an iterator's filter is a call through a
-        // reference to the closure in WebAssembly).
-        for &pair in candidates {
-            if !boxes[pair.0 as usize].overlaps(&boxes[pair.1 as usize]) {
-                continue;
-            }
-            while touching.get(next_touching).is_some_and(|t| *t < pair) {
-                next_touching += 1;
-            }
-            if touching.get(next_touching) != Some(&pair) {
-                swept.push(pair);
-            }
-        }
+        // Each candidate is tested on its own: pieces of the list go to different threads,
+        // each starting its walk through the touching list where its first pair would be.
+        self.workers
+            .collect_into(candidates.len(), &mut swept, |range, swept| {
+                let Some(first) = candidates.get(range.start) else {
+                    return;
+                };
+                let mut next_touching = touching.partition_point(|t| t < first);
+                // A plain loop, as the touching test's (an iterator's filter is a call
+                // through a reference to the closure in WebAssembly).
+                for &pair in &candidates[range] {
+                    if !boxes[pair.0 as usize].overlaps(&boxes[pair.1 as usize]) {
+                        continue;
+                    }
+                    while touching.get(next_touching).is_some_and(|t| *t < pair) {
+                        next_touching += 1;
+                    }
+                    if touching.get(next_touching) != Some(&pair) {
+                        swept.push(pair);
+                    }
+                }
+            });
         swept
     }
 

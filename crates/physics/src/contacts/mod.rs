@@ -53,6 +53,7 @@ pub(crate) mod broad_phase;
 mod impacts;
 pub(crate) mod obstacles;
 pub(crate) mod resting;
+mod strips;
 mod surfaces;
 pub(crate) mod time_of_impact;
 
@@ -63,6 +64,7 @@ use self::impacts::ImpactSearch;
 pub(crate) use self::impacts::{Members, hermite, hermite_position};
 use self::obstacles::{Obstacle, Shape};
 use self::resting::{RestingSolver, Touching};
+use self::strips::Strips;
 use self::surfaces::StartContacts;
 use crate::forces::ForceModel;
 use crate::parallel::Workers;
@@ -117,12 +119,19 @@ pub(crate) struct Contacts {
     search: ImpactSearch,
     /// The resting solver after the step ([`resting`]).
     resting: RestingSolver,
+    /// The impacts at the step's start, strip by strip ([`strips`]).
+    strips: Strips,
     /// The threads the searches may use.
     pub workers: Workers,
     /// Whether each particle feels a pairwise force or a spring (see the module doc).
     coupled: Vec<bool>,
     /// The impacts applied in this step.
     pub applied: Vec<Applied>,
+    /// Whether the impacts at the step's start are kept in `applied` when swept in
+    /// strips: only a log of impacts reads them (the books read those inside the step,
+    /// and friction's at the start, which turning particles, never swept in strips,
+    /// carry), and keeping tens of thousands a step is a measurable share of a pile's.
+    pub logs_start: bool,
     /// The kinetic energy taken in this step by catching coupled particles that an impact
     /// inside it left sinking slowly into their surfaces (`simulation/coupled.rs`), J.
     pub caught_in_step: f64,
@@ -175,6 +184,7 @@ impl Contacts {
             touching: StartContacts::default(),
             search: ImpactSearch::default(),
             resting: RestingSolver::default(),
+            strips: Strips::default(),
             workers: Workers::default(),
             coupled: (0..scene.particles.len())
                 .map(|i| {
@@ -185,6 +195,7 @@ impl Contacts {
                 })
                 .collect(),
             applied: Vec::new(),
+            logs_start: false,
             caught_in_step: 0.0,
             released_in_step: 0.0,
             turning: Turning::new(scene),
@@ -202,6 +213,7 @@ impl Contacts {
         self.touching = StartContacts::default();
         self.search = ImpactSearch::default();
         self.resting.drop_scratch();
+        self.strips = Strips::default();
         self.applied = Vec::new();
     }
 
@@ -302,25 +314,32 @@ impl Contacts {
     /// Applies an impact's impulse along `normal` to `state` (the paper's 8–10 or
     /// 17–22: the approach reversed and scaled by the restitution), with friction's
     /// between turning bodies, and records it.
-    fn strike(
-        &mut self,
-        mut applied: Applied,
-        normal: DVec2,
-        state: &mut State,
-        forces: &ForceModel,
-    ) {
-        let change = applied.approach * (1.0 + applied.restitution);
+    fn strike(&mut self, applied: Applied, normal: DVec2, state: &mut State, forces: &ForceModel) {
         let (first, second) = particles_of(applied.impact);
         let velocities = (state.velocity[first], second.map(|j| state.velocity[j]));
-        applied.grip = self.grip(&applied, normal, velocities, forces);
-        let (dv_first, dv_second) = velocity_changes(applied.impact, normal, change, forces);
-        applied.kick = (dv_first + applied.grip.dv.0, dv_second + applied.grip.dv.1);
+        let applied = self.impulse(applied, normal, velocities, forces);
         state.velocity[first] += applied.kick.0;
         if let Some(j) = second {
             state.velocity[j] += applied.kick.1;
         }
         self.turn(&applied);
         self.applied.push(applied);
+    }
+
+    /// `applied` with its friction and whole velocity changes worked out, for particles
+    /// moving at `velocities` (the second's for a pair) just before it.
+    fn impulse(
+        &self,
+        mut applied: Applied,
+        normal: DVec2,
+        velocities: (DVec2, Option<DVec2>),
+        forces: &ForceModel,
+    ) -> Applied {
+        let change = applied.approach * (1.0 + applied.restitution);
+        applied.grip = self.grip(&applied, normal, velocities, forces);
+        let (dv_first, dv_second) = velocity_changes(applied.impact, normal, change, forces);
+        applied.kick = (dv_first + applied.grip.dv.0, dv_second + applied.grip.dv.1);
+        applied
     }
 
     /// Friction's part of an impact (`applied`, without it yet) whose particles move at

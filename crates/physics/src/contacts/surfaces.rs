@@ -12,6 +12,7 @@
 use glam::DVec2;
 
 use super::broad_phase::Aabb;
+use super::strips::strip_count;
 use super::{Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness, separation};
 use crate::forces::normal::Grip;
 use crate::forces::{ForceModel, SurfaceContact};
@@ -163,24 +164,32 @@ impl Contacts {
         };
         let normals = &mut self.touching.normals.pairs;
         normals.clear();
-        // A plain loop: as an iterator's filter the test was a call through a reference
-        // to the closure in WebAssembly (6 % of the pit's time in V8, `benches/wasm`).
-        for &(i, j) in candidates {
-            let (a, b) = (i as usize, j as usize);
-            let reach = radius[a] + radius[b];
-            let offset = position[b] - position[a];
-            // The squared distance first (no square root for the many candidates that
-            // are clearly apart), with room to spare for its rounding: the test after it
-            // decides.
-            let within = reach * (1.0 + 2.0 * TOUCHING);
-            if offset.length_squared() <= within * within {
-                let (distance, normal) = separation(offset);
-                if distance - reach <= TOUCHING * reach {
-                    self.touching.pairs.push((i, j));
-                    normals.push((i, j, normal));
+        // Each candidate is tested on its own: pieces of the list go to different threads
+        // and the pairs found join in the list's order.
+        self.workers
+            .collect_into(candidates.len(), normals, |range, normals| {
+                // A plain loop: as an iterator's filter the test was a call through a
+                // reference to the closure in WebAssembly (6 % of the pit's time in V8,
+                // `benches/wasm`).
+                for &(i, j) in &candidates[range] {
+                    let (a, b) = (i as usize, j as usize);
+                    let reach = radius[a] + radius[b];
+                    let offset = position[b] - position[a];
+                    // The squared distance first (no square root for the many
+                    // candidates that are clearly apart), with room to spare for its
+                    // rounding: the test after it decides.
+                    let within = reach * (1.0 + 2.0 * TOUCHING);
+                    if offset.length_squared() <= within * within {
+                        let (distance, normal) = separation(offset);
+                        if distance - reach <= TOUCHING * reach {
+                            normals.push((i, j, normal));
+                        }
+                    }
                 }
-            }
-        }
+            });
+        self.touching
+            .pairs
+            .extend(normals.iter().map(|&(i, j, _)| (i, j)));
         profiler.lap(Stage::BroadPhase);
         self.touching.surfaces.clear();
         for p in (0..n).filter(|&p| !forces.is_fixed(p)) {
@@ -221,23 +230,35 @@ impl Contacts {
         }
         let max_passes = 2 * state.len() + 8;
         let mut changed = false;
+        let strips = strip_count(state.len());
+        // Turning particles' spins are swept with their velocities: in one strip. Without
+        // touching pairs every order gives the same bits (each surface moves only its
+        // own particle), and the strips are not needed.
+        if strips > 1 && self.turning.is_none() && !normals.pairs.is_empty() {
+            let mut cut = std::mem::take(&mut self.strips);
+            cut.cut(
+                strips,
+                (&state.position, &state.velocity),
+                &normals.pairs,
+                &normals.surfaces,
+            );
+            for pass in 0..=max_passes {
+                let any = self.sweep_strips(&mut cut, forces, resting_speed, pass == max_passes);
+                changed |= any;
+                if !any {
+                    break;
+                }
+            }
+            cut.velocities_into(&mut state.velocity);
+            self.strips = cut;
+            self.touching.normals = normals;
+            return changed;
+        }
         for pass in 0..=max_passes {
             let inelastic = pass == max_passes;
             let mut any = false;
             let mut strike = |this: &mut Self, impact, normal, approach, state: &mut State| {
-                let restitution = if inelastic {
-                    0.0
-                } else {
-                    this.restitution_at(impact, approach, resting_speed)
-                };
-                let applied = Applied {
-                    time: 0.0,
-                    impact,
-                    approach,
-                    restitution,
-                    grip: crate::turning::Grip::default(),
-                    kick: (DVec2::ZERO, DVec2::ZERO),
-                };
+                let applied = this.at_start(impact, approach, resting_speed, inelastic);
                 this.strike(applied, normal, state, forces);
                 any = true;
             };
@@ -268,6 +289,32 @@ impl Contacts {
         }
         self.touching.normals = normals;
         changed
+    }
+}
+
+impl Contacts {
+    /// An impact at the step's start approaching at `approach`, its impulse not yet
+    /// worked out: with its restitution, or none in the last pass (`inelastic`).
+    pub(super) fn at_start(
+        &self,
+        impact: Impact,
+        approach: f64,
+        resting_speed: f64,
+        inelastic: bool,
+    ) -> Applied {
+        let restitution = if inelastic {
+            0.0
+        } else {
+            self.restitution_at(impact, approach, resting_speed)
+        };
+        Applied {
+            time: 0.0,
+            impact,
+            approach,
+            restitution,
+            grip: crate::turning::Grip::default(),
+            kick: (DVec2::ZERO, DVec2::ZERO),
+        }
     }
 }
 

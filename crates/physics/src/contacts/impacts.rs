@@ -329,18 +329,24 @@ impl Contacts {
         self.search.changed.clear();
         self.search.escaped.clear();
         self.search.queue.clear();
+        // Each particle's on its own: pieces go to different threads, joined in order.
         self.search.controls.clear();
-        self.search
-            .controls
-            .extend(self.search.paths.iter().map(|path| path.after(0.0, h)));
+        let paths = &self.search.paths;
+        self.workers
+            .collect_into(n, &mut self.search.controls, |range, controls| {
+                controls.extend(paths[range].iter().map(|path| path.after(0.0, h)));
+            });
         self.boxes.clear();
-        self.boxes.extend(
-            self.search
-                .controls
-                .iter()
-                .zip(self.radius.iter())
-                .map(|(controls, r)| Aabb::around(controls, *r)),
-        );
+        let (controls, radius) = (&self.search.controls, &self.radius);
+        self.workers
+            .collect_into(n, &mut self.boxes, |range, boxes| {
+                boxes.extend(
+                    controls[range.clone()]
+                        .iter()
+                        .zip(&radius[range])
+                        .map(|(controls, r)| Aabb::around(controls, *r)),
+                );
+            });
     }
 
     /// The pairs whose swept boxes overlap and that do not touch, ascending.

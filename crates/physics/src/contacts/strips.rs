@@ -23,7 +23,7 @@
 
 use glam::DVec2;
 
-use super::{Applied, Contacts, Impact};
+use super::{Applied, Contacts, Impact, velocity_changes};
 use crate::forces::ForceModel;
 use crate::tuning::{PARTICLES_PER_STRIP, STRIPS, STRIPS_FROM};
 
@@ -81,21 +81,28 @@ struct Pass<'a> {
 }
 
 impl Pass<'_> {
-    /// The impact `impact` approaching at `approach` along `normal`, with its impulse
-    /// worked out for particles moving at `velocities` (without friction: no particle
-    /// in a strip sweep turns).
+    /// The velocity changes of the impact `impact` approaching at `approach` along
+    /// `normal` (the paper's 8–10 or 17–22, without friction: no particle in a strip
+    /// sweep turns), and the impact as applied pushed to `applied` when impacts are kept.
     fn strike(
         self,
         impact: Impact,
         normal: DVec2,
         approach: f64,
-        velocities: (DVec2, Option<DVec2>),
-    ) -> Applied {
-        let applied = self
-            .contacts
-            .at_start(impact, approach, self.resting_speed, self.inelastic);
-        self.contacts
-            .impulse(applied, normal, velocities, self.forces)
+        applied: &mut Vec<Applied>,
+    ) -> (DVec2, DVec2) {
+        let restitution =
+            self.contacts
+                .restitution_now(impact, approach, self.resting_speed, self.inelastic);
+        let change = approach * (1.0 + restitution);
+        let kick = velocity_changes(impact, normal, change, self.forces);
+        if self.keep {
+            let at_start =
+                self.contacts
+                    .at_start(impact, approach, self.resting_speed, self.inelastic);
+            applied.push(Applied { kick, ..at_start });
+        }
+        kick
     }
 
     /// Sweeps a strip's contacts once: its particles are `particles`, moving at
@@ -113,13 +120,10 @@ impl Pass<'_> {
             let approach = (velocity[a] - velocity[b]).dot(normal);
             if approach > self.resting_speed {
                 let impact = Impact::Pair(particles[a] as usize, particles[b] as usize);
-                let kick = self.strike(impact, normal, approach, (velocity[a], Some(velocity[b])));
-                velocity[a] += kick.kick.0;
-                velocity[b] += kick.kick.1;
+                let kick = self.strike(impact, normal, approach, applied);
+                velocity[a] += kick.0;
+                velocity[b] += kick.1;
                 *struck = true;
-                if self.keep {
-                    applied.push(kick);
-                }
             }
         }
         for &(a, k, normal) in surfaces.iter() {
@@ -127,12 +131,9 @@ impl Pass<'_> {
             let approach = -velocity[a].dot(normal);
             if approach > self.resting_speed {
                 let impact = Impact::Obstacle(particles[a] as usize, k as usize);
-                let kick = self.strike(impact, normal, approach, (velocity[a], None));
-                velocity[a] += kick.kick.0;
+                let kick = self.strike(impact, normal, approach, applied);
+                velocity[a] += kick.0;
                 *struck = true;
-                if self.keep {
-                    applied.push(kick);
-                }
             }
         }
     }
@@ -277,14 +278,10 @@ impl Contacts {
             let approach = (velocity[a] - velocity[b]).dot(normal);
             if approach > resting_speed {
                 let impact = Impact::Pair(particles[a] as usize, particles[b] as usize);
-                let struck =
-                    pass.strike(impact, normal, approach, (velocity[a], Some(velocity[b])));
-                velocity[a] += struck.kick.0;
-                velocity[b] += struck.kick.1;
+                let kick = pass.strike(impact, normal, approach, &mut applied);
+                velocity[a] += kick.0;
+                velocity[b] += kick.1;
                 any = true;
-                if pass.keep {
-                    applied.push(struck);
-                }
             }
         }
         self.applied = applied;

@@ -293,6 +293,22 @@ impl Contacts {
 }
 
 impl Contacts {
+    /// The restitution of an impact at the step's start approaching at `approach`: none
+    /// in the last pass (`inelastic`).
+    pub(super) fn restitution_now(
+        &self,
+        impact: Impact,
+        approach: f64,
+        resting_speed: f64,
+        inelastic: bool,
+    ) -> f64 {
+        if inelastic {
+            0.0
+        } else {
+            self.restitution_at(impact, approach, resting_speed)
+        }
+    }
+
     /// An impact at the step's start approaching at `approach`, its impulse not yet
     /// worked out: with its restitution, or none in the last pass (`inelastic`).
     pub(super) fn at_start(
@@ -302,16 +318,11 @@ impl Contacts {
         resting_speed: f64,
         inelastic: bool,
     ) -> Applied {
-        let restitution = if inelastic {
-            0.0
-        } else {
-            self.restitution_at(impact, approach, resting_speed)
-        };
         Applied {
             time: 0.0,
             impact,
             approach,
-            restitution,
+            restitution: self.restitution_now(impact, approach, resting_speed, inelastic),
             grip: crate::turning::Grip::default(),
             kick: (DVec2::ZERO, DVec2::ZERO),
         }

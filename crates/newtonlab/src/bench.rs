@@ -165,17 +165,16 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
     let n = args.particles as u64;
     let steps_per_second = steps as f64 / elapsed;
     let integrator = args.integrator;
-    #[expect(clippy::print_stdout, reason = "the command's report")]
     match args.scene {
         BenchScene::Cloud => {
             let pairs = n * n.saturating_sub(1) / 2;
             let evaluations = evaluations_per_step(integrator);
             let pair_rate = steps_per_second * (pairs * evaluations) as f64;
-            println!(
+            out!(
                 "{n} gravitating, charged particles, {integrator}: {steps} steps in {elapsed:.2} s"
             );
-            println!("  {steps_per_second:.1} steps per second");
-            println!(
+            out!("  {steps_per_second:.1} steps per second");
+            out!(
                 "  {pair_rate:.3e} pair interactions per second ({pairs} pairs, {evaluations} force evaluations per step)"
             );
         }
@@ -194,14 +193,14 @@ pub(crate) fn bench(args: &BenchArgs) -> Result<(), Failure> {
             } else {
                 "pit"
             };
-            println!(
+            out!(
                 "{n}-ball {what}, {integrator}, time step 1 ms, {threads} thread(s): {steps} steps in {elapsed:.2} s (simulated 0 to {simulated:.2} s)"
             );
             // One figure a line, "<number> <unit>", for scripts (docs/cli.md).
-            println!("  {steps_per_second:.1} steps per second");
-            println!("  {:.2}x real time", simulated / elapsed);
+            out!("  {steps_per_second:.1} steps per second");
+            out!("  {:.2}x real time", simulated / elapsed);
             let passes = simulation.steps_taken() - advances_before;
-            println!(
+            out!(
                 "  {passes} passes through the step's pipeline (a step ends early at an impact of a particle under pairwise forces or springs)"
             );
         }
@@ -240,19 +239,18 @@ fn scrub(args: &BenchArgs) -> Result<(), Failure> {
         .ok_or_else(|| Failure::Simulation("a step could not be shown again".to_owned()))?;
     latencies.sort_by(f64::total_cmp);
     let n = args.particles;
-    #[expect(clippy::print_stdout, reason = "the command's report")]
     {
-        println!(
+        out!(
             "{n}-ball pit recorded for {:.0} s ({} steps) in {recording:.1} s",
             simulation.time(),
             timeline.end
         );
-        println!(
+        out!(
             "  {} keyframes every {interval} steps, {:.1} MiB",
             timeline.len(),
             timeline.bytes() as f64 / f64::from(1 << 20)
         );
-        println!(
+        out!(
             "  going back to a moment: {:.1} ms median, {:.1} ms worst (20 moments, each {} steps past its keyframe)",
             latencies[latencies.len() / 2] * 1e3,
             latencies[latencies.len() - 1] * 1e3,
@@ -297,13 +295,12 @@ fn sweep(args: &BenchArgs) -> Result<(), Failure> {
     };
     let (one, rows_one) = timed(1);
     let (many, rows_many) = timed(threads);
-    #[expect(clippy::print_stdout, reason = "the command's report")]
     {
-        println!("sweep of {} runs (20 angles × 20 drags)", rows_one.len());
-        println!("  {one:.3} s on 1 thread");
-        println!("  {many:.3} s on {threads} threads");
-        println!("  {:.2}x faster on {threads} threads", one / many);
-        println!(
+        out!("sweep of {} runs (20 angles × 20 drags)", rows_one.len());
+        out!("  {one:.3} s on 1 thread");
+        out!("  {many:.3} s on {threads} threads");
+        out!("  {:.2}x faster on {threads} threads", one / many);
+        out!(
             "  the same results on both: {}",
             if rows_one == rows_many { "yes" } else { "NO" }
         );
@@ -348,16 +345,15 @@ fn clock() -> f64 {
 /// The time per stage, as Box2D's profile shows it: microseconds per step and share;
 /// the share of work that may be split across threads, and on one thread the speed-up
 /// Amdahl's law allows on 2, 4, 8 and 16.
-#[expect(clippy::print_stdout, reason = "the command's report")]
 fn print_profile(profile: &Profile, steps: u64, threads: usize) {
     let total = profile.total();
     if steps == 0 || total <= 0.0 {
         return;
     }
-    println!("  time per step by stage:");
+    out!("  time per step by stage:");
     for stage in Stage::ALL {
         let seconds = profile.seconds(stage);
-        println!(
+        out!(
             "    {:<18} {:>9.1} µs  {:>5.1} %",
             stage.name(),
             seconds / steps as f64 * 1e6,
@@ -365,7 +361,7 @@ fn print_profile(profile: &Profile, steps: u64, threads: usize) {
         );
     }
     let share = profile.parallel_seconds() / total;
-    println!(
+    out!(
         "  work that may be split across threads: {:.1} % of the step, serial: {:.1} %",
         share * 100.0,
         (1.0 - share) * 100.0
@@ -375,7 +371,7 @@ fn print_profile(profile: &Profile, steps: u64, threads: usize) {
             .iter()
             .map(|&n| format!("{n}: {:.2}x", profile.amdahl(n)))
             .collect();
-        println!(
+        out!(
             "  Amdahl's bound from this profile, speed-up on N threads: {}",
             predicted.join(", ")
         );
@@ -384,7 +380,6 @@ fn print_profile(profile: &Profile, steps: u64, threads: usize) {
 
 /// `bench --scene cluster`'s report: force evaluations per second over the whole run and
 /// over the integrator's time alone, and the tree's error against the direct sum.
-#[expect(clippy::print_stdout, reason = "the command's report")]
 fn report_cluster(
     simulation: &Simulation,
     (steps, elapsed): (u64, f64),
@@ -396,11 +391,11 @@ fn report_cluster(
     let steps_per_second = steps as f64 / elapsed;
     let evaluations = evaluations_per_step(integrator);
     let rate = steps_per_second * evaluations as f64;
-    println!(
+    out!(
         "{n}-body cluster, Barnes–Hut tree (opening angle 0.5), {integrator}: {steps} steps in {elapsed:.2} s"
     );
-    println!("  {steps_per_second:.1} steps per second");
-    println!(
+    out!("  {steps_per_second:.1} steps per second");
+    out!(
         "  {rate:.1} force evaluations per second (all {n} bodies each; {evaluations} per step, more when an impact integrates again)"
     );
     // The forces alone: the integrator's trial steps, timed by the profile
@@ -409,15 +404,15 @@ fn report_cluster(
     let trials = simulation.steps_taken() - advances_before;
     if integrating > 0.0 {
         let forces_rate = (trials * evaluations) as f64 / integrating;
-        println!(
+        out!(
             "  {forces_rate:.1} force evaluations per second while integrating ({trials} trial steps in {integrating:.2} s)"
         );
     }
     match tree_error {
-        Some(error) => println!(
-            "  {error:.2e} normalised RMS force error against the direct sum, at the start"
-        ),
-        None => println!(
+        Some(error) => {
+            out!("  {error:.2e} normalised RMS force error against the direct sum, at the start");
+        }
+        None => out!(
             "  (the force error is measured up to {TREE_ERROR_BODIES} bodies: the direct sum is O(n²))"
         ),
     }

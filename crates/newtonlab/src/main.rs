@@ -5,6 +5,15 @@
 //! value: the message names the particle and the time); 2 bad input (arguments or scene:
 //! every problem listed, each with line and column where the file has them).
 
+/// `println!` for a command's report: a reader that stops early (`newtonlab examples |
+/// head -1`) ends the command quietly with success, as a closed pipe ends any Unix tool,
+/// where `println!` panics.
+macro_rules! out {
+    ($($arg:tt)*) => {
+        $crate::write_line(format_args!($($arg)*))
+    };
+}
+
 mod bench;
 mod plots;
 mod run;
@@ -12,6 +21,7 @@ mod scene_source;
 mod sweep;
 mod validate;
 
+use std::io::Write as _;
 use std::process::ExitCode;
 
 use clap::{Parser, Subcommand};
@@ -187,9 +197,8 @@ fn open_app(args: &AppArgs, language: Option<Language>) -> Result<(), Failure> {
 
 fn check(source: &str) -> Result<(), Failure> {
     let scene = scene_source::load(source)?;
-    #[expect(clippy::print_stdout, reason = "the command's report")]
     {
-        println!(
+        out!(
             "{}",
             say(
                 "cli-check-ok",
@@ -211,7 +220,7 @@ fn check(source: &str) -> Result<(), Failure> {
             } else {
                 "cli-check-tree"
             };
-            println!(
+            out!(
                 "{}",
                 say(id, &[("angle", &angle), ("charged", &charged.to_string())])
             );
@@ -219,8 +228,6 @@ fn check(source: &str) -> Result<(), Failure> {
     }
     Ok(())
 }
-
-#[expect(clippy::print_stdout, reason = "the command's report")]
 fn examples() {
     for example in physics::EXAMPLES {
         let title = example
@@ -228,6 +235,18 @@ fn examples() {
             .ok()
             .and_then(|scene| scene.name)
             .unwrap_or_default();
-        println!("example:{:<24} {title}", example.name);
+        out!("example:{:<24} {title}", example.name);
+    }
+}
+
+/// Writes one line of a command's report to standard output ([`out!`]). A closed pipe
+/// ends the process with success; another failure to write ends it with exit 1, said.
+fn write_line(line: std::fmt::Arguments<'_>) {
+    if let Err(error) = writeln!(std::io::stdout().lock(), "{line}") {
+        if error.kind() == std::io::ErrorKind::BrokenPipe {
+            std::process::exit(0);
+        }
+        eprintln!("newtonlab: cannot write to standard output: {error}");
+        std::process::exit(1);
     }
 }

@@ -62,14 +62,13 @@ pub(crate) fn validate(args: &ValidateArgs) -> Result<(), Failure> {
     let statements: Vec<(&str, &str)> = groups.iter().map(|g| (g.name(), g.statement())).collect();
     let overview = report.groups(&statements);
     let summary = report.summary();
-    #[expect(clippy::print_stdout, reason = "the command's report")]
     {
-        println!(
+        out!(
             "NewtonLab against theory: the paper's experiments (section 4) and every claim since{}{}",
             Report::render_text(&overview),
             report.to_text()
         );
-        println!("\n{summary}");
+        out!("\n{summary}");
     }
     if let Some(directory) = &args.out {
         let mut markdown = format!(
@@ -94,9 +93,8 @@ pub(crate) fn validate(args: &ValidateArgs) -> Result<(), Failure> {
         let path = directory.join("report.md");
         std::fs::write(&path, markdown)
             .map_err(|e| Failure::Input(format!("cannot write '{}': {e}", path.display())))?;
-        #[expect(clippy::print_stdout, reason = "the command's report")]
         {
-            println!("wrote {} and {} figures", path.display(), figures.len());
+            out!("wrote {} and {} figures", path.display(), figures.len());
         }
     }
     if report.failures().next().is_some() {

@@ -341,3 +341,47 @@ fn many_problems_are_placed_in_one_reading() {
         "the last one placed"
     );
 }
+
+/// A reader that stops early (`newtonlab examples | head -1`): every report ends quietly
+/// with success when its pipe is closed, as a closed pipe ends any Unix tool, instead of
+/// panicking (exit 101). The pipe is closed before the command writes, so each write
+/// meets it closed.
+#[test]
+fn a_closed_pipe_ends_a_report_quietly() {
+    let (_dir, path) = scene_file(
+        "one.toml",
+        "version = 1\n[[particle]]\nname = \"a\"\nmass = 1\nposition = [0, 0]\n",
+    );
+    let commands: [&[&str]; 5] = [
+        &["examples"],
+        &["check", &path],
+        &["run", &path, "--until", "1", "--every", "0.001"],
+        &[
+            "bench",
+            "--scene",
+            "pit",
+            "--particles",
+            "10",
+            "--seconds",
+            "0.01",
+        ],
+        &["validate", "--only", "drag"],
+    ];
+    for args in commands {
+        let mut child = Command::new(env!("CARGO_BIN_EXE_newtonlab"))
+            .args(args)
+            .env("LC_ALL", "C")
+            .stdout(Stdio::piped())
+            .stderr(Stdio::piped())
+            .spawn()
+            .expect("the binary runs");
+        drop(child.stdout.take());
+        let output = child.wait_with_output().expect("it ends");
+        let said = stderr(&output);
+        assert!(
+            output.status.success() && !said.contains("panicked"),
+            "{args:?}: {:?}, {said}",
+            output.status
+        );
+    }
+}

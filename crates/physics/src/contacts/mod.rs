@@ -127,10 +127,10 @@ pub(crate) struct Contacts {
     coupled: Vec<bool>,
     /// The impacts applied in this step.
     pub applied: Vec<Applied>,
-    /// Whether the impacts at the step's start are kept in `applied` when swept in
-    /// strips: only a log of impacts reads them (the books read those inside the step,
-    /// and friction's at the start, which turning particles, never swept in strips,
-    /// carry), and keeping tens of thousands a step is a measurable share of a pile's.
+    /// Whether the impacts at the step's start are kept in `applied` for a log of
+    /// impacts: nothing else reads them but turning particles' books (the books read
+    /// those inside the step), and keeping tens of thousands a step is a measurable
+    /// share of a pile's.
     pub logs_start: bool,
     /// The kinetic energy taken in this step by catching coupled particles that an impact
     /// inside it left sinking slowly into their surfaces (`simulation/coupled.rs`), J.

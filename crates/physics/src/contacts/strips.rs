@@ -23,7 +23,7 @@
 
 use glam::DVec2;
 
-use super::{Applied, Contacts, Impact, velocity_changes};
+use super::{Applied, Contacts, Impact};
 use crate::forces::ForceModel;
 use crate::tuning::{PARTICLES_PER_STRIP, STRIPS, STRIPS_FROM};
 
@@ -91,11 +91,13 @@ impl Pass<'_> {
         approach: f64,
         applied: &mut Vec<Applied>,
     ) -> (DVec2, DVec2) {
-        let restitution =
-            self.contacts
-                .restitution_now(impact, approach, self.resting_speed, self.inelastic);
-        let change = approach * (1.0 + restitution);
-        let kick = velocity_changes(impact, normal, change, self.forces);
+        let kick = self.contacts.kick_now(
+            impact,
+            (normal, approach),
+            self.resting_speed,
+            self.inelastic,
+            self.forces,
+        );
         if self.keep {
             let at_start =
                 self.contacts

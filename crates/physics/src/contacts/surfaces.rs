@@ -13,7 +13,10 @@ use glam::DVec2;
 
 use super::broad_phase::Aabb;
 use super::strips::strip_count;
-use super::{Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness, separation};
+use super::{
+    Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness, particles_of, separation,
+    velocity_changes,
+};
 use crate::forces::normal::Grip;
 use crate::forces::{ForceModel, SurfaceContact};
 use crate::profile::{Profiler, Stage};
@@ -254,12 +257,25 @@ impl Contacts {
             self.touching.normals = normals;
             return changed;
         }
+        // Only a log of impacts and turning particles' books read the impacts at the
+        // step's start; without them a strike is its velocity changes alone.
+        let keep = self.logs_start || self.turning.is_some();
         for pass in 0..=max_passes {
             let inelastic = pass == max_passes;
             let mut any = false;
             let mut strike = |this: &mut Self, impact, normal, approach, state: &mut State| {
-                let applied = this.at_start(impact, approach, resting_speed, inelastic);
-                this.strike(applied, normal, state, forces);
+                if keep {
+                    let applied = this.at_start(impact, approach, resting_speed, inelastic);
+                    this.strike(applied, normal, state, forces);
+                } else {
+                    let (first, second) = particles_of(impact);
+                    let kick =
+                        this.kick_now(impact, (normal, approach), resting_speed, inelastic, forces);
+                    state.velocity[first] += kick.0;
+                    if let Some(j) = second {
+                        state.velocity[j] += kick.1;
+                    }
+                }
                 any = true;
             };
             for &(i, j, normal) in &normals.pairs {
@@ -307,6 +323,24 @@ impl Contacts {
         } else {
             self.restitution_at(impact, approach, resting_speed)
         }
+    }
+
+    /// The velocity changes of an impact at the step's start approaching at `approach`
+    /// along `normal`, between particles that do not turn: [`Self::impulse`]'s, to the
+    /// bit, without the record.
+    pub(super) fn kick_now(
+        &self,
+        impact: Impact,
+        (normal, approach): (DVec2, f64),
+        resting_speed: f64,
+        inelastic: bool,
+        forces: &ForceModel,
+    ) -> (DVec2, DVec2) {
+        let restitution = self.restitution_now(impact, approach, resting_speed, inelastic);
+        let change = approach * (1.0 + restitution);
+        let (first, second) = velocity_changes(impact, normal, change, forces);
+        // Friction's part, none, added as `impulse` adds it: a zero's sign included.
+        (first + DVec2::ZERO, second + DVec2::ZERO)
     }
 
     /// An impact at the step's start approaching at `approach`, its impulse not yet

@@ -9,17 +9,22 @@ use std::time::{Duration, Instant};
 
 use common::{scene_file, stderr};
 
-/// The binary with `args`, killed after `seconds` (a hang is a failure, not a stuck test).
-/// Its output is read while it runs: a pipe left full would stop it.
-fn within(seconds: u64, args: &[&str]) -> Output {
-    use std::io::Read as _;
-    let mut child = Command::new(env!("CARGO_BIN_EXE_newtonlab"))
+/// The binary started with `args`, its output piped.
+fn spawned(args: &[&str]) -> std::process::Child {
+    Command::new(env!("CARGO_BIN_EXE_newtonlab"))
         .args(args)
         .env("LC_ALL", "C")
         .stdout(Stdio::piped())
         .stderr(Stdio::piped())
         .spawn()
-        .expect("the binary runs");
+        .expect("the binary runs")
+}
+
+/// The binary with `args`, killed after `seconds` (a hang is a failure, not a stuck test).
+/// Its output is read while it runs: a pipe left full would stop it.
+fn within(seconds: u64, args: &[&str]) -> Output {
+    use std::io::Read as _;
+    let mut child = spawned(args);
     let drain = |pipe: Option<Box<dyn std::io::Read + Send>>| {
         std::thread::spawn(move || {
             let mut bytes = Vec::new();
@@ -368,13 +373,7 @@ fn a_closed_pipe_ends_a_report_quietly() {
         &["validate", "--only", "drag"],
     ];
     for args in commands {
-        let mut child = Command::new(env!("CARGO_BIN_EXE_newtonlab"))
-            .args(args)
-            .env("LC_ALL", "C")
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .expect("the binary runs");
+        let mut child = spawned(args);
         drop(child.stdout.take());
         let output = child.wait_with_output().expect("it ends");
         let said = stderr(&output);

@@ -48,3 +48,12 @@ fi
 kill "$app"
 app=
 timeout 120 target/release/newtonlab app example:ball-pit --measure-frames 300
+# Drawing at scale: the same pit with trails on, and a 60 x 60 cloth (3,600 particles,
+# 7,080 springs). Figures for the log, not a pass mark: the machine is shared.
+scenes=$(mktemp -d)
+target/release/newtonlab run example:ball-pit --until 0 --save-state "$scenes/pit-trails.toml" >/dev/null
+sed -i 's/^\[view\]$/[view]\ntrails = true/' "$scenes/pit-trails.toml"
+python3 benches/scenes/cloth.py 60 >"$scenes/cloth-60.toml"
+timeout 120 target/release/newtonlab app "$scenes/pit-trails.toml" --measure-frames 300
+timeout 120 target/release/newtonlab app "$scenes/cloth-60.toml" --measure-frames 300
+rm -rf "$scenes"

@@ -6,7 +6,7 @@
 //! recording's samples) is an event too: "At 0.785 s, spring s1 is at full stretch,
 //! 1.5 m." Whichever came last is said.
 
-use physics::{DVec2, Endpoint, ImpactTarget, Of, Quantity, Scene};
+use physics::{DVec2, Endpoint, ImpactTarget, Scene};
 
 use crate::i18n::{Arg, tr, tr_with};
 use crate::recording::{Column, Recording};
@@ -123,9 +123,8 @@ impl Announcer {
             let end = |e: &Endpoint| match e {
                 Endpoint::Point(p) => Some(End::Fixed(p.to_dvec2())),
                 Endpoint::Particle(name) => {
-                    let x = Quantity::Particle(name.clone(), Of::X);
-                    let y = Quantity::Particle(name.clone(), Of::Y);
-                    Some(End::Moving(recording.column(&x)?, recording.column(&y)?))
+                    let (x, y) = Recording::position_columns(recording.index_of(name)?);
+                    Some(End::Moving(x, y))
                 }
             };
             let (Some(a), Some(b)) = (end(&spring.from), end(&spring.to)) else {

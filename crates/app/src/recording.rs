@@ -46,6 +46,9 @@ pub enum End {
 pub struct Recording {
     /// The particles' names at Play, in simulation order.
     names: Vec<String>,
+    /// Each name's particle index: a graph, a readout or the announcer asks every frame,
+    /// for every spring's ends in a cloth of thousands.
+    index: std::collections::HashMap<String, usize>,
     /// The rods and strings at Play, whose tensions follow the particles' numbers.
     ties: Vec<String>,
     /// Every rod, string and spring at Play, by name, with its ends.
@@ -83,6 +86,10 @@ impl Recording {
         let stride = (FIRST_INTERVAL / dt).floor().max(1.0) as u64;
         let mut recording = Self {
             names: simulation.names().to_vec(),
+            index: (0..)
+                .zip(simulation.names())
+                .map(|(i, name)| (name.clone(), i))
+                .collect(),
             ties: simulation.tie_names().to_vec(),
             links: links(simulation),
             width: 1
@@ -123,7 +130,13 @@ impl Recording {
 
     /// The run's particle index of `name`.
     pub fn index_of(&self, name: &str) -> Option<usize> {
-        self.names.iter().position(|n| n == name)
+        self.index.get(name).copied()
+    }
+
+    /// The columns of particle `i`'s position (x, y).
+    pub fn position_columns(i: usize) -> (Column, Column) {
+        let first = 1 + PER_PARTICLE * i;
+        (Column::Plain(first), Column::Plain(first + 1))
     }
 
     /// Takes a sample if this step is one of the recorded instants; returns the system's
@@ -218,7 +231,7 @@ impl Recording {
         Some(match quantity {
             Quantity::Time => Column::Plain(0),
             Quantity::Particle(name, of) => {
-                let i = self.names.iter().position(|n| n == name)?;
+                let i = self.index_of(name)?;
                 let first = 1 + PER_PARTICLE * i;
                 let turning = self.turning_start() + PER_TURNING * i;
                 match of {
@@ -237,8 +250,10 @@ impl Recording {
                 }
             }
             // A particle's `NAME.angle` reads as a link's: its turning's first column.
-            Quantity::Link(name, LinkOf::Angle) if self.names.contains(name) && self.turning => {
-                let i = self.names.iter().position(|n| n == name)?;
+            Quantity::Link(name, LinkOf::Angle)
+                if self.index.contains_key(name) && self.turning =>
+            {
+                let i = self.index_of(name)?;
                 Column::Plain(self.turning_start() + PER_TURNING * i)
             }
             Quantity::Link(name, LinkOf::Tension) => {

@@ -2,7 +2,7 @@
 //! drawing order (bounds, ramps, trails, springs, particles with their arrows), names
 //! placed so they do not collide, and the preview of a gesture in progress.
 
-use egui::{Align2, Color32, FontId, Pos2, Rect, Shape, Stroke, Vec2, epaint::PathStroke};
+use egui::{Align2, Color32, FontId, Pos2, Rect, Shape, Stroke, Vec2};
 use physics::{DVec2, Endpoint, Ramp, Scene, TieKind};
 
 use super::tools::Drag;
@@ -25,6 +25,9 @@ impl Canvas {
         if !(count.is_finite() && count < 400.0) {
             return;
         }
+        // Every line first, then every label on its patch: a line drawn after a label
+        // (a horizontal one through an x label near the bottom) would hide its minus.
+        let mut labels = Vec::new();
         let mut x = (lo.x / spacing).floor() * spacing;
         while x <= hi.x {
             let sx = self.view.to_screen(rect, DVec2::new(x, 0.0)).x;
@@ -35,8 +38,7 @@ impl Canvas {
             );
             // Not in the corner, where the y axis's labels are.
             if sx > rect.left() + 56.0 {
-                let at = Pos2::new(sx + 2.0, rect.bottom() - 2.0);
-                self.grid_label(painter, at, format_metres(x, spacing), &font);
+                labels.push((Pos2::new(sx + 2.0, rect.bottom() - 2.0), x));
             }
             x += spacing;
         }
@@ -49,10 +51,12 @@ impl Canvas {
                 stroke,
             );
             if sy < rect.bottom() - 16.0 {
-                let at = Pos2::new(rect.left() + 2.0, sy - 2.0);
-                self.grid_label(painter, at, format_metres(y, spacing), &font);
+                labels.push((Pos2::new(rect.left() + 2.0, sy - 2.0), y));
             }
             y += spacing;
+        }
+        for (at, value) in labels {
+            self.grid_label(painter, at, format_metres(value, spacing), &font);
         }
     }
 
@@ -162,14 +166,18 @@ impl Canvas {
             }
         }
         if self.overlays.trails {
-            for (i, trail) in runner.trails.iter().enumerate() {
-                let colour = particle_colour(scene, i).gamma_multiply(0.45);
-                let points: Vec<Pos2> = trail.iter().map(|p| screen(*p)).collect();
-                if points.len() > 1 {
-                    painter.add(Shape::line(points, PathStroke::new(1.5, colour)));
-                }
-            }
+            painter.add(trails_mesh(
+                runner
+                    .trails
+                    .iter()
+                    .enumerate()
+                    .map(|(i, trail)| (particle_colour(scene, i).gamma_multiply(0.45), trail)),
+                screen,
+            ));
         }
+        // Springs too short on screen for a coil are plain lines, gathered into one mesh
+        // (a cloth's thousands), laid where the springs go, under their anchors.
+        let (plain_springs, mut plain) = (painter.add(Shape::Noop), egui::Mesh::default());
         for (i, (spring, ends)) in scene.springs.iter().zip(&frame.spring_ends).enumerate() {
             let Some((a, b)) = *ends else {
                 continue;
@@ -179,13 +187,19 @@ impl Canvas {
                 w * if selected { 3.0 } else { 1.6 },
                 if selected { highlight } else { p.spring },
             );
-            painter.add(Shape::line(coil(screen(a), screen(b)), stroke));
+            let points = coil(screen(a), screen(b));
+            if let [a, b] = points[..] {
+                segment(&mut plain, (a, b), stroke);
+            } else {
+                painter.add(Shape::line(points, stroke));
+            }
             for (e, p) in [(&spring.from, a), (&spring.to, b)] {
                 if matches!(e, Endpoint::Point(_)) {
                     anchor(painter, screen(p), self.palette.ink);
                 }
             }
         }
+        painter.set(plain_springs, plain);
         for (i, (tie, ends)) in scene.ties.iter().zip(&frame.tie_ends).enumerate() {
             let Some((a, b)) = *ends else {
                 continue;
@@ -523,15 +537,100 @@ fn particle_colour(scene: &Scene, i: usize) -> Color32 {
     Color32::from_rgb(r, g, b)
 }
 
+/// The least squared distance between the points of a trail drawn, points².
+const TRAIL_SPACING: f32 = 1.5 * 1.5;
+
+/// The width of a trail, points.
+const TRAIL_WIDTH: f32 = 1.5;
+
+/// Every trail as one mesh of plain quads, `screen` taking world to screen: a thousand
+/// trails of 400 points each drawn as anti-aliased lines made the software renderer
+/// shade three times the pixels (a line's feathered edges) and the tessellator build a
+/// thousand paths a frame; the 1,000-ball pit with trails fell from 50 to 6 frames a
+/// second. Points closer than [`TRAIL_SPACING`] to the last one drawn add nothing to
+/// see (a pile at rest jitters its 400 points into one spot).
+fn trails_mesh<'a>(
+    trails: impl Iterator<Item = (Color32, &'a std::collections::VecDeque<DVec2>)>,
+    screen: impl Fn(DVec2) -> Pos2,
+) -> egui::Mesh {
+    let mut mesh = egui::Mesh::default();
+    let mut points: Vec<Pos2> = Vec::new();
+    for (colour, trail) in trails {
+        points.clear();
+        for p in trail.iter().map(|p| screen(*p)) {
+            if points
+                .last()
+                .is_none_or(|last| last.distance_sq(p) >= TRAIL_SPACING)
+            {
+                points.push(p);
+            }
+        }
+        if points.len() < 2 {
+            continue;
+        }
+        // A strip: each point's two corners across the segment from it (the last
+        // point's, the segment to it), shared by the quads on either side.
+        let first = u32::try_from(mesh.vertices.len()).unwrap_or(u32::MAX);
+        for (k, &p) in points.iter().enumerate() {
+            let d = if k + 1 < points.len() {
+                points[k + 1] - p
+            } else {
+                p - points[k - 1]
+            };
+            let side = Vec2::new(-d.y, d.x) * (0.5 * TRAIL_WIDTH / d.length());
+            mesh.colored_vertex(p - side, colour);
+            mesh.colored_vertex(p + side, colour);
+        }
+        for k in 0..u32::try_from(points.len() - 1).unwrap_or(0) {
+            let at = first + 2 * k;
+            mesh.add_triangle(at, at + 1, at + 3);
+            mesh.add_triangle(at, at + 3, at + 2);
+        }
+    }
+    mesh
+}
+
+/// A straight line from `a` to `b` with `stroke` added to `mesh` as a plain quad (no
+/// feathered edges: lines by the thousand, where each line's edges cost as much to
+/// shade in software as the line).
+fn segment(mesh: &mut egui::Mesh, (a, b): (Pos2, Pos2), stroke: Stroke) {
+    let d = b - a;
+    let length = d.length();
+    if length <= 0.0 {
+        return;
+    }
+    let side = Vec2::new(-d.y, d.x) * (0.5 * stroke.width / length);
+    let k = u32::try_from(mesh.vertices.len()).unwrap_or(u32::MAX);
+    for corner in [a - side, a + side, b + side, b - side] {
+        mesh.colored_vertex(corner, stroke.color);
+    }
+    mesh.add_triangle(k, k + 1, k + 2);
+    mesh.add_triangle(k, k + 2, k + 3);
+}
+
+/// The least length of one turn of a spring's coil on screen, points.
+const COIL_TURN: f32 = 6.0;
+
 /// The zig-zag of a spring from `a` to `b`, with a straight lead at each end.
 fn coil(a: Pos2, b: Pos2) -> Vec<Pos2> {
     let (d, length) = (b - a, (b - a).length());
     if length < 1.0 {
         return vec![a, b];
     }
+    // Up to twelve turns, each at least six points long: a spring a few points long on
+    // screen (a cloth of thousands, zoomed out) is a plain line, which is all that can
+    // be seen of it there, and a tenth of the triangles to draw.
+    #[expect(
+        clippy::cast_possible_truncation,
+        clippy::cast_sign_loss,
+        reason = "a small count of turns from a finite length"
+    )]
+    let turns = ((length * 0.8 / COIL_TURN).floor() as usize).min(12);
+    if turns < 2 {
+        return vec![a, b];
+    }
     let (along, across) = (d / length, Vec2::new(-d.y, d.x) / length);
     let width = (length * 0.08).clamp(3.0, 9.0);
-    let turns = 12;
     let lead = length * 0.1;
     let mut points = vec![a, a + along * lead];
     for k in 1..turns * 2 {
@@ -599,5 +698,48 @@ mod tests {
         outside.add(Pos2::new(90.0, 40.0), 2.0, red);
         outside.add(Pos2::new(150.0, 90.0), 2.0, red);
         assert!(outside.pixels.iter().all(|&p| p == Color32::TRANSPARENT));
+    }
+
+    /// A trail is a strip of two corners a point, half the width either side of its
+    /// path: ten points 10 apart along x make nine quads (20 corners, 54 indices) at
+    /// y ± 0.75; 400 points jittering within a pixel of one spot (a ball at rest) and a
+    /// trail of one point make none.
+    #[test]
+    fn a_trail_is_a_strip_of_quads_without_the_points_it_cannot_show() {
+        use std::collections::VecDeque;
+        let straight: VecDeque<DVec2> = (0..10)
+            .map(|k| DVec2::new(10.0 * f64::from(k), 5.0))
+            .collect();
+        let jitter: VecDeque<DVec2> = (0..400)
+            .map(|k| DVec2::new(50.0 + 0.4 * (f64::from(k) * 0.7).sin(), 5.0))
+            .collect();
+        let alone: VecDeque<DVec2> = [DVec2::new(1.0, 1.0)].into();
+        let screen = |p: DVec2| Pos2::new(p.x as f32, p.y as f32);
+        let red = Color32::RED;
+        let mesh = trails_mesh([(red, &straight)].into_iter(), screen);
+        assert_eq!((mesh.vertices.len(), mesh.indices.len()), (20, 54));
+        for (k, v) in mesh.vertices.iter().enumerate() {
+            let x = 10.0 * (k / 2) as f32;
+            let y = if k % 2 == 0 { 4.25 } else { 5.75 };
+            assert!(
+                (v.pos - Pos2::new(x, y)).length() < 1e-5,
+                "corner {k}: {:?}",
+                v.pos
+            );
+            assert_eq!(v.color, red);
+        }
+        let mesh = trails_mesh([(red, &jitter), (red, &alone)].into_iter(), screen);
+        assert!(mesh.is_empty(), "{} corners", mesh.vertices.len());
+    }
+
+    /// A spring's coil has a turn every six points at least, up to twelve: a spring 10
+    /// points long on screen (a cloth zoomed out) is a plain line, one 100 long twelve
+    /// turns (a lead, 23 corners, a lead).
+    #[test]
+    fn a_short_spring_on_screen_is_a_plain_line() {
+        let a = Pos2::new(0.0, 0.0);
+        assert_eq!(coil(a, Pos2::new(10.0, 0.0)).len(), 2);
+        assert_eq!(coil(a, Pos2::new(100.0, 0.0)).len(), 2 + 23 + 2);
+        assert_eq!(coil(a, Pos2::new(30.0, 0.0)).len(), 2 + 7 + 2, "four turns");
     }
 }

@@ -165,6 +165,8 @@ canvas-key-escape = Die Tastatur zurückgeben; Tab geht dann zum nächsten Bedie
 canvas-key-instrument-enter = Mit dem Maßband (M) oder dem Winkelmesser (A): vom ausgewählten Teilchen zu den nächsten legen, oder in die Mitte der Ansicht
 canvas-key-instrument-tab = Mit dem Maßband oder dem Winkelmesser: das Ende oder den Punkt wählen, den die Pfeiltasten bewegen
 canvas-key-instrument-move = Mit der Sonde, dem Maßband oder dem Winkelmesser: (den gewählten Punkt) um ein Zehntel eines Rasterschritts verschieben; Umschalt ein Hundertstel
+canvas-key-add = Ein Objekt zur Auswahl hinzufügen oder herausnehmen
+canvas-key-box = Auswählen, was in einem von leerer Fläche aus gezogenen Rahmen liegt
 
 ## Readouts and graphs
 readout-heading = Energie und Impuls
@@ -622,6 +624,8 @@ edit-add-series = Kurve hinzufügen
 edit-remove-series = Kurve entfernen
 edit-set-x-axis = x-Achse ändern
 edit-paste = einfügen
+edit-move-group = Auswahl verschieben
+edit-delete-group = Auswahl löschen
 edit-set-time-scale = Zeitmaßstab ändern
 edit-set-integrator = Integrator ändern
 edit-set-time-step = Zeitschritt ändern

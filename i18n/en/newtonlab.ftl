@@ -166,6 +166,8 @@ canvas-key-escape = Give the keyboard back; Tab then moves to the next control
 canvas-key-instrument-enter = With the tape (M) or the protractor (A): lay it from the selected particle to the next ones, or at the view's centre
 canvas-key-instrument-tab = With the tape or the protractor: pick the end or point the arrow keys move
 canvas-key-instrument-move = With the probe, tape or protractor: move it (its chosen point) a tenth of a grid step; Shift a hundredth
+canvas-key-add = Add an object to the selection, or take it out
+canvas-key-box = Select what lies in a box drawn from empty space
 
 ## Readouts and graphs
 readout-heading = Energy and momentum
@@ -623,6 +625,8 @@ edit-add-series = add series
 edit-remove-series = remove series
 edit-set-x-axis = set x axis
 edit-paste = paste
+edit-move-group = move selection
+edit-delete-group = delete selection
 edit-set-time-scale = set time scale
 edit-set-integrator = set integrator
 edit-set-time-step = set time step

@@ -165,6 +165,8 @@ canvas-key-escape = Devolver el teclado; Tab pasa entonces al control siguiente
 canvas-key-instrument-enter = Con la cinta (M) o el transportador (A): tenderlo desde la partícula seleccionada hasta las siguientes, o en el centro de la vista
 canvas-key-instrument-tab = Con la cinta o el transportador: elegir el extremo o el punto que mueven las flechas
 canvas-key-instrument-move = Con la sonda, la cinta o el transportador: moverlo (su punto elegido) una décima de paso; Mayús una centésima
+canvas-key-add = Añadir un objeto a la selección, o quitarlo
+canvas-key-box = Seleccionar lo que queda en un recuadro trazado desde un espacio vacío
 
 ## Readouts and graphs
 readout-heading = Energía y momento
@@ -622,6 +624,8 @@ edit-add-series = añadir serie
 edit-remove-series = quitar serie
 edit-set-x-axis = cambiar el eje x
 edit-paste = pegar
+edit-move-group = mover selección
+edit-delete-group = eliminar selección
 edit-set-time-scale = cambiar la escala de tiempo
 edit-set-integrator = cambiar el integrador
 edit-set-time-step = cambiar el paso de tiempo

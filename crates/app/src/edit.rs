@@ -48,12 +48,15 @@ pub enum Edit {
     RemoveExperiment,
     /// Objects pasted or duplicated.
     Paste,
+    /// Objects selected together, moved or deleted.
+    MoveGroup,
+    DeleteGroup,
 }
 
 impl Edit {
     /// Every edit but [`Edit::Set`]'s fields, for the tests.
     #[cfg(test)]
-    const ALL: [Self; 28] = [
+    const ALL: [Self; 30] = [
         Self::Add(Object::Particle),
         Self::Add(Object::Spring),
         Self::Add(Object::Rod),
@@ -82,6 +85,8 @@ impl Edit {
         Self::ChangeExperiment,
         Self::RemoveExperiment,
         Self::Paste,
+        Self::MoveGroup,
+        Self::DeleteGroup,
     ];
 
     /// The message of its words, but for [`Edit::Set`] (whose words name the field).
@@ -116,6 +121,8 @@ impl Edit {
             Self::ChangeExperiment => "edit-change-experiment",
             Self::RemoveExperiment => "edit-remove-experiment",
             Self::Paste => "edit-paste",
+            Self::MoveGroup => "edit-move-group",
+            Self::DeleteGroup => "edit-delete-group",
         }
     }
 

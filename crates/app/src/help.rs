@@ -19,6 +19,8 @@ const CANVAS_KEYS: &[(&str, &str)] = &[
     ("M / A + Enter", "canvas-key-instrument-enter"),
     ("M / A + Tab", "canvas-key-instrument-tab"),
     ("P / M / A + ← ↑ → ↓", "canvas-key-instrument-move"),
+    ("Shift+click", "canvas-key-add"),
+    ("Shift+drag", "canvas-key-box"),
 ];
 
 /// Shows the list while `shown`; its close button clears it.

@@ -422,12 +422,14 @@ impl App {
     pub fn undo(&mut self) {
         if self.runner.is_editing() && self.document.undo() {
             self.selection = None;
+            self.canvas.group.clear();
         }
     }
 
     pub fn redo(&mut self) {
         if self.runner.is_editing() && self.document.redo() {
             self.selection = None;
+            self.canvas.group.clear();
         }
     }
 
@@ -460,7 +462,19 @@ impl App {
     /// The selected object as scene-file text (a link with the particles it ties),
     /// kept for Paste; `None` without a selection.
     fn copy(&mut self) -> Option<String> {
-        let part = self.document.scene().extract(self.selection?.section())?;
+        let scene = self.document.scene();
+        let part = if self.canvas.group.is_empty() {
+            scene.extract(self.selection?.section())?
+        } else {
+            let sections: Vec<_> = self
+                .canvas
+                .group
+                .iter()
+                .copied()
+                .map(Selection::section)
+                .collect();
+            scene.extract_all(&sections)?
+        };
         let text = part.to_toml();
         self.clipboard = Some(text.clone());
         Some(text)
@@ -491,10 +505,27 @@ impl App {
             added = scene.paste(&part, offset);
         });
         self.selection = added.first().and_then(|&section| Selection::of(section));
+        // Several objects pasted are selected together, to be moved as one.
+        self.canvas.group = added.iter().filter_map(|&s| Selection::of(s)).collect();
+        if self.canvas.group.len() < 2 {
+            self.canvas.group.clear();
+        }
     }
 
     fn delete(&mut self) {
         if !self.runner.is_editing() {
+            return;
+        }
+        if !self.canvas.group.is_empty() {
+            let sections: Vec<_> = self
+                .canvas
+                .group
+                .drain(..)
+                .map(Selection::section)
+                .collect();
+            self.selection = None;
+            self.document
+                .apply(Edit::DeleteGroup, |scene| scene.remove_all(&sections));
             return;
         }
         if let Some(selected) = self.selection.take() {
@@ -529,6 +560,7 @@ impl App {
             self.document.mark_saved(path);
         }
         self.selection = None;
+        self.canvas.group.clear();
         self.graphs = Graphs::default();
         self.experiments.clear();
         self.forget_entries = true;

@@ -57,8 +57,8 @@ pub fn label(quantity: &Quantity) -> String {
 }
 
 /// A system quantity in words of the app's language, with its unit ("kinetic energy
-/// (J)"), for the buttons that add it; other quantities as [`label`] (their names are the
-/// scene's).
+/// (J)"), as the graphs show it (its buttons, legend and axis; the CSV keeps [`label`]);
+/// other quantities as [`label`] (their names are the scene's).
 pub fn words(quantity: &Quantity) -> String {
     let Quantity::Total(total) = quantity else {
         return label(quantity);
@@ -292,7 +292,7 @@ impl Graphs {
             if x != Quantity::Time {
                 ui.label(tr_with(
                     "graph-x-axis-now",
-                    &[("quantity", Arg::Text(&label(&x)))],
+                    &[("quantity", Arg::Text(&words(&x)))],
                 ));
                 if ui
                     .small_button(tr("graph-use-time"))
@@ -304,7 +304,7 @@ impl Graphs {
             }
             for (k, q) in series.iter().enumerate() {
                 if ui
-                    .small_button(format!("× {}", label(q)))
+                    .small_button(format!("× {}", words(q)))
                     .on_hover_text(tr("graph-remove-series-hint"))
                     .clicked()
                 {
@@ -422,7 +422,7 @@ impl Graphs {
             // this narrow leaves only "0"; a label that does not fit is still skipped.
             .custom_x_axes(vec![
                 AxisHints::new_x()
-                    .label(label(&x))
+                    .label(words(&x))
                     .label_spacing(24.0..=40.0),
             ])
             .height(220.0);
@@ -454,7 +454,7 @@ impl Graphs {
                 );
             }
             for (q, points) in &columns {
-                plot.line(Line::new(label(q), PlotPoints::from(points.clone())));
+                plot.line(Line::new(words(q), PlotPoints::from(points.clone())));
             }
             for analysis in analyses {
                 analysis.draw(plot);

@@ -136,6 +136,8 @@ impl Canvas {
         let scale = view.pixels_per_metre as f32;
         let p = &self.palette;
         let (highlight, w) = (p.highlight, p.width);
+        // Selected: the selection, or one of the objects selected together.
+        let chosen = |s: Selection| selection == Some(s) || self.group.contains(&s);
         if let Some(bounds) = scene.world.bounds {
             let box_rect =
                 Rect::from_two_pos(screen(bounds.min.to_dvec2()), screen(bounds.max.to_dvec2()));
@@ -150,7 +152,7 @@ impl Canvas {
             let (a, b) = (screen(ramp.from.to_dvec2()), screen(ramp.to.to_dvec2()));
             let width = (ramp.thickness as f32 * scale).max(2.0);
             let colour = p.ramp;
-            if selection == Some(Selection::Ramp(i)) {
+            if chosen(Selection::Ramp(i)) {
                 painter.line_segment([a, b], Stroke::new(width + 6.0, highlight));
             }
             painter.line_segment([a, b], Stroke::new(width, colour));
@@ -182,7 +184,7 @@ impl Canvas {
             let Some((a, b)) = *ends else {
                 continue;
             };
-            let selected = selection == Some(Selection::Spring(i));
+            let selected = chosen(Selection::Spring(i));
             let stroke = Stroke::new(
                 w * if selected { 3.0 } else { 1.6 },
                 if selected { highlight } else { p.spring },
@@ -204,7 +206,7 @@ impl Canvas {
             let Some((a, b)) = *ends else {
                 continue;
             };
-            let selected = selection == Some(Selection::Tie(i));
+            let selected = chosen(Selection::Tie(i));
             let colour = if selected { highlight } else { p.tie };
             match tie.kind {
                 TieKind::Rod => {
@@ -248,7 +250,7 @@ impl Canvas {
                 continue;
             }
             let colour = particle_colour(scene, i);
-            if selection == Some(Selection::Particle(i)) {
+            if chosen(Selection::Particle(i)) {
                 painter.circle_filled(centre, radius + 4.0, highlight);
             }
             if let Some(dots) = dots.as_mut().filter(|_| radius <= DOT_RADIUS) {
@@ -359,6 +361,17 @@ impl Canvas {
                         colour,
                     );
                 }
+            }
+            Some(Drag::Select { from, to }) => {
+                let area = Rect::from_two_pos(screen(from), screen(to));
+                let p = &self.palette;
+                painter.rect_filled(area, 0.0, p.highlight.gamma_multiply(0.2));
+                painter.rect_stroke(
+                    area,
+                    0.0,
+                    Stroke::new(p.width, p.highlight),
+                    egui::StrokeKind::Inside,
+                );
             }
             Some(Drag::NewRamp { from, to }) => {
                 painter.line_segment(

@@ -172,6 +172,10 @@ pub struct Canvas {
     /// Where the followed particle was at the last frame.
     followed: Option<DVec2>,
     drag: Option<Drag>,
+    /// The objects selected together (Shift+click, or a box drawn with Shift held), two
+    /// or more, the selection among them; empty otherwise. Moved, deleted, copied and
+    /// duplicated together.
+    pub group: Vec<Selection>,
     framing: Option<Framing>,
     /// The canvas rectangle of the last frame, for fitting from menus.
     pub rect: Rect,
@@ -201,6 +205,7 @@ impl Default for Canvas {
             follow: None,
             followed: None,
             drag: None,
+            group: Vec::new(),
             framing: Some(Framing::Fit),
             rect: Rect::from_min_size(Pos2::ZERO, Vec2::new(800.0, 600.0)),
             scaled_for: Vec2::ZERO,

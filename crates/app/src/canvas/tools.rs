@@ -42,6 +42,16 @@ pub(super) enum Drag {
         from: DVec2,
         to: DVec2,
     },
+    /// The objects selected together ([`Canvas::group`]), moved by whole snapping steps
+    /// from where the pointer was last.
+    Group {
+        last: DVec2,
+    },
+    /// A box drawn from empty space with Shift held: what lies in it is selected.
+    Select {
+        from: DVec2,
+        to: DVec2,
+    },
 }
 
 impl Canvas {
@@ -111,11 +121,12 @@ impl Canvas {
             self.drag = None;
             document.end_gesture();
         }
-        let (pointer, origin, free) = ui.input(|i| {
+        let (pointer, origin, free, shift) = ui.input(|i| {
             (
                 i.pointer.interact_pos(),
                 i.pointer.press_origin(),
                 i.modifiers.alt,
+                i.modifiers.shift,
             )
         });
         let pointer = pointer.unwrap_or(rect.center());
@@ -127,7 +138,9 @@ impl Canvas {
             // Where the pointer went down, not where it is once egui calls it a drag.
             let start = origin.unwrap_or(pointer);
             self.drag = match self.tool {
-                Tool::Select => Some(self.press_select(rect, document, frame, selection, start)),
+                Tool::Select => {
+                    Some(self.press_select(rect, document, frame, (selection, shift), start))
+                }
                 tool @ (Tool::Spring | Tool::Rod | Tool::String) => {
                     match self.hit(rect, document.scene(), frame, start) {
                         Some(Selection::Particle(from)) => Some(Drag::NewLink {
@@ -158,8 +171,37 @@ impl Canvas {
                     let position = self.snapped(rect, document.scene(), at, free);
                     *selection = Some(self.add_particle(document, position));
                 }
-                _ => *selection = self.hit(rect, document.scene(), frame, at),
+                Tool::Select if shift => {
+                    let hit = self.hit(rect, document.scene(), frame, at);
+                    self.toggle(hit, selection);
+                }
+                _ => {
+                    self.group.clear();
+                    *selection = self.hit(rect, document.scene(), frame, at);
+                }
             }
+        }
+    }
+
+    /// Shift+click: `hit` joins the objects selected together, or leaves them if it was
+    /// among them; the selection (what the inspector shows) is the last one added. One
+    /// object left is a plain selection.
+    fn toggle(&mut self, hit: Option<Selection>, selection: &mut Option<Selection>) {
+        let Some(hit) = hit else {
+            return;
+        };
+        if self.group.is_empty() {
+            self.group.extend(*selection);
+        }
+        if let Some(k) = self.group.iter().position(|s| *s == hit) {
+            self.group.remove(k);
+            *selection = self.group.last().copied();
+        } else {
+            self.group.push(hit);
+            *selection = Some(hit);
+        }
+        if self.group.len() < 2 {
+            self.group.clear();
         }
     }
 
@@ -228,11 +270,11 @@ impl Canvas {
     /// Select: a press on a velocity arrow's tip, a ramp's end, a particle or a ramp
     /// grabs it; on empty space it pans.
     fn press_select(
-        &self,
+        &mut self,
         rect: Rect,
         document: &mut Document,
         frame: &Frame,
-        selection: &mut Option<Selection>,
+        (selection, shift): (&mut Option<Selection>, bool),
         start: Pos2,
     ) -> Drag {
         let scene = document.scene();
@@ -268,7 +310,20 @@ impl Canvas {
                 Selection::Ramp(index),
             )
         } else {
-            match self.hit(rect, scene, frame, start) {
+            let hit = self.hit(rect, scene, frame, start);
+            if let Some(grabbed) = hit.filter(|hit| {
+                self.group.contains(hit)
+                    && matches!(hit, Selection::Particle(_) | Selection::Ramp(_))
+            }) {
+                *selection = Some(grabbed);
+                document.begin_gesture(Edit::MoveGroup);
+                return Drag::Group { last: at };
+            }
+            if hit.is_none() && shift {
+                return Drag::Select { from: at, to: at };
+            }
+            self.group.clear();
+            match hit {
                 Some(Selection::Particle(index)) => (
                     Drag::Particle {
                         index,
@@ -340,6 +395,15 @@ impl Canvas {
             }
             Some(Drag::NewLink { tip, .. }) => *tip = world,
             Some(Drag::NewRamp { to, .. }) => *to = snap(world),
+            Some(Drag::Group { last }) => {
+                let delta = snap(world) - snap(*last);
+                *last = world;
+                if delta != DVec2::ZERO {
+                    let group = &self.group;
+                    document.apply(Edit::MoveGroup, |scene| move_group(scene, group, delta));
+                }
+            }
+            Some(Drag::Select { to, .. }) => *to = world,
             None => {}
         }
     }
@@ -379,6 +443,13 @@ impl Canvas {
             Some(Drag::NewRamp { from, to }) => {
                 if from.distance(to) > tolerance {
                     *selection = Some(add_ramp(document, from, to));
+                }
+            }
+            Some(Drag::Select { from, to }) => {
+                self.group = in_box(document.scene(), frame, (from.min(to), from.max(to)));
+                *selection = self.group.first().copied();
+                if self.group.len() < 2 {
+                    self.group.clear();
                 }
             }
             _ => document.end_gesture(),
@@ -455,9 +526,52 @@ impl Drag {
             | Self::Velocity { index }
             | Self::NewLink { from: index, .. } => index >= scene.particles.len(),
             Self::Ramp { index, .. } | Self::RampEnd { index, .. } => index >= scene.ramps.len(),
-            Self::Pan | Self::NewRamp { .. } => false,
+            Self::Pan | Self::NewRamp { .. } | Self::Group { .. } | Self::Select { .. } => false,
         }
     }
+}
+
+/// Moves the particles and ramps of `group` by `delta` metres (the springs, rods and
+/// strings among them go with their particles); objects no longer in the scene are
+/// passed over.
+fn move_group(scene: &mut Scene, group: &[Selection], delta: DVec2) {
+    for selected in group {
+        match *selected {
+            Selection::Particle(i) => {
+                if let Some(particle) = scene.particles.get_mut(i) {
+                    particle.position =
+                        keep_form(particle.position, particle.position.to_dvec2() + delta);
+                }
+            }
+            Selection::Ramp(i) => {
+                if let Some(ramp) = scene.ramps.get_mut(i) {
+                    ramp.from = keep_form(ramp.from, ramp.from.to_dvec2() + delta);
+                    ramp.to = keep_form(ramp.to, ramp.to.to_dvec2() + delta);
+                }
+            }
+            Selection::Spring(_) | Selection::Tie(_) => {}
+        }
+    }
+}
+
+/// What lies wholly in the box from `min` to `max` (world): particles by their centres,
+/// ramps by both ends, springs, rods and strings by both ends, in that order.
+fn in_box(scene: &Scene, frame: &Frame, (min, max): (DVec2, DVec2)) -> Vec<Selection> {
+    let inside = |p: DVec2| p.cmpge(min).all() && p.cmple(max).all();
+    let both = |ends: &Option<(DVec2, DVec2)>| ends.is_some_and(|(a, b)| inside(a) && inside(b));
+    let particles = (0..scene.particles.len())
+        .filter(|&i| frame.positions.get(i).is_some_and(|p| inside(*p)))
+        .map(Selection::Particle);
+    let ramps = (0..scene.ramps.len())
+        .filter(|&i| inside(scene.ramps[i].from.to_dvec2()) && inside(scene.ramps[i].to.to_dvec2()))
+        .map(Selection::Ramp);
+    let springs = (0..frame.spring_ends.len())
+        .filter(|&i| both(&frame.spring_ends[i]))
+        .map(Selection::Spring);
+    let ties = (0..frame.tie_ends.len())
+        .filter(|&i| both(&frame.tie_ends[i]))
+        .map(Selection::Tie);
+    particles.chain(ramps).chain(springs).chain(ties).collect()
 }
 
 /// A new value for a vector, in the form (Cartesian or polar) it was typed in.

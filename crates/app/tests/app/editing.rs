@@ -420,3 +420,123 @@ fn duplicate_copy_and_paste_add_objects_beside_their_originals() {
     );
     harness.get_by_label_contains("Nothing pasted");
 }
+
+/// Three balls on a weightless stage at `x` = −4, 0 and 4 m, where the screen shows them.
+fn three_balls() -> (Harness<'static, App>, [egui::Pos2; 3]) {
+    let mut scene = Scene::new().with_world(World::weightless());
+    for (name, x) in [("a", -4.0), ("b", 0.0), ("c", 4.0)] {
+        scene = scene.with_particle(Particle::new(name, 1.0).position([x, 0.0]));
+    }
+    let harness = harness(App::new(scene));
+    let app = harness.state();
+    let at = |x: f64| {
+        app.canvas
+            .view
+            .to_screen(app.canvas.rect, DVec2::new(x, 0.0))
+    };
+    let places = [at(-4.0), at(0.0), at(4.0)];
+    (harness, places)
+}
+
+/// `harness` with Shift held through `gesture`.
+fn with_shift(
+    harness: &mut Harness<'static, App>,
+    gesture: impl FnOnce(&mut Harness<'static, App>),
+) {
+    harness.event(egui::Event::ModifiersChanged(Modifiers::SHIFT));
+    harness.run();
+    gesture(harness);
+    harness.event(egui::Event::ModifiersChanged(Modifiers::NONE));
+    harness.run();
+}
+
+/// The particles' names, in order.
+fn particle_names(harness: &Harness<'static, App>) -> Vec<String> {
+    let scene = harness.state().document.scene();
+    scene.particles.iter().map(|p| p.name.clone()).collect()
+}
+
+/// A drag with the primary button from `from` to `to`.
+fn drag_across(harness: &mut Harness<'static, App>, from: egui::Pos2, to: egui::Pos2) {
+    harness.hover_at(from);
+    harness.run();
+    harness.drag_at(from);
+    harness.run();
+    harness.hover_at(to);
+    harness.run();
+    harness.drop_at(to);
+    harness.run();
+}
+
+/// Multi-select: a click selects a ball, Shift+click adds another (and a third in and
+/// out again); dragging one of them moves both by the same step, as one undo step;
+/// Delete removes both, as one.
+#[test]
+fn objects_selected_with_shift_move_and_go_together() {
+    let (mut harness, [a, b, c]) = three_balls();
+    click_canvas(&mut harness, a);
+    with_shift(&mut harness, |h| click_canvas(h, b));
+    assert_eq!(
+        harness.state().canvas.group,
+        [Selection::Particle(0), Selection::Particle(1)]
+    );
+    assert_eq!(harness.state().selection, Some(Selection::Particle(1)));
+    with_shift(&mut harness, |h| click_canvas(h, c));
+    with_shift(&mut harness, |h| click_canvas(h, c));
+    assert_eq!(
+        harness.state().canvas.group.len(),
+        2,
+        "c in, then out again"
+    );
+
+    // Dragging b moves a and b together; c stays.
+    drag_across(&mut harness, b, b + egui::vec2(0.0, -60.0));
+    let scene = harness.state().document.scene().clone();
+    let moved = |i: usize, x: f64| scene.particles[i].position.to_dvec2() - DVec2::new(x, 0.0);
+    assert!(moved(0, -4.0).y > 0.5, "a moved up: {}", moved(0, -4.0));
+    assert_eq!(moved(0, -4.0), moved(1, 0.0), "by the same step");
+    assert_eq!(moved(2, 4.0), DVec2::ZERO, "c stays");
+    assert_eq!(harness.state().document.undo_edit(), Some(Edit::MoveGroup));
+
+    harness.key_press(Key::Delete);
+    harness.run();
+    assert_eq!(particle_names(&harness), ["c"], "both deleted");
+    assert_eq!(
+        harness.state().document.undo_edit(),
+        Some(Edit::DeleteGroup)
+    );
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::Z);
+    harness.run();
+    assert_eq!(particle_names(&harness).len(), 3, "undone as one");
+    assert!(harness.state().canvas.group.is_empty());
+}
+
+/// A box drawn from empty space with Shift held selects what lies in it; Duplicate
+/// copies both, the copies selected together; a plain click leaves one selected.
+#[test]
+fn a_box_drawn_with_shift_selects_what_lies_in_it() {
+    let (mut harness, [a, b, c]) = three_balls();
+    let (from, to) = (a + egui::vec2(-30.0, -30.0), b + egui::vec2(20.0, 30.0));
+    with_shift(&mut harness, |h| drag_across(h, from, to));
+    assert_eq!(
+        harness.state().canvas.group,
+        [Selection::Particle(0), Selection::Particle(1)]
+    );
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::D);
+    harness.run();
+    assert_eq!(
+        particle_names(&harness),
+        ["a", "b", "c", "a 2", "b 2"],
+        "both duplicated"
+    );
+    assert_eq!(
+        harness.state().canvas.group.len(),
+        2,
+        "the copies selected together"
+    );
+    click_canvas(&mut harness, c);
+    assert!(
+        harness.state().canvas.group.is_empty(),
+        "a plain click: one selected"
+    );
+}

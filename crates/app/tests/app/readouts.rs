@@ -372,8 +372,9 @@ fn earlier_runs_are_kept_for_the_graphs_until_forgotten() {
     assert!(harness.state().runner.earlier.is_empty(), "forgotten");
 }
 
-/// The buttons that add a system quantity to a graph say it in words of the language,
-/// not as the CSV column: "kinetic energy (J)", "kinetische Energie (J)".
+/// The buttons that add a system quantity to a graph, and those that take one off it,
+/// say it in words of the language, not as the CSV column: "kinetic energy (J)",
+/// "× kinetic energy (J)", "kinetische Energie (J)".
 #[test]
 fn system_quantities_are_offered_in_words() {
     use newtonlab_app::i18n::{Language, set_language};
@@ -387,6 +388,16 @@ fn system_quantities_are_offered_in_words() {
     assert!(
         harness
             .query_all_by_label("kinetic_energy (J)")
+            .next()
+            .is_none()
+    );
+    let mut marbles =
+        crate::common::tall_harness(App::new(crate::common::example_scene("marble-run")));
+    marbles.run();
+    marbles.get_by_label("× kinetic energy (J)");
+    assert!(
+        marbles
+            .query_all_by_label("× kinetic_energy (J)")
             .next()
             .is_none()
     );

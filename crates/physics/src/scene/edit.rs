@@ -45,6 +45,52 @@ impl Scene {
         }
     }
 
+    /// Removes the objects of `sections` ([`Self::remove`] of each, found by name as the
+    /// lists close up; a link a removed particle took with it is gone already).
+    pub fn remove_all(&mut self, sections: &[Section]) {
+        let named: Vec<(Section, String)> = sections
+            .iter()
+            .filter_map(|&section| {
+                let name = match section {
+                    Section::Particle(i) => &self.particles.get(i)?.name,
+                    Section::Spring(i) => &self.springs.get(i)?.name,
+                    Section::Tie(i) => &self.ties.get(i)?.name,
+                    Section::Ramp(i) => &self.ramps.get(i)?.name,
+                    _ => return None,
+                };
+                Some((section, name.clone()))
+            })
+            .collect();
+        for (section, name) in named {
+            let now = match section {
+                Section::Particle(_) => self
+                    .particles
+                    .iter()
+                    .position(|p| p.name == name)
+                    .map(Section::Particle),
+                Section::Spring(_) => self
+                    .springs
+                    .iter()
+                    .position(|s| s.name == name)
+                    .map(Section::Spring),
+                Section::Tie(_) => self
+                    .ties
+                    .iter()
+                    .position(|t| t.name == name)
+                    .map(Section::Tie),
+                Section::Ramp(_) => self
+                    .ramps
+                    .iter()
+                    .position(|r| r.name == name)
+                    .map(Section::Ramp),
+                _ => None,
+            };
+            if let Some(section) = now {
+                self.remove(section);
+            }
+        }
+    }
+
     /// Removes the object of `section`. A particle takes with it the springs attached to
     /// it and the graph series that plot it (a phase plot against it goes back to time).
     pub fn remove(&mut self, section: Section) {
@@ -109,6 +155,25 @@ impl Scene {
         }
         part.particles.dedup_by(|a, b| a.name == b.name);
         Some(part)
+    }
+
+    /// The objects of `sections` together, as one scene of their own ([`Self::extract`]
+    /// of each, a particle brought by several links taken once); `None` when none of them
+    /// is an object of this scene.
+    pub fn extract_all(&self, sections: &[Section]) -> Option<Scene> {
+        let mut parts = sections.iter().filter_map(|&section| self.extract(section));
+        let mut whole = parts.next()?;
+        for part in parts {
+            for particle in part.particles {
+                if !whole.particles.iter().any(|p| p.name == particle.name) {
+                    whole.particles.push(particle);
+                }
+            }
+            whole.springs.extend(part.springs);
+            whole.ties.extend(part.ties);
+            whole.ramps.extend(part.ramps);
+        }
+        Some(whole)
     }
 
     /// Adds `other`'s particles, springs, rods, strings and ramps to this scene (not its
@@ -237,6 +302,34 @@ mod tests {
     /// A rod copied from a pendulum is a pendulum: pasted into the same scene, its bob
     /// comes along renamed, the rod ties the new bob, and both are moved by the offset;
     /// the scene is valid.
+    /// Objects removed together are found by name as the lists close up: A (which takes
+    /// its spring), the spring again (gone already) and C, whatever the order asked.
+    #[test]
+    fn objects_removed_together_are_each_the_one_asked_for() {
+        let mut scene = two_balls().with_particle(Particle::new("C", 1.0).position([2.0, 0.0]));
+        scene.remove_all(&[
+            Section::Particle(0),
+            Section::Spring(0),
+            Section::Particle(2),
+        ]);
+        let names: Vec<&str> = scene.particles.iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, ["B"]);
+        assert!(scene.springs.is_empty());
+    }
+
+    /// Objects copied together make one scene, a particle two links tie taken once.
+    #[test]
+    fn objects_copied_together_make_one_scene() {
+        let scene = two_balls().with_spring(Spring::new("s2", "B", "A", 2.0, 1.0));
+        let part = scene
+            .extract_all(&[Section::Spring(0), Section::Spring(1)])
+            .expect("objects");
+        let names: Vec<&str> = part.particles.iter().map(|p| p.name.as_str()).collect();
+        assert_eq!(names, ["A", "B"]);
+        assert_eq!(part.springs.len(), 2);
+        assert!(scene.extract_all(&[]).is_none());
+    }
+
     #[test]
     fn a_copied_rod_pastes_as_a_new_pendulum() {
         let scene = Scene::new()

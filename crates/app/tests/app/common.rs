@@ -58,6 +58,18 @@ pub fn click_canvas(harness: &mut Harness<'_, App>, at: Pos2) {
     harness.run();
 }
 
+/// A drag with the primary button on the canvas from `from` to `to`.
+pub fn drag_across(harness: &mut Harness<'_, App>, from: Pos2, to: Pos2) {
+    harness.hover_at(from);
+    harness.run();
+    harness.drag_at(from);
+    harness.run();
+    harness.hover_at(to);
+    harness.run();
+    harness.drop_at(to);
+    harness.run();
+}
+
 /// A ball dropped from rest in the uniform field, with a graph of its height.
 pub fn dropped_ball() -> Scene {
     let mut scene = Scene::new()

@@ -7,7 +7,7 @@ use newtonlab_app::edit::Edit;
 use newtonlab_app::{Action, App, Selection};
 use physics::{DVec2, Graph, Particle, Scene, TieKind, World};
 
-use crate::common::{click_canvas, csv_rows, harness, one_ball, play_frames};
+use crate::common::{click_canvas, csv_rows, drag_across, harness, one_ball, play_frames};
 
 #[test]
 fn clicking_the_canvas_places_a_particle_where_clicked() {
@@ -454,18 +454,6 @@ fn with_shift(
 fn particle_names(harness: &Harness<'static, App>) -> Vec<String> {
     let scene = harness.state().document.scene();
     scene.particles.iter().map(|p| p.name.clone()).collect()
-}
-
-/// A drag with the primary button from `from` to `to`.
-fn drag_across(harness: &mut Harness<'static, App>, from: egui::Pos2, to: egui::Pos2) {
-    harness.hover_at(from);
-    harness.run();
-    harness.drag_at(from);
-    harness.run();
-    harness.hover_at(to);
-    harness.run();
-    harness.drop_at(to);
-    harness.run();
 }
 
 /// Multi-select: a click selects a ball, Shift+click adds another (and a third in and

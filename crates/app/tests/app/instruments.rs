@@ -1,6 +1,6 @@
 //! The instruments: tape measure, probe, field view, stopwatch, protractor.
 
-use egui::{Key, Pos2};
+use egui::Key;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use newtonlab_app::App;
@@ -230,14 +230,7 @@ fn a_tape_laid_by_hand_snaps_to_the_pivot_and_times_a_period() {
     let pivot = view.to_screen(rect, DVec2::ZERO);
     let below = view.to_screen(rect, DVec2::new(0.0, -3.0));
     let (from, to) = (pivot + egui::vec2(3.0, -2.5), below);
-    harness.hover_at(from);
-    harness.run();
-    harness.drag_at(from);
-    harness.run();
-    harness.hover_at(to);
-    harness.run();
-    harness.drop_at(to);
-    harness.run();
+    crate::common::drag_across(&mut harness, from, to);
     let tape = harness.state().canvas.instruments.tape.expect("laid");
     assert_eq!(tape.0, Mark::Point(DVec2::ZERO), "snapped to the pivot");
     harness.key_press(Key::T);
@@ -348,18 +341,8 @@ fn the_protractor_reads_the_angle_between_its_arms() {
         vertex + egui::vec2(200.0, 0.0),
         vertex + egui::vec2(100.0, -100.0),
     );
-    let drag = |harness: &mut Harness<'_, App>, from: Pos2, to: Pos2| {
-        harness.hover_at(from);
-        harness.run();
-        harness.drag_at(from);
-        harness.run();
-        harness.hover_at(to);
-        harness.run();
-        harness.drop_at(to);
-        harness.run();
-    };
-    drag(&mut harness, vertex, first);
-    drag(&mut harness, vertex, second);
+    crate::common::drag_across(&mut harness, vertex, first);
+    crate::common::drag_across(&mut harness, vertex, second);
     let protractor = harness.state().canvas.instruments.protractor.expect("laid");
     assert!(protractor.2.is_some(), "both arms");
     let angle = protractor_reading(protractor, &[DVec2::ZERO]).expect("a reading");

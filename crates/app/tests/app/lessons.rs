@@ -56,15 +56,7 @@ impl Lesson {
 
     /// Drags on the canvas from `from` to `to` (one action).
     fn drag(&mut self, from: egui::Pos2, to: egui::Pos2) {
-        let h = &mut self.harness;
-        h.hover_at(from);
-        h.run();
-        h.drag_at(from);
-        h.run();
-        h.hover_at(to);
-        h.run();
-        h.drop_at(to);
-        h.run();
+        crate::common::drag_across(&mut self.harness, from, to);
         self.actions += 1;
     }
 

@@ -755,4 +755,35 @@ mod tests {
         assert_eq!(coil(a, Pos2::new(100.0, 0.0)).len(), 2 + 23 + 2);
         assert_eq!(coil(a, Pos2::new(30.0, 0.0)).len(), 2 + 7 + 2, "four turns");
     }
+
+    /// Every grid label is drawn after every grid line, on its patch of background, so
+    /// that no line crosses a label (a line through "−2 m" hid its minus sign).
+    #[test]
+    fn grid_labels_lie_over_every_grid_line() {
+        let ctx = egui::Context::default();
+        let mut canvas = Canvas::default();
+        canvas.view.center = DVec2::new(-3.0, -2.0);
+        let output = ctx.run_ui(egui::RawInput::default(), |ui| {
+            let rect = Rect::from_min_size(Pos2::new(10.0, 10.0), Vec2::new(400.0, 300.0));
+            canvas.draw_grid(ui.painter(), rect);
+        });
+        let kinds: Vec<bool> = output
+            .shapes
+            .iter()
+            .filter_map(|clipped| match &clipped.shape {
+                Shape::LineSegment { .. } => Some(false),
+                Shape::Text(_) => Some(true),
+                _ => None,
+            })
+            .collect();
+        let lines = kinds.iter().filter(|text| !**text).count();
+        assert!(
+            lines > 4 && kinds.len() > lines,
+            "lines and labels: {kinds:?}"
+        );
+        assert!(
+            kinds.iter().skip(lines).all(|text| *text),
+            "every label after every line: {kinds:?}"
+        );
+    }
 }

@@ -438,9 +438,9 @@ impl Canvas {
         if response.has_focus() {
             // Visible focus: the keyboard acts on the canvas (Escape leaves it).
             painter.rect_stroke(
-                rect.shrink(1.0),
+                rect,
                 0.0,
-                ui.visuals().selection.stroke,
+                self.palette.focus_stroke(),
                 egui::StrokeKind::Inside,
             );
         }

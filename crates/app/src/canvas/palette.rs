@@ -27,6 +27,8 @@ pub struct Palette {
     pub tie: Color32,
     /// Behind the selected object.
     pub highlight: Color32,
+    /// The frame around the canvas while it has the keyboard's focus.
+    pub focus: Color32,
     /// The velocity, acceleration and force arrows.
     pub velocity: Color32,
     /// See `velocity`.
@@ -57,6 +59,7 @@ impl Palette {
         spring: Color32::from_rgb(70, 70, 90),
         tie: Color32::from_rgb(90, 75, 60),
         highlight: Color32::from_rgb(255, 196, 0),
+        focus: Color32::from_rgb(30, 90, 200),
         velocity: Color32::from_rgb(40, 150, 70),
         acceleration: Color32::from_rgb(230, 130, 30),
         force: Color32::from_rgb(200, 40, 40),
@@ -78,6 +81,7 @@ impl Palette {
         spring: Color32::BLACK,
         tie: Color32::from_rgb(60, 40, 20),
         highlight: Color32::from_rgb(0, 60, 200),
+        focus: Color32::BLACK,
         velocity: Color32::from_rgb(0, 110, 40),
         acceleration: Color32::from_rgb(160, 70, 0),
         force: Color32::from_rgb(180, 0, 0),
@@ -87,6 +91,13 @@ impl Palette {
         outline: Some(Color32::BLACK),
         width: 1.5,
     };
+
+    /// The canvas's focus frame: three points wide (times the palette's width), in a
+    /// colour that stands out from the canvas by WCAG's 3:1 for a focus indicator (the
+    /// theme's selection stroke was one pale pixel).
+    pub fn focus_stroke(&self) -> egui::Stroke {
+        egui::Stroke::new(3.0 * self.width, self.focus)
+    }
 
     /// The palette for the theme `ui` draws with: high contrast when the theme forces a
     /// text colour, as the high-contrast theme does (`settings::high_contrast_visuals`).
@@ -151,5 +162,17 @@ mod tests {
             "the usual yellow is faint"
         );
         assert!((contrast(Color32::BLACK, Color32::WHITE) - 21.0).abs() < 1e-3);
+    }
+
+    /// The focus frame is at least two points wide and stands out from the canvas by
+    /// 3:1 or more, in both palettes.
+    #[test]
+    fn the_focus_frame_can_be_seen() {
+        for palette in [Palette::USUAL, Palette::HIGH_CONTRAST] {
+            let stroke = palette.focus_stroke();
+            assert!(stroke.width >= 2.0, "{}", stroke.width);
+            let ratio = contrast(stroke.color, palette.background);
+            assert!(ratio >= 3.0, "{ratio:.2}:1");
+        }
     }
 }

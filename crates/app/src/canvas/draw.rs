@@ -556,12 +556,11 @@ const TRAIL_SPACING: f32 = 1.5 * 1.5;
 /// The width of a trail, points.
 const TRAIL_WIDTH: f32 = 1.5;
 
-/// Every trail as one mesh of plain quads, `screen` taking world to screen: a thousand
-/// trails of 400 points each drawn as anti-aliased lines made the software renderer
-/// shade three times the pixels (a line's feathered edges) and the tessellator build a
-/// thousand paths a frame; the 1,000-ball pit with trails fell from 50 to 6 frames a
-/// second. Points closer than [`TRAIL_SPACING`] to the last one drawn add nothing to
-/// see (a pile at rest jitters its 400 points into one spot).
+/// Every trail as one mesh of plain strips, `screen` taking world to screen: a thousand
+/// trails of 400 points each as anti-aliased lines would make a software renderer shade
+/// three times the pixels (a line's feathered edges) and the tessellator build a
+/// thousand paths a frame. Points closer than [`TRAIL_SPACING`] to the last one drawn
+/// add nothing to see (a pile at rest jitters its 400 points into one spot).
 fn trails_mesh<'a>(
     trails: impl Iterator<Item = (Color32, &'a std::collections::VecDeque<DVec2>)>,
     screen: impl Fn(DVec2) -> Pos2,

@@ -94,7 +94,7 @@ impl Palette {
 
     /// The canvas's focus frame: three points wide (times the palette's width), in a
     /// colour that stands out from the canvas by WCAG's 3:1 for a focus indicator (the
-    /// theme's selection stroke was one pale pixel).
+    /// theme's selection stroke, one pale pixel, does not).
     pub fn focus_stroke(&self) -> egui::Stroke {
         egui::Stroke::new(3.0 * self.width, self.focus)
     }

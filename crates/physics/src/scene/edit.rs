@@ -50,16 +50,7 @@ impl Scene {
     pub fn remove_all(&mut self, sections: &[Section]) {
         let named: Vec<(Section, String)> = sections
             .iter()
-            .filter_map(|&section| {
-                let name = match section {
-                    Section::Particle(i) => &self.particles.get(i)?.name,
-                    Section::Spring(i) => &self.springs.get(i)?.name,
-                    Section::Tie(i) => &self.ties.get(i)?.name,
-                    Section::Ramp(i) => &self.ramps.get(i)?.name,
-                    _ => return None,
-                };
-                Some((section, name.clone()))
-            })
+            .filter_map(|&section| Some((section, self.name_of(section)?.to_owned())))
             .collect();
         for (section, name) in named {
             let now = match section {

@@ -2,16 +2,18 @@
 //! validation and saved in the same schema.
 //!
 //! Loading never stops at the first problem. The text is parsed into a small tree that
-//! remembers where every key and value stands in the file; a reader walks it, noting
-//! every unknown key, wrong type and missing field; the scene it builds is then checked by
-//! [`Scene::validate`] (the same rules the app uses), and each problem gets the line and
-//! column of the value it is about. JSON has no positions for values (`serde_json` keeps
-//! none), so only its syntax errors carry a line and column.
+//! remembers where every key and value stands in the file (JSON's ranges too); a reader
+//! walks it, noting every unknown key, wrong type and missing field; the scene it builds is
+//! then checked by [`Scene::validate`] (the same rules the app uses), and each problem gets
+//! the line and column of the value it is about, found in the tree.
 //!
-//! One job a file: `tree.rs` parses the text into that tree, `read.rs` reads the scene
-//! from it, `write.rs` writes a scene back; what can be wrong is `super::error`.
+//! One job a file: `tree.rs` parses the text into that tree, `slices.rs` parses a long TOML
+//! file a slice at a time (so that memory stays near the tree's own size), `read.rs` reads
+//! the scene from the tree, `write.rs` writes a scene back; what can be wrong is
+//! `super::error`.
 
 mod read;
+mod slices;
 mod tree;
 mod write;
 
@@ -55,7 +57,7 @@ impl Scene {
         };
         let mut reader = Reader::new(text);
         let scene = reader.scene(&root);
-        reader.finish(scene)
+        reader.finish(scene, &root)
     }
 
     /// Loads a TOML scene.

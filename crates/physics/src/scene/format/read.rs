@@ -1,8 +1,7 @@
 //! Reading a scene from the parse tree: every unknown key, wrong type and missing field
 //! noted with its place, then the scene's own checks, and "did you mean" for a misspelt key.
 
-use std::collections::{HashMap, HashSet};
-use std::ops::Range;
+use std::collections::HashSet;
 
 use super::VERSION;
 use super::tree::{Entry, Lines, Node, Span, Value};
@@ -18,8 +17,6 @@ use crate::{Integrator, Quantity};
 pub(super) struct Reader<'t> {
     pub(super) text: &'t str,
     pub(super) problems: Vec<(Span, Problem)>,
-    /// Where each field's value stands, to place validation problems.
-    pub(super) spans: HashMap<FieldRef, Range<usize>>,
     /// Fields that already have a problem: validation would only repeat it.
     pub(super) failed: HashSet<FieldRef>,
     /// Where the text's lines start, found at the first problem (a file with 20,000
@@ -32,7 +29,7 @@ pub(super) struct Reader<'t> {
 
 /// One table being read: which keys were used, for reporting unknown ones.
 pub(super) struct Table<'n> {
-    pub(super) entries: &'n [Entry],
+    pub(super) entries: &'n [Entry<'n>],
     /// Where the table starts, for problems about keys it lacks.
     pub(super) span: Span,
     pub(super) used: Vec<bool>,
@@ -41,7 +38,7 @@ pub(super) struct Table<'n> {
 }
 
 impl<'n> Table<'n> {
-    pub(super) fn get(&mut self, key: &str) -> Option<&'n Node> {
+    pub(super) fn get(&mut self, key: &str) -> Option<&'n Node<'n>> {
         let index = self.entries.iter().position(|e| e.key == key)?;
         self.used[index] = true;
         Some(&self.entries[index].node)
@@ -90,7 +87,6 @@ impl<'t> Reader<'t> {
         Self {
             text,
             problems: Vec::new(),
-            spans: HashMap::new(),
             failed: HashSet::new(),
             lines: None,
             failed_sections: HashSet::new(),
@@ -127,13 +123,6 @@ impl<'t> Reader<'t> {
         label: String,
     ) -> Option<Table<'n>> {
         if let Value::Table(entries) = &node.value {
-            // Where the section stands: a problem of a field it leaves out (a rod's
-            // length taken from the distance) is placed here.
-            if let Some(span) = node.span.clone() {
-                self.spans
-                    .entry(FieldRef { section, field: "" })
-                    .or_insert(span);
-            }
             Some(Table {
                 entries,
                 span: node.span.clone(),
@@ -188,9 +177,6 @@ impl<'t> Reader<'t> {
             section: table.section,
             field: key,
         };
-        if let Some(span) = &node.span {
-            self.spans.insert(field, span.clone());
-        }
         match read(node) {
             Ok(value) => Some(value),
             Err(reason) => {
@@ -238,7 +224,7 @@ impl<'t> Reader<'t> {
                     section: Section::Root,
                     field: "version",
                 };
-                let span = self.spans.get(&field).cloned();
+                let span = value_span(top.entries, field.field);
                 self.problem(
                     span,
                     None,
@@ -262,11 +248,15 @@ impl<'t> Reader<'t> {
         if let Some(node) = top.get("simulation") {
             scene.simulation = self.settings(node);
         }
-        for (i, node) in self.items(&mut top, "particle").iter().enumerate() {
+        let particles = self.items(&mut top, "particle");
+        scene.particles.reserve_exact(particles.len());
+        for (i, node) in particles.iter().enumerate() {
             let particle = self.particle(node, i);
             scene.particles.push(particle);
         }
-        for (i, node) in self.items(&mut top, "spring").iter().enumerate() {
+        let springs = self.items(&mut top, "spring");
+        scene.springs.reserve_exact(springs.len());
+        for (i, node) in springs.iter().enumerate() {
             let spring = self.spring(node, i);
             scene.springs.push(spring);
         }
@@ -296,7 +286,7 @@ impl<'t> Reader<'t> {
     }
 
     /// The entries of an array of tables such as `[[particle]]`.
-    pub(super) fn items<'n>(&mut self, top: &mut Table<'n>, key: &str) -> &'n [Node] {
+    pub(super) fn items<'n>(&mut self, top: &mut Table<'n>, key: &str) -> &'n [Node<'n>] {
         match top.get(key) {
             None => &[],
             Some(Node {
@@ -498,7 +488,7 @@ impl<'t> Reader<'t> {
             section: table.section,
             field: key,
         };
-        let span = self.spans.get(&field).cloned();
+        let span = value_span(table.entries, key);
         let message = format!("{}: {key}: {reason}", table.label);
         self.problem(span, Some(field), message);
         // The field's other names are still checked: every problem is listed at once.
@@ -528,19 +518,13 @@ impl<'t> Reader<'t> {
 
     /// Adds the validation problems (with positions) to the reading problems and returns
     /// the scene if there are none.
-    pub(super) fn finish(mut self, scene: Scene) -> Result<Scene, LoadError> {
+    pub(super) fn finish(mut self, scene: Scene, root: &Node) -> Result<Scene, LoadError> {
         for mut problem in scene.validate() {
             let Some(field) = problem.field else { continue };
             if self.failed.contains(&field) || self.failed_sections.contains(&field.section) {
                 continue;
             }
-            let span = self.spans.get(&field).cloned().or_else(|| {
-                let whole = FieldRef {
-                    section: field.section,
-                    field: "",
-                };
-                self.spans.get(&whole).cloned()
-            });
+            let span = place(root, field);
             if let Some(span) = &span {
                 let (line, column) = self.line_column(span.start);
                 problem.line = Some(line);
@@ -557,6 +541,63 @@ impl<'t> Reader<'t> {
         Err(LoadError {
             problems: self.problems.into_iter().map(|(_, p)| p).collect(),
         })
+    }
+}
+
+/// Where a field's value stands in the file, or its section where the file leaves the field
+/// out (a rod's length taken from the distance): found in the tree when a check of the
+/// scene has a problem, rather than noted for every field read.
+fn place(root: &Node, field: FieldRef) -> Span {
+    let section = section_node(root, field.section)?;
+    let Value::Table(entries) = &section.value else {
+        return None;
+    };
+    value_span(entries, field.field).or_else(|| section.span.clone())
+}
+
+/// The value of `key` among a table's entries.
+fn value_span(entries: &[Entry], key: &str) -> Span {
+    let entry = entries.iter().find(|e| e.key == key)?;
+    entry.node.span.clone()
+}
+
+/// A section's table in the tree, counted as the reader counts them.
+fn section_node<'n>(root: &'n Node<'n>, section: Section) -> Option<&'n Node<'n>> {
+    let Value::Table(top) = &root.value else {
+        return None;
+    };
+    let get = |key: &str| top.iter().find(|e| e.key == key).map(|e| &e.node);
+    let item = |key: &str, i: usize| match get(key) {
+        Some(Node {
+            value: Value::Array(items),
+            ..
+        }) => items.get(i),
+        _ => None,
+    };
+    match section {
+        Section::Root => Some(root),
+        Section::World => get("world"),
+        Section::Simulation => get("simulation"),
+        Section::View => get("view"),
+        Section::Particle(i) => item("particle", i),
+        Section::Spring(i) => item("spring", i),
+        Section::Ramp(i) => item("ramp", i),
+        Section::Graph(i) => item("graph", i),
+        Section::Series(i) => item("series", i),
+        Section::Tie(i) => {
+            // Rods first, then strings, as the reader reads them into `Scene::ties`.
+            let rods = match get(TieKind::Rod.as_str()) {
+                Some(Node {
+                    value: Value::Array(items),
+                    ..
+                }) => items.len(),
+                _ => 0,
+            };
+            match i.checked_sub(rods) {
+                None => item(TieKind::Rod.as_str(), i),
+                Some(i) => item(TieKind::String.as_str(), i),
+            }
+        }
     }
 }
 
@@ -578,7 +619,7 @@ pub(super) fn read_bool(node: &Node) -> Result<bool, String> {
 
 pub(super) fn read_text(node: &Node) -> Result<String, String> {
     match &node.value {
-        Value::Text(text) => Ok(text.clone()),
+        Value::Text(text) => Ok(text.clone().into_owned()),
         other => Err(say("scene-must-be-text", &[("got", &other.kind())])),
     }
 }
@@ -659,7 +700,7 @@ pub(super) fn read_bounds(node: &Node) -> Result<Bounds, String> {
     };
     if let Some(extra) = entries
         .iter()
-        .find(|e| !["min", "max", "friction"].contains(&e.key.as_str()))
+        .find(|e| !["min", "max", "friction"].contains(&&*e.key))
     {
         return Err(wrong("scene-bounds-extra", ("key", &extra.key)));
     }
@@ -680,7 +721,7 @@ pub(super) fn read_bounds(node: &Node) -> Result<Bounds, String> {
 
 pub(super) fn read_endpoint(node: &Node) -> Result<Endpoint, String> {
     match &node.value {
-        Value::Text(name) => Ok(Endpoint::Particle(name.clone())),
+        Value::Text(name) => Ok(Endpoint::Particle(name.clone().into_owned())),
         Value::Array(_) | Value::Table(_) => read_vector(node)
             .map(Endpoint::Point)
             .map_err(|e| say("scene-endpoint-point", &[("reason", &e)])),

@@ -2,6 +2,7 @@
 //! in the file (JSON's read by `jsonc-parser` in strict mode, for its ranges), so that
 //! every problem of either format is told with its line and column.
 
+use std::borrow::Cow;
 use std::ops::Range;
 
 use crate::scene::error::{LoadError, Problem};
@@ -10,17 +11,19 @@ use crate::scene::say;
 pub(super) type Span = Option<Range<usize>>;
 
 /// A parsed value with the byte range it came from.
-pub(super) struct Node {
-    pub(super) value: Value,
+pub(super) struct Node<'t> {
+    pub(super) value: Value<'t>,
     pub(super) span: Span,
 }
 
-pub(super) enum Value {
+pub(super) enum Value<'t> {
     Bool(bool),
     Number(f64),
-    Text(String),
-    Array(Vec<Node>),
-    Table(Vec<Entry>),
+    /// Text borrowed from the file where it is written plainly (a name, most keys): a
+    /// million particles then cost no million small strings.
+    Text(Cow<'t, str>),
+    Array(Vec<Node<'t>>),
+    Table(Vec<Entry<'t>>),
     /// A TOML date or time: never valid in a scene.
     Datetime,
     /// JSON's `null`: never valid in a scene.
@@ -30,13 +33,13 @@ pub(super) enum Value {
     Beyond(String),
 }
 
-pub(super) struct Entry {
-    pub(super) key: String,
+pub(super) struct Entry<'t> {
+    pub(super) key: Cow<'t, str>,
     pub(super) key_span: Span,
-    pub(super) node: Node,
+    pub(super) node: Node<'t>,
 }
 
-impl Value {
+impl Value<'_> {
     /// What the value is, as a message says it: "a number".
     pub(super) fn kind(&self) -> String {
         say(
@@ -54,7 +57,16 @@ impl Value {
     }
 }
 
-pub(super) fn parse_toml(text: &str) -> Result<Node, LoadError> {
+/// A TOML text's tree: slice by slice where that means the same (a long scene), else whole.
+pub(super) fn parse_toml(text: &str) -> Result<Node<'_>, LoadError> {
+    match super::slices::parse_in_slices(text) {
+        Some(root) => Ok(root),
+        None => parse_toml_whole(text),
+    }
+}
+
+/// A TOML text's tree, parsed at once.
+pub(super) fn parse_toml_whole(text: &str) -> Result<Node<'_>, LoadError> {
     let (table, errors) = toml::de::DeTable::parse_recoverable(text);
     if !errors.is_empty() {
         let problems = errors
@@ -76,29 +88,33 @@ pub(super) fn parse_toml(text: &str) -> Result<Node, LoadError> {
     }
     let span = table.span();
     Ok(Node {
-        value: toml_table(table.into_inner()),
+        value: Value::Table(toml_entries(table.into_inner(), 0)),
         span: Some(span),
     })
 }
 
-pub(super) fn toml_table(table: toml::de::DeTable<'_>) -> Value {
-    Value::Table(
-        table
-            .into_iter()
-            .map(|(key, value)| Entry {
-                key_span: Some(key.span()),
-                key: key.into_inner().into_owned(),
-                node: toml_node(value),
-            })
-            .collect(),
-    )
+/// A TOML table's entries, every range moved by `offset` (where the parsed text starts in
+/// the file).
+pub(super) fn toml_entries(table: toml::de::DeTable<'_>, offset: usize) -> Vec<Entry<'_>> {
+    table
+        .into_iter()
+        .map(|(key, value)| Entry {
+            key_span: Some(moved(key.span(), offset)),
+            key: key.into_inner(),
+            node: toml_node(value, offset),
+        })
+        .collect()
 }
 
-pub(super) fn toml_node(node: toml::Spanned<toml::de::DeValue<'_>>) -> Node {
+fn moved(span: Range<usize>, offset: usize) -> Range<usize> {
+    span.start + offset..span.end + offset
+}
+
+fn toml_node(node: toml::Spanned<toml::de::DeValue<'_>>, offset: usize) -> Node<'_> {
     use toml::de::DeValue;
-    let span = Some(node.span());
+    let span = Some(moved(node.span(), offset));
     let value = match node.into_inner() {
-        DeValue::String(s) => Value::Text(s.into_owned()),
+        DeValue::String(s) => Value::Text(s),
         DeValue::Integer(i) => {
             let digits = i.as_str().replace('_', "");
             // Beyond i64 (99999999999999999999) a decimal integer is still a number.
@@ -114,8 +130,14 @@ pub(super) fn toml_node(node: toml::Spanned<toml::de::DeValue<'_>>) -> Node {
         },
         DeValue::Boolean(b) => Value::Bool(b),
         DeValue::Datetime(_) => Value::Datetime,
-        DeValue::Array(items) => Value::Array(items.into_iter().map(toml_node).collect()),
-        DeValue::Table(table) => toml_table(table),
+        DeValue::Array(items) => {
+            // A fresh vector of its own length: collected in place, the tree would keep
+            // toml's larger items' room (a million positions held twice their size).
+            let mut nodes = Vec::with_capacity(items.len());
+            nodes.extend(items.into_iter().map(|item| toml_node(item, offset)));
+            Value::Array(nodes)
+        }
+        DeValue::Table(table) => Value::Table(toml_entries(table, offset)),
     };
     Node { value, span }
 }
@@ -132,13 +154,13 @@ pub(super) fn parse_toml_float(raw: &str) -> f64 {
 
 /// `text` as a number: what it parses to, or [`Value::Beyond`] when that is 0 or infinite
 /// though the digits say otherwise.
-fn number(text: &str) -> Value {
+fn number(text: &str) -> Value<'static> {
     number_as_written(text, text.parse().unwrap_or(f64::NAN))
 }
 
 /// `x`, read from `text`, or [`Value::Beyond`] when it rounded to 0 or to infinity from a
 /// number that is neither (1e-400, 1e400).
-fn number_as_written(text: &str, x: f64) -> Value {
+fn number_as_written(text: &str, x: f64) -> Value<'static> {
     let mantissa = text.split(['e', 'E']).next().unwrap_or(text);
     let nonzero = mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b));
     let infinite_as_written = text.contains("inf");
@@ -162,7 +184,7 @@ fn json_problem(text: &str, at: usize, message: String) -> LoadError {
     }
 }
 
-pub(super) fn parse_json(text: &str) -> Result<Node, LoadError> {
+pub(super) fn parse_json(text: &str) -> Result<Node<'_>, LoadError> {
     // A byte-order mark is no part of the JSON (TOML's reader passes over it too); the
     // ranges stay those of the whole text.
     let start = if text.starts_with('\u{feff}') {
@@ -202,11 +224,11 @@ pub(super) fn parse_json(text: &str) -> Result<Node, LoadError> {
 }
 
 /// A JSON value as a node; its ranges moved by `start` (the byte-order mark) into `text`.
-fn json_node(
-    value: jsonc_parser::ast::Value<'_>,
+fn json_node<'t>(
+    value: jsonc_parser::ast::Value<'t>,
     start: usize,
     text: &str,
-) -> Result<Node, LoadError> {
+) -> Result<Node<'t>, LoadError> {
     use jsonc_parser::ast::Value as J;
     let span = |range: jsonc_parser::common::Range| Some(start + range.start..start + range.end);
     Ok(match value {
@@ -223,7 +245,7 @@ fn json_node(
             span: span(n.range),
         },
         J::StringLit(s) => Node {
-            value: Value::Text(s.value.into_owned()),
+            value: Value::Text(s.value),
             span: span(s.range),
         },
         J::Array(array) => Node {
@@ -240,8 +262,8 @@ fn json_node(
             let mut entries: Vec<Entry> = Vec::with_capacity(object.properties.len());
             for property in object.properties {
                 let (key, key_range) = match property.name {
-                    jsonc_parser::ast::ObjectPropName::String(s) => (s.value.into_owned(), s.range),
-                    jsonc_parser::ast::ObjectPropName::Word(w) => (w.value.to_owned(), w.range),
+                    jsonc_parser::ast::ObjectPropName::String(s) => (s.value, s.range),
+                    jsonc_parser::ast::ObjectPropName::Word(w) => (Cow::Borrowed(w.value), w.range),
                 };
                 // TOML refuses a key given twice; so does JSON here, rather than keep the
                 // last in silence.

@@ -748,6 +748,7 @@ cli-same-output = { $first } und { $second } nennen beide „{ $path }“: ihre 
 scene-inside-ramp = beginnt mit seinem Mittelpunkt in der Rampe „{ $ramp }“: außerhalb der Rampe platzieren (auf ihr bleibt es liegen)
 cli-too-much-work = --until { $until } bräuchte { $steps } Schritte von { $particles } beweglichen Teilchen, { $work } Teilchen-Schritte, mehr als { $most } (Minuten bis Stunden Arbeit); einen größeren time_step, ein kürzeres --until oder weniger Teilchen wählen oder --no-limit angeben
 run-tie-not-held = bei t = { $time } s ließ sich Stange oder Seil „{ $tie }“ nicht auf seiner Länge halten: die Kräfte darauf sind zu stark für den Zeitschritt, die Massen seiner Enden zu ungleich, oder seine Länge verträgt sich nicht mit den anderen; einen kleineren time_step wählen oder Längen und Massen prüfen
+run-tie-too-far = bei t = { $time } s liegt Stange oder Seil „{ $tie }“ zu weit vom Ursprung für seine Länge von { $length } m: schon das Runden der Positionen seiner Enden verhindert, dass es auf ein Milliardstel seiner Länge gehalten wird; die Szene näher an den Ursprung legen oder die Verbindung länger machen
 run-left-bounds = bei t = { $time } s verließ Teilchen „{ $particle }“ die Weltgrenzen mit { $speed } m/s, zu schnell, als dass der Zeitschritt seine Stöße mit den Wänden auflösen könnte; einen kleineren time_step wählen
 scene-got-null = null
 scene-json-duplicate-key = der Schlüssel „{ $key }“ steht zweimal in einem Objekt; einen behalten

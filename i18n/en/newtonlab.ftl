@@ -749,6 +749,7 @@ cli-same-output = { $first } and { $second } both name '{ $path }': their rows w
 scene-inside-ramp = starts with its centre inside ramp '{ $ramp }': place it outside the ramp (on it, it rests there)
 cli-too-much-work = --until { $until } would take { $steps } steps of { $particles } moving particles, { $work } particle-steps, more than { $most } (minutes to hours of work); choose a larger time_step, a shorter --until or fewer particles, or give --no-limit
 run-tie-not-held = at t = { $time } s rod or string '{ $tie }' could not be held at its length: the forces on it are too strong for the time step, its ends' masses too unequal, or its length cannot hold with the others'; choose a smaller time_step or check the lengths and masses
+run-tie-too-far = at t = { $time } s rod or string '{ $tie }' lies too far from the origin for its length of { $length } m: the rounding of its ends' positions alone keeps it from being held to a billionth of its length; place the scene nearer the origin or make the link longer
 run-left-bounds = at t = { $time } s particle '{ $particle }' left the world's bounds at { $speed } m/s, too fast for the time step to resolve its impacts with the walls; choose a smaller time_step
 scene-got-null = null
 scene-json-duplicate-key = the key '{ $key }' appears twice in one object; keep one

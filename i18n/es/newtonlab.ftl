@@ -748,6 +748,7 @@ cli-same-output = { $first } y { $second } nombran ambos «{ $path }»: sus fila
 scene-inside-ramp = empieza con su centro dentro de la rampa «{ $ramp }»: colóquela fuera de la rampa (sobre ella, se queda apoyada)
 cli-too-much-work = --until { $until } llevaría { $steps } pasos de { $particles } partículas móviles, { $work } pasos-partícula, más de { $most } (de minutos a horas de trabajo); elija un time_step mayor, un --until más corto o menos partículas, o indique --no-limit
 run-tie-not-held = en t = { $time } s la varilla o cuerda «{ $tie }» no pudo mantenerse en su longitud: las fuerzas sobre ella son demasiado fuertes para el paso de tiempo, las masas de sus extremos demasiado desiguales, o su longitud no es compatible con las de las demás; elija un time_step menor o revise longitudes y masas
+run-tie-too-far = en t = { $time } s la varilla o cuerda «{ $tie }» está demasiado lejos del origen para su longitud de { $length } m: el solo redondeo de las posiciones de sus extremos impide mantenerla a una milmillonésima de su longitud; acerque la escena al origen o alargue el enlace
 run-left-bounds = en t = { $time } s la partícula «{ $particle }» salió de los límites del mundo a { $speed } m/s, demasiado rápido para que el paso de tiempo resuelva sus choques con las paredes; elija un time_step menor
 scene-got-null = null
 scene-json-duplicate-key = la clave «{ $key }» aparece dos veces en un objeto; deje una

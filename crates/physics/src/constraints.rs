@@ -273,6 +273,24 @@ impl Constraints {
             .max_by(|a, b| a.1.total_cmp(&b.1))
     }
 
+    /// Link `k`'s length, m.
+    pub fn length(&self, k: usize) -> f64 {
+        self.links[k].length
+    }
+
+    /// The relative error in link `k`'s length that the rounding of its ends' positions
+    /// alone leaves: a link far from the origin for its length cannot be held closer.
+    pub fn rounding(&self, k: usize, x: &[DVec2]) -> f64 {
+        let link = &self.links[k];
+        let far = link
+            .from
+            .position(x)
+            .abs()
+            .max_element()
+            .max(link.to.position(x).abs().max_element());
+        4.0 * far * f64::EPSILON / link.length
+    }
+
     /// Gauss–Newton on C = 0 for the links of `island` that must hold at `x`.
     fn project_positions(&self, island: &[usize], x: &mut [DVec2], w: &[f64]) -> f64 {
         let mut error = 0.0;

@@ -105,6 +105,17 @@ pub enum SimulationError {
         /// Seconds.
         time: f64,
     },
+    /// A rod or a string so far from the origin for its length that f64's rounding of its
+    /// ends' positions alone keeps it from being held to a billionth of its length.
+    #[error("{}", crate::scene::say("run-tie-too-far", &[("time", &time.to_string()), ("tie", tie), ("length", &length.to_string())]))]
+    TieTooFar {
+        /// The rod's or string's name.
+        tie: String,
+        /// Seconds.
+        time: f64,
+        /// Its length, m.
+        length: f64,
+    },
 }
 
 /// What [`Simulation::step_to_observed`] calls after each step: the state before it and

@@ -112,9 +112,11 @@ pub(crate) const PROJECTION_TOLERANCE: f64 = 1e-15;
 
 /// A rod or string further than this from its length after the projection (relative to
 /// the length) ends the run with [`crate::SimulationError::TieNotHeld`]; dimensionless.
-/// Why: a converged projection leaves rounding, 1e-15; a millionth is an answer wrong
-/// where anyone would see it, and far above any rounding.
-pub(crate) const TIE_HELD: f64 = 1e-6;
+/// Why: a converged projection leaves rounding, 1e-15, so a billionth is far above it
+/// and a length anyone could read off a row (nine digits) is the length asked for; a link
+/// too far from the origin for its length to be held so (its ends' positions rounded to
+/// more than this) is told apart, [`crate::SimulationError::TieTooFar`].
+pub(crate) const TIE_HELD: f64 = 1e-9;
 
 /// Most Gauss–Newton iterations of the position projection. It converges quadratically
 /// in a few; the bound only stops a degenerate island (links that cannot all hold), whose

@@ -11,7 +11,7 @@
 //! - a run that ends well has only finite numbers in its rows (a NaN with exit 0 is a
 //!   silent wrong answer);
 //! - its particles stay inside the world's bounds, and each rod holds its length and each
-//!   string its limit (to 1e-6 of the length: silent wrong answers that a fuzzing
+//!   string its limit (to a billionth of the length: silent wrong answers that a fuzzing
 //!   campaign found, a string stretched to twice its length, a ball out of its box);
 //! - its saved state reopens: it is refused in words, or it reads back as a scene.
 //!
@@ -429,8 +429,8 @@ fn run(text: &str) -> Result<&'static str, String> {
         let limit = simulation_tie_length(&scene, k);
         let stretched = (length - limit) / limit;
         let broken = match tie.kind {
-            physics::TieKind::Rod => stretched.abs() > 1e-6,
-            physics::TieKind::String => stretched > 1e-6,
+            physics::TieKind::Rod => stretched.abs() > 1e-9,
+            physics::TieKind::String => stretched > 1e-9,
         };
         if broken {
             return Err(format!(

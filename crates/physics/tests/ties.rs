@@ -818,3 +818,82 @@ fn two_strings_going_slack_in_one_step_each_go_at_their_instant() {
         );
     }
 }
+
+/// A string of 5 m from a 1 kg ball to a body of 1e12 kg flying away from it at (3, 1)
+/// m/s under gravity, the ball on a 2 m rod to a free 1 kg pivot: the heavy body drags
+/// the pair along. f64 ties masses a trillion apart: every sample keeps the string and
+/// the rod at their lengths to a billionth (the run itself ends, in words, beyond that),
+/// and the heavy body falls freely — the pair's pull changes its path by 1e-12 of the
+/// ball's — along x = 3t, y = 5 + t − g t²/2 to 1e-9 m, or the Euler methods' own
+/// closed forms, y = 5 + t − g t (t ∓ h)/2. Every integrator.
+#[test]
+fn masses_a_trillion_apart_hold_their_links_to_a_billionth() {
+    for integrator in Integrator::ALL {
+        let scene = Scene::new()
+            .with_world(World::gravity_only())
+            .with_integrator(integrator, 1e-3)
+            .with_particle(Particle::new("light", 1.0).radius(0.1))
+            .with_particle(
+                Particle::new("heavy", 1e12)
+                    .radius(0.1)
+                    .position([0.0, 5.0])
+                    .velocity([3.0, 1.0]),
+            )
+            .with_particle(Particle::new("pivot", 1.0).radius(0.1).position([2.0, 0.0]))
+            .with_tie(Tie::rod("rod", "light", "pivot", 2.0))
+            .with_tie(Tie::string("string", "light", "heavy", 5.0));
+        let mut simulation = start(&scene);
+        for k in 1..=20 {
+            let t = 0.05 * f64::from(k);
+            run_to(&mut simulation, t);
+            let x = simulation.positions();
+            let string = x[0].distance(x[1]) / 5.0 - 1.0;
+            let rod = x[0].distance(x[2]) / 2.0 - 1.0;
+            assert!(
+                string.abs() < 1e-9 && rod.abs() < 1e-9,
+                "{integrator:?} at {t} s: string off by {string:e}, rod by {rod:e}"
+            );
+            let lag = match integrator {
+                Integrator::Euler => -1e-3,
+                Integrator::SemiImplicitEuler => 1e-3,
+                _ => 0.0,
+            };
+            let free = DVec2::new(3.0 * t, 5.0 + t - G * t * (t + lag) / 2.0);
+            assert!(
+                x[1].distance(free) < 1e-9,
+                "{integrator:?} at {t} s: the heavy body is {} m off its fall",
+                x[1].distance(free)
+            );
+        }
+        assert!(
+            simulation.positions()[0].length() > 1.0,
+            "{integrator:?}: the ball was dragged along"
+        );
+    }
+}
+
+/// A rod too far from the origin for its length — a 1 m pendulum at (1e9, 1e9) m, where
+/// positions are rounded to 1.2e-7 m — cannot be held to a billionth of its length, and
+/// the run ends saying so rather than with a rod that is not its length.
+#[test]
+fn a_link_too_far_from_the_origin_for_its_length_is_named() {
+    let scene = Scene::new()
+        .with_world(World::gravity_only())
+        .with_particle(
+            Particle::new("bob", 1.0)
+                .radius(0.1)
+                .position([1e9, 1e9 - 1.0])
+                .velocity([1.0, 0.0]),
+        )
+        .with_tie(Tie::rod("rod", [1e9, 1e9], "bob", 1.0));
+    let mut simulation = start(&scene);
+    let error = simulation.step_to(1.0).expect_err("the rod cannot be held");
+    assert!(
+        matches!(error, physics::SimulationError::TieTooFar { .. }),
+        "{error}"
+    );
+    assert!(
+        error.to_string().contains("too far from the origin"),
+        "{error}"
+    );
+}

@@ -193,12 +193,23 @@ impl Simulation {
         if worst <= TIE_HELD {
             return Ok(());
         }
-        match self.forces.constraints.most_stretched(&self.state.position) {
+        let constraints = &self.forces.constraints;
+        match constraints.most_stretched(&self.state.position) {
             // NaN counts as not held.
-            Some((k, off)) if off.is_nan() || off > TIE_HELD => Err(SimulationError::TieNotHeld {
-                tie: self.tie_names[k].clone(),
-                time: self.state.time,
-            }),
+            Some((k, off)) if off.is_nan() || off > TIE_HELD => {
+                let tie = self.tie_names[k].clone();
+                let time = self.state.time;
+                let rounding = constraints.rounding(k, &self.state.position);
+                Err(if rounding > TIE_HELD / 4.0 {
+                    SimulationError::TieTooFar {
+                        tie,
+                        time,
+                        length: constraints.length(k),
+                    }
+                } else {
+                    SimulationError::TieNotHeld { tie, time }
+                })
+            }
             _ => Ok(()),
         }
     }

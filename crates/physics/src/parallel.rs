@@ -163,6 +163,43 @@ impl Workers {
         self.region(n >= least, || self.split_into(least, n, out, work));
     }
 
+    /// `out` made `f(0)`, …, `f(n − 1)`: one element per item, each written in its place
+    /// by whichever thread computes it (no pieces to allocate and join, which cost more
+    /// than a cheap item's work), so the same list for any number of threads.
+    pub fn map_into<T: Send>(
+        &self,
+        n: usize,
+        out: &mut Vec<T>,
+        f: impl Fn(usize) -> T + Sync + Send,
+    ) {
+        out.clear();
+        #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
+        let least = if rayon::current_thread_index().is_some() {
+            MIN_ITEMS_IN_POOL
+        } else {
+            MIN_ITEMS
+        };
+        #[cfg(not(all(feature = "parallel", not(target_arch = "wasm32"))))]
+        let least = MIN_ITEMS;
+        self.region(n >= least, || {
+            #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
+            if let Some(pool) = self.pool.as_ref().filter(|_| n >= least) {
+                use rayon::prelude::*;
+                let pieces = pool.current_num_threads() * PIECES_PER_THREAD;
+                pool.install(|| {
+                    out.par_extend(
+                        (0..n)
+                            .into_par_iter()
+                            .with_min_len(n.div_ceil(pieces))
+                            .map(&f),
+                    );
+                });
+                return;
+            }
+            out.extend((0..n).map(f));
+        });
+    }
+
     /// [`Self::collect_into_from`], untimed.
     #[cfg_attr(
         not(all(feature = "parallel", not(target_arch = "wasm32"))),
@@ -285,6 +322,28 @@ mod tests {
                 out.extend(range.map(|i| (i as u64) * (i as u64)));
             });
             assert_eq!(out, expected, "{threads} threads");
+        }
+    }
+
+    /// One element per item, mapped on 1, 2, 3 and 7 threads, from the pool's threads and
+    /// from outside them, over a list that held something before: always each item's own
+    /// element in its place, and nothing of the old list.
+    #[test]
+    fn mapped_items_land_in_their_places_for_any_thread_count() {
+        let n = 20_000;
+        assert!(n >= MIN_ITEMS, "too few to be split");
+        let expected: Vec<u64> = (0..n as u64).map(|i| i * 3 + 1).collect();
+        for threads in [1, 2, 3, 7] {
+            let workers = Workers::new(threads);
+            let mut out = vec![7; 5];
+            workers.map_into(n, &mut out, |i| i as u64 * 3 + 1);
+            assert_eq!(out, expected, "{threads} threads");
+            let inside = workers.inside(|| {
+                let mut out = Vec::new();
+                workers.map_into(n, &mut out, |i| i as u64 * 3 + 1);
+                out
+            });
+            assert_eq!(inside, expected, "{threads} threads, inside the pool");
         }
     }
 }

@@ -98,6 +98,8 @@ pub(crate) struct BroadPhase {
     oversized: Vec<u32>,
     pairs: Vec<(u32, u32)>,
     extents: Vec<f64>,
+    /// Scratch: the pairs with the oversized boxes' merged in.
+    merged: Vec<(u32, u32)>,
 }
 
 /// The dense grid of the last [`BroadPhase::pairs`]: cell `c` holds the particles
@@ -309,8 +311,12 @@ impl BroadPhase {
                 }
             }
         }
-        self.pairs.extend(found);
-        self.pairs.sort_unstable();
+        // The grid's pairs are ascending already: the few found here are sorted and
+        // merged in, rather than every pair sorted again (a sixth of a step of a
+        // 100,000-body cluster, on one thread whatever the number).
+        found.sort_unstable();
+        merge(&self.pairs, &found, &mut self.merged);
+        std::mem::swap(&mut self.pairs, &mut self.merged);
     }
 
     /// Every particle entered by the last [`Self::pairs`] whose box could overlap
@@ -338,6 +344,24 @@ impl BroadPhase {
             }
         }
     }
+}
+
+/// Two ascending lists of pairs as one ascending list, in `out`.
+fn merge(a: &[(u32, u32)], b: &[(u32, u32)], out: &mut Vec<(u32, u32)>) {
+    out.clear();
+    out.reserve(a.len() + b.len());
+    let (mut a, mut b) = (a.iter().peekable(), b.iter().peekable());
+    while let (Some(&&x), Some(&&y)) = (a.peek(), b.peek()) {
+        if x < y {
+            out.push(x);
+            a.next();
+        } else {
+            out.push(y);
+            b.next();
+        }
+    }
+    out.extend(a);
+    out.extend(b);
 }
 
 /// The broad phase carried from step to step, as Box2D's and Rapier's are: each particle
@@ -429,9 +453,9 @@ impl Proxies {
     /// Builds the grid and every pair from the fat boxes.
     fn rebuild(&mut self, skip: impl Fn(usize, usize) -> bool + Sync, workers: &Workers) {
         let n = self.fat.len();
-        self.pairs.clear();
-        let pairs = self.broad.pairs(&self.fat, skip, workers);
-        self.pairs.extend_from_slice(pairs);
+        self.broad.pairs(&self.fat, skip, workers);
+        // Taken, not copied: the broad phase builds its list anew each time.
+        std::mem::swap(&mut self.pairs, &mut self.broad.pairs);
         self.moved.clear();
         self.is_moved.clear();
         self.is_moved.resize(n, false);
@@ -467,23 +491,7 @@ impl Proxies {
         }
         self.new_pairs.sort_unstable();
         self.new_pairs.dedup();
-        // Both lists ascending: merge them.
-        self.merged.clear();
-        let (mut a, mut b) = (
-            self.pairs.iter().peekable(),
-            self.new_pairs.iter().peekable(),
-        );
-        while let (Some(&&x), Some(&&y)) = (a.peek(), b.peek()) {
-            if x < y {
-                self.merged.push(x);
-                a.next();
-            } else {
-                self.merged.push(y);
-                b.next();
-            }
-        }
-        self.merged.extend(a);
-        self.merged.extend(b);
+        merge(&self.pairs, &self.new_pairs, &mut self.merged);
         std::mem::swap(&mut self.pairs, &mut self.merged);
         for &p in &self.moved {
             self.is_new[p as usize] = false;

@@ -312,14 +312,14 @@ impl Contacts {
     /// points and swept box; and the impact bookkeeping of the last step cleared.
     fn start_paths(&mut self, start: &State, end: &State, h: f64) {
         let n = start.len();
-        self.search.paths.clear();
-        self.search.paths.extend((0..n).map(|i| Path {
+        // Each particle's on its own: built on different threads, each in its place.
+        self.workers.map_into(n, &mut self.search.paths, |i| Path {
             from: 0.0,
             start: (start.position[i], start.velocity[i]),
             end: (end.position[i], end.velocity[i]),
             kick: DVec2::ZERO,
             kick_moment: DVec2::ZERO,
-        }));
+        });
         self.search.versions.clear();
         self.search.versions.resize(n, 0);
         for &p in &self.search.changed {
@@ -329,24 +329,13 @@ impl Contacts {
         self.search.changed.clear();
         self.search.escaped.clear();
         self.search.queue.clear();
-        // Each particle's on its own: pieces go to different threads, joined in order.
-        self.search.controls.clear();
         let paths = &self.search.paths;
         self.workers
-            .collect_into(n, &mut self.search.controls, |range, controls| {
-                controls.extend(paths[range].iter().map(|path| path.after(0.0, h)));
-            });
-        self.boxes.clear();
+            .map_into(n, &mut self.search.controls, |i| paths[i].after(0.0, h));
         let (controls, radius) = (&self.search.controls, &self.radius);
-        self.workers
-            .collect_into(n, &mut self.boxes, |range, boxes| {
-                boxes.extend(
-                    controls[range.clone()]
-                        .iter()
-                        .zip(&radius[range])
-                        .map(|(controls, r)| Aabb::around(controls, *r)),
-                );
-            });
+        self.workers.map_into(n, &mut self.boxes, |i| {
+            Aabb::around(&controls[i], radius[i])
+        });
     }
 
     /// The pairs whose swept boxes overlap and that do not touch, ascending.

@@ -14,10 +14,10 @@
 
 use std::time::Instant;
 
-use physics::{Bounds, Scene, Simulation};
+use newtonlab_peers::{TIME_STEP, median, newtonlab};
+use physics::{Bounds, Scene};
 use rapier2d_f64::prelude::*;
 
-const TIME_STEP: f64 = 1e-3;
 
 struct Options {
     particles: usize,
@@ -49,18 +49,6 @@ fn options() -> Result<Options, String> {
     Ok(options)
 }
 
-/// Steps per second of NewtonLab over `seconds` of simulated time.
-fn newtonlab(scene: &Scene, seconds: f64, threads: usize) -> f64 {
-    let mut simulation = Simulation::new(scene).expect("the generated pit is valid");
-    simulation.set_threads(threads);
-    let steps = (seconds / TIME_STEP).round() as u64;
-    let start = Instant::now();
-    for _ in 0..steps {
-        simulation.step().expect("the pit runs");
-    }
-    steps as f64 / start.elapsed().as_secs_f64()
-}
-
 /// The same pit as a rapier world.
 fn rapier_world(scene: &Scene) -> PhysicsWorld {
     let mut world = PhysicsWorld::new();
@@ -83,7 +71,7 @@ fn rapier_world(scene: &Scene) -> PhysicsWorld {
                 .friction(0.0),
         );
     }
-    let Some(Bounds { min, max }) = scene.world.bounds else {
+    let Some(Bounds { min, max, .. }) = scene.world.bounds else {
         return world;
     };
     let (min, max) = (min.to_dvec2(), max.to_dvec2());
@@ -115,11 +103,6 @@ fn rapier(scene: &Scene, seconds: f64) -> f64 {
         world.step();
     }
     steps as f64 / start.elapsed().as_secs_f64()
-}
-
-fn median(mut values: Vec<f64>) -> f64 {
-    values.sort_by(f64::total_cmp);
-    values[values.len() / 2]
 }
 
 fn main() {

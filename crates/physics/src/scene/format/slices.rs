@@ -312,4 +312,72 @@ mod tests {
             "the whole file's message"
         );
     }
+
+    /// Lines that could make slices read a file otherwise than whole, each put at the
+    /// start of a line somewhere in a long scene (often where a header was): whatever
+    /// the file is, slices give exactly what the whole file gives — the same scene, or the
+    /// same problems at the same places.
+    #[test]
+    fn any_line_anywhere_reads_as_the_whole_file_reads() {
+        const LINES: &[&str] = &[
+            "[simulation]\ntime_step = 0.002\n",
+            "[particle]\nmass = 1\n",
+            "[[particle]]\nname = \"extra\"\nmass = 2\nposition = [0, -1]\n",
+            "[[particle]]\n",
+            "[world.bounds]\nmin = [0, 0]\n",
+            "[[\"particle\"]]\nname = \"quoted\"\nmass = 1\n",
+            "[ [particle] ]\n",
+            "[[particle]] # a comment\nname = \"commented\"\nmass = 1\n",
+            "points = [\n[1, 2],\n[3, 4]\n]\n",
+            "text = \"\"\"\n[[particle]]\n\"\"\"\n",
+            "inline = { a = [1, 2], b = { c = 3 } }\n",
+            "name = \"twice\"\n",
+            "version = 1\n",
+            "[view]\ntrails = true\n",
+            "[[spring]]\nfrom = \"p1\"\nto = \"p2\"\nstiffness = 5\nnatural_length = 1\n",
+            "mass = -1\n",
+            "[unclosed\n",
+            "]\n",
+            "= 3\n",
+            "\u{feff}",
+            "\r\n",
+            "particle = [{ name = \"static\", mass = 1 }]\n",
+            "simulation = { time_step = 0.01 }\n",
+        ];
+        let text = long_scene(3_000, "");
+        let starts: Vec<usize> = std::iter::once(0)
+            .chain(text.match_indices('\n').map(|(i, _)| i + 1))
+            .filter(|&i| i < text.len())
+            .collect();
+        let mut runner = proptest::test_runner::TestRunner::new(proptest::test_runner::Config {
+            cases: 32,
+            ..proptest::test_runner::Config::default()
+        });
+        let cases = (
+            0..starts.len(),
+            0..LINES.len(),
+            0..starts.len(),
+            0..LINES.len(),
+        );
+        runner
+            .run(&cases, |(at, line, again, second)| {
+                let mut mutated = text.clone();
+                let (first, other) = (starts[at].max(starts[again]), starts[at].min(starts[again]));
+                mutated.insert_str(first, LINES[line]);
+                mutated.insert_str(other, LINES[second]);
+                let sliced = Scene::from_toml(&mutated);
+                let whole = read_whole(&mutated);
+                proptest::prop_assert_eq!(
+                    sliced,
+                    whole,
+                    "{} at {}, {} at {}",
+                    LINES[line],
+                    first,
+                    LINES[second],
+                    other
+                );
+                Ok(())
+            })
+            .expect("slices read every file as the whole file does");
+    }
 }

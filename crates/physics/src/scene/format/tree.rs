@@ -69,11 +69,13 @@ pub(super) fn parse_toml(text: &str) -> Result<Node<'_>, LoadError> {
 pub(super) fn parse_toml_whole(text: &str) -> Result<Node<'_>, LoadError> {
     let (table, errors) = toml::de::DeTable::parse_recoverable(text);
     if !errors.is_empty() {
+        // One scan for the line starts: a file can hold thousands of syntax errors.
+        let lines = Lines::new(text);
         let problems = errors
             .iter()
             .map(|error| {
                 let (line, column) = error.span().map_or((None, None), |span| {
-                    let (line, column) = line_column(text, span.start);
+                    let (line, column) = lines.at(text, span.start);
                     (Some(line), Some(column))
                 });
                 Problem {

@@ -2,13 +2,14 @@
 //!
 //! toml's parser lexes the whole text into tokens before it parses (24 bytes a token, about
 //! one token for every two bytes of a scene) and builds its own tree beside the one this
-//! reader keeps, so memory grew to some forty times a long file's size. Long scenes are long
-//! runs of `[[particle]]` and `[[spring]]` sections under plain names: such a file is cut at
-//! its section headers into slices of about a megabyte, each slice is parsed alone, and its
-//! sections join the tree, so only one slice's tokens and toml tree are alive at a time.
+//! reader keeps, so a long file read whole takes some forty times its size. Long scenes are
+//! long runs of `[[particle]]` and `[[spring]]` sections under plain names: such a file is
+//! cut at its section headers into slices of about `SLICE_BYTES`, each slice is parsed
+//! alone, and its sections join the tree, so only one slice's tokens and toml tree are
+//! alive at a time.
 //!
 //! The cut keeps TOML's meaning only where that is plain to see, so anything else is read
-//! whole, exactly as before: a file with few headers, a header that is not one plain name
+//! whole, as a short file is: a file with few headers, a header that is not one plain name
 //! (`[world.bounds]`, a quoted key), a `[table]` named twice or also as `[[table]]`, a key
 //! before the first header that a header names again, or a slice that does not parse — then
 //! every message is the one the whole file gives.

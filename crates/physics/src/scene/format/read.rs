@@ -567,35 +567,31 @@ fn section_node<'n>(root: &'n Node<'n>, section: Section) -> Option<&'n Node<'n>
         return None;
     };
     let get = |key: &str| top.iter().find(|e| e.key == key).map(|e| &e.node);
-    let item = |key: &str, i: usize| match get(key) {
+    // An array of tables' items; none where the key is missing or no array (the reader
+    // reads none there either).
+    let items = |key: &str| match get(key) {
         Some(Node {
             value: Value::Array(items),
             ..
-        }) => items.get(i),
-        _ => None,
+        }) => items.as_slice(),
+        _ => &[],
     };
     match section {
         Section::Root => Some(root),
         Section::World => get("world"),
         Section::Simulation => get("simulation"),
         Section::View => get("view"),
-        Section::Particle(i) => item("particle", i),
-        Section::Spring(i) => item("spring", i),
-        Section::Ramp(i) => item("ramp", i),
-        Section::Graph(i) => item("graph", i),
-        Section::Series(i) => item("series", i),
+        Section::Particle(i) => items("particle").get(i),
+        Section::Spring(i) => items("spring").get(i),
+        Section::Ramp(i) => items("ramp").get(i),
+        Section::Graph(i) => items("graph").get(i),
+        Section::Series(i) => items("series").get(i),
+        // Rods first, then strings, as the reader reads them into `Scene::ties`.
         Section::Tie(i) => {
-            // Rods first, then strings, as the reader reads them into `Scene::ties`.
-            let rods = match get(TieKind::Rod.as_str()) {
-                Some(Node {
-                    value: Value::Array(items),
-                    ..
-                }) => items.len(),
-                _ => 0,
-            };
-            match i.checked_sub(rods) {
-                None => item(TieKind::Rod.as_str(), i),
-                Some(i) => item(TieKind::String.as_str(), i),
+            let rods = items(TieKind::Rod.as_str());
+            match i.checked_sub(rods.len()) {
+                None => rods.get(i),
+                Some(i) => items(TieKind::String.as_str()).get(i),
             }
         }
     }
@@ -619,7 +615,7 @@ pub(super) fn read_bool(node: &Node) -> Result<bool, String> {
 
 pub(super) fn read_text(node: &Node) -> Result<String, String> {
     match &node.value {
-        Value::Text(text) => Ok(text.clone().into_owned()),
+        Value::Text(text) => Ok(text.to_string()),
         other => Err(say("scene-must-be-text", &[("got", &other.kind())])),
     }
 }
@@ -721,7 +717,7 @@ pub(super) fn read_bounds(node: &Node) -> Result<Bounds, String> {
 
 pub(super) fn read_endpoint(node: &Node) -> Result<Endpoint, String> {
     match &node.value {
-        Value::Text(name) => Ok(Endpoint::Particle(name.clone().into_owned())),
+        Value::Text(name) => Ok(Endpoint::Particle(name.to_string())),
         Value::Array(_) | Value::Table(_) => read_vector(node)
             .map(Endpoint::Point)
             .map_err(|e| say("scene-endpoint-point", &[("reason", &e)])),

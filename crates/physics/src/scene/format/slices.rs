@@ -14,7 +14,7 @@
 //! before the first header that a header names again, or a slice that does not parse — then
 //! every message is the one the whole file gives.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::HashSet;
 
 use toml_parser::lexer::TokenKind;
 
@@ -47,11 +47,6 @@ pub(super) fn parse_in_slices(text: &str) -> Option<Node<'_>> {
     if root.iter().any(|entry| named.contains(&*entry.key)) {
         return None;
     }
-    let mut place: HashMap<String, usize> = root
-        .iter()
-        .enumerate()
-        .map(|(i, entry)| (entry.key.to_string(), i))
-        .collect();
     let mut cuts = vec![headers[0].start];
     for header in &headers[1..] {
         if header.start - cuts[cuts.len() - 1] >= SLICE_BYTES {
@@ -60,14 +55,8 @@ pub(super) fn parse_in_slices(text: &str) -> Option<Node<'_>> {
     }
     cuts.push(text.len());
     for slice in cuts.windows(2) {
-        join(
-            &mut root,
-            &mut place,
-            parse_slice(text, slice[0], slice[1])?,
-        )?;
+        join(&mut root, parse_slice(text, slice[0], slice[1])?)?;
     }
-    // toml's own tables list their keys in order.
-    root.sort_by(|a, b| a.key.cmp(&b.key));
     Some(Node {
         value: Value::Table(root),
         span: Some(0..text.len()),
@@ -98,21 +87,16 @@ fn parse_slice(text: &str, start: usize, end: usize) -> Option<Vec<Entry<'_>>> {
 }
 
 /// Adds a slice's sections to the tree: a table under a new name, an array of tables after
-/// the items it already has.
-fn join<'t>(
-    root: &mut Vec<Entry<'t>>,
-    place: &mut HashMap<String, usize>,
-    entries: Vec<Entry<'t>>,
-) -> Option<()> {
+/// the items it already has. The names keep the order they first appear in, as toml's
+/// tables keep theirs; a tree has a few of them, so they are looked through.
+fn join<'t>(root: &mut Vec<Entry<'t>>, entries: Vec<Entry<'t>>) -> Option<()> {
     for entry in entries {
-        if let Some(&i) = place.get(&*entry.key) {
-            match (&mut root[i].node.value, entry.node.value) {
+        match root.iter_mut().find(|known| known.key == entry.key) {
+            Some(known) => match (&mut known.node.value, entry.node.value) {
                 (Value::Array(items), Value::Array(more)) => items.extend(more),
                 _ => return None,
-            }
-        } else {
-            place.insert(entry.key.to_string(), root.len());
-            root.push(entry);
+            },
+            None => root.push(entry),
         }
     }
     Some(())

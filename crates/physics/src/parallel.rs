@@ -22,6 +22,17 @@ pub fn every_core() -> usize {
     std::thread::available_parallelism().map_or(1, std::num::NonZeroUsize::get)
 }
 
+/// The fewest items worth splitting where the caller runs, for work that splits from
+/// `least` items: on a thread of the pool the other threads are awake, so smaller work
+/// pays ([`crate::tuning::MIN_ITEMS_IN_POOL`]).
+fn least_here(least: usize) -> usize {
+    #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
+    if rayon::current_thread_index().is_some() {
+        return least.min(MIN_ITEMS_IN_POOL);
+    }
+    least
+}
+
 /// The threads a simulation may use.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Workers {
@@ -153,13 +164,7 @@ impl Workers {
         out: &mut Vec<T>,
         work: impl Fn(Range<usize>, &mut Vec<T>) + Sync,
     ) {
-        // On a thread of the pool the other threads are awake: smaller work pays.
-        #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
-        let least = if rayon::current_thread_index().is_some() {
-            least.min(MIN_ITEMS_IN_POOL)
-        } else {
-            least
-        };
+        let least = least_here(least);
         self.region(n >= least, || self.split_into(least, n, out, work));
     }
 
@@ -173,14 +178,7 @@ impl Workers {
         f: impl Fn(usize) -> T + Sync + Send,
     ) {
         out.clear();
-        #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
-        let least = if rayon::current_thread_index().is_some() {
-            MIN_ITEMS_IN_POOL
-        } else {
-            MIN_ITEMS
-        };
-        #[cfg(not(all(feature = "parallel", not(target_arch = "wasm32"))))]
-        let least = MIN_ITEMS;
+        let least = least_here(MIN_ITEMS);
         self.region(n >= least, || {
             #[cfg(all(feature = "parallel", not(target_arch = "wasm32")))]
             if let Some(pool) = self.pool.as_ref().filter(|_| n >= least) {

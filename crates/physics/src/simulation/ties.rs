@@ -199,6 +199,8 @@ impl Simulation {
             Some((k, off)) if off.is_nan() || off > TIE_HELD => {
                 let tie = self.tie_names[k].clone();
                 let time = self.state.time;
+                // Rounding within a few times of the bound is what keeps the link from it:
+                // the projection itself converges to far below.
                 let rounding = constraints.rounding(k, &self.state.position);
                 Err(if rounding > TIE_HELD / 4.0 {
                     SimulationError::TieTooFar {

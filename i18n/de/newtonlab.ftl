@@ -352,6 +352,16 @@ inspector-tension-hint = Die Kraft, die sie trägt: Zug ist positiv; 0, wenn loc
 inspector-work-done = verrichtete Arbeit
 inspector-no-work = 0 J (eine Zwangsbedingung verrichtet keine Arbeit)
 inspector-nothing-selected = Nichts ausgewählt: ein Objekt auf der Zeichenfläche anklicken.
+inspector-ramp-angle = Neigung
+inspector-ramp-angle-hint = Die Richtung von seinem Ende „from“ zu seinem Ende „to“, in Grad gegen den Uhrzeigersinn von +x (−30 fällt nach rechts); die Eingabe dreht die Rampe um „from“
+inspector-ramp-length = Länge
+inspector-ramp-length-hint = Der Abstand seiner Enden; die Eingabe verschiebt „to“ entlang der Neigung
+inspector-on-ramp = auf Rampe
+inspector-on-ramp-hint = Die Rampe, auf die dieses Teilchen gesetzt wird
+inspector-put-on-ramp = Daraufsetzen
+inspector-put-on-ramp-hint = Das Teilchen so verschieben, dass es die Oberseite der Rampe berührt, im unten angegebenen Abstand von ihrem Ende „from“
+inspector-along-ramp = entlang
+inspector-along-ramp-hint = Wie weit entlang der Rampe, von ihrem Ende „from“ aus, das Teilchen sie berührt; die Eingabe setzt es dorthin
 inspector-inertia-presets = dreht sich als
 inspector-inertia-point = Punkt
 inspector-inertia-point-hint = Trägheit 0: dreht sich nie, keine Reibung bei Stößen
@@ -394,6 +404,7 @@ scene-vector-not-finite = { $field } muss endliche Komponenten haben
 scene-bounds-order = bounds: min muss links unterhalb von max liegen, nicht min [{ $a }, { $b }] und max [{ $c }, { $d }]
 scene-name-empty = name darf nicht leer sein
 scene-name-taken = der Name '{ $name }' ist schon vergeben an { $earlier }; Namen müssen eindeutig sein
+scene-drag-too-strong = lineare Reibung { $a } kg/s bei { $b } kg bremst das Teilchen alle { $c } s um den Faktor e, schneller als ein Zeitschritt von { $d } s folgen kann (das Verfahren erzeugte Energie aus dem Nichts): einen Zeitschritt von höchstens { $c } s wählen, oder dopri5
 scene-outside-bounds = position [{ $a }, { $b }] setzt das Teilchen (Radius { $c }) außerhalb der Weltgrenzen
 scene-ends-fixed = { $kind ->
         [spring] eine Feder
@@ -427,10 +438,15 @@ setting-object = „{ $text }“ nennt kein Objekt der Szene: schreiben Sie OBJE
 setting-key = „{ $text }“: dort gibt es keine Zahl dieses Namens (die Schlüssel sind die der Szenendatei: mass, velocity, gravity, time_step…)
 setting-part = „{ $text }“: ein Vektor wird über einen Teil variiert, .x, .y, .magnitude oder .angle (Grad), eine Zahl über keinen
 vary-malformed = „{ $text }“ ist kein Bereich: schreiben Sie FELD=VON:BIS:SCHRITT (Ball.velocity.angle=10:80:5)
+series-too-many-runs = { $runs } Läufe, mehr als { $most }: gröbere Schritte oder weniger Werte wählen
+series-too-many-steps = ein Lauf bis { $until } s bräuchte { $steps } Schritte, mehr als { $most }: einen größeren Zeitschritt oder einen kürzeren Lauf wählen
+series-too-much-work = seine { $runs } Läufe bräuchten insgesamt { $work } Teilchen-Schritte, mehr als { $most } (Stunden Arbeit): weniger Werte, einen größeren Zeitschritt oder einen kürzeren Lauf wählen
+vary-too-many = „{ $text }“ hat { $count } Werte, mehr als eine Million: einen größeren Schritt wählen
 vary-empty = „{ $text }“ hat keine Werte: der Schritt darf nicht 0 sein und muss von VON nach BIS führen
 measure-malformed = „{ $text }“ ist keine Messung: schreiben Sie GRÖSSE at EREIGNIS [#N], t at EREIGNIS, max GRÖSSE, min GRÖSSE, period GRÖSSE oder GRÖSSE at T
 measure-instant = der Zeitpunkt { $instant } s liegt außerhalb des Laufs, { $from } s bis { $until } s
-measure-no-period = weniger als zwei Maxima ({ $count }) bis { $until } s: keine Periode
+measure-no-period = weniger als drei Maxima ({ $count }) bis { $until } s: keine Periode (mindestens zwei Zyklen werden verglichen)
+measure-irregular-period = seine { $count } Maxima bis { $until } s wiederholen sich in keinem regelmäßigen Zyklus: keine Periode bestimmbar
 measure-no-event = „{ $event }“ geschah bis { $until } s { $count }-mal, nicht { $nth }-mal
 measure-none = bis { $until } s nichts gemessen
 theory-unreadable = „{ $text }“ ist kein Ausdruck: schreiben Sie Arithmetik in x (dem variierten Wert) und den Konstanten der Szene, etwa v0^2*sin(2*a)/g
@@ -666,13 +682,18 @@ graph-fit-decay = Abklingen A e^(−x/τ) + c
 graph-fit-result = { $quantity }, { $model }: { $parameters } (mittlere Abweichung { $rms })
 graph-reset-view = Ansicht zurücksetzen
 graph-reset-view-hint = Wieder den ganzen Lauf zeigen (Strg und das Mausrad zoomen, Ziehen verschiebt)
-graph-period = Periode von { $quantity }: { $period } s (Mittel aus { $intervals } { $intervals ->
-    [one] Abstand
-   *[other] Abständen
-} zwischen Maxima, { $how ->
+graph-period = Periode von { $quantity }: { $period } s (Mittel aus { $cycles } { $cycles ->
+    [one] Zyklus
+   *[other] Zyklen
+} mit { $maxima } { $maxima ->
+    [one] Maximum
+   *[other] Maxima
+}, { $how ->
     [located] im Lauf bestimmt
    *[sampled] aus den Abtastwerten gelesen
 })
+graph-period-too-few = Periode von { $quantity }: noch keine ({ $count } Maxima; ein drittes zeigt, ob sie sich wiederholen)
+graph-period-irregular = Periode von { $quantity }: nicht bestimmbar (ihre { $count } Maxima wiederholen sich in keinem regelmäßigen Zyklus)
 graph-angle-hint = Den Winkel dieser Stange, dieses Fadens oder dieser Feder zur Senkrechten nach unten zeichnen (gegen den Uhrzeigersinn positiv)
 graph-length-hint = Den Abstand der Enden dieser Stange, dieses Fadens oder dieser Feder zeichnen
 graph-total-hint = Diese Größe des Systems zeichnen
@@ -749,6 +770,7 @@ scene-inside-ramp = beginnt mit seinem Mittelpunkt in der Rampe „{ $ramp }“:
 cli-too-much-work = --until { $until } bräuchte { $steps } Schritte von { $particles } beweglichen Teilchen, { $work } Teilchen-Schritte, mehr als { $most } (Minuten bis Stunden Arbeit); einen größeren time_step, ein kürzeres --until oder weniger Teilchen wählen oder --no-limit angeben
 run-tie-not-held = bei t = { $time } s ließ sich Stange oder Seil „{ $tie }“ nicht auf seiner Länge halten: die Kräfte darauf sind zu stark für den Zeitschritt, die Massen seiner Enden zu ungleich, oder seine Länge verträgt sich nicht mit den anderen; einen kleineren time_step wählen oder Längen und Massen prüfen
 run-tie-too-far = bei t = { $time } s liegt Stange oder Seil „{ $tie }“ zu weit vom Ursprung für seine Länge von { $length } m: schon das Runden der Positionen seiner Enden verhindert, dass es auf ein Milliardstel seiner Länge gehalten wird; die Szene näher an den Ursprung legen oder die Verbindung länger machen
+run-drag-too-strong = bei t = { $time } s bremst der Luftwiderstand Teilchen „{ $particle }“ alle { $decay } s um den Faktor e, schneller als ein Zeitschritt von { $step } s folgen kann (das Verfahren erzeugte Energie aus dem Nichts); einen time_step von höchstens diesem Wert wählen, oder dopri5
 run-left-bounds = bei t = { $time } s verließ Teilchen „{ $particle }“ die Weltgrenzen mit { $speed } m/s, zu schnell, als dass der Zeitschritt seine Stöße mit den Wänden auflösen könnte; einen kleineren time_step wählen
 scene-got-null = null
 scene-json-duplicate-key = der Schlüssel „{ $key }“ steht zweimal in einem Objekt; einen behalten

@@ -353,6 +353,16 @@ inspector-tension-hint = The force it carries: pulling is positive; 0 when slack
 inspector-work-done = work done
 inspector-no-work = 0 J (a constraint does no work)
 inspector-nothing-selected = Nothing selected: click an object on the canvas.
+inspector-ramp-angle = slope
+inspector-ramp-angle-hint = The direction from its end "from" to its end "to", degrees counter-clockwise from +x (−30 falls to the right); typing it turns the ramp about "from"
+inspector-ramp-length = length
+inspector-ramp-length-hint = The distance between its ends; typing it moves "to" along the slope
+inspector-on-ramp = on ramp
+inspector-on-ramp-hint = The ramp to put this particle on
+inspector-put-on-ramp = Put on it
+inspector-put-on-ramp-hint = Move this particle so it touches the ramp's upper face, at the distance below from its end "from"
+inspector-along-ramp = along it
+inspector-along-ramp-hint = How far along the ramp from its end "from" the particle touches it; typing it puts the particle there
 inspector-inertia-presets = turns as
 inspector-inertia-point = a point
 inspector-inertia-point-hint = Inertia 0: never turns, feels no friction at impacts
@@ -395,6 +405,7 @@ scene-vector-not-finite = { $field } must have finite components
 scene-bounds-order = bounds: min must be below and left of max, got min [{ $a }, { $b }] and max [{ $c }, { $d }]
 scene-name-empty = name must not be empty
 scene-name-taken = the name '{ $name }' is already used by { $earlier }; names must be unique
+scene-drag-too-strong = linear drag { $a } kg/s on { $b } kg slows the particle by e every { $c } s, faster than a time step of { $d } s can follow (the method would make energy from nothing): take a time step of at most { $c } s, or dopri5
 scene-outside-bounds = position [{ $a }, { $b }] puts the particle (radius { $c }) outside the world bounds
 scene-ends-fixed = { $kind ->
         [spring] a spring
@@ -428,10 +439,15 @@ setting-object = '{ $text }' names no object of the scene: write OBJECT.key (Bal
 setting-key = '{ $text }': no number of that name there (the keys are the scene file's: mass, velocity, gravity, time_step…)
 setting-part = '{ $text }': a vector is varied by one part, .x, .y, .magnitude or .angle (degrees), and a number by none
 vary-malformed = '{ $text }' is not a range: write FIELD=FROM:TO:STEP (Ball.velocity.angle=10:80:5)
+series-too-many-runs = { $runs } runs, more than { $most }: choose coarser steps or fewer values
+series-too-many-steps = a run to { $until } s would take { $steps } steps, more than { $most }: choose a larger time step or a shorter run
+series-too-much-work = its { $runs } runs would take { $work } particle-steps in all, more than { $most } (hours of work): choose fewer values, a larger time step or a shorter run
+vary-too-many = '{ $text }' has { $count } values, more than a million: choose a larger step
 vary-empty = '{ $text }' has no values: the step must not be 0 and must lead from FROM towards TO
 measure-malformed = '{ $text }' is not a measure: write QUANTITY at EVENT [#N], t at EVENT, max QUANTITY, min QUANTITY, period QUANTITY or QUANTITY at T
 measure-instant = the instant { $instant } s is outside the run, { $from } s to { $until } s
-measure-no-period = fewer than two maxima ({ $count }) by { $until } s: no period
+measure-no-period = fewer than three maxima ({ $count }) by { $until } s: no period (two cycles at least are compared)
+measure-irregular-period = its { $count } maxima by { $until } s repeat at no regular cycle: no period can be told
 measure-no-event = '{ $event }' happened { $count } times by { $until } s, not { $nth }
 measure-none = nothing measured by { $until } s
 theory-unreadable = '{ $text }' is not an expression: write arithmetic of x (the varied value) and the scene's constants, as v0^2*sin(2*a)/g
@@ -667,13 +683,18 @@ graph-fit-decay = decay A e^(−x/τ) + c
 graph-fit-result = { $quantity }, { $model }: { $parameters } (rms residual { $rms })
 graph-reset-view = reset view
 graph-reset-view-hint = Show the whole run again (Ctrl and the mouse wheel zoom, a drag pans)
-graph-period = period of { $quantity }: { $period } s (mean of { $intervals } { $intervals ->
-    [one] interval
-   *[other] intervals
-} between maxima { $how ->
+graph-period = period of { $quantity }: { $period } s (mean of { $cycles } { $cycles ->
+    [one] cycle
+   *[other] cycles
+} of { $maxima } { $maxima ->
+    [one] maximum
+   *[other] maxima
+}, { $how ->
     [located] located in the run
    *[sampled] read off the samples
 })
+graph-period-too-few = period of { $quantity }: not yet ({ $count } maxima; a third tells whether they repeat)
+graph-period-irregular = period of { $quantity }: none can be told (its { $count } maxima repeat at no regular cycle)
 graph-angle-hint = Plot this rod's, string's or spring's angle from the downward vertical (counter-clockwise positive)
 graph-length-hint = Plot the distance between this rod's, string's or spring's ends
 graph-total-hint = Plot this system quantity
@@ -750,6 +771,7 @@ scene-inside-ramp = starts with its centre inside ramp '{ $ramp }': place it out
 cli-too-much-work = --until { $until } would take { $steps } steps of { $particles } moving particles, { $work } particle-steps, more than { $most } (minutes to hours of work); choose a larger time_step, a shorter --until or fewer particles, or give --no-limit
 run-tie-not-held = at t = { $time } s rod or string '{ $tie }' could not be held at its length: the forces on it are too strong for the time step, its ends' masses too unequal, or its length cannot hold with the others'; choose a smaller time_step or check the lengths and masses
 run-tie-too-far = at t = { $time } s rod or string '{ $tie }' lies too far from the origin for its length of { $length } m: the rounding of its ends' positions alone keeps it from being held to a billionth of its length; place the scene nearer the origin or make the link longer
+run-drag-too-strong = at t = { $time } s the air resistance on particle '{ $particle }' slows it by e every { $decay } s, faster than a time step of { $step } s can follow (the method would make energy from nothing); choose a time_step of at most that, or dopri5
 run-left-bounds = at t = { $time } s particle '{ $particle }' left the world's bounds at { $speed } m/s, too fast for the time step to resolve its impacts with the walls; choose a smaller time_step
 scene-got-null = null
 scene-json-duplicate-key = the key '{ $key }' appears twice in one object; keep one

@@ -352,6 +352,16 @@ inspector-tension-hint = La fuerza que transmite: la tracción es positiva; 0 cu
 inspector-work-done = trabajo realizado
 inspector-no-work = 0 J (una ligadura no realiza trabajo)
 inspector-nothing-selected = Nada seleccionado: haga clic en un objeto del lienzo.
+inspector-ramp-angle = pendiente
+inspector-ramp-angle-hint = La dirección de su extremo «from» a su extremo «to», en grados en sentido antihorario desde +x (−30 baja hacia la derecha); al escribirla la rampa gira alrededor de «from»
+inspector-ramp-length = longitud
+inspector-ramp-length-hint = La distancia entre sus extremos; al escribirla «to» se mueve a lo largo de la pendiente
+inspector-on-ramp = sobre la rampa
+inspector-on-ramp-hint = La rampa sobre la que poner esta partícula
+inspector-put-on-ramp = Ponerla encima
+inspector-put-on-ramp-hint = Mover la partícula para que toque la cara superior de la rampa, a la distancia indicada abajo desde su extremo «from»
+inspector-along-ramp = a lo largo
+inspector-along-ramp-hint = A qué distancia a lo largo de la rampa, desde su extremo «from», la toca la partícula; al escribirla se pone ahí
 inspector-inertia-presets = gira como
 inspector-inertia-point = un punto
 inspector-inertia-point-hint = Inercia 0: nunca gira, sin rozamiento en los choques
@@ -394,6 +404,7 @@ scene-vector-not-finite = { $field } debe tener componentes finitas
 scene-bounds-order = bounds: min debe estar abajo a la izquierda de max, no min [{ $a }, { $b }] y max [{ $c }, { $d }]
 scene-name-empty = name no debe estar vacío
 scene-name-taken = el nombre '{ $name }' ya lo usa { $earlier }; los nombres deben ser únicos
+scene-drag-too-strong = un rozamiento lineal de { $a } kg/s sobre { $b } kg frena la partícula en un factor e cada { $c } s, más deprisa de lo que un paso de tiempo de { $d } s puede seguir (el método crearía energía de la nada): tome un paso de tiempo de { $c } s como mucho, o dopri5
 scene-outside-bounds = position [{ $a }, { $b }] deja la partícula (radio { $c }) fuera de los límites del mundo
 scene-ends-fixed = { $kind ->
         [spring] un resorte
@@ -427,10 +438,15 @@ setting-object = «{ $text }» no nombra ningún objeto de la escena: escriba OB
 setting-key = «{ $text }»: no hay ningún número con ese nombre (las claves son las del archivo de escena: mass, velocity, gravity, time_step…)
 setting-part = «{ $text }»: un vector se varía por una parte, .x, .y, .magnitude o .angle (grados), y un número por ninguna
 vary-malformed = «{ $text }» no es un intervalo: escriba CAMPO=DESDE:HASTA:PASO (Ball.velocity.angle=10:80:5)
+series-too-many-runs = { $runs } ejecuciones, más de { $most }: elija pasos más gruesos o menos valores
+series-too-many-steps = una ejecución hasta { $until } s llevaría { $steps } pasos, más de { $most }: elija un paso de tiempo mayor o una ejecución más corta
+series-too-much-work = sus { $runs } ejecuciones llevarían { $work } pasos de partícula en total, más de { $most } (horas de trabajo): elija menos valores, un paso de tiempo mayor o una ejecución más corta
+vary-too-many = «{ $text }» tiene { $count } valores, más de un millón: elija un paso mayor
 vary-empty = «{ $text }» no tiene valores: el paso no puede ser 0 y debe ir de DESDE hacia HASTA
 measure-malformed = «{ $text }» no es una medida: escriba MAGNITUD at EVENTO [#N], t at EVENTO, max MAGNITUD, min MAGNITUD, period MAGNITUD o MAGNITUD at T
 measure-instant = el instante { $instant } s está fuera de la ejecución, de { $from } s a { $until } s
-measure-no-period = menos de dos máximos ({ $count }) hasta { $until } s: sin periodo
+measure-no-period = menos de tres máximos ({ $count }) hasta { $until } s: sin periodo (se comparan al menos dos ciclos)
+measure-irregular-period = sus { $count } máximos hasta { $until } s no se repiten en ningún ciclo regular: no se puede dar un periodo
 measure-no-event = «{ $event }» ocurrió { $count } veces hasta { $until } s, no { $nth }
 measure-none = nada medido hasta { $until } s
 theory-unreadable = «{ $text }» no es una expresión: escriba aritmética de x (el valor variado) y las constantes de la escena, como v0^2*sin(2*a)/g
@@ -666,13 +682,18 @@ graph-fit-decay = decaimiento A e^(−x/τ) + c
 graph-fit-result = { $quantity }, { $model }: { $parameters } (residuo cuadrático medio { $rms })
 graph-reset-view = restablecer vista
 graph-reset-view-hint = Volver a mostrar toda la simulación (Ctrl y la rueda hacen zoom, arrastrar desplaza)
-graph-period = periodo de { $quantity }: { $period } s (media de { $intervals } { $intervals ->
-    [one] intervalo
-   *[other] intervalos
-} entre máximos { $how ->
+graph-period = periodo de { $quantity }: { $period } s (media de { $cycles } { $cycles ->
+    [one] ciclo
+   *[other] ciclos
+} de { $maxima } { $maxima ->
+    [one] máximo
+   *[other] máximos
+}, { $how ->
     [located] localizados en la ejecución
    *[sampled] leídos de las muestras
 })
+graph-period-too-few = periodo de { $quantity }: aún no ({ $count } máximos; un tercero dice si se repiten)
+graph-period-irregular = periodo de { $quantity }: no se puede dar (sus { $count } máximos no se repiten en ningún ciclo regular)
 graph-angle-hint = Representar el ángulo de esta barra, cuerda o muelle respecto a la vertical hacia abajo (positivo en sentido antihorario)
 graph-length-hint = Representar la distancia entre los extremos de esta barra, cuerda o muelle
 graph-total-hint = Dibujar esta magnitud del sistema
@@ -749,6 +770,7 @@ scene-inside-ramp = empieza con su centro dentro de la rampa «{ $ramp }»: col�
 cli-too-much-work = --until { $until } llevaría { $steps } pasos de { $particles } partículas móviles, { $work } pasos-partícula, más de { $most } (de minutos a horas de trabajo); elija un time_step mayor, un --until más corto o menos partículas, o indique --no-limit
 run-tie-not-held = en t = { $time } s la varilla o cuerda «{ $tie }» no pudo mantenerse en su longitud: las fuerzas sobre ella son demasiado fuertes para el paso de tiempo, las masas de sus extremos demasiado desiguales, o su longitud no es compatible con las de las demás; elija un time_step menor o revise longitudes y masas
 run-tie-too-far = en t = { $time } s la varilla o cuerda «{ $tie }» está demasiado lejos del origen para su longitud de { $length } m: el solo redondeo de las posiciones de sus extremos impide mantenerla a una milmillonésima de su longitud; acerque la escena al origen o alargue el enlace
+run-drag-too-strong = en t = { $time } s la resistencia del aire sobre la partícula «{ $particle }» la frena en un factor e cada { $decay } s, más deprisa de lo que un paso de tiempo de { $step } s puede seguir (el método crearía energía de la nada); elija un time_step de ese valor como mucho, o dopri5
 run-left-bounds = en t = { $time } s la partícula «{ $particle }» salió de los límites del mundo a { $speed } m/s, demasiado rápido para que el paso de tiempo resuelva sus choques con las paredes; elija un time_step menor
 scene-got-null = null
 scene-json-duplicate-key = la clave «{ $key }» aparece dos veces en un objeto; deje una

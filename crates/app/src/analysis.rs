@@ -1,5 +1,5 @@
 //! What a graph reads off its samples: the value under the pointer, the maxima, minima
-//! and zero crossings of a series, and the period from successive maxima.
+//! and zero crossings of a series, and the period from the maxima's cycle.
 //!
 //! The samples are the simulation's own instants (every 5 ms at a 1 ms step, `recording.rs`).
 //! A maximum or minimum is the vertex of the parabola through the extreme sample and its
@@ -81,14 +81,16 @@ pub fn zeros(x: &[f64], y: &[f64]) -> Vec<f64> {
     found
 }
 
-/// The mean interval between successive maxima, and how many intervals it averages.
-pub fn period(extremes: &[Extreme]) -> Option<(f64, usize)> {
-    let maxima: Vec<f64> = extremes.iter().filter(|e| e.maximum).map(|e| e.x).collect();
-    let intervals = maxima.len().checked_sub(1).filter(|&n| n > 0)?;
-    Some((
-        (maxima[intervals] - maxima[0]) / intervals as f64,
-        intervals,
-    ))
+/// The series' cycle from its maxima ([`physics::cycle`]: the smallest number of maxima
+/// that repeats), or why it has none; `None` with fewer than two maxima, where no period
+/// is worth a word.
+pub fn period(extremes: &[Extreme]) -> Option<Result<physics::Cycle, physics::NoCycle>> {
+    let maxima: Vec<(f64, f64)> = extremes
+        .iter()
+        .filter(|e| e.maximum)
+        .map(|e| (e.x, e.value))
+        .collect();
+    (maxima.len() >= 2).then(|| physics::cycle(&maxima))
 }
 
 /// The series' value at `at`, on the straight line between the samples around it (the
@@ -141,8 +143,11 @@ mod tests {
             assert!((min.x - expected).abs() < 1e-6, "min {k}: {}", min.x);
             assert!((min.value + 1.5).abs() < 1e-6, "{}", min.value);
         }
-        let (period, intervals) = period(&found).expect("two maxima at least");
-        assert_eq!(intervals, 2);
+        let cycle = period(&found)
+            .expect("two maxima at least")
+            .expect("a regular cycle");
+        assert_eq!(cycle.cycles, 2, "three maxima");
+        let period = cycle.period;
         assert!(
             (period - period_theory).abs() < 1e-7,
             "{period} against {period_theory}"

@@ -128,7 +128,7 @@ impl App {
         let text = String::from_utf8_lossy(&bytes).into_owned();
         let written = platform::write_text(path, &text);
         match written {
-            Ok(()) => self.notify(tr_with(
+            Ok(()) => self.tell(tr_with(
                 "notice-picture-saved",
                 &[("path", Arg::Text(path))],
             )),
@@ -146,7 +146,7 @@ impl App {
         #[cfg(target_arch = "wasm32")]
         let written = platform::web::download_bytes(path, &bytes, "image/png");
         match written {
-            Ok(()) => self.notify(tr_with(
+            Ok(()) => self.tell(tr_with(
                 "notice-picture-saved",
                 &[("path", Arg::Text(path))],
             )),

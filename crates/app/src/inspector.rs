@@ -513,6 +513,7 @@ fn selected(
                 (move |s| &s.particles[i], move |s| &mut s.particles[i]),
             );
             inertia_presets(ui, document, i);
+            problem = onto_ramp(ui, document, i).or(problem);
         }
         Some(Selection::Spring(i)) if i < document.scene().springs.len() => {
             problem = object(
@@ -545,10 +546,116 @@ fn selected(
                 fields::RAMP,
                 (move |s| &s.ramps[i], move |s| &mut s.ramps[i]),
             );
+            problem = ramp_slope(ui, document, i).or(problem);
         }
         Some(_) => *selection = None,
     }
     problem
+}
+
+/// Ramp `i`'s slope and length, typed: `to` moves so that the ramp has them from `from`
+/// (its ends only would need trigonometry).
+fn ramp_slope(ui: &mut Ui, document: &mut Document, i: usize) -> Option<String> {
+    let ramp = document.scene().ramps[i].clone();
+    let id = Id::unique(("ramp slope", i));
+    let angle = number_field(
+        ui,
+        id.with("angle"),
+        &tr("inspector-ramp-angle"),
+        "°",
+        ramp.angle(),
+        Rule::Finite,
+        &tr("inspector-ramp-angle-hint"),
+    );
+    let length = number_field(
+        ui,
+        id.with("length"),
+        &tr("inspector-ramp-length"),
+        "m",
+        ramp.length(),
+        Rule::NonNegative,
+        &tr("inspector-ramp-length-hint"),
+    );
+    if angle.is_none() && length.is_none() {
+        return None;
+    }
+    let end = ramp.end_for(
+        angle.unwrap_or_else(|| ramp.angle()),
+        length.unwrap_or_else(|| ramp.length()),
+    );
+    try_apply(
+        document,
+        Edit::MoveRampEnd,
+        FieldRef {
+            section: Section::Ramp(i),
+            field: "to",
+        },
+        |scene| scene.ramps[i].to = end,
+    )
+    .err()
+}
+
+/// Puts particle `i` on a ramp: touching its upper face at a distance typed along it
+/// from its `from` end, without trigonometry.
+fn onto_ramp(ui: &mut Ui, document: &mut Document, i: usize) -> Option<String> {
+    let ramps: Vec<String> = document
+        .scene()
+        .ramps
+        .iter()
+        .map(|r| r.name.clone())
+        .collect();
+    if ramps.is_empty() {
+        return None;
+    }
+    let id = Id::unique(("onto ramp", i));
+    let (mut chosen, mut along): (usize, f64) = ui.data(|d| d.get_temp(id)).unwrap_or((0, 0.0));
+    chosen = chosen.min(ramps.len() - 1);
+    let mut put = false;
+    ui.horizontal(|ui| {
+        let label = ui.label(tr("inspector-on-ramp"));
+        egui::ComboBox::from_id_salt(id.with("ramp"))
+            .selected_text(&ramps[chosen])
+            .show_ui(ui, |ui| {
+                for (k, name) in ramps.iter().enumerate() {
+                    ui.selectable_value(&mut chosen, k, name);
+                }
+            })
+            .response
+            .labelled_by(label.id)
+            .on_hover_text(tr("inspector-on-ramp-hint"));
+        put = ui
+            .button(tr("inspector-put-on-ramp"))
+            .on_hover_text(tr("inspector-put-on-ramp-hint"))
+            .clicked();
+    });
+    if let Some(typed) = number_field(
+        ui,
+        id.with("along"),
+        &tr("inspector-along-ramp"),
+        "m",
+        along,
+        Rule::Finite,
+        &tr("inspector-along-ramp-hint"),
+    ) {
+        along = typed;
+        put = true;
+    }
+    ui.data_mut(|d| d.insert_temp(id, (chosen, along)));
+    if !put {
+        return None;
+    }
+    let scene = document.scene();
+    let at = scene.ramps[chosen].touching(along, scene.particles[i].radius);
+    try_apply(
+        document,
+        Edit::MoveParticle,
+        FieldRef {
+            section: Section::Particle(i),
+            field: "position",
+        },
+        |scene| scene.particles[i].position = Vector::cartesian(at.x, at.y),
+    )
+    .err()
 }
 
 /// Buttons that give particle `i` the moment of inertia of a point (it never turns), a

@@ -41,6 +41,7 @@ pub mod landmarks;
 pub mod picture;
 pub mod platform;
 pub mod plots;
+mod readouts;
 pub mod recording;
 pub mod run_loop;
 pub mod settings;
@@ -134,6 +135,9 @@ pub struct App {
     pub settings: settings::Settings,
     /// The latest impact as a sentence for screen readers, rate-limited.
     pub announcer: announcer::Announcer,
+    /// What went well, said in the status line (a file exported, no turning point
+    /// there), and since when (stamped by the first frame that shows it).
+    pub notice: Option<(String, Option<f64>)>,
     /// The experiment series panel: each series' results and the run in progress.
     pub experiments: experiments::Experiments,
     /// A CSV table waiting for the file dialog's answer (an experiment's results).
@@ -203,6 +207,7 @@ impl App {
             stopwatch: stopwatch::Stopwatch::default(),
             settings: settings::Settings::default(),
             announcer: announcer::Announcer::default(),
+            notice: None,
             experiments: experiments::Experiments::default(),
             table_ready: None,
             #[cfg(not(target_arch = "wasm32"))]
@@ -272,6 +277,13 @@ impl App {
     /// Tells the user something: an error, or the result of a command (an export).
     pub fn notify(&mut self, message: impl Into<String>) {
         self.files.message = Some(message.into());
+    }
+
+    /// Says `message` in the status line for a while: news that asks nothing of the
+    /// user. A box to dismiss would take the next click (and leave the keys typed after
+    /// it to the shortcuts), which a user meant for something else.
+    pub fn tell(&mut self, message: impl Into<String>) {
+        self.notice = Some((message.into(), None));
     }
 
     /// Does what the user asked.
@@ -345,7 +357,7 @@ impl App {
                 };
                 let found = particle.is_some_and(|i| self.runner.go_to_turning_point(i, forward));
                 if !found {
-                    self.notify(tr("timeline-no-turn"));
+                    self.tell(tr("timeline-no-turn"));
                 }
             }
             Action::ForgetEarlierRuns => self.runner.earlier.clear(),
@@ -361,7 +373,7 @@ impl App {
             }
             Action::Impact(forward) => {
                 if !self.runner.go_to_impact(forward) {
-                    self.notify(tr("timeline-no-impact"));
+                    self.tell(tr("timeline-no-impact"));
                 }
             }
             Action::EditFromHere => self.edit_from_here(),
@@ -708,18 +720,31 @@ impl App {
 
     /// Asks where to save (on the web: downloads the file).
     fn save_as(&mut self) {
+        let suggested = self.suggested_file_name();
         #[cfg(not(target_arch = "wasm32"))]
         self.files
-            .ask(Purpose::Save, self.document.path.as_deref(), "scene.toml");
+            .ask(Purpose::Save, self.document.path.as_deref(), &suggested);
         #[cfg(target_arch = "wasm32")]
         {
-            let name = self
-                .document
-                .path
-                .clone()
-                .unwrap_or_else(|| "scene.toml".to_owned());
+            let name = self.document.path.clone().unwrap_or(suggested);
             self.save_path(&name);
         }
+    }
+
+    /// The name a scene without a file is offered to be saved as: an example's own file
+    /// name (`pendulum.toml`) when it is one, by its title, else `scene.toml`.
+    fn suggested_file_name(&self) -> String {
+        let Some(title) = self.document.scene().name.as_deref() else {
+            return "scene.toml".to_owned();
+        };
+        physics::EXAMPLES
+            .iter()
+            .find(|e| {
+                e.scene()
+                    .ok()
+                    .is_some_and(|scene| scene.name.as_deref() == Some(title))
+            })
+            .map_or_else(|| "scene.toml".to_owned(), |e| format!("{}.toml", e.name))
     }
 
     /// Asks where to export graph `graph` (on the web: downloads it).
@@ -761,7 +786,7 @@ impl App {
         #[cfg(target_arch = "wasm32")]
         let written = platform::web::download(path, text, "text/csv");
         match written {
-            Ok(()) => self.notify(tr_with(
+            Ok(()) => self.tell(tr_with(
                 "notice-exported",
                 &[
                     ("rows", Arg::Number(rows as f64)),
@@ -866,6 +891,7 @@ impl App {
             ui.ctx().request_repaint();
         }
         self.apply_settings(ui);
+        self.age_notice(ui);
         let mut actions = Self::shortcuts(ui, self.canvas.id);
         if let Some(text) = Self::pasted_text(ui, self.canvas.id) {
             self.paste_text(&text);

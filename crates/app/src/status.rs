@@ -7,12 +7,38 @@ use crate::i18n;
 use crate::i18n::{Arg, tr, tr_with};
 use egui::Ui;
 
+/// How long the status line keeps a notice, seconds.
+const NOTICE_SECONDS: f64 = 10.0;
+
 impl App {
+    /// Stamps a new notice with the time it is first shown; forgets it once it is old.
+    pub(crate) fn age_notice(&mut self, ui: &Ui) {
+        let now = ui.input(|i| i.time);
+        if let Some((_, since)) = &mut self.notice {
+            let shown = *since.get_or_insert(now);
+            if now - shown > NOTICE_SECONDS {
+                self.notice = None;
+            } else {
+                ui.ctx()
+                    .request_repaint_after(std::time::Duration::from_secs_f64(
+                        NOTICE_SECONDS - (now - shown) + 0.1,
+                    ));
+            }
+        }
+    }
+
     pub(crate) fn status(&self, ui: &mut Ui) -> Option<Action> {
         let mut action = None;
         ui.horizontal(|ui| {
             ui.monospace(format!("t = {:.4} s", self.time()));
             ui.separator();
+            if let Some((notice, _)) = &self.notice {
+                let said = ui.label(egui::RichText::new(notice).strong());
+                ui.ctx().accesskit_node_builder(said.id, |node| {
+                    node.set_live(egui::accesskit::Live::Polite);
+                });
+                ui.separator();
+            }
             if let Some(failure) = &self.runner.failure {
                 if ui
                     .button(tr("failure-reset"))

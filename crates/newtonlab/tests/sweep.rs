@@ -125,3 +125,56 @@ fn bad_input_and_failed_series_exit_as_documented() {
     assert_eq!(output.status.code(), Some(1), "every run failed");
     assert!(stderr(&output).contains("every run"), "{}", stderr(&output));
 }
+
+/// A series' work is bounded as `run`'s is, and said at once (exit 2), never a silent
+/// hour: runs to 3e5 s (3e8 steps each), a time step of 1e-9 s varied in, 1e7 values
+/// (said as too many, not as a step leading nowhere), a grid of 1000 × 1000 runs of
+/// 10⁵ steps (10¹¹ particle-steps); and `check` of a scene whose `[[series]]` runs to
+/// 1e308 s.
+#[test]
+fn a_series_too_large_is_refused_with_its_size() {
+    let (_dir, scene) = scene_file("throw.toml", THROW);
+    for (args, words) in [
+        (
+            vec!["--vary", "Ball.velocity.angle=10:80:10", "--until", "3e5"],
+            "would take 3.0e8 steps",
+        ),
+        (
+            vec![
+                "--vary",
+                "simulation.time_step=1e-9:2e-9:1e-9",
+                "--until",
+                "1",
+            ],
+            "would take 1.0e9 steps",
+        ),
+        (
+            vec!["--vary", "Ball.mass=1:1e7:1", "--until", "1"],
+            "more than a million",
+        ),
+        (
+            vec![
+                "--vary",
+                "Ball.mass=1:1000:1",
+                "--vary",
+                "Ball.radius=0.001:1:0.001",
+                "--until",
+                "100",
+            ],
+            "1.0e11 particle-steps",
+        ),
+    ] {
+        let mut all = vec!["sweep", scene.as_str(), "--measure", "max Ball.y"];
+        all.extend(args.iter().copied());
+        let output = newtonlab(&all);
+        common::assert_refused(&output, words, &args);
+    }
+    let text = format!(
+        "{THROW}[[series]]\nvary = \"Ball.velocity.angle\"\nfrom = 10.0\nto = 80.0\nstep = 10.0\nuntil = 1e308\nmeasure = [\"max Ball.y\"]\n"
+    );
+    let (_dir, far) = scene_file("far.toml", &text);
+    let output = newtonlab(&["check", &far]);
+    assert_eq!(output.status.code(), Some(2), "{}", stdout(&output));
+    let said = stdout(&output) + &stderr(&output);
+    assert!(said.contains("steps, more than"), "{said}");
+}

@@ -222,17 +222,7 @@ fn bad_arguments_are_named() {
         (vec!["bench", "--threads", "10000"], "--threads"),
     ] {
         let output = within(20, &args);
-        assert_eq!(
-            output.status.code(),
-            Some(2),
-            "{args:?}: {}",
-            stderr(&output)
-        );
-        assert!(
-            stderr(&output).contains(words),
-            "{args:?}: {}",
-            stderr(&output)
-        );
+        common::assert_refused(&output, words, &args);
     }
 }
 
@@ -393,4 +383,196 @@ fn a_closed_pipe_ends_a_report_quietly() {
             output.status
         );
     }
+}
+
+/// A state saved at an instant the grid names but f64 does not hold (7 × 0.1 is
+/// 0.7000000000000001) continues the run bit for bit: `run --until 0.7 --every 0.1
+/// --save-state` ends where the run to 1.5 has its row 0.7, the file holds that instant
+/// exactly, and the continued run writes no second row at 0.7 and the straight run's rows
+/// from there, byte for byte — under rk4 and verlet (the double pendulum at 0.5 ms).
+#[test]
+fn a_state_saved_at_a_grid_instant_continues_bit_for_bit() {
+    let dir = common::tempdir::Dir::new();
+    let path = |name: &str| dir.path.join(name).to_string_lossy().into_owned();
+    for method in ["rk4", "verlet"] {
+        let scene = path(&format!("{method}.toml"));
+        common::example_under("double-pendulum", method, &scene);
+        let saved = path(&format!("{method}-saved.toml"));
+        let first = common::newtonlab(&[
+            "run",
+            &scene,
+            "--until",
+            "0.7",
+            "--every",
+            "0.1",
+            "--save-state",
+            &saved,
+        ]);
+        assert!(first.status.success(), "{}", stderr(&first));
+        let first = common::stdout(&first);
+        assert!(
+            first.lines().last().is_some_and(|l| l.starts_with("0.7,")),
+            "{method}: the last row is named as the grid names it: {first}"
+        );
+        let state = std::fs::read_to_string(&saved).expect("saved");
+        assert!(
+            state.contains("start_time = 0.7000000000000001"),
+            "{method}: the exact instant: {state}"
+        );
+        let whole = common::newtonlab(&["run", &scene, "--until", "1.5", "--every", "0.1"]);
+        let rest = common::newtonlab(&["run", &saved, "--until", "1.5", "--every", "0.1"]);
+        assert!(rest.status.success(), "{}", stderr(&rest));
+        let whole: Vec<String> = common::stdout(&whole)
+            .lines()
+            .skip(8)
+            .map(str::to_owned)
+            .collect();
+        let rest: Vec<String> = common::stdout(&rest)
+            .lines()
+            .skip(1)
+            .map(str::to_owned)
+            .collect();
+        assert_eq!(
+            rest.len(),
+            9,
+            "{method}: 0.7, 0.8, …, 1.5 once each: {rest:?}"
+        );
+        assert_eq!(whole, rest, "{method}: the continued rows");
+    }
+}
+
+/// A row computed before a failure reaches the output before the message: a planet
+/// thrown up from a fixed sun with collisions off stops at its top (the event's row),
+/// then falls back through the sun, where dopri5 cannot go on (exit 1) — the top's row
+/// is written, where its vertical velocity is 0.
+#[test]
+fn an_event_located_before_a_failure_is_written() {
+    let (_dir, scene) = scene_file(
+        "through.toml",
+        "version = 1\n[world]\ngravity = [0.0, 0.0]\ngravitation = true\ncollisions = false\n\
+         [simulation]\nintegrator = \"dopri5\"\n\
+         [[particle]]\nname = \"Sun\"\nmass = 1e12\nradius = 0.1\nfixed = true\nposition = [0.0, 0.0]\n\
+         [[particle]]\nname = \"P\"\nmass = 1.0\nradius = 0.01\nposition = [0.0, 1.0]\nvelocity = [0.0, 5.0]\n",
+    );
+    let output = common::newtonlab(&["run", &scene, "--until", "10", "--events", "P.vy crosses 0"]);
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    let text = common::stdout(&output);
+    let rows: Vec<&str> = text.lines().skip(1).collect();
+    assert_eq!(rows.len(), 1, "the top's row: {text}\n{}", stderr(&output));
+    let header: Vec<&str> = text.lines().next().unwrap_or_default().split(',').collect();
+    let vy = header
+        .iter()
+        .position(|c| *c == "P.vy")
+        .expect("a column P.vy");
+    let value: f64 = rows[0]
+        .split(',')
+        .nth(vy)
+        .and_then(|v| v.parse().ok())
+        .expect("a number");
+    assert!(value.abs() < 1e-9, "at the top: {}", rows[0]);
+}
+
+/// Rows of several events name their event, with or without `--every`.
+#[test]
+fn rows_of_several_events_say_which() {
+    let output = common::newtonlab(&[
+        "run",
+        "example:pendulum",
+        "--until",
+        "3",
+        "--events",
+        "bob.vx crosses 0",
+        "--events",
+        "bob.x crosses 0",
+    ]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = common::stdout(&output);
+    let mut lines = text.lines();
+    assert!(
+        lines.next().is_some_and(|h| h.ends_with(",event")),
+        "{text}"
+    );
+    assert!(
+        lines.all(|l| l.ends_with(",bob.vx crosses 0") || l.ends_with(",bob.x crosses 0")),
+        "{text}"
+    );
+}
+
+/// Drag too strong for a fixed step never makes energy from nothing: linear drag
+/// b = 3000 kg/s on 1 kg (the velocity falls by e in 1/3000 s) under rk4 at 1 ms is
+/// refused by `check` and `run` (exit 2, at `linear_drag`'s line and column, with the step
+/// to take; it
+/// ended at 2e138 m/s); under dopri5 it decays as v₀ e^(−b t / m) (to 1e-6 relative at
+/// 2 ms). Quadratic drag whose rate 2 c |v| / m outgrows the step as the particle speeds
+/// up ends the run in words (exit 1), its rows up to there written.
+#[test]
+fn drag_too_strong_for_the_step_is_refused_or_said() {
+    let scene = |integrator: &str, drag: &str, velocity: &str| {
+        format!(
+            "version = 1\n[world]\ngravity = [0.0, 0.0]\n[simulation]\nintegrator = \"{integrator}\"\n\
+             [[particle]]\nname = \"P\"\nmass = 1.0\nposition = [0.0, 0.0]\nvelocity = {velocity}\n{drag}\n"
+        )
+    };
+    let (_dir, stiff) = scene_file(
+        "stiff.toml",
+        &scene("rk4", "linear_drag = 3000.0", "[1.0, 0.0]"),
+    );
+    for command in ["check", "run"] {
+        let output = common::newtonlab(
+            &[command, &stiff, "--until", "0.01"][..if command == "check" { 2 } else { 4 }],
+        );
+        assert_eq!(
+            output.status.code(),
+            Some(2),
+            "{command}: {}",
+            stderr(&output)
+        );
+        let words = stderr(&output) + &common::stdout(&output);
+        assert!(
+            words.contains("stiff.toml:11:15") && words.contains("at most 3.333e-4 s"),
+            "{command}: {words}"
+        );
+    }
+    let (_dir, adaptive) = scene_file(
+        "adaptive.toml",
+        &scene("dopri5", "linear_drag = 3000.0", "[1.0, 0.0]"),
+    );
+    let output = common::newtonlab(&["run", &adaptive, "--until", "0.002", "--every", "0.002"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = common::stdout(&output);
+    let last: Vec<f64> = text
+        .lines()
+        .last()
+        .expect("rows")
+        .split(',')
+        .map(|v| v.parse().expect("a number"))
+        .collect();
+    let theory = (-6.0_f64).exp();
+    assert!(
+        ((last[3] - theory) / theory).abs() < 1e-6,
+        "vx {} against {theory}",
+        last[3]
+    );
+
+    // c = 0.01 kg/m at 10 m/s: a rate of 0.2 /s, followed; pushed at 4e7 m/s² towards
+    // a terminal speed of 63,000 m/s, its rate 2 c |v| / m passes 1 / (1 ms) at 50,000 m/s.
+    let (_dir, fast) = scene_file(
+        "fast.toml",
+        &scene(
+            "rk4",
+            "quadratic_drag = 0.01\nacceleration = [4e7, 0.0]",
+            "[10.0, 0.0]",
+        ),
+    );
+    let output = common::newtonlab(&["run", &fast, "--until", "1", "--every", "0.001"]);
+    assert_eq!(output.status.code(), Some(1), "{}", stderr(&output));
+    assert!(
+        stderr(&output).contains("air resistance on particle 'P'"),
+        "{}",
+        stderr(&output)
+    );
+    assert!(
+        common::stdout(&output).lines().count() > 2,
+        "the rows before it are written"
+    );
 }

@@ -19,7 +19,7 @@
 
 use std::fmt;
 
-use crate::quantity::{Of, Quantity, Reading};
+use crate::quantity::{LinkOf, Of, Quantity, Reading};
 use crate::simulation::{Simulation, SimulationError};
 
 /// Which way a crossing must go.
@@ -119,12 +119,15 @@ impl Located {
 pub struct Watch {
     /// Each event's quantity as found in the simulation, its value and direction.
     events: Vec<(Reading, f64, Direction)>,
-    /// Each event's quantity minus its value at the end of the last step.
+    /// Each event's quantity at the end of the last step.
     last: Vec<f64>,
 }
 
 /// The bracket's width at which an instant counts as found, seconds.
 const FOUND: f64 = 1e-12;
+/// A change of a quantity, relative to its size, that is rounding rather than motion: a
+/// few ulps of the readings' last operations.
+const ROUNDING: f64 = 16.0 * f64::EPSILON;
 /// Trial instants per event at most: far more than regula falsi needs, but a bound.
 const MOST_TRIALS: usize = 200;
 
@@ -147,7 +150,7 @@ impl Watch {
     pub fn of_readings(events: Vec<(Reading, f64, Direction)>, simulation: &Simulation) -> Self {
         let last = events
             .iter()
-            .map(|&(reading, value, _)| simulation.read(reading) - value)
+            .map(|&(reading, _, _)| simulation.read(reading))
             .collect();
         Self { events, last }
     }
@@ -172,14 +175,34 @@ impl Watch {
     ) -> Result<(), SimulationError> {
         let first = found.len();
         for (event, &(reading, value, direction)) in self.events.iter().enumerate() {
-            let start = self.last[event];
-            let end = after.read(reading) - value;
-            self.last[event] = end;
-            if crossed(direction, start, end) {
+            let earlier = self.last[event];
+            let now = after.read(reading);
+            // A quantity held constant (a rod's length) wanders in its last bits: a
+            // change within rounding is no motion, and no crossing. The reading before
+            // it is kept, so that a slow drift is seen once it adds up past rounding.
+            let scale = earlier.abs().max(now.abs()).max(value.abs());
+            if (now - earlier).abs() <= ROUNDING * scale {
+                continue;
+            }
+            self.last[event] = now;
+            // A link's angle is read in (−180, 180]: a jump by 360° across ±180 is the
+            // link turning on through the top, not a crossing of every value between.
+            // Within a step it is followed from where it was (a step turns a link by far
+            // less than half a turn).
+            let wraps = matches!(reading, Reading::Link(_, LinkOf::Angle));
+            let unwrapped = |angle: f64| {
+                if wraps {
+                    earlier + (angle - earlier - 360.0 * ((angle - earlier) / 360.0).round())
+                } else {
+                    angle
+                }
+            };
+            let start = earlier - value;
+            if crossed(direction, start, unwrapped(now) - value) {
                 let at = locate(
                     before,
                     after,
-                    |s| s.read(reading) - value,
+                    |s| unwrapped(s.read(reading)) - value,
                     |g| crossed(direction, start, g),
                 )?;
                 found.push(Located { event, at });
@@ -263,13 +286,28 @@ impl Simulation {
         watch: &mut Watch,
     ) -> Result<Vec<Located>, SimulationError> {
         let mut found = Vec::new();
+        self.step_to_watching_into(time, watch, &mut found)?;
+        Ok(found)
+    }
+
+    /// [`Self::step_to_watching`], adding the events to `found` as they are located: those
+    /// located before a failure are there when it is returned, so that no row computed
+    /// before it is lost.
+    ///
+    /// # Errors
+    /// As [`Self::step_to_watching`].
+    pub fn step_to_watching_into(
+        &mut self,
+        time: f64,
+        watch: &mut Watch,
+        found: &mut Vec<Located>,
+    ) -> Result<(), SimulationError> {
         self.step_to_observed(
             time,
             Some(&mut |before: &Simulation, after: &Simulation| {
-                watch.after_step(before, after, &mut found)
+                watch.after_step(before, after, found)
             }),
-        )?;
-        Ok(found)
+        )
     }
 }
 

@@ -76,7 +76,9 @@
 mod constraints;
 mod contacts;
 mod csv;
+mod cycle;
 pub use csv::csv_field;
+pub use cycle::{Cycle, NoCycle, cycle};
 mod diagnostics;
 mod events;
 mod examples;
@@ -116,4 +118,5 @@ pub use scene::{
 pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};
 pub use trajectory::{
     IMPACT_COLUMNS, LEDGER_COLUMNS, MAX_NUMBERS, MAX_STEPS, MAX_WORK, Plan, Row, Trajectory,
+    instant_text,
 };

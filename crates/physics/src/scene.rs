@@ -458,6 +458,49 @@ impl Ramp {
         self.friction = friction;
         self
     }
+
+    /// Its slope: the direction from `from` to `to`, degrees counter-clockwise from +x
+    /// (0 for a ramp of no length).
+    pub fn angle(&self) -> f64 {
+        let d = self.to.to_dvec2() - self.from.to_dvec2();
+        if d == DVec2::ZERO {
+            0.0
+        } else {
+            d.y.atan2(d.x).to_degrees()
+        }
+    }
+
+    /// The length of its segment, metres.
+    pub fn length(&self) -> f64 {
+        self.from.to_dvec2().distance(self.to.to_dvec2())
+    }
+
+    /// The end `to` that gives it `angle` (degrees from +x) and `length` from `from`, in
+    /// the form `to` is written in (Cartesian or polar from the origin).
+    pub fn end_for(&self, angle: f64, length: f64) -> Vector {
+        let end = self.from.to_dvec2() + DVec2::from_angle(angle.to_radians()) * length;
+        let end = Vector::cartesian(end.x, end.y);
+        match self.to {
+            Vector::Cartesian(_) => end,
+            Vector::Polar { .. } => end.to_polar(),
+        }
+    }
+
+    /// Where the centre of a disc of `radius` lies when it touches the ramp's upper face
+    /// `along` metres from `from` along the segment: above the point by half the
+    /// thickness and the radius, along the face's normal (the one pointing up; for a
+    /// vertical ramp, the one pointing to −x).
+    pub fn touching(&self, along: f64, radius: f64) -> DVec2 {
+        let from = self.from.to_dvec2();
+        let direction = (self.to.to_dvec2() - from)
+            .try_normalize()
+            .unwrap_or(DVec2::X);
+        let mut normal = direction.perp();
+        if normal.y < 0.0 || (normal.y == 0.0 && normal.x > 0.0) {
+            normal = -normal;
+        }
+        from + direction * along + normal * (0.5 * self.thickness + radius)
+    }
 }
 
 /// An axis-aligned reflecting box, metres.

@@ -6,8 +6,8 @@
 //! table, so it obeys the same rules as the file. A [`Measure`] reads one number off a
 //! run, located as exactly as events are: a quantity at the Nth occurrence of an event,
 //! its maximum or minimum (between the steps around the largest sample, as
-//! [`Simulation::extreme_until`] finds it), its period (the mean interval between its
-//! successive located maxima), or its value at an instant. A run is never changed by
+//! [`Simulation::extreme_until`] finds it), its period (its true cycle from its
+//! located maxima, [`crate::cycle`], or why it has none), or its value at an instant. A run is never changed by
 //! being measured: it takes the steps it takes without measures, bit for bit, and an
 //! instant between two steps is read off a copy stepped on to it.
 //!
@@ -17,6 +17,7 @@
 
 use std::fmt;
 
+use crate::cycle::NoCycle;
 use crate::events::{Event, Located, Turn, Watch};
 use crate::quantity::{Quantity, Reading};
 use crate::scene::fields::{self, Field, Kind, Value};
@@ -236,13 +237,62 @@ impl Vary {
             return Err(malformed());
         };
         let values = range_values(from, to, step)
-            .ok_or_else(|| say("vary-empty", &[("text", text.trim())]))?;
+            .ok_or_else(|| range_problem(text.trim(), from, to, step))?;
         Ok(Self {
             setting: Setting::parse(field, scene)?,
             values,
         })
     }
 }
+
+/// Why FROM:TO:STEP (written `text`) gives no values: more than a million, or none.
+pub fn range_problem(text: &str, from: f64, to: f64, step: f64) -> String {
+    let count = (to - from) / step;
+    if count.is_finite() && count > 1e6 {
+        say(
+            "vary-too-many",
+            &[("text", text), ("count", &format!("{count:.1e}"))],
+        )
+    } else {
+        say("vary-empty", &[("text", text)])
+    }
+}
+
+/// Whether runs to `until` of `steps` steps at most, `work` particle-steps in all, are
+/// within a series' bounds.
+///
+/// # Errors
+/// The bound exceeded, in words.
+pub fn sweep_extent(until: f64, runs: f64, steps: f64, work: f64) -> Result<(), String> {
+    if steps > crate::MAX_STEPS {
+        return Err(say(
+            "series-too-many-steps",
+            &[
+                ("until", &until.to_string()),
+                ("steps", &format!("{steps:.1e}")),
+                ("most", &format!("{:e}", crate::MAX_STEPS)),
+            ],
+        ));
+    }
+    if work > MAX_SWEEP_WORK {
+        return Err(say(
+            "series-too-much-work",
+            &[
+                ("runs", &runs.to_string()),
+                ("work", &format!("{work:.1e}")),
+                ("most", &format!("{MAX_SWEEP_WORK:e}")),
+            ],
+        ));
+    }
+    Ok(())
+}
+
+/// The most runs a series takes.
+pub const MAX_RUNS: usize = 1_000_000;
+
+/// The most particle-steps a series takes in all, its runs together: ten of `run`'s
+/// largest ([`crate::MAX_WORK`]), minutes on every core.
+pub const MAX_SWEEP_WORK: f64 = 1e10;
 
 /// FROM, FROM + STEP, … up to TO; `None` for a step of 0, one leading away from TO, or
 /// more than a million values.
@@ -276,7 +326,8 @@ pub enum Measure {
     Max(Quantity),
     /// A quantity's smallest value over the run.
     Min(Quantity),
-    /// The mean interval between a quantity's successive maxima.
+    /// The duration of a quantity's cycle: the mean span over the smallest number of
+    /// successive maxima that repeats ([`crate::cycle`]).
     Period(Quantity),
     /// A quantity at an instant.
     AtTime(Quantity, f64),
@@ -340,7 +391,8 @@ impl Measure {
 }
 
 /// Reads `measures` off a run of `scene` to `until`: each a number, or why there is none
-/// (an event that did not happen often enough, a period of fewer than two maxima).
+/// (an event that did not happen often enough, a period of fewer than three maxima or of maxima
+/// that do not repeat).
 ///
 /// # Errors
 /// The scene does not load, a measure names an object it does not have, an instant
@@ -414,8 +466,8 @@ struct Measuring<'a> {
     history: Vec<[f64; 2]>,
     /// The state at the start of the previous step (an extreme's bracket starts there).
     previous: Option<Simulation>,
-    /// The located maxima, for the periods.
-    maxima: Vec<Vec<f64>>,
+    /// The located maxima, instant and value, for the periods.
+    maxima: Vec<Vec<(f64, f64)>>,
     /// Whether an extreme or a period is measured (only then is `previous` kept).
     keeps_previous: bool,
 }
@@ -527,13 +579,11 @@ impl<'a> Measuring<'a> {
                         && let Some(previous) = &self.previous
                     {
                         let at = previous.extreme_until(reading, after.time(), turn)?;
+                        let value = at.read(reading);
                         if period {
-                            self.maxima[k].push(at.time());
-                        } else {
-                            let value = at.read(reading);
-                            if beats(value, self.found[k]) {
-                                self.found[k] = Some(value);
-                            }
+                            self.maxima[k].push((at.time(), value));
+                        } else if beats(value, self.found[k]) {
+                            self.found[k] = Some(value);
                         }
                     }
                     // A run that ends still rising has its extreme at its end.
@@ -556,16 +606,17 @@ impl<'a> Measuring<'a> {
             .iter()
             .enumerate()
             .map(|(k, m)| match m {
-                Measure::Period(_) => {
-                    let maxima = &self.maxima[k];
-                    match maxima.len() {
-                        0 | 1 => Err(say(
-                            "measure-no-period",
-                            &[("count", &maxima.len().to_string()), ("until", &until)],
-                        )),
-                        n => Ok((maxima[n - 1] - maxima[0]) / (n - 1) as f64),
-                    }
-                }
+                Measure::Period(_) => match crate::cycle(&self.maxima[k]) {
+                    Ok(cycle) => Ok(cycle.period),
+                    Err(NoCycle::TooFew(count)) => Err(say(
+                        "measure-no-period",
+                        &[("count", &count.to_string()), ("until", &until)],
+                    )),
+                    Err(NoCycle::Irregular(count)) => Err(say(
+                        "measure-irregular-period",
+                        &[("count", &count.to_string()), ("until", &until)],
+                    )),
+                },
                 Measure::At { event, nth, .. } => {
                     let w = self.watched.iter().position(|&w| w == k).unwrap_or(0);
                     self.found[k].ok_or_else(|| {
@@ -627,13 +678,50 @@ impl Row {
 
 impl Sweep {
     /// Whether the series can run on `scene`: the scene loads, every measure's objects
-    /// are in it, every instant is within the run.
+    /// are in it, every instant is within the run, and the work is bounded as `run`'s
+    /// is: at most [`MAX_RUNS`] runs, each within `run`'s steps and particle-steps
+    /// ([`crate::MAX_STEPS`], [`crate::MAX_WORK`]), and [`MAX_SWEEP_WORK`] particle-steps in all —
+    /// a mistyped range or time step is likelier than intent, and would look like a hang.
     ///
     /// # Errors
     /// The first problem, in words.
     pub fn check(&self, scene: &Scene) -> Result<(), String> {
+        let runs: f64 = self.varies.iter().map(|v| v.values.len() as f64).product();
+        if runs > MAX_RUNS as f64 {
+            return Err(say(
+                "series-too-many-runs",
+                &[
+                    ("runs", &format!("{runs:.1e}")),
+                    ("most", &MAX_RUNS.to_string()),
+                ],
+            ));
+        }
         let simulation = Simulation::new(scene).map_err(|e| e.to_string())?;
-        Measuring::new(&self.measures, &simulation, self.until).map(|_| ())
+        Measuring::new(&self.measures, &simulation, self.until)?;
+        // A run's work depends on the values only through the simulation's settings
+        // (its time step, its start).
+        let timed = self
+            .varies
+            .iter()
+            .any(|v| v.setting.target == Target::Simulation);
+        let sizes: Vec<(f64, f64)> = if timed {
+            self.points()
+                .iter()
+                .map(|point| {
+                    let mut varied = scene.clone();
+                    for (vary, &value) in self.varies.iter().zip(point) {
+                        vary.setting.set(&mut varied, value);
+                    }
+                    crate::trajectory::run_size(&varied, self.until)
+                })
+                .collect()
+        } else {
+            let (steps, work) = crate::trajectory::run_size(scene, self.until);
+            vec![(steps, work * runs)]
+        };
+        let steps = sizes.iter().map(|s| s.0).fold(0.0, f64::max);
+        let total: f64 = sizes.iter().map(|s| s.1).sum();
+        sweep_extent(self.until, runs, steps, total)
     }
 
     /// One run: `scene` with the settings at `values` (one per setting), measured.
@@ -771,7 +859,7 @@ impl Measure {
 /// varied rod or string `L` (m), of a varied spring `k` (N/m) and `L` (its natural
 /// length). `v0^2*sin(2*a)/g` is the range of a projectile launched
 /// from the ground at the angle varied. Arithmetic as the app's fields: + − × ÷ ^, sqrt,
-/// sin, cos, tan, asin, acos, atan, exp, ln, log10, abs, PI, and `K`, the complete
+/// sin, cos, tan, asin, acos, atan, exp, ln, log10, abs, `pi` (or `PI`), and `K`, the complete
 /// elliptic integral of the first kind K(k) (a pendulum's period is
 /// `4*sqrt(L/g)*K(sin(θ₀/2))`).
 #[derive(Clone, Debug)]
@@ -869,7 +957,11 @@ pub fn elliptic_k(k: f64) -> f64 {
 impl Setting {
     /// The scene's constants a theory may name, for this setting's object.
     fn constants(&self, scene: &Scene) -> Vec<(&'static str, f64)> {
-        let mut named = vec![("g", scene.world.gravity.to_dvec2().length())];
+        // `pi` as the app's fields read it (exmex's own is `PI`).
+        let mut named = vec![
+            ("g", scene.world.gravity.to_dvec2().length()),
+            ("pi", std::f64::consts::PI),
+        ];
         match self.target {
             Target::Particle(i) => {
                 let p = &scene.particles[i];

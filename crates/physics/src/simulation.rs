@@ -96,6 +96,24 @@ pub enum SimulationError {
         /// Its speed then, m/s.
         speed: f64,
     },
+    /// Air resistance too strong for a fixed time step: the method would multiply the
+    /// velocity at each step instead of following its decay.
+    #[error("{}", crate::scene::say("run-drag-too-strong", &[
+        ("time", &time.to_string()),
+        ("particle", particle),
+        ("decay", &format!("{decay:.3e}")),
+        ("step", &time_step.to_string()),
+    ]))]
+    DragTooStrong {
+        /// The particle's name.
+        particle: String,
+        /// Seconds.
+        time: f64,
+        /// The time its velocity takes to fall by e, seconds: the longest step to take.
+        decay: f64,
+        /// The step it was to take, seconds.
+        time_step: f64,
+    },
     /// A rod or a string could not be held at its length (forces far too strong for the
     /// time step, masses too unequal for f64 to tie, or lengths that cannot all hold).
     #[error("{}", crate::scene::say("run-tie-not-held", &[("time", &time.to_string()), ("tie", tie)]))]
@@ -298,7 +316,7 @@ impl Simulation {
             }
             if let Some(turning) = self.contacts.turning.as_ref().filter(|_| particle.turns()) {
                 particle.spin = turning.spin[i];
-                particle.angle = turning.angle[i].to_degrees();
+                particle.angle = turning.angle[i];
             }
         }
         saved.simulation.start_time = self.state.time;
@@ -566,7 +584,9 @@ impl Simulation {
             let remaining = time - self.state.time;
             // Within a hair of the target, one step lands on it: no sliver steps.
             let last = remaining <= self.time_step * (1.0 + 1e-9);
-            let taken = self.advance(if last { remaining } else { self.time_step })?;
+            let step = if last { remaining } else { self.time_step };
+            self.check_drag(step)?;
+            let taken = self.advance(step)?;
             if last && taken >= remaining {
                 self.state.time = time;
             }
@@ -683,6 +703,27 @@ impl Simulation {
             });
         }
         Ok(taken)
+    }
+
+    /// Whether a fixed-step method can follow every particle's air resistance over a
+    /// step of `h` ([`crate::tuning::DRAG_STEP`]); dopri5 shrinks its steps to it.
+    fn check_drag(&self, h: f64) -> Result<(), SimulationError> {
+        if self.integrator == Integrator::Dopri5 {
+            return Ok(());
+        }
+        let velocity = &self.state.velocity;
+        for drag in &self.forces.drag {
+            let rate = drag.rate(velocity, self.forces.mass[drag.particle]);
+            if rate * h > crate::tuning::DRAG_STEP {
+                return Err(SimulationError::DragTooStrong {
+                    particle: self.names[drag.particle].clone(),
+                    time: self.state.time,
+                    decay: 1.0 / rate,
+                    time_step: h,
+                });
+            }
+        }
+        Ok(())
     }
 
     /// The step's start: impacts due now, strings snapping taut, surfaces catching
@@ -994,7 +1035,7 @@ impl Simulation {
         if let Some(turning) = &self.contacts.turning {
             let spin = turning.spin[i];
             readout.spin = spin;
-            readout.angle = turning.angle[i].to_degrees();
+            readout.angle = turning.angle[i];
             // A fixed particle, of infinite inertia, has no energy or momentum to count.
             if !self.forces.is_fixed(i) {
                 let moment = turning.moment(i, &self.forces.mass, &self.radius);
@@ -1029,10 +1070,10 @@ impl Simulation {
 
     /// Orientations, degrees counter-clockwise, unwrapped (all 0 when nothing turns).
     pub fn angles(&self) -> Vec<f64> {
-        self.contacts.turning.as_ref().map_or_else(
-            || vec![0.0; self.len()],
-            |turning| turning.angle.iter().map(|a| a.to_degrees()).collect(),
-        )
+        self.contacts
+            .turning
+            .as_ref()
+            .map_or_else(|| vec![0.0; self.len()], |turning| turning.angle.clone())
     }
 
     /// Total kinetic energy, translational and rotational, joules.

@@ -132,6 +132,8 @@ pub struct Trajectory {
     next: usize,
     /// Whether the instants of `times` are rows.
     regular: bool,
+    /// The interval of the rows' grid, when there is one.
+    every: Option<f64>,
     watch: Option<(Watch, Vec<String>)>,
     /// The energy at the start, when the ledger is kept.
     ledger_start: Option<f64>,
@@ -179,6 +181,7 @@ impl Trajectory {
             times,
             next: 0,
             regular: every.is_some(),
+            every,
             watch,
             ledger_start,
             note: every.and_then(|every| sampling_note(&scene.simulation, every)),
@@ -202,10 +205,12 @@ impl Trajectory {
         self.ledger_start.is_some()
     }
 
-    /// Whether the rows are of both kinds, samples and events, so that a table needs a
-    /// column saying which.
+    /// Whether a table needs a column saying which event a row is: the rows are of both
+    /// kinds, samples and events, or of several events.
     pub fn mixes_rows(&self) -> bool {
-        self.regular && self.watch.is_some()
+        self.watch
+            .as_ref()
+            .is_some_and(|(_, names)| self.regular || names.len() > 1)
     }
 
     /// How many instants [`Self::advance`] steps to in all.
@@ -235,24 +240,24 @@ impl Trajectory {
         let &t = self.times.get(self.next)?;
         self.next += 1;
         let stepped = match &mut self.watch {
-            Some((watch, names)) => match self.simulation.step_to_watching(t, watch) {
-                Ok(found) => {
-                    let mut result = Ok(());
-                    for event in &found {
-                        row_values(&event.at, self.ledger_start, &mut self.values);
-                        result = finite_row(&self.values, &self.simulation, self.ledger_start);
-                        if result.is_err() {
-                            break;
-                        }
-                        each(Row {
-                            values: &self.values,
-                            event: Some(&names[event.event]),
-                        });
+            Some((watch, names)) => {
+                let mut found = Vec::new();
+                let stepped = self.simulation.step_to_watching_into(t, watch, &mut found);
+                // The events located before a failure are rows all the same.
+                let mut result = Ok(());
+                for event in &found {
+                    row_values(&event.at, self.ledger_start, &mut self.values);
+                    result = finite_row(&self.values, &self.simulation, self.ledger_start);
+                    if result.is_err() {
+                        break;
                     }
-                    result
+                    each(Row {
+                        values: &self.values,
+                        event: Some(&names[event.event]),
+                    });
                 }
-                Err(error) => Err(error),
-            },
+                result.and(stepped)
+            }
             None => self.simulation.step_to(t),
         };
         let stepped = stepped.and_then(|()| {
@@ -261,6 +266,11 @@ impl Trajectory {
             }
             row_values(&self.simulation, self.ledger_start, &mut self.values);
             finite_row(&self.values, &self.simulation, self.ledger_start)?;
+            // The row's instant as the grid names it (0.6, where the run stands at
+            // 6 × 0.1 = 0.6000000000000001): what a reader of the table asked for.
+            if let Some(t) = self.values.first_mut() {
+                *t = instant_text(*t, self.every).parse().unwrap_or(*t);
+            }
             each(Row {
                 values: &self.values,
                 event: None,
@@ -377,7 +387,17 @@ fn check_extent(plan: &Plan, every: Option<f64>, scene: &Scene) -> Result<(), St
             ],
         ));
     }
-    let steps = span / settings.time_step;
+    run_work(scene, until).map(|_| ())
+}
+
+/// The particle-steps a run of `scene` to `until` takes (moving particles × steps), or
+/// why it is too long: more than [`MAX_STEPS`] steps or [`MAX_WORK`] particle-steps.
+///
+/// # Errors
+/// The run's steps or work, over their bound, in words.
+pub fn run_work(scene: &Scene, until: f64) -> Result<f64, String> {
+    let settings = &scene.simulation;
+    let (steps, work) = run_size(scene, until);
     if steps > MAX_STEPS {
         return Err(say(
             "cli-too-many-steps",
@@ -390,7 +410,6 @@ fn check_extent(plan: &Plan, every: Option<f64>, scene: &Scene) -> Result<(), St
         ));
     }
     let particles = scene.particles.iter().filter(|p| !p.fixed).count().max(1);
-    let work = steps * particles as f64;
     if work > MAX_WORK {
         return Err(say(
             "cli-too-much-work",
@@ -403,7 +422,16 @@ fn check_extent(plan: &Plan, every: Option<f64>, scene: &Scene) -> Result<(), St
             ],
         ));
     }
-    Ok(())
+    Ok(work)
+}
+
+/// A run of `scene` to `until`: its steps, and its particle-steps (the steps times the
+/// moving particles, at least one).
+pub fn run_size(scene: &Scene, until: f64) -> (f64, f64) {
+    let settings = &scene.simulation;
+    let steps = (until - settings.start_time) / settings.time_step;
+    let particles = scene.particles.iter().filter(|p| !p.fixed).count().max(1);
+    (steps, steps * particles as f64)
 }
 
 /// A fixed-step method lands exactly on every sample, so when the interval is not a
@@ -437,6 +465,16 @@ fn sample_times(start: f64, until: f64, every: f64) -> Vec<f64> {
     )]
     let index = |t: f64| (t / every).floor() as i64;
     let at = |k: i64| k as f64 * every;
+    // An instant typed as the grid names it (0.7 for 7 × 0.1, which is 0.7000000000000001
+    // in f64) stands for that grid instant: a run to it ends where a longer run's row
+    // stands, so that its saved state continues that run, and a start on it is the
+    // grid's row, not a second one an ulp later.
+    let near = |t: f64| {
+        let k = index(t + 0.5 * every);
+        let exact = at(k).to_bits() == t.to_bits();
+        (exact || (at(k) - t).abs() <= GRID_ROUNDING * t.abs()).then_some(k)
+    };
+    let until = near(until).map_or(until, |k| at(k).max(start));
     let (mut first, mut last) = (index(start), index(until));
     // The division may round either way: settle each end on the exact products.
     while at(first) < start {
@@ -451,6 +489,12 @@ fn sample_times(start: f64, until: f64, every: f64) -> Vec<f64> {
     while at(last) > until {
         last -= 1;
     }
+    if let Some(k) = near(start)
+        && k == first
+        && at(k).to_bits() != start.to_bits()
+    {
+        first += 1;
+    }
     let mut times = Vec::new();
     // Exact: the start is a row of its own unless it is a grid instant to the bit.
     if first > last || at(first).to_bits() != start.to_bits() {
@@ -461,6 +505,54 @@ fn sample_times(start: f64, until: f64, every: f64) -> Vec<f64> {
         times.push(until);
     }
     times
+}
+
+/// How far, relative to it, an instant may lie from a grid instant k·DT and still be
+/// that instant as typed: a few roundings of the product.
+const GRID_ROUNDING: f64 = 4.0 * f64::EPSILON;
+
+/// A row's instant as text: an instant of the grid k·`every` as the decimal the grid
+/// names it (`0.7` for 7 × 0.1, which is 0.7000000000000001 in f64: a reader wants the
+/// instant they asked for), any other as the shortest text that reads back to it.
+pub fn instant_text(t: f64, every: Option<f64>) -> String {
+    let exact = format!("{t:?}");
+    match every.and_then(|every| grid_name(t, every)) {
+        // Where the shortest text already names the grid's instant, it stays as it was.
+        Some(name) if name.parse::<f64>().map(f64::to_bits) != Ok(t.to_bits()) => name,
+        _ => exact,
+    }
+}
+
+/// `t` as k × `every` in decimal, when `t` is that product to the bit.
+fn grid_name(t: f64, every: f64) -> Option<String> {
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "checked against the product below; a far value gives no name"
+    )]
+    let k = (t / every).round() as i64;
+    if (k as f64 * every).to_bits() != t.to_bits() || k.unsigned_abs() > 1 << 53 {
+        return None;
+    }
+    // `every`'s shortest decimal, as digits and a count of decimals.
+    let shown = format!("{every}");
+    let (whole, decimals) = shown.split_once('.').unwrap_or((&shown, ""));
+    let digits: u128 = format!("{whole}{decimals}").parse().ok()?;
+    let product = digits.checked_mul(u128::from(k.unsigned_abs()))?;
+    let scale = decimals.len();
+    let mut text = format!("{product:0>width$}", width = scale + 1);
+    if scale > 0 {
+        text.insert(text.len() - scale, '.');
+        let kept = text.trim_end_matches('0').trim_end_matches('.').len();
+        text.truncate(kept);
+    }
+    if k < 0 && product != 0 {
+        text.insert(0, '-');
+    }
+    Some(if text.contains('.') {
+        text
+    } else {
+        format!("{text}.0")
+    })
 }
 
 #[cfg(test)]
@@ -510,10 +602,11 @@ mod tests {
 
     #[test]
     fn samples_are_multiples_of_the_interval_and_end_at_until() {
-        // 3 × 0.1 = 0.30000000000000004 > 0.3, so the last multiple is 0.2 and 0.3 is added.
+        // 3 × 0.1 = 0.30000000000000004 is the grid's 0.3: the run ends on it, not an
+        // ulp before it, where a longer run's row 3 stands.
         assert_eq!(
             sample_times(0.3, 0.1),
-            vec![0.0, 0.1, 0.2, 0.3],
+            vec![0.0, 0.1, 0.2, 3.0 * 0.1],
             "0.3 by 0.1"
         );
         assert_eq!(
@@ -533,6 +626,64 @@ mod tests {
             times[7].to_bits(),
             (7.0_f64 * 0.1).to_bits(),
             "k·DT, not accumulated"
+        );
+    }
+
+    /// An end or a start typed as the grid names an instant is that instant: a run to 0.7
+    /// by 0.1 ends at 7 × 0.1 = 0.7000000000000001, where a longer run's row stands; from
+    /// a start of 0.7 typed (or 7 × 0.1 saved) the next row is 0.8, never a second 0.7.
+    #[test]
+    fn an_instant_typed_as_the_grid_names_it_is_the_grid_instant() {
+        let seven = 7.0_f64 * 0.1;
+        assert_eq!(
+            seven.to_bits(),
+            0.700_000_000_000_000_1_f64.to_bits(),
+            "f64"
+        );
+        let to = sample_times(0.7, 0.1);
+        assert_eq!(to.len(), 8, "{to:?}");
+        assert_eq!(to[7].to_bits(), seven.to_bits(), "ends on the grid: {to:?}");
+        for start in [0.7, seven] {
+            let on = from(start, 1.0, 0.1);
+            assert_eq!(on.len(), 4, "{start}: {on:?}");
+            assert_eq!(on[0].to_bits(), start.to_bits(), "the start first");
+            assert_eq!(on[1].to_bits(), (8.0_f64 * 0.1).to_bits(), "then 0.8");
+        }
+        // Off the grid by more than rounding: a row of its own.
+        assert_eq!(
+            from(0.0, 0.75, 0.1).last(),
+            Some(&0.75),
+            "0.75 ends the rows"
+        );
+    }
+
+    /// A grid instant is written as the grid names it, any other as its shortest text;
+    /// where that already names it, nothing changes.
+    #[test]
+    fn a_grid_instant_is_written_as_the_grid_names_it() {
+        use super::instant_text;
+        let every = Some(0.1);
+        assert_eq!(
+            instant_text(6.0_f64 * 0.1, every),
+            "0.6",
+            "0.6000000000000001"
+        );
+        assert_eq!(instant_text(7.0_f64 * 0.1, every), "0.7");
+        assert_eq!(instant_text(0.7, every), "0.7", "itself");
+        assert_eq!(instant_text(0.0, every), "0.0");
+        assert_eq!(instant_text(20.0, every), "20.0");
+        assert_eq!(instant_text(-3.0_f64 * 0.1, every), "-0.3");
+        assert_eq!(
+            instant_text(3.0_f64 * 0.1, None),
+            "0.30000000000000004",
+            "no grid"
+        );
+        assert_eq!(instant_text(0.123, every), "0.123", "off the grid");
+        assert_eq!(instant_text(1e-7, Some(1e-7)), "1e-7", "as it was written");
+        assert_eq!(
+            instant_text(13.0_f64 * 1e-7, Some(1e-7)),
+            "0.0000013",
+            "1.2999999999999998e-6"
         );
     }
 

@@ -173,6 +173,14 @@ pub(crate) const PASSES: usize = 1024;
 /// legitimate extreme scenes fail; larger, and a blow-up is caught only at infinity.
 pub(crate) const RUNAWAY: f64 = 1e150;
 
+/// The largest drag rate × time step (`Drag::rate`) a fixed-step method is asked to
+/// follow. Why: at 1 the velocity decays by e in one step, which the methods still follow
+/// without overshooting (Euler's stops the particle in one step, no more); past their
+/// stability (2 for Euler's, semi-implicit Euler's and Verlet's, 2.79 for rk4) every step
+/// multiplies the velocity and energy comes from nothing. Higher, and a run can gain
+/// energy silently; lower, and ordinary air resistance at coarse steps is refused.
+pub(crate) const DRAG_STEP: f64 = 1.0;
+
 // ---------------------------------------------------------------------------------------
 // Speed only: none of these moves a bit (the determinism tests hold it)
 // ---------------------------------------------------------------------------------------

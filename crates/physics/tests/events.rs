@@ -309,3 +309,72 @@ fn a_pendulums_extremes_are_located_at_the_elliptic_instants() {
         widest.time()
     );
 }
+
+/// A link's angle is read in (−180, 180], and its jump by 360° across the top is no
+/// crossing: a bob whirled on a 1 m rod from the bottom at 8 m/s (enough to go over the
+/// top: 8² > 4 g L) passes the vertical at the bottom, angle 0, only there (every pass
+/// at y = −1 to 1e-9 m, once a turn), passes 180° at the top (y = +1), and passes −170°
+/// only going up (counter-clockwise from −180), never "down".
+#[test]
+fn an_angle_wrapping_past_180_degrees_is_no_crossing() {
+    let scene = Scene::new()
+        .with_world(World::gravity_only())
+        .with_particle(
+            Particle::new("bob", 1.0)
+                .radius(0.05)
+                .position([0.0, -1.0])
+                .velocity([8.0, 0.0]),
+        )
+        .with_tie(Tie::rod("rod", [0.0, 0.0], "bob", 1.0));
+    let found = located(
+        &scene,
+        &[
+            "rod.angle crosses 0",
+            "rod.angle crosses 180",
+            "rod.angle crosses -170 down",
+            "rod.angle crosses -170 up",
+        ],
+        3.0,
+    );
+    let count = |k: usize| found.iter().filter(|l| l.event == k).count();
+    let when: Vec<(usize, f64)> = found.iter().map(|l| (l.event, l.time())).collect();
+    assert!(count(0) >= 3 && count(1) >= 3, "whole turns: {when:?}");
+    for located in &found {
+        let y = located.at.positions()[0].y;
+        match located.event {
+            0 => assert!((y + 1.0).abs() < 1e-9, "angle 0 at the bottom, not y = {y}"),
+            1 => assert!((y - 1.0).abs() < 1e-9, "180° at the top, not y = {y}"),
+            2 => panic!("−170° passed downward at t = {}", located.time()),
+            _ => {}
+        }
+    }
+    assert_eq!(count(3), count(1), "−170° once a turn, going up");
+}
+
+/// An event on a quantity held constant does not fire on its rounding: a pendulum's rod
+/// is held at 2 m (its length wanders in the last bits), and `rod.length crosses 2` never
+/// happens in 4 s, while `rod.length crosses 1.5` (never reached) does not either, and
+/// the bob's passes through the vertical still do, at every half period.
+#[test]
+fn a_quantity_held_constant_crosses_nothing_on_its_rounding() {
+    let scene = Scene::new()
+        .with_world(World::gravity_only())
+        .with_particle(
+            Particle::new("bob", 1.0)
+                .radius(0.05)
+                .position([1.0, -3.0_f64.sqrt()]),
+        )
+        .with_tie(Tie::rod("rod", [0.0, 0.0], "bob", 2.0));
+    let found = located(
+        &scene,
+        &[
+            "rod.length crosses 2",
+            "rod.length crosses 1.5",
+            "bob.x crosses 0",
+        ],
+        4.0,
+    );
+    let when: Vec<(usize, f64)> = found.iter().map(|l| (l.event, l.time())).collect();
+    assert!(when.iter().all(|&(event, _)| event == 2), "{when:?}");
+    assert!(when.len() >= 3, "the passes through the vertical: {when:?}");
+}

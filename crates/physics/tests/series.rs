@@ -152,6 +152,69 @@ fn a_pendulums_period_against_its_amplitude_is_the_elliptic_integral() {
     }
 }
 
+/// Past 90° a bob's x has three maxima a swing (at 90° rising, at 90° falling, and a
+/// local one below zero at the far turn), and the mean gap between maxima is a third of
+/// the period. `period Bob.x` is the swing's period 4 √(L/g) K(sin(θ₀/2)) at 95°, 110°,
+/// …, 170° all the same, to 1e-8 relative (rk4 at 1 ms: some 1e-10 at 170°, where the
+/// bob lingers near the top), and the rod's second upward pass through the vertical,
+/// at 7T/4 (released on the right, it passes down at T/4 and up at 3T/4), agrees.
+#[test]
+fn a_period_past_ninety_degrees_is_the_swing_not_the_gap_between_maxima() {
+    let scene = Scene::new()
+        .with_world(World::gravity_only())
+        .with_particle(Particle::new("Bob", 1.0).radius(0.05).position([1.0, 0.0]))
+        .with_tie(Tie::rod("rod", [0.0, 0.0], "Bob", 1.0));
+    let series = sweep(
+        &scene,
+        &["Bob.position.angle=5:80:15"],
+        16.0,
+        &["period Bob.x", "t at rod.angle crosses 0 up #2"],
+    );
+    for (values, measured) in numbers(&series, &scene, 1) {
+        let amplitude = (values[0] + 90.0).to_radians();
+        let period = 4.0 * (1.0 / G).sqrt() * elliptic_k((amplitude / 2.0).sin());
+        assert!(
+            relative(measured[0], period) < 1e-8,
+            "{values:?}: period {} against {period}",
+            measured[0]
+        );
+        assert!(
+            relative(measured[1], 1.75 * period) < 1e-8,
+            "{values:?}: second upward pass {} against {}",
+            measured[1],
+            1.75 * period
+        );
+    }
+}
+
+/// Too few maxima, or maxima that repeat at no cycle, give no period and say which —
+/// never a number: two maxima of a spring within 1.5 periods; a double pendulum's chaotic
+/// lower bob over 20 s.
+#[test]
+fn a_period_that_cannot_be_told_is_said_in_words() {
+    let spring = Scene::new()
+        .with_world(World::weightless())
+        .with_particle(Particle::new("Bob", 1.0).position([1.5, 0.0]))
+        .with_spring(physics::Spring::new("s", "Bob", [0.0, 0.0], 1.0, 1.0));
+    let measure = [Measure::parse("period Bob.x").expect("a measure")];
+    // ω = 1: maxima at 0 (the start, not located), 2π, 4π.
+    let found = physics::series::measure(&spring, 14.0, &measure).expect("a run");
+    let words = found[0].as_ref().expect_err("two maxima are no period");
+    assert!(words.contains("three"), "{words}");
+    let found = physics::series::measure(&spring, 20.0, &measure).expect("a run");
+    let period = found[0].as_ref().expect("three maxima");
+    assert!(relative(*period, std::f64::consts::TAU) < 1e-9, "{period}");
+
+    let chaos = physics::example("double-pendulum")
+        .expect("an example")
+        .scene()
+        .expect("it loads");
+    let measure = [Measure::parse("period B1.x").expect("a measure")];
+    let found = physics::series::measure(&chaos, 20.0, &measure).expect("a run");
+    let words = found[0].as_ref().expect_err("chaos has no period");
+    assert!(words.contains("no regular cycle"), "{words}");
+}
+
 /// An instant between two steps is read off a copy stepped on to it, the run itself
 /// untouched: `Ball.x at 1.0005` is v₀ cos a × 1.0005 exactly (to 1e-12), and the
 /// landing measured beside it is the landing measured alone, bit for bit.
@@ -199,7 +262,7 @@ fn a_measure_without_a_number_says_why() {
         measured[1]
             .as_ref()
             .unwrap_err()
-            .contains("fewer than two maxima")
+            .contains("fewer than three maxima")
     );
     assert!(measured[2].is_ok());
 }
@@ -388,4 +451,21 @@ fn the_examples_series_follow_their_theories() {
         }
     }
     assert!(checked >= 3, "{checked} series with a theory");
+}
+
+/// A theory reads `pi` as the app's fields do (exmex's own constant is `PI`): a spring's
+/// period against its mass, `2*pi*sqrt(m/k)`, is `2*PI*sqrt(m/k)`, and both are
+/// 2π √(m/k) at m = 2 kg, k = 8 N/m.
+#[test]
+fn a_theory_reads_pi() {
+    let scene = Scene::new()
+        .with_world(World::weightless())
+        .with_particle(Particle::new("Bob", 2.0).position([1.5, 0.0]))
+        .with_spring(physics::Spring::new("s", "Bob", [0.0, 0.0], 8.0, 1.0));
+    for text in ["2*pi*sqrt(x/8)", "2*PI*sqrt(x/8)"] {
+        let theory = physics::series::Theory::parse(text, &scene, "Bob.mass")
+            .unwrap_or_else(|why| panic!("{text}: {why}"));
+        let expected = std::f64::consts::TAU * (2.0_f64 / 8.0).sqrt();
+        assert!(relative(theory.at(2.0), expected) < 1e-15, "{text}");
+    }
 }

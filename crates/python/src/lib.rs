@@ -36,6 +36,7 @@ pub(crate) fn scene_error(message: impl Into<String>) -> PyErr {
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     let py = m.py();
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add("SceneError", py.get_type::<SceneError>())?;
     m.add("SimulationError", py.get_type::<SimulationError>())?;
     m.add_class::<scene::Scene>()?;

@@ -7,7 +7,9 @@ use std::path::PathBuf;
 
 use physics::fields::{self, Field, Kind, Value};
 use physics::{Bounds, Color, Endpoint, Integrator, PairForces, Section, Vector};
-use pyo3::exceptions::PyAttributeError;
+use pyo3::exceptions::{
+    PyAttributeError, PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError,
+};
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyString};
 
@@ -375,7 +377,9 @@ fn parse(text: &str, format: physics::SceneFormat, source: &str) -> PyResult<phy
 /// Reads a scene: a file (`.toml` or `.json`), or `"example:NAME"` for a built-in one
 /// (`newtonlab.examples()` lists them).
 ///
-/// Raises `SceneError` with every problem of the file, each with its line and column.
+/// Raises `SceneError` with every problem of the file, each with its line and column;
+/// `FileNotFoundError`, `IsADirectoryError` or `PermissionError` for a file that cannot
+/// be read.
 #[pyfunction]
 pub fn load(source: PathBuf) -> PyResult<Scene> {
     let text = source.to_string_lossy().into_owned();
@@ -390,10 +394,25 @@ pub fn load(source: PathBuf) -> PyResult<Scene> {
         let inner = example.scene().map_err(|e| scene_error(e.report(&text)))?;
         return Ok(Scene { inner });
     }
-    let cannot = |e: &dyn std::fmt::Display| scene_error(format!("cannot read '{text}': {e}"));
+    // Python's own errors for files: a missing one is a FileNotFoundError, a folder an
+    // IsADirectoryError, one not to be read a PermissionError.
+    let cannot = |e: &std::io::Error| {
+        let message = format!("cannot read '{text}': {e}");
+        match e.kind() {
+            std::io::ErrorKind::NotFound => PyFileNotFoundError::new_err(message),
+            std::io::ErrorKind::PermissionDenied => PyPermissionError::new_err(message),
+            std::io::ErrorKind::IsADirectory => PyIsADirectoryError::new_err(message),
+            _ => PyOSError::new_err(message),
+        }
+    };
     // A file, and of a size a scene can have: a device or a FIFO would be read until
     // memory runs out.
     let metadata = std::fs::metadata(&source).map_err(|e| cannot(&e))?;
+    if metadata.is_dir() {
+        return Err(PyIsADirectoryError::new_err(format!(
+            "'{text}' is a folder, not a scene file"
+        )));
+    }
     if !metadata.is_file() {
         return Err(scene_error(format!("'{text}' is not a file")));
     }

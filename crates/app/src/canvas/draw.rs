@@ -257,6 +257,14 @@ impl Canvas {
                 dots.add(centre, radius, colour);
             } else if many {
                 disc(&mut crowd, centre, radius, colour);
+            } else if let Some(rim) = rim(radius, particle.inertia) {
+                // Hollow as its inertia says: a ring is a rim, a tube a thick one.
+                painter.circle_stroke(centre, radius - rim / 2.0, Stroke::new(rim, colour));
+                painter.circle_stroke(
+                    centre,
+                    radius,
+                    Stroke::new(w, p.outline.unwrap_or(colour.gamma_multiply(0.6))),
+                );
             } else {
                 painter.circle(
                     centre,
@@ -677,6 +685,22 @@ fn arrow(painter: &egui::Painter, from: Pos2, to: Pos2, colour: Color32, width: 
     painter.arrow(from, d, Stroke::new(2.0 * width, colour));
 }
 
+/// The width of the rim a turning particle is drawn with, pixels, when it is hollow: a
+/// tube of outer radius r and inner radius rᵢ has I = ½ m (r² + rᵢ²), so a moment of
+/// inertia k m r² with k above ½ (a solid disc) is a tube with rᵢ = r √(2k − 1), and a
+/// thin ring (k = 1) a rim of two pixels. `None` for a solid disc or a point.
+pub(crate) fn rim(radius: f32, inertia: f64) -> Option<f32> {
+    if inertia <= 0.5 || !inertia.is_finite() {
+        return None;
+    }
+    #[expect(
+        clippy::cast_possible_truncation,
+        reason = "a fraction of a radius on screen"
+    )]
+    let inner = radius * (2.0 * inertia.min(1.0) - 1.0).sqrt() as f32;
+    Some((radius - inner).max(2.0).min(radius))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -784,5 +808,16 @@ mod tests {
             kinds.iter().skip(lines).all(|text| *text),
             "every label after every line: {kinds:?}"
         );
+    }
+
+    /// A disc is solid, a ring a thin rim, a tube between them as thick as its inertia
+    /// says: k = 0.82 is a tube with rᵢ = r √0.64 = 0.8 r, a rim of 0.2 r.
+    #[test]
+    fn a_ring_is_drawn_hollow_as_its_inertia_says() {
+        assert_eq!(super::rim(20.0, 0.5), None, "a solid disc");
+        assert_eq!(super::rim(20.0, 0.0), None, "a point");
+        assert_eq!(super::rim(20.0, 1.0), Some(2.0), "a thin ring: two pixels");
+        let tube = super::rim(20.0, 0.82).expect("hollow");
+        assert!((tube - 4.0).abs() < 1e-4, "{tube}");
     }
 }

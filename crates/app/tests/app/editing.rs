@@ -528,3 +528,57 @@ fn a_box_drawn_with_shift_selects_what_lies_in_it() {
         "a plain click: one selected"
     );
 }
+
+/// A ramp's slope and length are typed (no trigonometry on its ends), and a particle is
+/// put on it at a distance along it, touching its upper face: a 0.1 m ball on a ramp
+/// 0.1 m thick at −30° sits 0.15 m from the segment, 1 m along it, and then slides down
+/// it frictionless with a = g sin 30° (½ a t² = 0.6131… m in 0.5 s, to 1e-9 m: the
+/// contact holds it on the face from t = 0).
+#[test]
+fn a_particle_is_put_on_a_ramp_typed_by_slope_and_length() {
+    let scene = Scene::new()
+        .with_particle(Particle::new("ball", 1.0).radius(0.1).position([3.0, 3.0]))
+        .with_ramp(physics::Ramp::new("incline", [0.0, 0.0], [4.0, 0.0]));
+    let mut harness = harness(App::new(scene));
+    let type_into = |harness: &mut Harness<'static, App>, label: &str, text: &str| {
+        harness.get_by_label(label).focus();
+        harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+        harness.get_by_label(label).type_text(text);
+        harness.key_press(Key::Enter);
+        harness.run();
+    };
+    harness.state_mut().selection = Some(Selection::Ramp(0));
+    harness.run();
+    type_into(&mut harness, "slope", "-30");
+    type_into(&mut harness, "length", "3");
+    let ramp = harness.state().document.scene().ramps[0].clone();
+    let down = DVec2::new(30_f64.to_radians().cos(), -30_f64.to_radians().sin());
+    assert!(
+        ramp.to.to_dvec2().distance(3.0 * down) < 1e-12,
+        "to at 3 m down the slope: {:?}",
+        ramp.to
+    );
+
+    harness.state_mut().selection = Some(Selection::Particle(0));
+    harness.run();
+    type_into(&mut harness, "along it", "1");
+    let at = harness.state().document.scene().particles[0]
+        .position
+        .to_dvec2();
+    let along = at.dot(down);
+    let off = at.perp_dot(down).abs();
+    assert!((along - 1.0).abs() < 1e-12, "1 m along: {along}");
+    assert!((off - 0.15).abs() < 1e-12, "touching the face: {off} m off");
+    assert!(at.y > down.y * along, "on the upper face: {at}");
+
+    let mut run = physics::Simulation::new(harness.state().document.scene()).expect("it runs");
+    run.step_to(0.5).expect("finite");
+    let slid = run.positions()[0].dot(down) - 1.0;
+    let theory = 0.5 * 9.81 * 30_f64.to_radians().sin() * 0.25;
+    assert!(
+        (slid - theory).abs() < 1e-9,
+        "slid {slid} m, theory {theory} m"
+    );
+    let off = run.positions()[0].perp_dot(down).abs();
+    assert!((off - 0.15).abs() < 1e-9, "still on the face: {off}");
+}

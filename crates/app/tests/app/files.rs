@@ -317,16 +317,7 @@ fn the_unsaved_prompt_saves_then_goes_on() {
 
     // A scene without a file: Save asks where, and the example opens once it is saved.
     let save_as = |harness: &mut Harness<'_, App>, name: &str| {
-        harness.get_by_label("folder").focus();
-        harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
-        harness
-            .get_by_label("folder")
-            .type_text(&folder.to_string_lossy());
-        harness.run();
-        harness.get_by_label("file name").focus();
-        harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
-        harness.get_by_label("file name").type_text(name);
-        harness.run();
+        fill_dialog(harness, &folder, name);
         harness.get_by_label("Save").click();
         harness.run();
     };
@@ -377,6 +368,84 @@ fn the_unsaved_prompt_saves_then_goes_on() {
     std::fs::remove_dir_all(&folder).ok();
 }
 
+/// Types `folder` and `name` into the open file dialog, each replacing what was there.
+fn fill_dialog(harness: &mut Harness<'_, App>, folder: &std::path::Path, name: &str) {
+    harness.get_by_label("folder").focus();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness
+        .get_by_label("folder")
+        .type_text(&folder.to_string_lossy());
+    harness.run();
+    harness.get_by_label("file name").focus();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.get_by_label("file name").type_text(name);
+    harness.run();
+}
+
 fn harness_for(scene: Scene) -> Harness<'static, App> {
     harness(App::new(scene))
+}
+
+/// The first click after a file dialog is not lost: a graph exported (Export CSV…, a
+/// name, Enter) says so in the status line, not in a box that the next click only
+/// dismissed (and the keys typed after it reached the shortcuts); one click on Reset then
+/// resets the run.
+#[test]
+fn the_first_click_after_a_file_dialog_is_not_lost() {
+    let folder = std::env::temp_dir().join(format!("newtonlab-first-click-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let mut harness =
+        crate::common::tall_harness(App::new(crate::common::example_scene("pendulum")));
+    crate::common::play_frames(&mut harness, 10);
+    harness
+        .get_all_by_label("Export CSV…")
+        .next()
+        .expect("a graph to export")
+        .click();
+    harness.run();
+    fill_dialog(&mut harness, &folder, "swing.csv");
+    harness.key_press(Key::Enter);
+    harness.run();
+    assert!(folder.join("swing.csv").exists(), "exported by Enter");
+    assert!(
+        harness.state().files.message.is_none(),
+        "no box to dismiss: {:?}",
+        harness.state().files.message
+    );
+    let notice = harness.state().notice.clone().map(|(text, _)| text);
+    assert!(
+        notice.as_deref().is_some_and(|n| n.starts_with("Exported")),
+        "said in the status line: {notice:?}"
+    );
+    assert!(!harness.state().runner.is_editing(), "a run to reset");
+    harness.get_by_label("Reset").click();
+    harness.run();
+    assert!(
+        harness.state().runner.is_editing(),
+        "the first click after the dialog resets the run"
+    );
+    std::fs::remove_dir_all(&folder).ok();
+}
+
+/// Save As offers an example its own file name, not `scene.toml`.
+#[test]
+fn save_as_offers_an_example_its_own_name() {
+    let mut harness = harness_for(example_scene("pendulum"));
+    harness.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::S);
+    harness.run();
+    let name = harness
+        .get_by_label("file name")
+        .value()
+        .unwrap_or_default();
+    assert_eq!(name, "pendulum.toml");
+    harness.get_by_label("Cancel").click();
+    harness.run();
+    let mut harness = harness_for(one_ball());
+    harness.key_press_modifiers(Modifiers::COMMAND | Modifiers::SHIFT, Key::S);
+    harness.run();
+    let name = harness
+        .get_by_label("file name")
+        .value()
+        .unwrap_or_default();
+    assert_eq!(name, "scene.toml", "a scene of one's own");
 }

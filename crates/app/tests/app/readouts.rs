@@ -199,13 +199,13 @@ fn a_rods_angle_and_length_are_plotted() {
 /// pendulum's `bob.x` has its maxima located in the run — at whole periods,
 /// 4 √(L/g) K(sin 30°) = 3.044625 s, to 1e-8 s (rk4's error over a few periods is some
 /// 1e-12 s; a parabola through samples 5 ms apart is good to some 1e-7 s only), at
-/// 2 sin 60° m to 1e-9 m — and gives the period from them, to its 6 decimals, saying
-/// they were located.
+/// 2 sin 60° m to 1e-9 m — and gives the period from them over their two whole cycles
+/// (three maxima: two cycles to compare), to its 6 decimals, saying they were located.
 #[test]
 fn a_graph_reads_the_period_of_its_series() {
     let mut harness =
         crate::common::tall_harness(App::new(crate::common::example_scene("pendulum")));
-    play_frames(&mut harness, 70);
+    play_frames(&mut harness, 100);
     harness
         .get_all_by_label("extremes and zeros")
         .next()
@@ -237,7 +237,10 @@ fn a_graph_reads_the_period_of_its_series() {
         .iter()
         .find(|r| r.starts_with("period of bob.x"))
         .unwrap_or_else(|| panic!("no period among {readings:?}"));
-    assert!(text.contains("located in the run"), "{text}");
+    assert!(
+        text.contains("located in the run") && text.contains("2 cycles of 1 maximum"),
+        "{text}"
+    );
     let number: f64 = text
         .split(": ")
         .nth(1)

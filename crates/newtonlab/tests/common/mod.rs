@@ -36,6 +36,47 @@ pub fn scene_file(name: &str, text: &str) -> (tempdir::Dir, String) {
     (dir, path)
 }
 
+/// Asserts that `output` is a refusal of bad input (exit 2) whose message holds `words`.
+pub fn assert_refused(output: &Output, words: &str, context: &dyn std::fmt::Debug) {
+    assert_eq!(
+        output.status.code(),
+        Some(2),
+        "{context:?}: {}",
+        stderr(output)
+    );
+    assert!(
+        stderr(output).contains(words),
+        "{context:?}: {}",
+        stderr(output)
+    );
+}
+
+/// Writes to `path` the built-in scene `example` as a scene file (its state at the start,
+/// every key spelled out) under the integration `method`.
+pub fn example_under(example: &str, method: &str, path: &str) {
+    let written = newtonlab(&[
+        "run",
+        &format!("example:{example}"),
+        "--until",
+        "0",
+        "--save-state",
+        path,
+    ]);
+    assert!(written.status.success(), "{}", stderr(&written));
+    let text = std::fs::read_to_string(path).expect("the state is written");
+    let changed: Vec<String> = text
+        .lines()
+        .map(|line| {
+            if line.starts_with("integrator = ") {
+                format!("integrator = \"{method}\"")
+            } else {
+                line.to_owned()
+            }
+        })
+        .collect();
+    std::fs::write(path, changed.join("\n")).expect("the scene is written");
+}
+
 pub mod tempdir {
     /// A directory removed when dropped.
     pub struct Dir {

@@ -44,6 +44,15 @@ impl Drag {
         force[self.particle] += self.force(v);
     }
 
+    /// How fast it brings the particle's velocity to rest at velocities `v`, per second
+    /// (the largest eigenvalue of −∂F/∂v over the mass: b/m, and 2c|v|/m more for the
+    /// quadratic part). A fixed-step method follows the decay only while this rate times
+    /// the step stays below [`crate::tuning::DRAG_STEP`]; beyond the methods' stability
+    /// (2 for Euler's, 2.79 for rk4) each step overshoots and multiplies the velocity.
+    pub fn rate(&self, v: &[DVec2], mass: f64) -> f64 {
+        (self.linear + 2.0 * self.quadratic * v[self.particle].length()) / mass
+    }
+
     /// The power it takes out of the motion at velocities `v`, watts: −F·v.
     pub fn power(&self, v: &[DVec2]) -> f64 {
         -self.force(v).dot(v[self.particle])

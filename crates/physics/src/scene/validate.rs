@@ -354,6 +354,26 @@ impl Checker<'_> {
                 );
             }
             self.rules(s, fields::PARTICLE, particle);
+            // Linear drag decays the velocity at b/m whatever the speed: a fixed-step
+            // method that cannot follow it would make energy from nothing from the start.
+            let settings = &self.scene.simulation;
+            let rate = particle.linear_drag / particle.mass;
+            if settings.integrator != crate::Integrator::Dopri5
+                && !particle.fixed
+                && particle.mass > 0.0
+                && rate * settings.time_step > crate::tuning::DRAG_STEP
+            {
+                let words = say(
+                    "scene-drag-too-strong",
+                    &[
+                        ("a", &particle.linear_drag.to_string()),
+                        ("b", &particle.mass.to_string()),
+                        ("c", &format!("{:.3e}", 1.0 / rate)),
+                        ("d", &settings.time_step.to_string()),
+                    ],
+                );
+                self.report(s, "linear_drag", &words);
+            }
         }
     }
 

@@ -11,11 +11,13 @@ numbers, bit for bit, as the ``newtonlab`` command line::
 
 ``run`` is ``newtonlab run``, ``sweep`` is ``newtonlab sweep``, ``validate`` is
 ``newtonlab validate``; ``Simulation`` steps a scene from your own loop. Every bad input
-raises ``SceneError`` (a ``ValueError``) with the scene file's own words; a run that
-fails raises ``SimulationError``.
+raises ``SceneError`` (a ``ValueError``) with the scene file's own words, a file that
+cannot be read ``FileNotFoundError``, ``IsADirectoryError`` or ``PermissionError``; a
+run that fails raises ``SimulationError``.
 """
 
 from ._native import (
+    __version__,
     Scene,
     SceneError,
     SceneObject,
@@ -31,6 +33,7 @@ from ._native import (
 )
 
 __all__ = [
+    "__version__",
     "Scene",
     "SceneError",
     "SceneObject",

@@ -12,6 +12,9 @@ Vector = Union[Tuple[float, float], Sequence[float], Mapping[str, float]]
 SceneLike = Union["Scene", str, os.PathLike]
 """A ``Scene``, a scene file's path (``.toml`` or ``.json``), or ``"example:NAME"``."""
 
+__version__: str
+"""The package's version."""
+
 class SceneError(ValueError):
     """A scene, a value or an argument NewtonLab cannot take; the message says which and why."""
 
@@ -137,7 +140,11 @@ class Simulation:
         """Momentum, kg·m/s."""
 
 def load(source: Union[str, os.PathLike]) -> Scene:
-    """Reads a scene file (``.toml`` or ``.json``) or ``"example:NAME"``."""
+    """Reads a scene file (``.toml`` or ``.json``) or ``"example:NAME"``.
+
+    Raises ``SceneError`` for a scene with problems (each at its line and column),
+    ``FileNotFoundError``, ``IsADirectoryError`` or ``PermissionError`` for a file that
+    cannot be read."""
 
 def examples() -> List[Tuple[str, str]]:
     """The built-in scenes: ``(name, title)`` pairs, each loadable as ``load("example:NAME")``."""

@@ -118,5 +118,4 @@ pub use scene::{
 pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};
 pub use trajectory::{
     IMPACT_COLUMNS, LEDGER_COLUMNS, MAX_NUMBERS, MAX_STEPS, MAX_WORK, Plan, Row, Trajectory,
-    instant_text,
 };

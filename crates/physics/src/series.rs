@@ -263,7 +263,7 @@ pub fn range_problem(text: &str, from: f64, to: f64, step: f64) -> String {
 ///
 /// # Errors
 /// The bound exceeded, in words.
-pub fn sweep_extent(until: f64, runs: f64, steps: f64, work: f64) -> Result<(), String> {
+fn sweep_extent(until: f64, runs: f64, steps: f64, work: f64) -> Result<(), String> {
     if steps > crate::MAX_STEPS {
         return Err(say(
             "series-too-many-steps",
@@ -686,6 +686,17 @@ impl Sweep {
     /// # Errors
     /// The first problem, in words.
     pub fn check(&self, scene: &Scene) -> Result<(), String> {
+        let simulation = Simulation::new(scene).map_err(|e| e.to_string())?;
+        Measuring::new(&self.measures, &simulation, self.until)?;
+        self.extent(scene)
+    }
+
+    /// Whether the series' work is within its bounds ([`Self::check`]), without loading
+    /// the scene: what a scene file's `[[series]]` is checked for.
+    ///
+    /// # Errors
+    /// The bound exceeded, in words.
+    pub fn extent(&self, scene: &Scene) -> Result<(), String> {
         let runs: f64 = self.varies.iter().map(|v| v.values.len() as f64).product();
         if runs > MAX_RUNS as f64 {
             return Err(say(
@@ -696,8 +707,6 @@ impl Sweep {
                 ],
             ));
         }
-        let simulation = Simulation::new(scene).map_err(|e| e.to_string())?;
-        Measuring::new(&self.measures, &simulation, self.until)?;
         // A run's work depends on the values only through the simulation's settings
         // (its time step, its start).
         let timed = self

@@ -514,7 +514,7 @@ const GRID_ROUNDING: f64 = 4.0 * f64::EPSILON;
 /// A row's instant as text: an instant of the grid k·`every` as the decimal the grid
 /// names it (`0.7` for 7 × 0.1, which is 0.7000000000000001 in f64: a reader wants the
 /// instant they asked for), any other as the shortest text that reads back to it.
-pub fn instant_text(t: f64, every: Option<f64>) -> String {
+fn instant_text(t: f64, every: Option<f64>) -> String {
     let exact = format!("{t:?}");
     match every.and_then(|every| grid_name(t, every)) {
         // Where the shortest text already names the grid's instant, it stays as it was.

@@ -88,26 +88,10 @@ impl Series {
                 "until",
                 super::say("scene-series-until", &[("until", &until)]),
             ));
-        } else if let Some(values) = range_values(self.from, self.to, self.step) {
-            // Bounded as `sweep` is (the varied value may be the time step itself).
-            let runs = values.len() as f64;
-            let (steps, work) = crate::trajectory::run_size(scene, self.until);
-            let timed = self.vary.starts_with("simulation.");
-            let (steps, work) = if timed {
-                let fewest = values.iter().copied().fold(f64::INFINITY, f64::min);
-                let scale = scene.simulation.time_step / fewest.max(f64::MIN_POSITIVE);
-                let scale = if self.vary == "simulation.time_step" {
-                    scale
-                } else {
-                    1.0
-                };
-                (steps * scale, work * scale * runs)
-            } else {
-                (steps, work * runs)
-            };
-            if let Err(why) = crate::series::sweep_extent(self.until, runs, steps, work) {
-                problems.push(("until", why));
-            }
+        } else if let Ok(sweep) = self.sweep(scene)
+            && let Err(why) = sweep.extent(scene)
+        {
+            problems.push(("until", why));
         }
         for text in &self.measure {
             if let Err(why) = Measure::parse(text).and_then(|m| m.check_in(scene)) {

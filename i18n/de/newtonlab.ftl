@@ -384,6 +384,7 @@ scene-named = { $kind ->
         [rod] Stange
         [string] Faden
         [ramp] Rampe
+        [body] Körper
        *[graph] Graph
     } '{ $name }'
 scene-numbered = { $kind ->
@@ -392,6 +393,7 @@ scene-numbered = { $kind ->
         [rod] Stange
         [string] Faden
         [ramp] Rampe
+        [body] Körper
        *[graph] Graph
     } #{ $number }
 scene-not-finite = { $field } muss eine endliche Zahl sein, nicht { $value }
@@ -777,3 +779,50 @@ scene-json-duplicate-key = der Schlüssel „{ $key }“ steht zweimal in einem 
 scene-number-beyond-f64 = { $text } liegt jenseits dessen, was eine 64-Bit-Zahl fasst (etwa 2,2e-308 bis 1,8e308 dem Betrag nach, oder 0)
 file-save-changes = Speichern
 file-save-changes-hint = Die Änderungen speichern, dann weiter
+scene-body-shape = shape muss "box" oder "polygon" sein, nicht "{ $got }"
+scene-must-be-points = muss eine Liste von Punkten sein, wie [[0.0, 0.0], [0.4, 0.0], [0.2, 0.3]], nicht { $got }
+scene-body-box-size = ein Quader braucht { $field } größer als 0
+scene-body-not-box = { $field } gehört zu einem Quader: der Umriss eines Polygons sind seine Ecken ({ $field } weglassen)
+scene-body-vertex-count = ein Polygon braucht 3 bis { $most } Ecken, nicht { $count }
+scene-body-vertex-not-finite = Ecke { $k } ist kein endlicher Punkt einer Größe, die NewtonLab simuliert (höchstens 1e100)
+scene-body-repeated-vertex = die Ecken { $a } und { $b } sind derselbe Punkt: eine weglassen
+scene-body-collinear = die Ecken { $a }, { $b } und { $c } liegen auf einer Geraden: die mittlere weglassen
+scene-body-clockwise = die Ecken laufen im Uhrzeigersinn: gegen den Uhrzeigersinn angeben (die Liste umkehren)
+scene-body-concave = der Umriss ist an Ecke { $k } nicht konvex: ein Körper muss konvex sein (eine konkave Form aus mehreren Körpern bauen)
+scene-body-winds = der Umriss kreuzt sich selbst (er läuft mehr als einmal herum): die Ecken der Reihe nach um den Umriss angeben
+scene-body-no-mass = braucht eine Masse (kg) oder eine Dichte (kg/m²)
+scene-body-mass-and-density = eine Masse oder eine Dichte angeben, nicht beides
+scene-body-static-friction = static_friction { $static } muss mindestens die Gleitreibung { $kinetic } sein
+scene-body-overlap = überlappt am Anfang den Körper „{ $other }“: die beiden auseinanderrücken
+cli-check-body = Körper „{ $name }“: { $shape }, Fläche { $area } m², Masse { $mass } kg, Trägheitsmoment { $inertia } kg·m² um seinen Schwerpunkt, bei { $centroid } m im Umriss wie eingegeben
+cli-check-bodies-free = Körper spüren das homogene Feld und bewegen sich frei: sie stoßen noch nicht an Wände, Rampen, Teilchen oder einander und liegen nicht auf ihnen auf
+edit-move-body = Körper verschieben
+edit-add-body = Körper hinzufügen
+edit-delete-body = Körper löschen
+tool-box = Quader
+tool-box-hint = Von Ecke zu Ecke ziehen, um einen starren Quader zu zeichnen (7)
+field-body-width = Breite
+field-body-width-help = Ausdehnung eines Quaders entlang seiner eigenen x-Achse
+field-body-height = Höhe
+field-body-height-help = Ausdehnung eines Quaders entlang seiner eigenen y-Achse
+field-body-mass = Masse
+field-body-mass-help = Masse, größer als 0 (oder stattdessen die Dichte angeben)
+field-body-density = Dichte
+field-body-density-help = Masse pro Fläche: die Fläche der Form ergibt die Masse
+field-body-position = Position
+field-body-position-help = Der Schwerpunkt
+field-body-angle = Winkel
+field-body-angle-help = Ausrichtung, gegen den Uhrzeigersinn
+field-body-velocity = Geschwindigkeit
+field-body-velocity-help = Die Geschwindigkeit des Schwerpunkts
+field-body-spin = Drehung
+field-body-spin-help = Winkelgeschwindigkeit ω, gegen den Uhrzeigersinn positiv
+field-body-restitution = Stoßzahl
+field-body-restitution-help = 0 (kein Abprall) bis 1 (vollkommen elastisch)
+field-body-friction = Reibung
+field-body-friction-help = Gleitreibungskoeffizient
+field-body-fixed = fest
+field-body-fixed-help = Ein fester Körper bewegt sich nie
+field-body-color = Farbe
+field-body-color-help = Anzeigefarbe, "#rrggbb"
+status-bodies = { $bodies } Körper

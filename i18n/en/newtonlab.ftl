@@ -385,6 +385,7 @@ scene-named = { $kind ->
         [rod] rod
         [string] string
         [ramp] ramp
+        [body] body
        *[graph] graph
     } '{ $name }'
 scene-numbered = { $kind ->
@@ -393,6 +394,7 @@ scene-numbered = { $kind ->
         [rod] rod
         [string] string
         [ramp] ramp
+        [body] body
        *[graph] graph
     } #{ $number }
 scene-not-finite = { $field } must be a finite number, got { $value }
@@ -778,3 +780,50 @@ scene-json-duplicate-key = the key '{ $key }' appears twice in one object; keep 
 scene-number-beyond-f64 = { $text } is beyond what a 64-bit number holds (about 2.2e-308 to 1.8e308 in size, or 0)
 file-save-changes = Save
 file-save-changes-hint = Save the changes, then go on
+scene-body-shape = shape must be "box" or "polygon", got "{ $got }"
+scene-must-be-points = must be a list of points, like [[0.0, 0.0], [0.4, 0.0], [0.2, 0.3]], got { $got }
+scene-body-box-size = a box needs a { $field } greater than 0
+scene-body-not-box = { $field } is a box's: a polygon's outline is its vertices (leave { $field } out)
+scene-body-vertex-count = a polygon needs 3 to { $most } vertices, got { $count }
+scene-body-vertex-not-finite = vertex { $k } is not a finite point of a size NewtonLab simulates (at most 1e100)
+scene-body-repeated-vertex = vertices { $a } and { $b } are the same point: leave one out
+scene-body-collinear = vertices { $a }, { $b } and { $c } lie on one line: leave out the middle one
+scene-body-clockwise = the vertices go clockwise: list them counter-clockwise (reverse the list)
+scene-body-concave = the outline is not convex at vertex { $k }: a body must be convex (build a concave shape from several bodies)
+scene-body-winds = the outline crosses itself (it goes round more than once): list the corners in order round the outline
+scene-body-no-mass = needs a mass (kg) or a density (kg/m²)
+scene-body-mass-and-density = give a mass or a density, not both
+scene-body-static-friction = static_friction { $static } must be at least the kinetic friction { $kinetic }
+scene-body-overlap = overlaps body '{ $other }' at the start: move one of them apart
+cli-check-body = body '{ $name }': { $shape }, area { $area } m², mass { $mass } kg, moment of inertia { $inertia } kg·m² about its centroid, at { $centroid } m in the outline as typed
+cli-check-bodies-free = bodies feel the uniform field and move freely: they do not yet strike or rest on walls, ramps, particles or each other
+edit-move-body = move body
+edit-add-body = add body
+edit-delete-body = delete body
+tool-box = Box
+tool-box-hint = Drag corner to corner to draw a rigid box (7)
+field-body-width = width
+field-body-width-help = A box's extent along its own x
+field-body-height = height
+field-body-height-help = A box's extent along its own y
+field-body-mass = mass
+field-body-mass-help = Mass, greater than 0 (or give the density instead)
+field-body-density = density
+field-body-density-help = Mass per area: the shape's area gives the mass
+field-body-position = position
+field-body-position-help = The centroid
+field-body-angle = angle
+field-body-angle-help = Orientation, counter-clockwise
+field-body-velocity = velocity
+field-body-velocity-help = The centroid's velocity
+field-body-spin = spin
+field-body-spin-help = Angular velocity ω, counter-clockwise positive
+field-body-restitution = restitution
+field-body-restitution-help = 0 (no bounce) to 1 (perfectly elastic)
+field-body-friction = friction
+field-body-friction-help = Kinetic coefficient of friction
+field-body-fixed = fixed
+field-body-fixed-help = A fixed body never moves
+field-body-color = colour
+field-body-color-help = Display colour, "#rrggbb"
+status-bodies = { $bodies } bodies

@@ -384,6 +384,7 @@ scene-named = { $kind ->
         [rod] varilla
         [string] cuerda
         [ramp] rampa
+        [body] cuerpo
        *[graph] gráfica
     } '{ $name }'
 scene-numbered = { $kind ->
@@ -392,6 +393,7 @@ scene-numbered = { $kind ->
         [rod] varilla
         [string] cuerda
         [ramp] rampa
+        [body] cuerpo
        *[graph] gráfica
     } #{ $number }
 scene-not-finite = { $field } debe ser un número finito, no { $value }
@@ -777,3 +779,50 @@ scene-json-duplicate-key = la clave «{ $key }» aparece dos veces en un objeto;
 scene-number-beyond-f64 = { $text } está fuera de lo que cabe en un número de 64 bits (de unos 2,2e-308 a 1,8e308 en tamaño, o 0)
 file-save-changes = Guardar
 file-save-changes-hint = Guardar los cambios y seguir
+scene-body-shape = shape debe ser "box" o "polygon", no "{ $got }"
+scene-must-be-points = debe ser una lista de puntos, como [[0.0, 0.0], [0.4, 0.0], [0.2, 0.3]], no { $got }
+scene-body-box-size = una caja necesita { $field } mayor que 0
+scene-body-not-box = { $field } es de una caja: el contorno de un polígono son sus vértices (quite { $field })
+scene-body-vertex-count = un polígono necesita de 3 a { $most } vértices, no { $count }
+scene-body-vertex-not-finite = el vértice { $k } no es un punto finito de un tamaño que NewtonLab simula (como mucho 1e100)
+scene-body-repeated-vertex = los vértices { $a } y { $b } son el mismo punto: quite uno
+scene-body-collinear = los vértices { $a }, { $b } y { $c } están en una recta: quite el del medio
+scene-body-clockwise = los vértices van en sentido horario: escríbalos en sentido antihorario (invierta la lista)
+scene-body-concave = el contorno no es convexo en el vértice { $k }: un cuerpo debe ser convexo (construya una forma cóncava con varios cuerpos)
+scene-body-winds = el contorno se cruza a sí mismo (da más de una vuelta): escriba las esquinas en orden alrededor del contorno
+scene-body-no-mass = necesita una masa (kg) o una densidad (kg/m²)
+scene-body-mass-and-density = dé una masa o una densidad, no ambas
+scene-body-static-friction = static_friction { $static } debe ser al menos el rozamiento cinético { $kinetic }
+scene-body-overlap = se solapa con el cuerpo «{ $other }» al comenzar: separe uno de ellos
+cli-check-body = cuerpo «{ $name }»: { $shape }, área { $area } m², masa { $mass } kg, momento de inercia { $inertia } kg·m² respecto a su centroide, en { $centroid } m del contorno tal como se escribió
+cli-check-bodies-free = los cuerpos sienten el campo uniforme y se mueven libremente: aún no chocan ni se apoyan en paredes, rampas, partículas ni entre sí
+edit-move-body = mover cuerpo
+edit-add-body = añadir cuerpo
+edit-delete-body = eliminar cuerpo
+tool-box = Caja
+tool-box-hint = Arrastrar de esquina a esquina para dibujar una caja rígida (7)
+field-body-width = ancho
+field-body-width-help = Extensión de una caja a lo largo de su propio eje x
+field-body-height = alto
+field-body-height-help = Extensión de una caja a lo largo de su propio eje y
+field-body-mass = masa
+field-body-mass-help = Masa, mayor que 0 (o dé la densidad en su lugar)
+field-body-density = densidad
+field-body-density-help = Masa por área: el área de la forma da la masa
+field-body-position = posición
+field-body-position-help = El centroide
+field-body-angle = ángulo
+field-body-angle-help = Orientación, en sentido antihorario
+field-body-velocity = velocidad
+field-body-velocity-help = La velocidad del centroide
+field-body-spin = giro
+field-body-spin-help = Velocidad angular ω, positiva en sentido antihorario
+field-body-restitution = restitución
+field-body-restitution-help = 0 (sin rebote) a 1 (perfectamente elástico)
+field-body-friction = rozamiento
+field-body-friction-help = Coeficiente de rozamiento cinético
+field-body-fixed = fijo
+field-body-fixed-help = Un cuerpo fijo nunca se mueve
+field-body-color = color
+field-body-color-help = Color de dibujo, "#rrggbb"
+status-bodies = { $bodies } cuerpos

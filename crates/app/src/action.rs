@@ -115,6 +115,7 @@ pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
     (plain(Key::Num4), Action::Tool(Tool::Ramp)),
     (plain(Key::Num5), Action::Tool(Tool::Rod)),
     (plain(Key::Num6), Action::Tool(Tool::String)),
+    (plain(Key::Num7), Action::Tool(Tool::Box)),
     (plain(Key::M), Action::Instrument(Instrument::Tape)),
     (plain(Key::P), Action::Instrument(Instrument::Probe)),
     (plain(Key::T), Action::ToggleStopwatch),

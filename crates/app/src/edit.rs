@@ -12,6 +12,7 @@ pub enum Object {
     Rod,
     String,
     Ramp,
+    Body,
 }
 
 /// One undoable change of the scene.
@@ -30,6 +31,7 @@ pub enum Edit {
     MoveParticle,
     MoveRamp,
     MoveRampEnd,
+    MoveBody,
     /// A velocity drawn on the canvas.
     SetVelocity,
     SetTimeScale,
@@ -56,21 +58,24 @@ pub enum Edit {
 impl Edit {
     /// Every edit but [`Edit::Set`]'s fields, for the tests.
     #[cfg(test)]
-    const ALL: [Self; 30] = [
+    const ALL: [Self; 33] = [
         Self::Add(Object::Particle),
         Self::Add(Object::Spring),
         Self::Add(Object::Rod),
         Self::Add(Object::String),
         Self::Add(Object::Ramp),
+        Self::Add(Object::Body),
         Self::Delete(Object::Particle),
         Self::Delete(Object::Spring),
         Self::Delete(Object::Rod),
         Self::Delete(Object::String),
         Self::Delete(Object::Ramp),
+        Self::Delete(Object::Body),
         Self::Rename,
         Self::MoveParticle,
         Self::MoveRamp,
         Self::MoveRampEnd,
+        Self::MoveBody,
         Self::SetVelocity,
         Self::SetTimeScale,
         Self::SetIntegrator,
@@ -98,15 +103,18 @@ impl Edit {
             Self::Add(Object::Rod) => "edit-add-rod",
             Self::Add(Object::String) => "edit-add-string",
             Self::Add(Object::Ramp) => "edit-add-ramp",
+            Self::Add(Object::Body) => "edit-add-body",
             Self::Delete(Object::Particle) => "edit-delete-particle",
             Self::Delete(Object::Spring) => "edit-delete-spring",
             Self::Delete(Object::Rod) => "edit-delete-rod",
             Self::Delete(Object::String) => "edit-delete-string",
             Self::Delete(Object::Ramp) => "edit-delete-ramp",
+            Self::Delete(Object::Body) => "edit-delete-body",
             Self::Rename => "edit-rename",
             Self::MoveParticle => "edit-move-particle",
             Self::MoveRamp => "edit-move-ramp",
             Self::MoveRampEnd => "edit-move-ramp-end",
+            Self::MoveBody => "edit-move-body",
             Self::SetVelocity => "edit-set-velocity",
             Self::SetTimeScale => "edit-set-time-scale",
             Self::SetIntegrator => "edit-set-integrator",

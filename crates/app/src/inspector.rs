@@ -548,6 +548,26 @@ fn selected(
             );
             problem = ramp_slope(ui, document, i).or(problem);
         }
+        Some(Selection::Body(i)) if i < document.scene().bodies.len() => {
+            let scene = document.scene();
+            // A polygon's size is its vertices: a box's width and height are not shown.
+            let shown = match scene.bodies[i].shape {
+                physics::Shape::Box => fields::BODY,
+                physics::Shape::Polygon(_) => {
+                    let size = fields::BODY.iter().take_while(|f| f.key != "mass").count();
+                    &fields::BODY[size..]
+                }
+            };
+            let palette = scene.particles.len() + i;
+            problem = object(
+                ui,
+                document,
+                Section::Body(i),
+                palette,
+                shown,
+                (move |s| &s.bodies[i], move |s| &mut s.bodies[i]),
+            );
+        }
         Some(_) => *selection = None,
     }
     problem
@@ -809,6 +829,7 @@ fn section_kind(scene: &Scene, section: Section) -> &'static str {
         Section::Spring(_) => "spring",
         Section::Tie(i) => scene.ties.get(i).map_or("rod", |tie| tie.kind.as_str()),
         Section::Ramp(_) => "ramp",
+        Section::Body(_) => "body",
         Section::Graph(_) => "graph",
         Section::Series(_) => "series",
         Section::Root | Section::View => "scene",

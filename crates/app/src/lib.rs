@@ -549,6 +549,7 @@ impl App {
                     _ => Edit::Delete(Object::Rod),
                 },
                 Selection::Ramp(_) => Edit::Delete(Object::Ramp),
+                Selection::Body(_) => Edit::Delete(Object::Body),
             };
             self.document
                 .apply(edit, |scene| scene.remove(selected.section()));

@@ -104,18 +104,7 @@ impl App {
                 )],
             ));
             ui.separator();
-            let scene = self.document.scene();
-            #[expect(clippy::cast_precision_loss, reason = "counts of objects")]
-            let count = |n: usize| Arg::Number(n as f64);
-            ui.label(tr_with(
-                "status-objects",
-                &[
-                    ("particles", count(scene.particles.len())),
-                    ("springs", count(scene.springs.len())),
-                    ("ties", count(scene.ties.len())),
-                    ("ramps", count(scene.ramps.len())),
-                ],
-            ));
+            objects(ui, self.document.scene());
             if !self.announcer.text.is_empty() {
                 ui.separator();
                 let said = ui.label(&self.announcer.text);
@@ -126,5 +115,26 @@ impl App {
             }
         });
         action
+    }
+}
+
+/// What the scene holds, counted by kind.
+fn objects(ui: &mut Ui, scene: &physics::Scene) {
+    #[expect(clippy::cast_precision_loss, reason = "counts of objects")]
+    let count = |n: usize| Arg::Number(n as f64);
+    ui.label(tr_with(
+        "status-objects",
+        &[
+            ("particles", count(scene.particles.len())),
+            ("springs", count(scene.springs.len())),
+            ("ties", count(scene.ties.len())),
+            ("ramps", count(scene.ramps.len())),
+        ],
+    ));
+    if !scene.bodies.is_empty() {
+        ui.label(tr_with(
+            "status-bodies",
+            &[("bodies", count(scene.bodies.len()))],
+        ));
     }
 }

@@ -24,6 +24,7 @@ fn every_field() -> Vec<(&'static str, &'static str, &'static str, &'static str)
     all.extend(of("rod", fields::ROD));
     all.extend(of("string", fields::STRING));
     all.extend(of("ramp", fields::RAMP));
+    all.extend(of("body", fields::BODY));
     all
 }
 

@@ -212,6 +212,12 @@ fn check(source: &str) -> Result<(), Failure> {
                 ],
             )
         );
+        for body in &scene.bodies {
+            out!("{}", describe_body(body));
+        }
+        if !scene.bodies.is_empty() {
+            out!("{}", say("cli-check-bodies-free", &[]));
+        }
         if scene.simulation.pair_forces == physics::PairForces::Tree {
             let charged = scene.particles.iter().filter(|p| p.charge != 0.0).count();
             let angle = scene.simulation.opening_angle.to_string();
@@ -228,6 +234,40 @@ fn check(source: &str) -> Result<(), Failure> {
     }
     Ok(())
 }
+/// A body's mass properties as `check` says them, to nine significant digits.
+fn describe_body(body: &physics::Body) -> String {
+    // Nine significant digits: the shortest text of the number rounded to them.
+    let number = |x: f64| {
+        let rounded: f64 = format!("{x:.8e}").parse().unwrap_or(x);
+        format!("{}", rounded + 0.0)
+    };
+    let outline = body.outline();
+    let moments = physics::moments(&outline);
+    // A centroid within rounding of the frame's origin is at it.
+    let size = moments.area.abs().sqrt();
+    let centroid = moments
+        .centroid
+        .map(|c| if c.abs() <= 1e-12 * size { 0.0 } else { c });
+    let shape = match &body.shape {
+        physics::Shape::Box => format!("box {} × {} m", number(body.width), number(body.height)),
+        physics::Shape::Polygon(vertices) => format!("polygon of {} vertices", vertices.len()),
+    };
+    say(
+        "cli-check-body",
+        &[
+            ("name", &body.name),
+            ("shape", &shape),
+            ("area", &number(moments.area)),
+            ("mass", &number(body.total_mass())),
+            ("inertia", &number(body.inertia())),
+            (
+                "centroid",
+                &format!("({}, {})", number(centroid.x), number(centroid.y)),
+            ),
+        ],
+    )
+}
+
 fn examples() {
     for example in physics::EXAMPLES {
         let title = example

@@ -1,8 +1,9 @@
 //! A simulation's state as CSV, the format of `newtonlab run` (`docs/cli.md`): the header
 //! `t`, then `NAME.x,NAME.y,NAME.vx,NAME.vy,NAME.ax,NAME.ay` per particle in scene order
 //! (and `NAME.angle,NAME.spin` after them for a particle that turns), then
+//! `NAME.x,NAME.y,NAME.vx,NAME.vy,NAME.ax,NAME.ay,NAME.angle,NAME.spin` per rigid body, then
 //! `kinetic_energy,potential_energy,total_energy,momentum_x,momentum_y` (and
-//! `angular_momentum` when any particle turns). Every number
+//! `angular_momentum` when any particle turns or there are bodies). Every number
 //! is the shortest text that parses back to the same f64, so two rows are equal as text
 //! exactly when the states are equal bit for bit.
 
@@ -22,6 +23,11 @@ impl Simulation {
                 columns.extend([format!("{name}.angle"), format!("{name}.spin")]);
             }
         }
+        for name in self.body_names() {
+            for quantity in ["x", "y", "vx", "vy", "ax", "ay", "angle", "spin"] {
+                columns.push(format!("{name}.{quantity}"));
+            }
+        }
         columns.extend(
             [
                 "kinetic_energy",
@@ -32,10 +38,15 @@ impl Simulation {
             ]
             .map(str::to_owned),
         );
-        if self.turns() {
+        if self.has_angular_momentum_column() {
             columns.push("angular_momentum".to_owned());
         }
         columns
+    }
+
+    /// Whether the rows carry the system's angular momentum: when something turns.
+    fn has_angular_momentum_column(&self) -> bool {
+        self.turns() || !self.body_names().is_empty()
     }
 
     /// The CSV header line (without a line break).
@@ -61,6 +72,19 @@ impl Simulation {
                 out.extend([p.angle, p.spin]);
             }
         }
+        for i in 0..self.body_names().len() {
+            let b = self.body(i);
+            out.extend([
+                b.position.x,
+                b.position.y,
+                b.velocity.x,
+                b.velocity.y,
+                b.acceleration.x,
+                b.acceleration.y,
+                b.angle,
+                b.spin,
+            ]);
+        }
         let energy = diagnostics.energy;
         out.extend([
             energy.kinetic,
@@ -69,7 +93,7 @@ impl Simulation {
             diagnostics.momentum.x,
             diagnostics.momentum.y,
         ]);
-        if self.turns() {
+        if self.has_angular_momentum_column() {
             out.push(diagnostics.angular_momentum);
         }
     }

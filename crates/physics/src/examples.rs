@@ -98,6 +98,7 @@ examples!(
     "galileo-incline",
     "bowling",
     "spin-bounce",
+    "thrown-board",
 );
 
 /// The built-in scene with this name.

@@ -73,6 +73,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
+mod bodies;
 mod constraints;
 mod contacts;
 mod csv;
@@ -112,8 +113,9 @@ pub use scene::error::{LoadError, Problem};
 pub use scene::fields;
 pub use scene::format::SceneFormat;
 pub use scene::{
-    Bounds, Color, Endpoint, FieldRef, Follow, Graph, PairForces, Particle, Ramp, Rule, Scene,
-    Section, Series, Settings, Spring, Tie, TieKind, Vector, View, World, check_value,
+    Body, Bounds, Color, Endpoint, FieldRef, Follow, Graph, Moments, PairForces, Particle, Ramp,
+    Rule, Scene, Section, Series, Settings, Shape, Spring, Tie, TieKind, Vector, View, World,
+    check_value, moments,
 };
 pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};
 pub use trajectory::{

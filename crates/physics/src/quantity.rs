@@ -242,11 +242,12 @@ impl Quantity {
     /// The object it names is not there (with the names there are), or a tension is asked
     /// of a spring.
     pub fn reading(&self, simulation: &Simulation) -> Result<Reading, String> {
-        self.find(
-            simulation.names(),
-            simulation.tie_names(),
-            simulation.spring_names(),
-        )
+        self.find(&Names {
+            particles: simulation.names(),
+            ties: simulation.tie_names(),
+            springs: simulation.spring_names(),
+            bodies: simulation.body_names(),
+        })
     }
 
     /// Whether `scene` has the object the quantity names.
@@ -258,33 +259,48 @@ impl Quantity {
         let particles = names(scene.particles.iter().map(|p| &p.name).collect());
         let ties = names(scene.ties.iter().map(|t| &t.name).collect());
         let springs = names(scene.springs.iter().map(|s| &s.name).collect());
-        self.find(&particles, &ties, &springs).map(|_| ())
+        let bodies = names(scene.bodies.iter().map(|b| &b.name).collect());
+        self.find(&Names {
+            particles: &particles,
+            ties: &ties,
+            springs: &springs,
+            bodies: &bodies,
+        })
+        .map(|_| ())
     }
 
     /// [`Self::reading`] among the objects of these names, in the simulation's order.
-    fn find(
-        &self,
-        particles: &[String],
-        ties: &[String],
-        springs: &[String],
-    ) -> Result<Reading, String> {
+    fn find(&self, names: &Names<'_>) -> Result<Reading, String> {
+        let Names {
+            particles,
+            ties,
+            springs,
+            bodies,
+        } = *names;
         let find = |names: &[String], name: &str| names.iter().position(|n| n == name);
         match self {
             Self::Time => Ok(Reading::Time),
             Self::Total(total) => Ok(Reading::Total(*total)),
             Self::Particle(name, of) => find(particles, name)
                 .map(|i| Reading::Particle(i, *of))
-                .ok_or_else(|| unknown("quantity-no-particle", self, name, particles)),
+                .or_else(|| find(bodies, name).map(|i| Reading::Body(i, *of)))
+                .ok_or_else(|| {
+                    let both: Vec<String> = particles.iter().chain(bodies).cloned().collect();
+                    unknown("quantity-no-particle", self, name, &both)
+                }),
             Self::Link(name, of) => {
                 if let Some(k) = find(ties, name) {
                     return Ok(Reading::Link(Link::Tie(k), *of));
                 }
-                // `NAME.angle` of a particle: a turning particle's orientation.
-                if *of == LinkOf::Angle
-                    && find(springs, name).is_none()
-                    && let Some(i) = find(particles, name)
-                {
-                    return Ok(Reading::Particle(i, Of::Angle));
+                // `NAME.angle` of a particle or a body: a turning particle's orientation,
+                // a body's.
+                if *of == LinkOf::Angle && find(springs, name).is_none() {
+                    if let Some(i) = find(particles, name) {
+                        return Ok(Reading::Particle(i, Of::Angle));
+                    }
+                    if let Some(i) = find(bodies, name) {
+                        return Ok(Reading::Body(i, Of::Angle));
+                    }
                 }
                 match (find(springs, name), of) {
                     (Some(_), LinkOf::Tension) => Err(crate::scene::say(
@@ -300,6 +316,15 @@ impl Quantity {
             }
         }
     }
+}
+
+/// The objects' names of a scene or a simulation, by kind, in scene order.
+#[derive(Clone, Copy)]
+struct Names<'a> {
+    particles: &'a [String],
+    ties: &'a [String],
+    springs: &'a [String],
+    bodies: &'a [String],
 }
 
 /// That `quantity` names `name`, which is not among `names`.
@@ -366,6 +391,9 @@ pub enum Reading {
     Time,
     /// A quantity of the particle at this index.
     Particle(usize, Of),
+    /// A quantity of the rigid body at this index (of its centroid, for position,
+    /// velocity and acceleration).
+    Body(usize, Of),
     /// A quantity of the whole system.
     Total(Total),
     /// A quantity of a rod, string or spring.
@@ -409,6 +437,22 @@ impl Simulation {
                             _ => p.kinetic_energy,
                         }
                     }
+                }
+            }
+            Reading::Body(i, of) => {
+                let b = self.body(i);
+                match of {
+                    Of::X => b.position.x,
+                    Of::Y => b.position.y,
+                    Of::Vx => b.velocity.x,
+                    Of::Vy => b.velocity.y,
+                    Of::Speed => b.speed,
+                    Of::Ax => b.acceleration.x,
+                    Of::Ay => b.acceleration.y,
+                    Of::KineticEnergy => b.kinetic_energy,
+                    Of::Angle => b.angle,
+                    Of::Spin => b.spin,
+                    Of::AngularMomentum => b.angular_momentum,
                 }
             }
             Reading::Total(total) => {

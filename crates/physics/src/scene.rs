@@ -5,6 +5,7 @@
 //! colour stays the colour that was chosen. [`crate::Simulation::new`] converts a scene
 //! into runtime state; [`Scene::validate`] lists everything wrong with one.
 
+mod body;
 mod edit;
 pub mod error;
 pub mod fields;
@@ -17,6 +18,7 @@ use glam::DVec2;
 /// numbers are written by the caller as files write them.
 pub(crate) use newtonlab_i18n::tr_text as say;
 
+pub use body::{Body, Moments, Shape, moments};
 pub use error::{FieldRef, Section};
 pub use presentation::{Follow, Graph, Series, View};
 pub use validate::{Rule, check_value};
@@ -682,6 +684,8 @@ pub struct Scene {
     pub ties: Vec<Tie>,
     /// In file order.
     pub ramps: Vec<Ramp>,
+    /// Rigid bodies, in file order; CSV columns follow the particles' in this order.
+    pub bodies: Vec<Body>,
     /// The app's graphs when the scene opens (`[[graph]]`), in file order.
     pub graphs: Vec<Graph>,
     /// The app's experiment series (`[[series]]`), in file order.
@@ -744,6 +748,13 @@ impl Scene {
     #[must_use]
     pub fn with_ramp(mut self, ramp: Ramp) -> Self {
         self.ramps.push(ramp);
+        self
+    }
+
+    /// Adds a rigid body.
+    #[must_use]
+    pub fn with_body(mut self, body: Body) -> Self {
+        self.bodies.push(body);
         self
     }
 

@@ -31,6 +31,7 @@ enum Target {
     Spring(usize),
     Tie(usize),
     Ramp(usize),
+    Body(usize),
     World,
     Simulation,
 }
@@ -154,6 +155,13 @@ impl Setting {
                     .enumerate()
                     .map(|(i, r)| (r.name.as_str(), Target::Ramp(i))),
             )
+            .chain(
+                scene
+                    .bodies
+                    .iter()
+                    .enumerate()
+                    .map(|(i, b)| (b.name.as_str(), Target::Body(i))),
+            )
             .chain([("world", Target::World), ("simulation", Target::Simulation)]);
         let (target, rest) = objects
             .filter_map(|(name, target)| {
@@ -172,6 +180,7 @@ impl Setting {
             Target::Spring(_) => numeric(fields::SPRING, key),
             Target::Tie(i) => numeric(fields::tie_fields(scene.ties[i].kind), key),
             Target::Ramp(_) => numeric(fields::RAMP, key),
+            Target::Body(_) => numeric(fields::BODY, key),
             Target::World => numeric(fields::WORLD, key),
             Target::Simulation => numeric(fields::SIMULATION, key),
         };
@@ -202,6 +211,7 @@ impl Setting {
                 write(fields, &mut scene.ties[i], key, part, value);
             }
             Target::Ramp(i) => write(fields::RAMP, &mut scene.ramps[i], key, part, value),
+            Target::Body(i) => write(fields::BODY, &mut scene.bodies[i], key, part, value),
             Target::World => write(fields::WORLD, &mut scene.world, key, part, value),
             Target::Simulation => {
                 write(fields::SIMULATION, &mut scene.simulation, key, part, value);
@@ -992,6 +1002,16 @@ impl Setting {
             Target::Spring(i) => {
                 let s = &scene.springs[i];
                 named.extend([("k", s.stiffness), ("L", s.natural_length)]);
+            }
+            Target::Body(i) => {
+                let b = &scene.bodies[i];
+                named.extend([
+                    ("m", b.total_mass()),
+                    ("I", b.inertia()),
+                    ("v0", b.velocity.to_dvec2().length()),
+                    ("h", b.position.to_dvec2().y),
+                    ("w", b.width),
+                ]);
             }
             Target::Ramp(_) | Target::World | Target::Simulation => {}
         }

@@ -156,6 +156,8 @@ pub struct Simulation {
     /// The coupled particles as a system of their own, for their impacts inside a step.
     coupled: Option<coupled::CoupledSystem>,
     state: State,
+    /// The rigid bodies, moved through each step the particles take.
+    pub(crate) bodies: crate::bodies::Bodies,
     /// The state at the start of the step being taken, to integrate again from it when
     /// an impact interrupts the step.
     start: State,
@@ -274,6 +276,7 @@ impl Simulation {
             contacts,
             coupled,
             forces,
+            bodies: crate::bodies::Bodies::new(scene),
             start: State::default(),
             state: State {
                 time: scene.simulation.start_time,
@@ -319,6 +322,7 @@ impl Simulation {
                 particle.angle = turning.angle[i];
             }
         }
+        self.bodies.save_into(&mut saved);
         saved.simulation.start_time = self.state.time;
         saved
     }
@@ -435,6 +439,7 @@ impl Simulation {
             + self.contacts.memory_bytes()
             + self.forces.links_bytes()
             + kept_acceleration
+            + self.bodies.state_bytes()
     }
 
     /// Particle names, in scene order.
@@ -690,6 +695,13 @@ impl Simulation {
             self.project_onto_ties()
                 .or_else(|tie| self.check_finite().and(Err(tie)))?;
         }
+        self.end_step(taken)
+    }
+
+    /// The step's last stages: the bodies moved through it, the count, and the checks
+    /// that every value is finite and every particle still inside the bounds.
+    fn end_step(&mut self, taken: f64) -> Result<f64, SimulationError> {
+        self.bodies.advance(self.integrator, taken);
         self.steps += 1;
         self.check_finite()?;
         if let Some(i) = self
@@ -1024,6 +1036,9 @@ impl Simulation {
             let (m, w, r) = (&self.forces.mass, &self.forces.inverse_mass, &self.radius);
             diagnostics.energy.kinetic += turning.kinetic_energy(m, w, r);
             diagnostics.angular_momentum += turning.angular_momentum(m, w, r);
+        }
+        if !self.bodies.is_empty() {
+            self.bodies.add_to(&mut diagnostics);
         }
         diagnostics
     }

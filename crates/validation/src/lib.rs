@@ -2,10 +2,11 @@
 //! Python's `newtonlab.validate()` returns. `paper` is the paper's section 4 (its tables,
 //! with simulation, theory and error columns); the other groups hold what `NewtonLab`
 //! added since (rods, strings, the integrators' orders, the tree, softening, the energy
-//! ledger, friction, saved states, events, drag, series) to closed forms or to
-//! computations written here apart from the simulation's code, each check to a tolerance
-//! stated beside it.
+//! ledger, friction, saved states, events, drag, series, turning, rigid bodies) to
+//! closed forms or to computations written here apart from the simulation's code, each
+//! check to a tolerance stated beside it.
 
+mod bodies;
 mod books;
 mod drag;
 mod events;
@@ -51,11 +52,12 @@ pub enum Group {
     Drag,
     Series,
     Turning,
+    Bodies,
 }
 
 impl Group {
     /// Every group, in the report's order.
-    pub const ALL: [Self; 13] = [
+    pub const ALL: [Self; 14] = [
         Self::Paper,
         Self::Rods,
         Self::Strings,
@@ -69,6 +71,7 @@ impl Group {
         Self::Drag,
         Self::Series,
         Self::Turning,
+        Self::Bodies,
     ];
 
     /// Its name, as `--only` takes it.
@@ -87,6 +90,7 @@ impl Group {
             Self::Drag => "drag",
             Self::Series => "series",
             Self::Turning => "turning",
+            Self::Bodies => "bodies",
         }
     }
 
@@ -129,6 +133,9 @@ impl Group {
             }
             Self::Turning => {
                 "bodies that turn: Galileo's inclined plane (slider, disc, ring), a bowled ball's slip-to-roll instant, spin at an impact"
+            }
+            Self::Bodies => {
+                "rigid bodies: moments of inertia from their outlines, free flight on the parabola with a steady turn, under each method"
             }
         }
     }
@@ -192,6 +199,7 @@ pub fn validate(
             Group::Drag => drag::drag(report)?,
             Group::Series => series::series(report)?,
             Group::Turning => turning::turning(report)?,
+            Group::Bodies => bodies::bodies(report)?,
         }
     }
     Ok((report, figures))

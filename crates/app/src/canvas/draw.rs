@@ -167,6 +167,43 @@ impl Canvas {
                 ));
             }
         }
+        for (i, (body, outline)) in scene.bodies.iter().zip(&frame.outlines).enumerate() {
+            let points: Vec<Pos2> = outline.iter().map(|&v| screen(v)).collect();
+            let colour = body_colour(scene, i);
+            if chosen(Selection::Body(i)) {
+                painter.add(Shape::closed_line(
+                    points.clone(),
+                    Stroke::new(6.0 * w, highlight),
+                ));
+            }
+            let fill = if body.fixed {
+                colour.gamma_multiply(0.5)
+            } else {
+                colour
+            };
+            painter.add(Shape::convex_polygon(
+                points.clone(),
+                fill,
+                Stroke::new(1.5 * w, p.ink),
+            ));
+            // The centroid, marked as a drawing marks it: a small cross.
+            let centre = screen(outline_centroid(outline));
+            let arm = 4.0 * w;
+            let ink =
+                if super::contrast(fill, Color32::BLACK) >= super::contrast(fill, Color32::WHITE) {
+                    Color32::BLACK
+                } else {
+                    Color32::WHITE
+                };
+            let mark = Stroke::new(1.2 * w, ink);
+            painter.line_segment([centre - Vec2::X * arm, centre + Vec2::X * arm], mark);
+            painter.line_segment([centre - Vec2::Y * arm, centre + Vec2::Y * arm], mark);
+            let pointed = [selection, hovered].contains(&Some(Selection::Body(i)));
+            if self.overlays.names || pointed {
+                let top = points.iter().map(|p| p.y).fold(f32::INFINITY, f32::min);
+                labels.push((pointed, Pos2::new(centre.x, top - 4.0), &body.name));
+            }
+        }
         if self.overlays.trails {
             painter.add(trails_mesh(
                 runner
@@ -381,6 +418,14 @@ impl Canvas {
                     egui::StrokeKind::Inside,
                 );
             }
+            Some(Drag::NewBox { from, to }) => {
+                let area = Rect::from_two_pos(screen(from), screen(to));
+                painter.rect_filled(
+                    area,
+                    0.0,
+                    Color32::from_rgba_unmultiplied(80, 120, 200, 120),
+                );
+            }
             Some(Drag::NewRamp { from, to }) => {
                 painter.line_segment(
                     [screen(from), screen(to)],
@@ -548,6 +593,20 @@ impl Dots {
             Shape::image(texture.id(), self.rect, uv, Color32::WHITE),
         );
     }
+}
+
+/// Body `i`'s colour: its own, or the palette's after the particles'.
+fn body_colour(scene: &Scene, i: usize) -> Color32 {
+    let [r, g, b] = scene.bodies[i]
+        .color
+        .unwrap_or_else(|| physics::Color::palette(scene.particles.len() + i))
+        .0;
+    Color32::from_rgb(r, g, b)
+}
+
+/// The centroid of a convex outline, metres.
+fn outline_centroid(outline: &[DVec2]) -> DVec2 {
+    physics::moments(outline).centroid
 }
 
 fn particle_colour(scene: &Scene, i: usize) -> Color32 {

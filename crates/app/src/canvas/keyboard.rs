@@ -15,10 +15,12 @@
 //! Its accessible description names what the scene holds and what is selected, where it
 //! is and how fast it moves, so a screen reader says it when the canvas has the focus.
 
+use std::fmt::Write as _;
+
 use egui::{Key, Response, Ui};
 use physics::{DVec2, Endpoint, Scene};
 
-use super::tools::{add_link, add_ramp};
+use super::tools::{add_box, add_link, add_ramp};
 use super::view::nice_length;
 use super::{Canvas, Frame, Selection, Tool};
 use crate::document::Document;
@@ -131,6 +133,7 @@ impl Canvas {
                 centre - DVec2::new(2.0 * grid, 0.0),
                 centre + DVec2::new(2.0 * grid, 0.0),
             )),
+            Tool::Box => Some(add_box(document, centre, DVec2::new(2.0 * grid, grid))),
             tool @ (Tool::Spring | Tool::Rod | Tool::String) => {
                 let Some(Selection::Particle(from)) = *selection else {
                     return;
@@ -162,7 +165,13 @@ fn objects(scene: &Scene) -> Vec<Selection> {
     let springs = (0..scene.springs.len()).map(Selection::Spring);
     let ties = (0..scene.ties.len()).map(Selection::Tie);
     let ramps = (0..scene.ramps.len()).map(Selection::Ramp);
-    particles.chain(springs).chain(ties).chain(ramps).collect()
+    let bodies = (0..scene.bodies.len()).map(Selection::Body);
+    particles
+        .chain(springs)
+        .chain(ties)
+        .chain(ramps)
+        .chain(bodies)
+        .collect()
 }
 
 /// The object `by` places after (or before, when negative) `selection`, wrapping round;
@@ -179,7 +188,7 @@ fn cycle(scene: &Scene, selection: Option<Selection>, by: i32) -> Option<Selecti
         .copied()
 }
 
-/// Moves the selected particle or ramp by `offset` metres, one undo step.
+/// Moves the selected particle, ramp or body by `offset` metres, one undo step.
 fn nudge(document: &mut Document, selection: Option<Selection>, offset: DVec2) {
     match selection {
         Some(Selection::Particle(i)) => document.apply(Edit::MoveParticle, |scene| {
@@ -191,6 +200,10 @@ fn nudge(document: &mut Document, selection: Option<Selection>, offset: DVec2) {
             let ramp = &mut scene.ramps[i];
             ramp.from = super::keep_form(ramp.from, ramp.from.to_dvec2() + offset);
             ramp.to = super::keep_form(ramp.to, ramp.to.to_dvec2() + offset);
+        }),
+        Some(Selection::Body(i)) => document.apply(Edit::MoveBody, |scene| {
+            let body = &mut scene.bodies[i];
+            body.position = super::keep_form(body.position, body.position.to_dvec2() + offset);
         }),
         _ => {}
     }
@@ -207,6 +220,10 @@ pub(super) fn describe(scene: &Scene, frame: &Frame, selection: Option<Selection
         count(scene.ties.len(), "rod or string", "rods and strings"),
         count(scene.ramps.len(), "ramp", "ramps"),
     );
+    if !scene.bodies.is_empty() {
+        text.pop();
+        let _ = write!(text, ", {}.", count(scene.bodies.len(), "body", "bodies"));
+    }
     let selected = match selection {
         Some(Selection::Particle(i)) => scene.particles.get(i).and_then(|p| {
             let (x, v) = (frame.positions.get(i)?, frame.velocities.get(i)?);
@@ -224,6 +241,17 @@ pub(super) fn describe(scene: &Scene, frame: &Frame, selection: Option<Selection
             .get(i)
             .map(|t| format!("{} {}", t.kind.as_str(), t.name)),
         Some(Selection::Ramp(i)) => scene.ramps.get(i).map(|r| format!("ramp {}", r.name)),
+        Some(Selection::Body(i)) => scene.bodies.get(i).and_then(|b| {
+            let outline = frame.outlines.get(i)?;
+            let centre = outline.iter().copied().sum::<DVec2>() / outline.len().max(1) as f64;
+            Some(format!(
+                "body {} ({}) near ({:.2}, {:.2}) m",
+                b.name,
+                b.shape.as_str(),
+                centre.x,
+                centre.y
+            ))
+        }),
         None => None,
     };
     if let Some(selected) = selected {

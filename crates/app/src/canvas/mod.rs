@@ -47,16 +47,19 @@ pub enum Tool {
     Rod,
     String,
     Ramp,
+    /// A rigid box, drawn corner to corner.
+    Box,
 }
 
 impl Tool {
-    pub const ALL: [Self; 6] = [
+    pub const ALL: [Self; 7] = [
         Self::Select,
         Self::Particle,
         Self::Spring,
         Self::Rod,
         Self::String,
         Self::Ramp,
+        Self::Box,
     ];
 
     /// The tool's name in the app's language.
@@ -68,6 +71,7 @@ impl Tool {
             Self::Rod => "tool-rod",
             Self::String => "tool-string",
             Self::Ramp => "tool-ramp",
+            Self::Box => "tool-box",
         })
     }
 
@@ -79,6 +83,7 @@ impl Tool {
             Self::Rod => "tool-rod-hint",
             Self::String => "tool-string-hint",
             Self::Ramp => "tool-ramp-hint",
+            Self::Box => "tool-box-hint",
         })
     }
 }
@@ -91,6 +96,8 @@ pub enum Selection {
     /// A rod or a string.
     Tie(usize),
     Ramp(usize),
+    /// A rigid body.
+    Body(usize),
 }
 
 impl Selection {
@@ -101,6 +108,7 @@ impl Selection {
             Section::Spring(i) => Some(Self::Spring(i)),
             Section::Tie(i) => Some(Self::Tie(i)),
             Section::Ramp(i) => Some(Self::Ramp(i)),
+            Section::Body(i) => Some(Self::Body(i)),
             _ => None,
         }
     }
@@ -112,6 +120,7 @@ impl Selection {
             Self::Spring(i) => Section::Spring(i),
             Self::Tie(i) => Section::Tie(i),
             Self::Ramp(i) => Section::Ramp(i),
+            Self::Body(i) => Section::Body(i),
         }
     }
 }
@@ -231,6 +240,8 @@ struct Frame {
     /// Each particle's orientation, degrees counter-clockwise (drawn for those that
     /// turn).
     angles: Vec<f64>,
+    /// Each rigid body's outline in the world, counter-clockwise.
+    outlines: Vec<Vec<DVec2>>,
 }
 
 impl Frame {
@@ -252,6 +263,11 @@ impl Frame {
             spring_ends,
             tie_ends,
             angles: scene.particles.iter().map(|p| p.angle).collect(),
+            outlines: scene
+                .bodies
+                .iter()
+                .map(physics::Body::world_outline)
+                .collect(),
         }
     }
 }
@@ -331,6 +347,7 @@ impl Canvas {
             points.push(ramp.from.to_dvec2());
             points.push(ramp.to.to_dvec2());
         }
+        points.extend(scene.bodies.iter().flat_map(physics::Body::world_outline));
         let spring_ends = scene.springs.iter().flat_map(|s| [&s.from, &s.to]);
         let tie_ends = scene.ties.iter().flat_map(|t| [&t.from, &t.to]);
         for end in spring_ends.chain(tie_ends) {
@@ -562,6 +579,9 @@ impl Canvas {
             if simulation.turns() {
                 frame.angles = simulation.angles();
             }
+            frame.outlines = (0..simulation.body_names().len())
+                .map(|i| simulation.body_outline(i))
+                .collect();
             frame
         } else {
             Frame::new(

@@ -42,6 +42,15 @@ pub(super) enum Drag {
         from: DVec2,
         to: DVec2,
     },
+    /// A new box, from one corner to the other.
+    NewBox {
+        from: DVec2,
+        to: DVec2,
+    },
+    Body {
+        index: usize,
+        grab: DVec2,
+    },
     /// The objects selected together ([`Canvas::group`]), moved by whole snapping steps
     /// from where the pointer was last.
     Group {
@@ -102,7 +111,15 @@ impl Canvas {
                 return Some(Selection::Tie(i));
             }
         }
-        None
+        // A body under the pointer, or within a few pixels of its outline; the last
+        // drawn (on top) first.
+        frame
+            .outlines
+            .iter()
+            .enumerate()
+            .rev()
+            .find(|(_, outline)| outside_by(outline, world) <= tolerance)
+            .map(|(i, _)| Selection::Body(i))
     }
 
     /// The editing gestures of this frame: a press starts the current tool's gesture,
@@ -154,6 +171,10 @@ impl Canvas {
                 Tool::Ramp => {
                     let from = snap(self.view.to_world(rect, start));
                     Some(Drag::NewRamp { from, to: from })
+                }
+                Tool::Box => {
+                    let from = snap(self.view.to_world(rect, start));
+                    Some(Drag::NewBox { from, to: from })
                 }
                 Tool::Particle => None,
             };
@@ -313,7 +334,10 @@ impl Canvas {
             let hit = self.hit(rect, scene, frame, start);
             if let Some(grabbed) = hit.filter(|hit| {
                 self.group.contains(hit)
-                    && matches!(hit, Selection::Particle(_) | Selection::Ramp(_))
+                    && matches!(
+                        hit,
+                        Selection::Particle(_) | Selection::Ramp(_) | Selection::Body(_)
+                    )
             }) {
                 *selection = Some(grabbed);
                 document.begin_gesture(Edit::MoveGroup);
@@ -336,6 +360,14 @@ impl Canvas {
                     Drag::Ramp { index, last: at },
                     Edit::MoveRamp,
                     Selection::Ramp(index),
+                ),
+                Some(Selection::Body(index)) => (
+                    Drag::Body {
+                        index,
+                        grab: at - scene.bodies[index].position.to_dvec2(),
+                    },
+                    Edit::MoveBody,
+                    Selection::Body(index),
                 ),
                 _ => return Drag::Pan,
             }
@@ -394,7 +426,14 @@ impl Canvas {
                 });
             }
             Some(Drag::NewLink { tip, .. }) => *tip = world,
-            Some(Drag::NewRamp { to, .. }) => *to = snap(world),
+            Some(Drag::NewRamp { to, .. } | Drag::NewBox { to, .. }) => *to = snap(world),
+            Some(Drag::Body { index, grab }) => {
+                let (index, target) = (*index, snap(world - *grab));
+                document.apply(Edit::MoveBody, |scene| {
+                    let body = &mut scene.bodies[index];
+                    body.position = keep_form(body.position, target);
+                });
+            }
             Some(Drag::Group { last }) => {
                 let delta = snap(world) - snap(*last);
                 *last = world;
@@ -443,6 +482,12 @@ impl Canvas {
             Some(Drag::NewRamp { from, to }) => {
                 if from.distance(to) > tolerance {
                     *selection = Some(add_ramp(document, from, to));
+                }
+            }
+            Some(Drag::NewBox { from, to }) => {
+                let size = (to - from).abs();
+                if size.min_element() > tolerance {
+                    *selection = Some(add_box(document, from.midpoint(to), size));
                 }
             }
             Some(Drag::Select { from, to }) => {
@@ -510,6 +555,14 @@ pub(super) fn add_link(
 }
 
 /// Adds a ramp from `from` to `to`.
+/// Adds a box of 1 kg, `size` metres wide and high, centred at `at`.
+pub(super) fn add_box(document: &mut Document, at: DVec2, size: DVec2) -> Selection {
+    let name = document.unused_name("box");
+    let body = physics::Body::rectangle(name, size.x, size.y, 1.0).position(at);
+    document.apply(Edit::Add(Object::Body), |scene| scene.bodies.push(body));
+    Selection::Body(document.scene().bodies.len() - 1)
+}
+
 pub(super) fn add_ramp(document: &mut Document, from: DVec2, to: DVec2) -> Selection {
     let name = document.unused_name("r");
     document.apply(Edit::Add(Object::Ramp), |scene| {
@@ -526,7 +579,12 @@ impl Drag {
             | Self::Velocity { index }
             | Self::NewLink { from: index, .. } => index >= scene.particles.len(),
             Self::Ramp { index, .. } | Self::RampEnd { index, .. } => index >= scene.ramps.len(),
-            Self::Pan | Self::NewRamp { .. } | Self::Group { .. } | Self::Select { .. } => false,
+            Self::Body { index, .. } => index >= scene.bodies.len(),
+            Self::Pan
+            | Self::NewRamp { .. }
+            | Self::NewBox { .. }
+            | Self::Group { .. }
+            | Self::Select { .. } => false,
         }
     }
 }
@@ -547,6 +605,11 @@ fn move_group(scene: &mut Scene, group: &[Selection], delta: DVec2) {
                 if let Some(ramp) = scene.ramps.get_mut(i) {
                     ramp.from = keep_form(ramp.from, ramp.from.to_dvec2() + delta);
                     ramp.to = keep_form(ramp.to, ramp.to.to_dvec2() + delta);
+                }
+            }
+            Selection::Body(i) => {
+                if let Some(body) = scene.bodies.get_mut(i) {
+                    body.position = keep_form(body.position, body.position.to_dvec2() + delta);
                 }
             }
             Selection::Spring(_) | Selection::Tie(_) => {}
@@ -571,7 +634,15 @@ fn in_box(scene: &Scene, frame: &Frame, (min, max): (DVec2, DVec2)) -> Vec<Selec
     let ties = (0..frame.tie_ends.len())
         .filter(|&i| both(&frame.tie_ends[i]))
         .map(Selection::Tie);
-    particles.chain(ramps).chain(springs).chain(ties).collect()
+    let bodies = (0..frame.outlines.len())
+        .filter(|&i| frame.outlines[i].iter().all(|&p| inside(p)))
+        .map(Selection::Body);
+    particles
+        .chain(ramps)
+        .chain(springs)
+        .chain(ties)
+        .chain(bodies)
+        .collect()
 }
 
 /// A new value for a vector, in the form (Cartesian or polar) it was typed in.
@@ -606,3 +677,15 @@ fn launched(velocity: DVec2) -> physics::Vector {
 
 /// The speed a launched velocity snaps to, m/s.
 pub const LAUNCH_SPEED_STEP: f64 = 0.5;
+
+/// How far `point` lies outside the convex outline (counter-clockwise), metres: the
+/// largest distance past any edge's line; 0 or less inside.
+fn outside_by(outline: &[DVec2], point: DVec2) -> f64 {
+    (0..outline.len())
+        .filter_map(|k| {
+            let (a, b) = (outline[k], outline[(k + 1) % outline.len()]);
+            let normal = DVec2::new(b.y - a.y, a.x - b.x).try_normalize()?;
+            Some((point - a).dot(normal))
+        })
+        .fold(f64::NEG_INFINITY, f64::max)
+}

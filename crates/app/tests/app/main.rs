@@ -6,6 +6,7 @@
     reason = "typed values and paused clocks are compared exactly"
 )]
 
+mod bodies;
 mod common;
 mod editing;
 mod experiments;

@@ -12,6 +12,7 @@ impl Scene {
             Section::Spring(i) => self.springs.get(i).map(|s| s.name.as_str()),
             Section::Tie(i) => self.ties.get(i).map(|t| t.name.as_str()),
             Section::Ramp(i) => self.ramps.get(i).map(|r| r.name.as_str()),
+            Section::Body(i) => self.bodies.get(i).map(|b| b.name.as_str()),
             _ => None,
         }
     }
@@ -41,6 +42,10 @@ impl Scene {
                 self.rename_in_presentation(&old, new);
             }
             Section::Ramp(i) => new.clone_into(&mut self.ramps[i].name),
+            Section::Body(i) => {
+                new.clone_into(&mut self.bodies[i].name);
+                self.rename_in_presentation(&old, new);
+            }
             _ => {}
         }
     }
@@ -59,6 +64,7 @@ impl Scene {
                 Section::Spring(_) => Some(Section::Spring(i)),
                 Section::Tie(_) => Some(Section::Tie(i)),
                 Section::Ramp(_) => Some(Section::Ramp(i)),
+                Section::Body(_) => Some(Section::Body(i)),
                 _ => None,
             };
             let now = (0..)
@@ -95,6 +101,10 @@ impl Scene {
             }
             Section::Ramp(i) if i < self.ramps.len() => {
                 self.ramps.remove(i);
+            }
+            Section::Body(i) if i < self.bodies.len() => {
+                let name = self.bodies.remove(i).name;
+                self.forget_in_presentation(&name);
             }
             _ => {}
         }
@@ -134,6 +144,7 @@ impl Scene {
                 part.ties.push(tie.clone());
             }
             Section::Ramp(i) => part.ramps.push(self.ramps.get(i)?.clone()),
+            Section::Body(i) => part.bodies.push(self.bodies.get(i)?.clone()),
             _ => return None,
         }
         part.particles.dedup_by(|a, b| a.name == b.name);
@@ -155,11 +166,12 @@ impl Scene {
             whole.springs.extend(part.springs);
             whole.ties.extend(part.ties);
             whole.ramps.extend(part.ramps);
+            whole.bodies.extend(part.bodies);
         }
         Some(whole)
     }
 
-    /// Adds `other`'s particles, springs, rods, strings and ramps to this scene (not its
+    /// Adds `other`'s particles, springs, rods, strings, ramps and bodies to this scene (not its
     /// world, settings, graphs or view), each moved by `offset` metres and renamed where
     /// its name is taken here (`ball` → `ball 2`), what ties a renamed particle following
     /// it. Returns the sections of the objects added, in this scene.
@@ -215,16 +227,29 @@ impl Scene {
             added.push(Section::Ramp(self.ramps.len()));
             self.ramps.push(ramp);
         }
+        for body in &other.bodies {
+            let mut body = body.clone();
+            body.name = fresh(&body.name);
+            body.position = moved(body.position);
+            added.push(Section::Body(self.bodies.len()));
+            self.bodies.push(body);
+        }
         added
     }
 
-    /// Every object's name: particles, springs, rods, strings and ramps.
+    /// Every object's name: particles, springs, rods, strings, ramps and bodies.
     fn object_names(&self) -> Vec<&str> {
         let particles = self.particles.iter().map(|p| p.name.as_str());
         let springs = self.springs.iter().map(|s| s.name.as_str());
         let ties = self.ties.iter().map(|t| t.name.as_str());
         let ramps = self.ramps.iter().map(|r| r.name.as_str());
-        particles.chain(springs).chain(ties).chain(ramps).collect()
+        let bodies = self.bodies.iter().map(|b| b.name.as_str());
+        particles
+            .chain(springs)
+            .chain(ties)
+            .chain(ramps)
+            .chain(bodies)
+            .collect()
     }
 }
 

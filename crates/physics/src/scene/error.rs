@@ -22,6 +22,8 @@ pub enum Section {
     Tie(usize),
     /// The ramp at this index.
     Ramp(usize),
+    /// The rigid body at this index (`[[body]]`).
+    Body(usize),
     /// The graph at this index (`[[graph]]`).
     Graph(usize),
     /// The series at this index (`[[series]]`).

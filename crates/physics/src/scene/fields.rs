@@ -15,7 +15,7 @@
 use std::fmt::Write as _;
 
 use super::{
-    Bounds, Color, Endpoint, PairForces, Particle, Ramp, Settings, Spring, Tie, Vector, World,
+    Body, Bounds, Color, Endpoint, PairForces, Particle, Ramp, Settings, Spring, Tie, Vector, World,
 };
 use crate::Integrator;
 use crate::scene::Rule;
@@ -582,6 +582,156 @@ pub const RAMP: &[Field<Ramp>] = &[
     ),
 ];
 
+/// `[[body]]`, after its name and besides its shape (`shape`, `vertices`) and
+/// `static_friction`, which the reader and writer take apart ([`BODY_SHAPE_KEYS`]).
+/// A box's `width` and `height` and the `mass` or `density` not given hold 0 and are not
+/// written.
+pub const BODY: &[Field<Body>] = &[
+    number!(
+        "width",
+        "width",
+        width,
+        Rule::NonNegative,
+        "m",
+        Some("box: required"),
+        "A box's extent along its own x"
+    ),
+    number!(
+        "height",
+        "height",
+        height,
+        Rule::NonNegative,
+        "m",
+        Some("box: required"),
+        "A box's extent along its own y"
+    ),
+    // Setting one of mass and density puts the other out of use (0), so that typing a
+    // mass in the inspector replaces a density; the reader refuses a file giving both.
+    Field {
+        key: "mass",
+        label: "mass",
+        kind: Kind::Number(Rule::NonNegative),
+        unit: "kg",
+        default: Some("or density"),
+        help: "Mass, greater than 0 (or give the density instead)",
+        place: Place::Inspector,
+        get: |b| Value::Number(b.mass),
+        set: |b, v| {
+            if let Value::Number(v) = v {
+                b.mass = v;
+                if v != 0.0 {
+                    b.density = 0.0;
+                }
+            }
+        },
+    },
+    Field {
+        key: "density",
+        label: "density",
+        kind: Kind::Number(Rule::NonNegative),
+        unit: "kg/m²",
+        default: Some("or mass"),
+        help: "Mass per area: the shape's area gives the mass",
+        place: Place::Inspector,
+        get: |b| Value::Number(b.density),
+        set: |b, v| {
+            if let Value::Number(v) = v {
+                b.density = v;
+                if v != 0.0 {
+                    b.mass = 0.0;
+                }
+            }
+        },
+    },
+    vector!("position", "position", position, "m", None, "The centroid"),
+    number!(
+        "angle",
+        "angle",
+        angle,
+        Rule::Finite,
+        "°",
+        Some("0.0"),
+        "Orientation, counter-clockwise"
+    ),
+    vector!(
+        "velocity",
+        "velocity",
+        velocity,
+        "m/s",
+        Some("[0.0, 0.0]"),
+        "The centroid's velocity"
+    ),
+    number!(
+        "spin",
+        "spin",
+        spin,
+        Rule::Finite,
+        "rad/s",
+        Some("0.0"),
+        "Angular velocity ω, counter-clockwise positive"
+    ),
+    number!(
+        "restitution",
+        "restitution",
+        restitution,
+        Rule::Fraction,
+        "",
+        Some("1.0"),
+        "0 (no bounce) to 1 (perfectly elastic)"
+    ),
+    number!(
+        "friction",
+        "friction",
+        friction,
+        Rule::NonNegative,
+        "",
+        Some("0.0"),
+        "Kinetic coefficient of friction"
+    ),
+    boolean!("fixed", "fixed", fixed, "false", "A fixed body never moves"),
+    Field {
+        key: "color",
+        label: "colour",
+        kind: Kind::Color,
+        unit: "",
+        default: Some("a palette colour"),
+        help: "Display colour, \"#rrggbb\"",
+        place: Place::Inspector,
+        get: |b| Value::Color(b.color),
+        set: |b, v| {
+            if let Value::Color(v) = v {
+                b.color = v;
+            }
+        },
+    },
+];
+
+/// The keys of `[[body]]` outside [`BODY`], with the reference's line for each: the
+/// shape, its vertices, and the static friction (whose default is another field).
+pub const BODY_SHAPE_KEYS: [(&str, &str, &str, &str, &str); 3] = [
+    (
+        "shape",
+        "box or polygon",
+        "",
+        "**required**",
+        "A box (`width`, `height`) or a convex polygon (`vertices`)",
+    ),
+    (
+        "vertices",
+        "list of [x, y]",
+        "m",
+        "polygon: required",
+        "3 to 64 corners, counter-clockwise, convex, in the body's frame (moved so that the centroid is the origin)",
+    ),
+    (
+        "static_friction",
+        "number ≥ friction",
+        "",
+        "friction",
+        "Static coefficient of friction",
+    ),
+];
+
 /// The keys of a section's fields, after `first` (such as `name`).
 pub fn keys<T>(first: &[&'static str], fields: &[Field<T>]) -> Vec<&'static str> {
     first
@@ -630,6 +780,13 @@ pub fn reference() -> String {
     section(&mut out, "[[rod]]", ROD);
     section(&mut out, "[[string]]", STRING);
     section(&mut out, "[[ramp]]", RAMP);
+    section(&mut out, "[[body]]", BODY);
+    // The body's keys outside the table, in the table just written.
+    out.pop();
+    for (key, kind, unit, default, help) in BODY_SHAPE_KEYS {
+        let _ = writeln!(out, "| `{key}` | {kind} | {unit} | {default} | {help} |");
+    }
+    out.push('\n');
     out
 }
 
@@ -666,6 +823,13 @@ mod tests {
             .restitution(0.4)
             .friction(0.6);
         check(RAMP, &ramp, &mut Ramp::new("q", [0.0, 0.0], [1.0, 0.0]));
+        let mut body = Body::rectangle("b", 0.4, 0.2, 2.0)
+            .position([1.0, 2.0])
+            .angle(20.0)
+            .moving([1.0, -1.0], 3.0);
+        (body.restitution, body.friction, body.fixed) = (0.2, 0.3, true);
+        body.color = Some(Color([1, 2, 3]));
+        check(BODY, &body, &mut Body::rectangle("c", 1.0, 1.0, 1.0));
         let mut world = World::weightless();
         world.bounds = Some(Bounds {
             min: Vector::cartesian(-1.0, -1.0),

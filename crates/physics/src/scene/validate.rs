@@ -10,6 +10,8 @@ use super::fields::{self, Field, Kind, Value};
 use super::{Color, Endpoint, Follow, Scene, Vector, say, say_numbers};
 use crate::quantity::{LinkOf, Quantity};
 
+mod bodies;
+
 /// How far into a wall of the bounds a particle may start, as a fraction of its radius.
 const WALL_OVERLAP: f64 = 0.1;
 
@@ -28,6 +30,7 @@ impl Scene {
         check.springs();
         check.ties();
         check.ramps();
+        check.bodies();
         check.graphs();
         check.series();
         check.coincident();
@@ -60,6 +63,7 @@ impl Scene {
                 None => named("rod", None, i),
             },
             Section::Ramp(i) => named("ramp", self.ramps.get(i).map(|r| r.name.as_str()), i),
+            Section::Body(i) => named("body", self.bodies.get(i).map(|b| b.name.as_str()), i),
             Section::Graph(i) => named(
                 "graph",
                 self.graphs.get(i).and_then(|g| g.title.as_deref()),
@@ -293,8 +297,9 @@ impl Checker<'_> {
                     .map(|i| (Section::Spring(i), scene.springs[i].name.as_str())),
             )
             .chain((0..scene.ties.len()).map(|i| (Section::Tie(i), scene.ties[i].name.as_str())))
+            .chain((0..scene.ramps.len()).map(|i| (Section::Ramp(i), scene.ramps[i].name.as_str())))
             .chain(
-                (0..scene.ramps.len()).map(|i| (Section::Ramp(i), scene.ramps[i].name.as_str())),
+                (0..scene.bodies.len()).map(|i| (Section::Body(i), scene.bodies[i].name.as_str())),
             );
         let mut first_use: HashMap<&str, Section> = HashMap::new();
         for (section, name) in sections {
@@ -305,6 +310,7 @@ impl Checker<'_> {
                     Section::Particle(i) => numbered("particle", i),
                     Section::Spring(i) => numbered("spring", i),
                     Section::Ramp(i) => numbered("ramp", i),
+                    Section::Body(i) => numbered("body", i),
                     Section::Tie(i) => say(
                         "scene-named",
                         &[("kind", scene.ties[i].kind.as_str()), ("name", name)],
@@ -490,7 +496,9 @@ impl Checker<'_> {
             for (field, quantity) in axes {
                 let text = &quantity.to_string();
                 match quantity.clone() {
-                    Quantity::Particle(name, _) if self.particle_index(&name).is_none() => {
+                    Quantity::Particle(name, _)
+                        if self.particle_index(&name).is_none() && !self.is_body(&name) =>
+                    {
                         self.report(
                             s,
                             field,
@@ -512,9 +520,12 @@ impl Checker<'_> {
                             ),
                         );
                     }
-                    Quantity::Link(name, _)
+                    Quantity::Link(name, of)
                         if !self.scene.ties.iter().any(|t| t.name == name)
-                            && !self.scene.springs.iter().any(|t| t.name == name) =>
+                            && !self.scene.springs.iter().any(|t| t.name == name)
+                            && !(of == LinkOf::Angle
+                                && (self.is_body(&name)
+                                    || self.particle_index(&name).is_some())) =>
                     {
                         self.report(
                             s,

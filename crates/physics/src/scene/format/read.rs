@@ -9,8 +9,8 @@ use crate::scene::error::{FieldRef, LoadError, Problem, Section};
 use crate::scene::fields::{self, Field, Kind, Value as FieldValue};
 use crate::scene::validate;
 use crate::scene::{
-    Bounds, Color, Endpoint, Follow, Graph, PairForces, Particle, Ramp, Scene, Series, Settings,
-    Spring, Tie, TieKind, Vector, View, World, say,
+    Body, Bounds, Color, Endpoint, Follow, Graph, PairForces, Particle, Ramp, Scene, Series,
+    Settings, Shape, Spring, Tie, TieKind, Vector, View, World, say,
 };
 use crate::{Integrator, Quantity};
 
@@ -56,6 +56,7 @@ pub(super) const ROOT_KEYS: &[&str] = &[
     "rod",
     "string",
     "ramp",
+    "body",
     "graph",
     "series",
     "view",
@@ -270,6 +271,10 @@ impl<'t> Reader<'t> {
             let ramp = self.ramp(node, i);
             scene.ramps.push(ramp);
         }
+        for (i, node) in self.items(&mut top, "body").iter().enumerate() {
+            let body = self.body(node, i);
+            scene.bodies.push(body);
+        }
         for (i, node) in self.items(&mut top, "graph").iter().enumerate() {
             let graph = self.graph(node, i);
             scene.graphs.push(graph);
@@ -352,7 +357,7 @@ impl<'t> Reader<'t> {
         // Particles, springs and ramps are named by their initial (p1, s1, r1); rods and
         // strings in full (rod1, string1), which would clash with ramps and springs.
         let default_name = match kind {
-            "rod" | "string" => format!("{kind}{}", index + 1),
+            "rod" | "string" | "body" => format!("{kind}{}", index + 1),
             _ => format!("{}{}", &kind[..1], index + 1),
         };
         let mut t = self.table(node, section, validate::numbered(kind, index))?;
@@ -422,6 +427,57 @@ impl<'t> Reader<'t> {
             self.close(&t, &fields::keys(&["name"], fields::RAMP));
         }
         ramp
+    }
+
+    pub(super) fn body(&mut self, node: &Node, index: usize) -> Body {
+        let mut body = Body::rectangle(String::new(), 0.0, 0.0, 0.0);
+        let Some((mut t, name)) = self.object(node, "body", Section::Body(index), index) else {
+            return body;
+        };
+        body.name = name;
+        let shape = self.required(&mut t, "shape", read_text, String::new());
+        match shape.as_str() {
+            "box" => {}
+            "polygon" => body.shape = Shape::Polygon(Vec::new()),
+            _ => {
+                // Without a shape its size cannot be judged: nothing said of it.
+                for key in ["width", "height", "vertices"] {
+                    self.failed.insert(FieldRef {
+                        section: t.section,
+                        field: key,
+                    });
+                }
+                let field = FieldRef {
+                    section: t.section,
+                    field: "shape",
+                };
+                // A missing shape is said already; a wrong one is said here.
+                if !self.failed.contains(&field) {
+                    let message = say("scene-body-shape", &[("got", &shape)]);
+                    let message = format!("{}: {message}", t.label);
+                    self.problem(value_span(t.entries, "shape"), Some(field), message);
+                }
+            }
+        }
+        if let Shape::Polygon(vertices) = &mut body.shape {
+            *vertices = self.required(&mut t, "vertices", read_points, Vec::new());
+        }
+        body.static_friction = self.field(&mut t, "static_friction", read_number);
+        let has = |key: &str| t.entries.iter().any(|e| e.key == key);
+        let both = has("mass") && has("density");
+        self.fields(&mut t, fields::BODY, &mut body);
+        if both {
+            let field = FieldRef {
+                section: t.section,
+                field: "density",
+            };
+            let message = format!("{}: {}", t.label, say("scene-body-mass-and-density", &[]));
+            self.problem(value_span(t.entries, "density"), Some(field), message);
+        }
+        let mut known = fields::keys(&["name"], fields::BODY);
+        known.extend(fields::BODY_SHAPE_KEYS.map(|(key, ..)| key));
+        self.close(&t, &known);
+        body
     }
 
     pub(super) fn graph(&mut self, node: &Node, index: usize) -> Graph {
@@ -584,6 +640,7 @@ fn section_node<'n>(root: &'n Node<'n>, section: Section) -> Option<&'n Node<'n>
         Section::Particle(i) => items("particle").get(i),
         Section::Spring(i) => items("spring").get(i),
         Section::Ramp(i) => items("ramp").get(i),
+        Section::Body(i) => items("body").get(i),
         Section::Graph(i) => items("graph").get(i),
         Section::Series(i) => items("series").get(i),
         // Rods first, then strings, as the reader reads them into `Scene::ties`.
@@ -643,6 +700,24 @@ pub(super) fn read_text_list(node: &Node) -> Result<Vec<String>, String> {
             .collect(),
         other => Err(wrong(other.kind())),
     }
+}
+
+/// A polygon's vertices: a list of `[x, y]`.
+pub(super) fn read_points(node: &Node) -> Result<Vec<glam::DVec2>, String> {
+    let wrong = |got: String| say("scene-must-be-points", &[("got", &got)]);
+    let Value::Array(items) = &node.value else {
+        return Err(wrong(node.value.kind()));
+    };
+    items
+        .iter()
+        .map(|item| match &item.value {
+            Value::Array(pair) if pair.len() == 2 => Ok(glam::DVec2::new(
+                read_number(&pair[0])?,
+                read_number(&pair[1])?,
+            )),
+            other => Err(wrong(other.kind())),
+        })
+        .collect()
 }
 
 /// The two ways to write a vector, as messages show them (the file's own syntax).

@@ -4,7 +4,7 @@ use std::fmt::Write as _;
 
 use super::VERSION;
 use crate::scene::fields::{self, Field, Value as FieldValue};
-use crate::scene::{Bounds, Endpoint, Scene, Vector};
+use crate::scene::{Body, Bounds, Endpoint, Scene, Shape, Vector};
 
 impl Scene {
     /// The scene as a TOML scene file.
@@ -99,6 +99,11 @@ impl Scene {
                 self.ramps
                     .iter()
                     .map(|r| ("ramp", &r.name, out_fields(fields::RAMP, r))),
+            )
+            .chain(
+                self.bodies
+                    .iter()
+                    .map(|b| ("body", &b.name, body_fields(b))),
             );
         for (kind, name, entries) in objects {
             let mut named = vec![("name", Out::Text(name.clone()))];
@@ -216,6 +221,29 @@ pub(super) fn out_fields<T>(fields: &[Field<T>], target: &T) -> Vec<(&'static st
         .collect()
 }
 
+/// A body's entries: its shape first, then its table's fields without the zeros that
+/// stand for "not given" (a polygon's width and height, the one of mass and density left
+/// out), the static friction after the kinetic one when given.
+fn body_fields(body: &Body) -> Vec<(&'static str, Out)> {
+    let mut entries = vec![("shape", Out::Text(body.shape.as_str().to_owned()))];
+    if let Shape::Polygon(vertices) = &body.shape {
+        entries.push(("vertices", Out::Points(vertices.clone())));
+    }
+    for (key, out) in out_fields(fields::BODY, body) {
+        let unset = matches!(out, Out::Number(x) if x == 0.0)
+            && ["width", "height", "mass", "density"].contains(&key);
+        if !unset {
+            entries.push((key, out));
+        }
+        if key == "friction"
+            && let Some(s) = body.static_friction
+        {
+            entries.push(("static_friction", Out::Number(s)));
+        }
+    }
+    entries
+}
+
 pub(super) enum Header {
     Root,
     Table(&'static str),
@@ -235,6 +263,7 @@ pub(super) enum Out {
     TextList(Vec<String>),
     Vector(Vector),
     Bounds(Bounds),
+    Points(Vec<glam::DVec2>),
 }
 
 /// A TOML float that parses back to the same `f64`: Rust's `Debug` for `f64` is the
@@ -278,6 +307,13 @@ impl Out {
                 format!("[{}]", items.join(", "))
             }
             Self::Vector(v) => toml_vector(*v),
+            Self::Points(points) => {
+                let items: Vec<String> = points
+                    .iter()
+                    .map(|&p| toml_vector(Vector::Cartesian(p)))
+                    .collect();
+                format!("[{}]", items.join(", "))
+            }
             Self::Bounds(b) if b.friction == 0.0 => format!(
                 "{{ min = {}, max = {} }}",
                 toml_vector(b.min),
@@ -300,6 +336,10 @@ impl Out {
             Self::Text(text) => text.clone().into(),
             Self::TextList(list) => list.clone().into(),
             Self::Vector(v) => json_vector(*v),
+            Self::Points(points) => points
+                .iter()
+                .map(|&p| json_vector(Vector::Cartesian(p)))
+                .collect(),
             Self::Bounds(b) => {
                 let mut bounds =
                     serde_json::json!({ "min": json_vector(b.min), "max": json_vector(b.max) });

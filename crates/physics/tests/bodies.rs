@@ -1,0 +1,272 @@
+//! Rigid bodies (`[[body]]`): the scene file's keys read and written back, the rules a
+//! body obeys, and free flight against its closed forms under each method.
+
+#![expect(
+    clippy::float_cmp,
+    reason = "typed values, and values no arithmetic touched, are compared exactly"
+)]
+
+use physics::{
+    Body, DVec2, Event, Integrator, Scene, SceneFormat, Shape, Simulation, Watch, World,
+};
+
+const G: f64 = 9.81;
+
+fn thrown(integrator: Integrator, h: f64) -> Scene {
+    Scene::new()
+        .with_world(World::gravity_only())
+        .with_integrator(integrator, h)
+        .with_body(
+            Body::rectangle("board", 0.6, 0.1, 1.5)
+                .position([0.0, 1.0])
+                .angle(10.0)
+                .moving([3.0, 4.0], 6.0),
+        )
+}
+
+const FILE: &str = r##"version = 1
+
+[[body]]
+name = "block"
+shape = "box"
+width = 0.4
+height = 0.2
+mass = 2.0
+position = [0.0, 1.0]
+angle = 20.0
+friction = 0.3
+static_friction = 0.5
+
+[[body]]
+shape = "polygon"
+vertices = [[0.0, 0.0], [0.4, 0.0], [0.2, 0.3]]
+density = 25.0
+position = [2.0, 0.0]
+fixed = true
+color = "#4f7fd9"
+"##;
+
+#[test]
+fn a_scene_file_reads_and_writes_its_bodies_back() {
+    let scene = Scene::from_toml(FILE).expect("reads");
+    assert_eq!(scene.bodies.len(), 2);
+    let (block, wedge) = (&scene.bodies[0], &scene.bodies[1]);
+    assert_eq!(block.shape, Shape::Box);
+    assert_eq!((block.width, block.height, block.mass), (0.4, 0.2, 2.0));
+    assert_eq!(block.static_friction, Some(0.5));
+    assert_eq!(wedge.name, "body2", "named by kind and number");
+    assert!(matches!(&wedge.shape, Shape::Polygon(v) if v.len() == 3));
+    assert!((wedge.total_mass() - 25.0 * 0.06).abs() < 1e-15);
+    assert!(wedge.fixed);
+    for format in [SceneFormat::Toml, SceneFormat::Json] {
+        let text = match format {
+            SceneFormat::Toml => scene.to_toml(),
+            SceneFormat::Json => scene.to_json(),
+        };
+        let again = Scene::parse(&text, format).expect("reads back");
+        assert_eq!(again, scene, "{text}");
+    }
+    let written = scene.to_toml();
+    assert!(!written.contains("density = 0.0") && !written.contains("width = 0.0"));
+}
+
+/// Each wrong body is refused with its line and column and words that say what to do.
+#[test]
+fn wrong_bodies_are_refused_where_they_are_wrong() {
+    let body = |lines: &str| format!("version = 1\n\n[[body]]\nname = \"b\"\n{lines}\n");
+    for (text, line, says) in [
+        (
+            body("shape = \"circle\"\nmass = 1.0\nposition = [0.0, 0.0]"),
+            5,
+            "\"box\" or \"polygon\"",
+        ),
+        (
+            body("shape = \"box\"\nwidth = 0.0\nheight = 1.0\nmass = 1.0\nposition = [0.0, 0.0]"),
+            6,
+            "width greater than 0",
+        ),
+        (
+            body(
+                "shape = \"polygon\"\nvertices = [[0.0, 0.0], [2.0, 0.0], [1.0, 0.5], [2.0, 2.0], [0.0, 2.0]]\nmass = 1.0\nposition = [0.0, 0.0]",
+            ),
+            6,
+            "not convex at vertex 3",
+        ),
+        (
+            body(
+                "shape = \"polygon\"\nvertices = [[0.0, 0.0], [0.0, 1.0], [1.0, 0.0]]\nmass = 1.0\nposition = [0.0, 0.0]",
+            ),
+            6,
+            "clockwise",
+        ),
+        (
+            body(
+                "shape = \"box\"\nwidth = 1.0\nheight = 1.0\nmass = 1.0\ndensity = 2.0\nposition = [0.0, 0.0]",
+            ),
+            9,
+            "not both",
+        ),
+        (
+            body(
+                "shape = \"box\"\nwidth = 1.0\nheight = 1.0\nmass = 1.0\nfriction = 0.5\nstatic_friction = 0.2\nposition = [0.0, 0.0]",
+            ),
+            10,
+            "at least the kinetic friction 0.5",
+        ),
+        (
+            body("shape = \"polygon\"\nvertices = [1.0, 2.0]\nmass = 1.0\nposition = [0.0, 0.0]"),
+            6,
+            "list of points",
+        ),
+    ] {
+        let problems = Scene::from_toml(&text).expect_err("refused").problems;
+        let problem = &problems[0];
+        assert!(problem.message.contains(says), "{problem}");
+        assert_eq!(problem.line, Some(line), "{problem}");
+    }
+    let no_mass = body("shape = \"box\"\nwidth = 1.0\nheight = 1.0\nposition = [0.0, 0.0]");
+    let problems = Scene::from_toml(&no_mass).expect_err("refused").problems;
+    assert!(problems[0].message.contains("mass (kg) or a density"));
+}
+
+#[test]
+fn bodies_inside_each_other_at_the_start_are_refused_naming_both() {
+    let text = "version = 1\n\n[[body]]\nname = \"a\"\nshape = \"box\"\nwidth = 1.0\nheight = 1.0\nmass = 1.0\nposition = [0.0, 0.0]\n\n[[body]]\nname = \"b\"\nshape = \"box\"\nwidth = 1.0\nheight = 1.0\nmass = 1.0\nposition = [0.5, 0.5]\nangle = 30.0\n";
+    let problems = Scene::from_toml(text).expect_err("refused").problems;
+    assert_eq!(problems.len(), 1);
+    let message = &problems[0].message;
+    assert!(
+        message.contains("body 'b'") && message.contains("'a'"),
+        "{message}"
+    );
+    assert_eq!(problems[0].line, Some(17));
+}
+
+/// The centroid on x₀ + v₀ t + g t²/2 and the angle θ₀ + ω t under the methods exact
+/// for a constant acceleration; euler and semi-implicit euler on their own sums,
+/// x₀ + n h v₀ + g h² n(n ∓ 1)/2, as a particle beside the body would be.
+#[test]
+fn a_thrown_board_flies_on_each_method_s_closed_form() {
+    let (t, h): (f64, f64) = (0.8, 1e-3);
+    let n = (t / h).round();
+    let (x0, v0, g) = (
+        DVec2::new(0.0, 1.0),
+        DVec2::new(3.0, 4.0),
+        DVec2::new(0.0, -G),
+    );
+    for integrator in Integrator::ALL {
+        let mut simulation = Simulation::new(&thrown(integrator, h)).expect("valid");
+        simulation.step_to(t).expect("runs");
+        let board = simulation.body(0);
+        let expected = match integrator {
+            Integrator::Euler => x0 + v0 * (n * h) + g * (h * h * n * (n - 1.0) / 2.0),
+            Integrator::SemiImplicitEuler => x0 + v0 * (n * h) + g * (h * h * n * (n + 1.0) / 2.0),
+            _ => x0 + v0 * t + 0.5 * g * t * t,
+        };
+        assert!(
+            (board.position - expected).length() < 1e-12,
+            "{integrator}: {} against {expected}",
+            board.position
+        );
+        let angle = 10.0 + (6.0 * t).to_degrees();
+        assert!((board.angle - angle).abs() < 1e-11, "{integrator}");
+        assert_eq!(board.acceleration, g);
+        let rotational = 0.5 * (1.5 * (0.36 + 0.01) / 12.0) * 36.0;
+        assert!((board.rotational_energy - rotational).abs() < 1e-14);
+    }
+}
+
+#[test]
+fn a_board_s_energy_and_columns() {
+    let mut simulation = Simulation::new(&thrown(Integrator::Rk4, 1e-3)).expect("valid");
+    let energy = simulation.diagnostics().energy.total();
+    let expected = 0.5 * 1.5 * 25.0 + 0.5 * (1.5 * 0.37 / 12.0) * 36.0 + 1.5 * G * 1.0;
+    assert!((energy - expected).abs() < 1e-12 * expected, "{energy}");
+    simulation.step_to(1.0).expect("runs");
+    let after = simulation.diagnostics().energy.total();
+    assert!(
+        (after - energy).abs() < 1e-12 * energy,
+        "{after} against {energy}"
+    );
+    let columns = simulation.csv_columns();
+    let board: Vec<&str> = columns[1..9].iter().map(String::as_str).collect();
+    assert_eq!(
+        board,
+        [
+            "board.x",
+            "board.y",
+            "board.vx",
+            "board.vy",
+            "board.ax",
+            "board.ay",
+            "board.angle",
+            "board.spin"
+        ]
+    );
+    assert_eq!(columns.last().map(String::as_str), Some("angular_momentum"));
+    let mut values = Vec::new();
+    simulation.csv_values(&mut values);
+    assert_eq!(values.len(), columns.len());
+    assert_eq!(values[8], 6.0, "the spin");
+}
+
+/// `board.angle crosses 45` at (45° − 10°)/ω.
+#[test]
+fn an_event_on_a_body_s_angle_is_located_in_the_step() {
+    let mut simulation = Simulation::new(&thrown(Integrator::Rk4, 1e-2)).expect("valid");
+    let event = Event::parse("board.angle crosses 45").expect("reads");
+    let mut watch = Watch::new(&[event], &simulation).expect("watches");
+    let found = simulation.step_to_watching(1.0, &mut watch).expect("runs");
+    let expected = 35f64.to_radians() / 6.0;
+    assert_eq!(found.len(), 1);
+    assert!(
+        (found[0].time() - expected).abs() < 1e-12,
+        "{}",
+        found[0].time()
+    );
+}
+
+/// A state saved at any instant continues bit for bit: the angle kept in the unit the
+/// file writes.
+#[test]
+fn a_saved_body_continues_bit_for_bit() {
+    let scene = thrown(Integrator::Verlet, 5e-4);
+    let mut straight = Simulation::new(&scene).expect("valid");
+    straight.step_to(0.7).expect("runs");
+    let saved = Scene::from_toml(&straight.saved_state(&scene).to_toml()).expect("reads");
+    let mut continued = Simulation::new(&saved).expect("valid");
+    straight.step_to(1.0).expect("runs");
+    continued.step_to(1.0).expect("runs");
+    let (a, b) = (straight.body(0), continued.body(0));
+    assert_eq!(a.position, b.position);
+    assert_eq!(a.velocity, b.velocity);
+    assert_eq!(a.angle.to_bits(), b.angle.to_bits());
+}
+
+/// A fixed body stays where it is, whatever velocity was typed, and counts no energy.
+#[test]
+fn a_fixed_body_stays() {
+    let mut body = Body::rectangle("wall", 0.2, 2.0, 5.0).position([3.0, 1.0]);
+    body = body.moving([1.0, 0.0], 2.0);
+    body.fixed = true;
+    let scene = Scene::new()
+        .with_world(World::gravity_only())
+        .with_body(body);
+    let mut simulation = Simulation::new(&scene).expect("valid");
+    simulation.step_to(1.0).expect("runs");
+    let wall = simulation.body(0);
+    assert_eq!(wall.position, DVec2::new(3.0, 1.0));
+    assert_eq!((wall.spin, wall.angle), (0.0, 0.0));
+    assert_eq!(simulation.diagnostics().energy.total(), 0.0);
+}
+
+#[test]
+fn a_series_varies_a_body_s_start_angle() {
+    let mut scene = thrown(Integrator::Rk4, 1e-3);
+    let setting = physics::series::Setting::parse("board.angle", &scene).expect("a setting");
+    setting.set(&mut scene, 30.0);
+    assert_eq!(scene.bodies[0].angle, 30.0);
+    let setting = physics::series::Setting::parse("board.velocity.x", &scene).expect("vector");
+    setting.set(&mut scene, -1.0);
+    assert_eq!(scene.bodies[0].velocity.to_dvec2().x, -1.0);
+}

@@ -99,6 +99,8 @@ examples!(
     "bowling",
     "spin-bounce",
     "thrown-board",
+    "block-on-incline",
+    "tipping-box",
 );
 
 /// The built-in scene with this name.

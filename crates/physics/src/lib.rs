@@ -78,6 +78,7 @@ mod constraints;
 mod contacts;
 mod csv;
 mod cycle;
+pub use bodies::Applied;
 pub use csv::csv_field;
 pub use cycle::{Cycle, NoCycle, cycle};
 mod diagnostics;

@@ -293,6 +293,7 @@ impl Simulation {
             profiler: Profiler::default(),
         };
         simulation.begin_ties_at_start();
+        simulation.bodies.settle(simulation.time_step);
         // Contacts from the start: a particle placed on a ramp is held by it at t = 0.
         simulation.contacts.begin_step(
             &mut simulation.state,
@@ -701,7 +702,11 @@ impl Simulation {
     /// The step's last stages: the bodies moved through it, the count, and the checks
     /// that every value is finite and every particle still inside the bounds.
     fn end_step(&mut self, taken: f64) -> Result<f64, SimulationError> {
-        self.bodies.advance(self.integrator, taken);
+        let books = self.bodies.advance(self.integrator, taken);
+        if let Some(ledger) = &mut self.ledger {
+            ledger.impacts += books.impacts;
+            ledger.friction += books.friction;
+        }
         self.steps += 1;
         self.check_finite()?;
         if let Some(i) = self

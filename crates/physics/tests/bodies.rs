@@ -7,7 +7,8 @@
 )]
 
 use physics::{
-    Body, DVec2, Event, Integrator, Scene, SceneFormat, Shape, Simulation, Watch, World,
+    Body, Bounds, DVec2, Event, Integrator, Ramp, Scene, SceneFormat, Shape, Simulation, Vector,
+    Watch, World,
 };
 
 const G: f64 = 9.81;
@@ -269,4 +270,203 @@ fn a_series_varies_a_body_s_start_angle() {
     let setting = physics::series::Setting::parse("board.velocity.x", &scene).expect("vector");
     setting.set(&mut scene, -1.0);
     assert_eq!(scene.bodies[0].velocity.to_dvec2().x, -1.0);
+}
+
+/// A box of 2 kg resting on a ramp at `slope` degrees of friction `mu`, turned to it.
+fn on_incline(slope: f64, mu: f64, method: Integrator) -> Scene {
+    let ramp = Ramp::new("incline", [0.0, 0.0], [0.0, 0.0]).friction(mu);
+    let ramp = Ramp {
+        to: ramp.end_for(slope, 6.0),
+        ..ramp
+    };
+    let at = ramp.touching(2.0, 0.1);
+    Scene::new()
+        .with_world(World::gravity_only())
+        .with_integrator(method, 1e-3)
+        .with_ramp(ramp)
+        .with_body(
+            Body::rectangle("block", 0.4, 0.2, 2.0)
+                .position([at.x, at.y])
+                .angle(slope),
+        )
+}
+
+/// tan 20° < 0.5: the block holds, moved by rounding alone; tan 30° > 0.2: it slides
+/// g (sin θ − μ cos θ) t²/2, its acceleration read as that, under each method exact for a
+/// constant acceleration.
+#[test]
+fn a_block_holds_on_an_incline_or_slides_down_it() {
+    let scene = on_incline(20.0, 0.5, Integrator::Rk4);
+    let start = scene.bodies[0].position.to_dvec2();
+    let mut simulation = Simulation::new(&scene).expect("valid");
+    simulation.step_to(5.0).expect("runs");
+    let block = simulation.body(0);
+    assert!(block.position.distance(start) < 1e-10, "{}", block.position);
+    assert!(block.acceleration.length() < 1e-12);
+    assert!((block.angle - 20.0).abs() < 1e-12);
+    for method in [Integrator::Rk4, Integrator::Verlet, Integrator::Dopri5] {
+        let scene = on_incline(30.0, 0.2, method);
+        let start = scene.bodies[0].position.to_dvec2();
+        let mut simulation = Simulation::new(&scene).expect("valid");
+        simulation.step_to(1.0).expect("runs");
+        let theta = 30_f64.to_radians();
+        let a = G * (theta.sin() - 0.2 * theta.cos());
+        let block = simulation.body(0);
+        let slid = block.position.distance(start);
+        assert!((slid - a / 2.0).abs() < 1e-9 * a, "{method}: {slid}");
+        assert!((block.acceleration.length() - a).abs() < 1e-9 * a);
+        assert!(block.spin.abs() < 1e-12, "it slides without turning");
+    }
+    // Half a degree either side of arctan μ.
+    let threshold = 0.5_f64.atan().to_degrees();
+    for (slope, holds) in [(threshold - 0.5, true), (threshold + 0.5, false)] {
+        let scene = on_incline(slope, 0.5, Integrator::Rk4);
+        let start = scene.bodies[0].position.to_dvec2();
+        let mut simulation = Simulation::new(&scene).expect("valid");
+        simulation.step_to(0.5).expect("runs");
+        let moved = simulation.body(0).position.distance(start);
+        assert_eq!(moved < 1e-10, holds, "at {slope}°: moved {moved} m");
+    }
+}
+
+/// A block sent up an incline slows, stops where v₀²/(2 g (sin θ + μ cos θ)) says (the
+/// instant located in its step), and holds there since tan θ < μ.
+#[test]
+fn a_block_sent_up_an_incline_stops_and_holds() {
+    let mut scene = on_incline(15.0, 0.5, Integrator::Rk4);
+    let v0 = 2.0;
+    let up = DVec2::from_angle(15_f64.to_radians()) * v0;
+    scene.bodies[0].velocity = up.into();
+    let start = scene.bodies[0].position.to_dvec2();
+    let mut simulation = Simulation::new(&scene).expect("valid");
+    simulation.step_to(2.0).expect("runs");
+    let theta = 15_f64.to_radians();
+    let reach = v0 * v0 / (2.0 * G * (theta.sin() + 0.5 * theta.cos()));
+    let block = simulation.body(0);
+    assert!(
+        (block.position.distance(start) - reach).abs() < 1e-9,
+        "{} against {reach}",
+        block.position.distance(start)
+    );
+    assert!(block.velocity.length() < 1e-12);
+}
+
+fn in_a_box(gravity: [f64; 2], restitution: f64, body: Body) -> Scene {
+    let mut world = World::gravity_only();
+    world.gravity = gravity.into();
+    world.restitution = restitution;
+    world.bounds = Some(Bounds {
+        min: Vector::cartesian(-2.0, 0.0),
+        max: Vector::cartesian(2.0, 3.0),
+        friction: 0.0,
+    });
+    Scene::new()
+        .with_world(world)
+        .with_integrator(Integrator::Rk4, 1e-3)
+        .with_body(body)
+}
+
+/// Dropped flat with e = 0, a box lands on both corners at once, the impulses solved
+/// together: it rests at its half height without turning.
+#[test]
+fn a_box_dropped_flat_lands_without_turning() {
+    let body = Body::rectangle("box", 0.4, 0.2, 1.0).position([0.3, 1.0]);
+    let mut simulation = Simulation::new(&in_a_box([0.0, -9.81], 0.0, body)).expect("valid");
+    simulation.step_to(1.0).expect("runs");
+    let b = simulation.body(0);
+    assert!(
+        b.spin.abs() < 1e-12 && (b.position.y - 0.1).abs() < 1e-12,
+        "{b:?}"
+    );
+    assert!(b.velocity.length() < 1e-12);
+}
+
+/// Off an elastic frictionless wall with no field: the kinetic energy, translational and
+/// rotational, is kept and the velocity along the wall untouched; without spin the
+/// instant it strikes is (x₀ − w/2 − wall)/v, located inside its step.
+#[test]
+fn a_box_strikes_a_wall_elastically_at_its_instant() {
+    let thrown = |spin: f64| {
+        let body = Body::rectangle("box", 0.4, 0.2, 1.0)
+            .position([0.0, 1.5])
+            .moving([-2.0, 0.5], spin);
+        in_a_box([0.0, 0.0], 1.0, body)
+    };
+    let mut simulation = Simulation::new(&thrown(3.0)).expect("valid");
+    let before = simulation.body(0);
+    simulation.step_to(1.5).expect("runs");
+    let after = simulation.body(0);
+    assert!(after.velocity.x > 0.0, "it came back: {after:?}");
+    let energy = before.kinetic_energy;
+    assert!((after.kinetic_energy - energy).abs() < 1e-12 * energy);
+    assert_eq!(after.velocity.y, before.velocity.y);
+    let mut simulation = Simulation::new(&thrown(0.0)).expect("valid");
+    let event = Event::parse("box.vx crosses 0 up").expect("reads");
+    let mut watch = Watch::new(&[event], &simulation).expect("watches");
+    let found = simulation.step_to_watching(1.5, &mut watch).expect("runs");
+    assert!((found[0].time() - 0.9).abs() < 1e-9, "{}", found[0].time());
+}
+
+/// The books close with bodies: a sliding block's friction takes μ m g cos θ d, a box
+/// dropped flat onto an inelastic floor gives its impact the kinetic energy it landed
+/// with, m g Δh; the residual stays at rounding.
+#[test]
+fn the_ledger_books_what_the_surfaces_take_from_bodies() {
+    let scene = on_incline(30.0, 0.2, Integrator::Rk4);
+    let start = scene.bodies[0].position.to_dvec2();
+    let mut simulation = Simulation::new(&scene).expect("valid");
+    simulation.keep_ledger();
+    let energy = simulation.diagnostics().energy.total();
+    simulation.step_to(1.0).expect("runs");
+    let d = simulation.body(0).position.distance(start);
+    let friction = 0.2 * 2.0 * G * 30_f64.to_radians().cos() * d;
+    let ledger = simulation.ledger().expect("kept");
+    assert!(
+        (ledger.friction - friction).abs() < 1e-9 * friction,
+        "{ledger:?}"
+    );
+    let residual = simulation.diagnostics().energy.total() + ledger.total() - energy;
+    assert!(residual.abs() < 1e-9 * energy.abs().max(1.0), "{residual}");
+    let body = Body::rectangle("box", 0.4, 0.2, 1.0).position([0.3, 1.0]);
+    let mut simulation = Simulation::new(&in_a_box([0.0, -9.81], 0.0, body)).expect("valid");
+    simulation.keep_ledger();
+    simulation.step_to(1.0).expect("runs");
+    let ledger = simulation.ledger().expect("kept");
+    let landed = 1.0 * G * 0.9;
+    assert!(
+        (ledger.impacts - landed).abs() < 1e-9 * landed,
+        "{ledger:?}"
+    );
+    assert!(ledger.friction.abs() < 1e-9, "{ledger:?}");
+}
+
+/// The free-body diagram of a block held on a 20° incline: its weight m g at the
+/// centroid, normal forces summing to m g cos θ along the face's normal, friction
+/// m g sin θ up the slope, and together nothing: it stays.
+#[test]
+fn a_held_block_s_forces_are_its_free_body_diagram() {
+    let simulation = Simulation::new(&on_incline(20.0, 0.5, Integrator::Rk4)).expect("valid");
+    let forces = simulation.body_forces(0);
+    let theta = 20_f64.to_radians();
+    let (m, g) = (2.0, G);
+    assert_eq!(forces[0].arm, DVec2::ZERO);
+    assert!((forces[0].force - DVec2::new(0.0, -m * g)).length() < 1e-12);
+    let normal: DVec2 = forces[1..]
+        .iter()
+        .filter(|f| !f.friction)
+        .map(|f| f.force)
+        .sum();
+    let friction: DVec2 = forces.iter().filter(|f| f.friction).map(|f| f.force).sum();
+    assert!(
+        (normal.length() - m * g * theta.cos()).abs() < 1e-9,
+        "{normal}"
+    );
+    assert!(
+        (friction.length() - m * g * theta.sin()).abs() < 1e-9,
+        "{friction}"
+    );
+    let up = DVec2::from_angle(theta);
+    assert!(friction.dot(up) > 0.0, "friction holds it up the slope");
+    let total: DVec2 = forces.iter().map(|f| f.force).sum();
+    assert!(total.length() < 1e-9, "{total}");
 }

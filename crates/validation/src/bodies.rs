@@ -1,10 +1,11 @@
 //! Rigid bodies against theory: mass properties from their outlines against the
-//! textbook's formulas, and free flight (the centroid's parabola, the steady turn, the
-//! energy) under the methods, with the events located on a body's angle.
+//! textbook's formulas, free flight (the centroid's parabola, the steady turn, the
+//! energy) under the methods with the events located on a body's angle, and contacts with
+//! the walls and ramps (holding, sliding, tipping, landing, striking, bouncing).
 
 use std::f64::consts::PI;
 
-use physics::{Body, DVec2, Integrator, Located, Scene, World};
+use physics::{Body, Bounds, DVec2, Integrator, Located, Ramp, Scene, Vector, World};
 
 use crate::events::instants;
 use crate::experiments::{Outcome, start, step_to};
@@ -89,7 +90,8 @@ pub(crate) fn bodies(report: &mut Report) -> Outcome {
         "Rigid bodies: mass properties",
         "I of a box m(w² + h²)/12, a right triangle m(a² + b²)/18, a regular hexagon 5ms²/12; the mass of a density ρ a b/2; errors relative",
     ));
-    free_flight(report)
+    free_flight(report)?;
+    contacts(report)
 }
 
 /// The thrown board's flight, as [`bodies`] says.
@@ -171,5 +173,241 @@ fn free_flight(report: &mut Report) -> Outcome {
         "Rigid bodies: free flight",
         "x₀ + v₀t + gt²/2 and θ₀ + ωt (euler: its own sum, x₀ + nhv₀ + gh²n(n − 1)/2); the total energy constant; errors relative (the instant's in seconds)",
     ));
+    Ok(())
+}
+
+/// A ramp at `slope` degrees from the origin, 6 m long, 0.1 m thick, of friction `mu`,
+/// and a box `width` × `height` of 2 kg resting on its upper face 2 m along it, turned to
+/// the slope.
+fn on_incline(slope: f64, mu: f64, (width, height): (f64, f64)) -> Scene {
+    let ramp = Ramp::new("incline", [0.0, 0.0], [0.0, 0.0]).friction(mu);
+    let ramp = Ramp {
+        to: ramp.end_for(slope, 6.0),
+        ..ramp
+    };
+    let at = ramp.touching(2.0, height / 2.0);
+    Scene::new()
+        .with_world(World::gravity_only())
+        .with_integrator(Integrator::Rk4, 1e-3)
+        .with_ramp(ramp)
+        .with_body(
+            Body::rectangle("block", width, height, 2.0)
+                .position([at.x, at.y])
+                .angle(slope),
+        )
+}
+
+/// Contacts with the walls and ramps against their closed forms: a block on a 20° incline
+/// with μ = 0.5 (tan 20° = 0.36) stays where it was put, to 1e-9 m over 10 s (rounding
+/// alone moves it); on a 30° incline with μ = 0.2 it slides g (sin θ − μ cos θ) t²/2 in
+/// 1 s, to 1e-9 relative; half a degree either side of arctan μ it holds or slides; a tall
+/// box (0.2 × 1 m, μ = 1) stands at 10° and tips at 13°, either side of arctan(w/h) =
+/// 11.3°; a box dropped flat on the floor (e = 0) lands on both corners at once and rests
+/// without turning, its spin 0 to 1e-12 rad/s; a spinning box striking a wall (e = 1, no
+/// friction, no field) keeps its kinetic energy to 1e-12 and its velocity along the wall
+/// exactly, and strikes it at (x₀ − w/2 − wall)/v when it does not spin, to 1e-9 s; a
+/// board dropped turning onto an elastic floor keeps its total energy through its bounces,
+/// to 1e-9 (each impact located and struck by its closed form, the flight between exact).
+fn contacts(report: &mut Report) -> Outcome {
+    let mut checks = Checks::new("bodies");
+    inclines(report, &mut checks)?;
+    landings(report, &mut checks)?;
+    bouncing(report, &mut checks)?;
+    report.tables.push(checks.table(
+        "Rigid bodies: resting, sliding, tipping and striking",
+        "a block holds while tan θ ≤ μ and slides g(sin θ − μ cos θ)t²/2 beyond; a tall box tips past arctan(w/h); a box dropped flat lands without turning; an elastic wall keeps the kinetic energy and the velocity along it, a bouncing board its total energy; errors relative to the scale shown (movement in metres)",
+    ));
+    Ok(())
+}
+
+/// The blocks and tall boxes on inclines of [`contacts`].
+fn inclines(report: &mut Report, checks: &mut Checks) -> Outcome {
+    let mut row = |report: &mut Report, what: &str, simulated: f64, theory: f64, scale, limit| {
+        checks.check(report, what.to_owned(), (simulated, theory, scale), limit);
+    };
+    let scene = on_incline(20.0, 0.5, (0.4, 0.2));
+    let put = scene.bodies[0].position.to_dvec2();
+    let mut simulation = start(&scene)?;
+    step_to(&mut simulation, 10.0)?;
+    row(
+        report,
+        "block on 20°, μ = 0.5: moved in 10 s (m)",
+        simulation.body(0).position.distance(put),
+        0.0,
+        1.0,
+        1e-9,
+    );
+    let (slope, mu, t) = (30.0_f64, 0.2, 1.0);
+    let scene = on_incline(slope, mu, (0.4, 0.2));
+    let put = scene.bodies[0].position.to_dvec2();
+    let mut simulation = start(&scene)?;
+    step_to(&mut simulation, t)?;
+    let theta = slope.to_radians();
+    let slid = 0.5 * G * (theta.sin() - mu * theta.cos()) * t * t;
+    row(
+        report,
+        "block on 30°, μ = 0.2: slid in 1 s (m)",
+        simulation.body(0).position.distance(put),
+        slid,
+        slid,
+        1e-9,
+    );
+    let threshold = 0.5_f64.atan().to_degrees();
+    for (offset, holds) in [(-0.5, true), (0.5, false)] {
+        let slope = threshold + offset;
+        let scene = on_incline(slope, 0.5, (0.4, 0.2));
+        let put = scene.bodies[0].position.to_dvec2();
+        let mut simulation = start(&scene)?;
+        step_to(&mut simulation, 1.0)?;
+        let theta = slope.to_radians();
+        let expected = if holds {
+            0.0
+        } else {
+            0.5 * G * (theta.sin() - 0.5 * theta.cos())
+        };
+        row(
+            report,
+            &format!("block at arctan μ {offset:+}°: moved in 1 s (m)"),
+            simulation.body(0).position.distance(put),
+            expected,
+            expected.max(1.0),
+            1e-9,
+        );
+    }
+    for (slope, tips) in [(10.0, false), (13.0, true)] {
+        let scene = on_incline(slope, 1.0, (0.2, 1.0));
+        let mut simulation = start(&scene)?;
+        step_to(&mut simulation, 1.0)?;
+        let turned = (simulation.body(0).angle - slope).abs();
+        row(
+            report,
+            &format!("tall box on {slope}°: tips (1) or stands (0)"),
+            if turned > 1.0 {
+                1.0
+            } else if turned < 1e-9 {
+                0.0
+            } else {
+                0.5
+            },
+            if tips { 1.0 } else { 0.0 },
+            1.0,
+            0.0,
+        );
+    }
+    Ok(())
+}
+
+/// The landing, striking and bouncing boxes of [`contacts`].
+fn landings(report: &mut Report, checks: &mut Checks) -> Outcome {
+    let mut row = |report: &mut Report, what: &str, simulated: f64, theory: f64, scale, limit| {
+        checks.check(report, what.to_owned(), (simulated, theory, scale), limit);
+    };
+    let mut world = World::gravity_only();
+    world.restitution = 0.0;
+    world.bounds = Some(Bounds {
+        min: Vector::cartesian(-2.0, 0.0),
+        max: Vector::cartesian(2.0, 3.0),
+        friction: 0.0,
+    });
+    let dropped = Scene::new()
+        .with_world(world.clone())
+        .with_integrator(Integrator::Rk4, 1e-3)
+        .with_body(Body::rectangle("box", 0.4, 0.2, 1.0).position([0.3, 1.0]));
+    let mut simulation = start(&dropped)?;
+    step_to(&mut simulation, 1.0)?;
+    let landed = simulation.body(0);
+    row(
+        report,
+        "box dropped flat, e = 0: spin after landing (rad/s)",
+        landed.spin,
+        0.0,
+        1.0,
+        1e-12,
+    );
+    row(
+        report,
+        "box dropped flat: centroid's height at rest (m)",
+        landed.position.y,
+        0.1,
+        0.1,
+        1e-12,
+    );
+    world.gravity = Vector::ZERO;
+    world.restitution = 1.0;
+    let thrown = |spin: f64| {
+        Scene::new()
+            .with_world(world.clone())
+            .with_integrator(Integrator::Rk4, 1e-3)
+            .with_body(
+                Body::rectangle("box", 0.4, 0.2, 1.0)
+                    .position([0.0, 1.5])
+                    .moving([-2.0, 0.5], spin),
+            )
+    };
+    let mut simulation = start(&thrown(3.0))?;
+    let before = simulation.body(0);
+    step_to(&mut simulation, 1.5)?;
+    let after = simulation.body(0);
+    row(
+        report,
+        "spinning box off a wall, e = 1: kinetic energy (J)",
+        after.kinetic_energy,
+        before.kinetic_energy,
+        before.kinetic_energy,
+        1e-12,
+    );
+    row(
+        report,
+        "spinning box off a wall: velocity along the wall (m/s)",
+        after.velocity.y,
+        before.velocity.y,
+        0.5,
+        0.0,
+    );
+    let strikes = (0.0 - 0.2 - (-2.0)) / 2.0;
+    let found = instants(&thrown(0.0), "box.vx crosses 0 up", 1.5)?;
+    let at = found.first().map_or(f64::NAN, Located::time);
+    row(
+        report,
+        "box striking a wall: the instant (s)",
+        at,
+        strikes,
+        1.0,
+        1e-9,
+    );
+    Ok(())
+}
+
+/// The bouncing board of [`contacts`].
+fn bouncing(report: &mut Report, checks: &mut Checks) -> Outcome {
+    let mut row = |report: &mut Report, what: &str, simulated: f64, theory: f64, scale, limit| {
+        checks.check(report, what.to_owned(), (simulated, theory, scale), limit);
+    };
+    let mut world = World::gravity_only();
+    world.bounds = Some(Bounds {
+        min: Vector::cartesian(-3.0, 0.0),
+        max: Vector::cartesian(3.0, 4.0),
+        friction: 0.0,
+    });
+    let board = Scene::new()
+        .with_world(world)
+        .with_integrator(Integrator::Rk4, 1e-3)
+        .with_body(
+            Body::rectangle("board", 1.0, 0.1, 1.0)
+                .position([0.0, 2.0])
+                .angle(20.0)
+                .moving([0.0, 0.0], 1.0),
+        );
+    let mut simulation = start(&board)?;
+    let energy = simulation.diagnostics().energy.total();
+    step_to(&mut simulation, 6.0)?;
+    row(
+        report,
+        "board bouncing on the floor, e = 1: total energy after 6 s (J)",
+        simulation.diagnostics().energy.total(),
+        energy,
+        energy,
+        1e-9,
+    );
     Ok(())
 }

@@ -204,6 +204,7 @@ impl Canvas {
                 labels.push((pointed, Pos2::new(centre.x, top - 4.0), &body.name));
             }
         }
+        self.draw_free_body(painter, rect, frame);
         if self.overlays.trails {
             painter.add(trails_mesh(
                 runner
@@ -366,6 +367,44 @@ impl Canvas {
             dots.paint(painter, dots_slot);
         }
         place_labels(painter, labels, p.ink);
+    }
+
+    /// The selected body's free-body diagram: each force an arrow from where it acts, its
+    /// length in proportion (the largest 80 pixels), its size beside its tip.
+    fn draw_free_body(&self, painter: &egui::Painter, rect: Rect, frame: &Frame) {
+        let largest = frame
+            .free_body
+            .iter()
+            .map(|(_, f)| f.force.length())
+            .fold(0.0, f64::max);
+        if largest <= 0.0 {
+            return;
+        }
+        let p = &self.palette;
+        for (at, applied) in &frame.free_body {
+            let size = applied.force.length();
+            if size <= 1e-9 * largest {
+                continue;
+            }
+            let from = self.view.to_screen(rect, *at);
+            let along = applied.force / largest * 80.0;
+            let to = from + Vec2::new(along.x as f32, -along.y as f32);
+            let colour = if applied.friction {
+                p.velocity
+            } else if applied.arm == DVec2::ZERO {
+                p.force
+            } else {
+                p.acceleration
+            };
+            arrow(painter, from, to, colour, p.width * 1.2);
+            painter.text(
+                to + Vec2::new(4.0, -4.0),
+                Align2::LEFT_BOTTOM,
+                format!("{} N", crate::i18n::decimal(size, 2)),
+                FontId::proportional(12.0),
+                colour,
+            );
+        }
     }
 
     pub(super) fn draw_drag_preview(&self, painter: &egui::Painter, rect: Rect, frame: &Frame) {

@@ -242,6 +242,8 @@ struct Frame {
     angles: Vec<f64>,
     /// Each rigid body's outline in the world, counter-clockwise.
     outlines: Vec<Vec<DVec2>>,
+    /// The selected body's free-body diagram: each force (N) and where it acts.
+    free_body: Vec<(DVec2, physics::Applied)>,
 }
 
 impl Frame {
@@ -268,6 +270,7 @@ impl Frame {
                 .iter()
                 .map(physics::Body::world_outline)
                 .collect(),
+            free_body: Vec::new(),
         }
     }
 }
@@ -398,7 +401,10 @@ impl Canvas {
         }
         let settled = (rect.size() - self.rect.size()).length() <= 0.5;
         self.rect = rect;
-        let frame = self.frame(document.scene(), runner);
+        let mut frame = self.frame(document.scene(), runner);
+        if let Some(Selection::Body(i)) = *selection {
+            frame.free_body = free_body(document.scene(), runner, i);
+        }
         self.place_camera(document.scene(), &frame, runner, settled);
         let editable = runner.is_editing();
 
@@ -600,4 +606,32 @@ impl Canvas {
             )
         }
     }
+}
+
+/// Body `i`'s forces, each with the point it acts at (world): from the run while there is
+/// one, else from the scene as edited (when it is valid).
+fn free_body(scene: &Scene, runner: &Runner, i: usize) -> Vec<(DVec2, physics::Applied)> {
+    if let Some(simulation) = runner.simulation() {
+        if i >= simulation.body_names().len() {
+            return Vec::new();
+        }
+        let centroid = simulation.body(i).position;
+        return simulation
+            .body_forces(i)
+            .into_iter()
+            .map(|f| (centroid + f.arm, f))
+            .collect();
+    }
+    let Some(body) = scene.bodies.get(i) else {
+        return Vec::new();
+    };
+    if !scene.validate().is_empty() {
+        return Vec::new();
+    }
+    let centroid = body.position.to_dvec2();
+    scene
+        .body_forces(i)
+        .into_iter()
+        .map(|f| (centroid + f.arm, f))
+        .collect()
 }

@@ -78,3 +78,31 @@ fn a_body_is_selected_edited_moved_played_and_deleted() {
 fn app_scale(harness: &egui_kittest::Harness<'_, App>) -> f64 {
     harness.state().canvas.view.pixels_per_metre
 }
+
+/// A selected body shows its free-body diagram, before Play and while it runs: the held
+/// block's forces sum to nothing, the sliding one's to m a down the slope.
+#[test]
+fn a_selected_body_shows_its_forces() {
+    let mut harness = harness(App::new(example_scene("block-on-incline")));
+    harness.state_mut().selection = Some(Selection::Body(0));
+    harness.run();
+    let scene = harness.state().document.scene().clone();
+    let total: DVec2 = scene.body_forces(0).iter().map(|f| f.force).sum();
+    assert!(total.length() < 1e-9, "held: {total}");
+    harness.state_mut().selection = Some(Selection::Body(1));
+    play_frames(&mut harness, 2);
+    let app = harness.state();
+    let simulation = app.runner.simulation().expect("a run");
+    let forces = simulation.body_forces(1);
+    assert!(
+        forces.iter().any(|f| f.friction),
+        "friction acts on the slide"
+    );
+    let total: DVec2 = forces.iter().map(|f| f.force).sum();
+    let a = simulation.body(1).acceleration;
+    assert!(
+        (total - a * 2.0).length() < 1e-9,
+        "{total} against m a = {}",
+        a * 2.0
+    );
+}

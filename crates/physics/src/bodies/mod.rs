@@ -1,23 +1,37 @@
 //! Rigid bodies in motion (`[[body]]`): each one's centroid, velocity, angle and spin,
 //! moved through the step the particles took.
 //!
-//! A body feels the uniform field at its centroid, which gives it no torque: its centroid
-//! moves with a constant acceleration g and it turns at a constant spin. The integration
-//! methods then take their own step on that motion — euler x + v h, semi-implicit euler
-//! x + (v + g h) h, and the others (verlet, rk4, pefrl, dopri5), whose error vanishes
-//! for a constant acceleration, x + v h + g h²/2 — so that a body under euler departs
-//! from the parabola exactly as a particle beside it does. Contacts of bodies with
-//! anything else are not part of the step yet: bodies pass through walls, ramps,
-//! particles and each other (docs/scene-format.md says so).
+//! A body feels the uniform field at its centroid, which gives it no torque, and the
+//! forces of the walls and ramps it touches (`contact.rs`): between events its
+//! accelerations are constant, and the integration methods take their own step on that
+//! motion — euler x + v h, semi-implicit euler x + (v + a h) h, and the others (verlet,
+//! rk4, pefrl, dopri5), whose error vanishes for a constant acceleration,
+//! x + v h + a h²/2 — so that a body under euler departs from the parabola exactly as a
+//! particle beside it does. Bodies do not yet meet particles or each other: they pass
+//! through them (docs/scene-format.md says so).
+
+mod contact;
+mod solve;
 
 use std::sync::Arc;
 
 use glam::DVec2;
 
+pub use contact::Applied;
+use contact::{Pose, Push, Rigid};
+
+use crate::contacts::obstacles::{self, Obstacle};
 use crate::diagnostics::{Diagnostics, ParticleReadout};
 use crate::forces::uniform;
 use crate::scene::Vector;
 use crate::{Integrator, Scene, Simulation};
+
+/// What the surfaces took from the bodies' energy in a step, joules.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Taken {
+    pub impacts: f64,
+    pub friction: f64,
+}
 
 /// The bodies of a scene, in scene order: what never changes shared between copies (a
 /// keyframe of the time machine), the state in arrays.
@@ -30,8 +44,17 @@ pub(crate) struct Bodies {
     /// Each outline about its centroid, in the body's frame.
     outline: Arc<[Vec<DVec2>]>,
     fixed: Arc<[bool]>,
+    /// The farthest vertex from the centroid, m.
+    radius: Arc<[f64]>,
+    /// The walls and ramps.
+    solids: Arc<[Obstacle]>,
     /// The uniform field, m/s².
     gravity: DVec2,
+    /// Each body's acceleration through the last step (or at the start): the field's
+    /// and the surfaces' it rests on.
+    acceleration: Vec<DVec2>,
+    /// The scene's time step, s: how slow an approach comes to rest.
+    time_step: f64,
     /// The centroids, m.
     position: Vec<DVec2>,
     /// m/s.
@@ -59,7 +82,18 @@ impl Bodies {
             inertia: bodies.iter().map(crate::Body::inertia).collect(),
             outline: bodies.iter().map(crate::Body::local_outline).collect(),
             fixed: bodies.iter().map(|b| b.fixed).collect(),
+            radius: bodies
+                .iter()
+                .map(|b| {
+                    b.local_outline()
+                        .iter()
+                        .fold(0.0, |r: f64, v| r.max(v.length()))
+                })
+                .collect(),
+            solids: obstacles::obstacles(scene).into(),
             gravity: scene.world.gravity.to_dvec2(),
+            acceleration: Vec::new(),
+            time_step: scene.simulation.time_step,
             position: bodies.iter().map(|b| b.position.to_dvec2()).collect(),
             velocity: bodies
                 .iter()
@@ -81,39 +115,91 @@ impl Bodies {
         self.position.is_empty()
     }
 
-    /// The acceleration of body `i`, m/s²: the field's, none for a fixed one.
+    /// The acceleration of body `i`, m/s²: the field's and the surfaces', none for a
+    /// fixed one.
     fn acceleration(&self, i: usize) -> DVec2 {
         if self.fixed[i] {
             DVec2::ZERO
         } else {
-            self.gravity
+            self.acceleration.get(i).copied().unwrap_or(self.gravity)
         }
     }
 
-    /// Moves every body through a step of `h` seconds taken with `method`.
-    pub fn advance(&mut self, method: Integrator, h: f64) {
+    fn pose(&self, i: usize) -> Pose {
+        Pose {
+            position: self.position[i],
+            velocity: self.velocity[i],
+            angle: self.angle[i],
+            spin: self.spin[i],
+        }
+    }
+
+    fn rigid(&self, i: usize) -> Rigid<'_> {
+        Rigid {
+            mass: self.mass[i],
+            inertia: self.inertia[i],
+            outline: &self.outline[i],
+            radius: self.radius[i],
+            gravity: self.gravity,
+        }
+    }
+
+    /// Finds what each body's accelerations are at the start, under the surfaces it
+    /// rests on (a step of `h` sets how slow an approach comes to rest).
+    pub fn settle(&mut self, h: f64) {
+        self.time_step = h;
+        self.acceleration = (0..self.len())
+            .map(|i| contact::now(&self.rigid(i), self.pose(i), &self.solids, h).0)
+            .collect();
+    }
+
+    /// The forces on body `i` now, each where it acts: its weight at the centroid, then
+    /// the normal force and friction of each surface it rests on.
+    pub fn forces(&self, i: usize) -> Vec<Applied> {
+        let weight = Applied {
+            arm: DVec2::ZERO,
+            force: self.gravity * self.mass[i],
+            friction: false,
+        };
+        let contacts = if self.fixed[i] {
+            Vec::new()
+        } else {
+            contact::now(&self.rigid(i), self.pose(i), &self.solids, self.time_step).1
+        };
+        std::iter::once(weight).chain(contacts).collect()
+    }
+
+    /// Moves every body through a step of `h` seconds taken with `method`; returns what
+    /// the surfaces took from the bodies' energy in it.
+    pub fn advance(&mut self, method: Integrator, h: f64) -> Taken {
+        self.acceleration.resize(self.len(), self.gravity);
+        let mut taken = Taken::default();
         for i in 0..self.len() {
             if self.fixed[i] {
                 continue;
             }
-            let a = self.acceleration(i);
-            let (x, v) = (&mut self.position[i], &mut self.velocity[i]);
-            match method {
-                Integrator::Euler => {
-                    *x += *v * h;
-                    *v += a * h;
-                }
-                Integrator::SemiImplicitEuler => {
-                    *v += a * h;
-                    *x += *v * h;
-                }
-                Integrator::Verlet | Integrator::Rk4 | Integrator::Pefrl | Integrator::Dopri5 => {
-                    *x += *v * h + a * (0.5 * h * h);
-                    *v += a * h;
-                }
-            }
-            self.angle[i] += (self.spin[i] * h).to_degrees();
+            let mut pose = self.pose(i);
+            let push = if self.solids.is_empty() {
+                let free = Push {
+                    linear: self.gravity,
+                    angular: 0.0,
+                };
+                pose = pose.after(free, method, h);
+                free
+            } else {
+                let (push, books) =
+                    contact::advance(&self.rigid(i), &mut pose, &self.solids, method, h);
+                taken.impacts += books.impacts;
+                taken.friction += books.friction;
+                push
+            };
+            self.acceleration[i] = push.linear;
+            self.position[i] = pose.position;
+            self.velocity[i] = pose.velocity;
+            self.angle[i] = pose.angle;
+            self.spin[i] = pose.spin;
         }
+        taken
     }
 
     /// Everything about body `i` now.
@@ -202,6 +288,20 @@ impl Bodies {
     }
 }
 
+impl Scene {
+    /// The forces on body `i` at the scene's start, each where it acts: its free-body
+    /// diagram before Play ([`Simulation::body_forces`] while it runs).
+    pub fn body_forces(&self, i: usize) -> Vec<Applied> {
+        let mut bodies = Bodies::new(self);
+        bodies.settle(self.simulation.time_step);
+        if i < bodies.len() {
+            bodies.forces(i)
+        } else {
+            Vec::new()
+        }
+    }
+}
+
 impl Simulation {
     /// The rigid bodies' names, in scene order.
     pub fn body_names(&self) -> &[String] {
@@ -217,5 +317,11 @@ impl Simulation {
     /// Body `i`'s outline in the world now, counter-clockwise, metres.
     pub fn body_outline(&self, i: usize) -> Vec<DVec2> {
         self.bodies.world_outline(i)
+    }
+
+    /// The forces on body `i` now, each where it acts (`arm` from its centroid): its
+    /// weight, then each surface's normal force and friction — its free-body diagram.
+    pub fn body_forces(&self, i: usize) -> Vec<Applied> {
+        self.bodies.forces(i)
     }
 }

@@ -905,6 +905,7 @@ fn bounds_field<T>(
             min: Vector::cartesian(-20.0, -20.0),
             max: Vector::cartesian(20.0, 20.0),
             friction: 0.0,
+            static_friction: None,
         })));
     }
     let bounds = bounds?;

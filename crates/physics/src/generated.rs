@@ -172,6 +172,7 @@ pub fn ball_pit(n: usize) -> Scene {
         min: Vector::cartesian(-width / 2.0, 0.0),
         max: Vector::cartesian(width / 2.0, height),
         friction: 0.0,
+        static_friction: None,
     });
     let mut scene = Scene::new().with_world(world);
     // Framed on the box, with a margin.

@@ -419,8 +419,12 @@ pub struct Ramp {
     pub thickness: f64,
     /// Coefficient of restitution of impacts on the ramp, 0..=1. Default 1.
     pub restitution: f64,
-    /// Coefficient of friction, static and kinetic, >= 0. Default 0.
+    /// Coefficient of friction, kinetic (and static, unless [`Self::static_friction`]
+    /// says otherwise), >= 0. Default 0.
     pub friction: f64,
+    /// Coefficient of static friction for rigid bodies resting on it, >= `friction`;
+    /// `None`: `friction`. (Particles hold and slide with `friction`.)
+    pub static_friction: Option<f64>,
 }
 
 impl Ramp {
@@ -434,6 +438,7 @@ impl Ramp {
             thickness: Self::DEFAULT_THICKNESS,
             restitution: 1.0,
             friction: 0.0,
+            static_friction: None,
         }
     }
 
@@ -516,6 +521,9 @@ pub struct Bounds {
     /// feels μN against its motion, and a turning one is gripped at its contact point.
     /// Default 0.
     pub friction: f64,
+    /// Coefficient of static friction of the walls for rigid bodies, >= `friction`;
+    /// `None`: `friction`.
+    pub static_friction: Option<f64>,
 }
 
 /// Fields and constants that apply to the whole scene.

@@ -22,119 +22,25 @@
 //! `step_to(t)` shortens the last step so that it lands exactly on `t`: a sample at
 //! `t` is the state at `t`, not at the nearest step.
 
+mod books;
 mod coupled;
+mod error;
 mod ties;
+
+pub use books::{ImpactRecord, ImpactTarget, Ledger};
+use books::{effective_mass, impact_energy_lost};
+pub use error::SimulationError;
 
 use glam::DVec2;
 
-use crate::contacts::{Applied, Contacts, Impact};
+use crate::contacts::{Contacts, Impact};
 use crate::diagnostics::{self, Diagnostics, ParticleReadout};
-use crate::forces::ForceModel;
+use crate::forces::{ForceModel, Power};
 use crate::integrators::{self, Integrator, Workspace};
 use crate::profile::{Clock, Profile, Profiler, Stage};
 use crate::scene::error::LoadError;
 use crate::scene::{Particle, Scene, Vector};
 use crate::state::State;
-
-/// Why a simulation stopped.
-#[derive(Clone, Debug, PartialEq, thiserror::Error)]
-pub enum SimulationError {
-    /// A position or velocity became infinite or NaN, or ran away beyond 1e150.
-    #[error("{}", crate::scene::say("run-non-finite", &[("time", &time.to_string()), ("particle", particle)]))]
-    NonFinite {
-        /// The first particle, in scene order, with a non-finite value.
-        particle: String,
-        /// Seconds.
-        time: f64,
-    },
-    /// A quantity of the state (an acceleration, an energy) is infinite or NaN though
-    /// the positions and velocities are finite: bodies so close that the force between
-    /// them overflows.
-    #[error("{}", crate::scene::say("run-value-not-finite", &[("time", &time.to_string()), ("quantity", quantity), ("value", &value.to_string())]))]
-    ValueNotFinite {
-        /// The column: `NAME.ax`, `potential_energy`, ….
-        quantity: String,
-        /// What it came out as: inf, −inf or NaN.
-        value: f64,
-        /// Seconds.
-        time: f64,
-    },
-    /// The adaptive integrator could not meet its tolerance with any step f64 can take.
-    #[error("{}", crate::scene::say("run-step-too-small", &[("time", &time.to_string()), ("tolerance", &tolerance.to_string())]))]
-    StepTooSmall {
-        /// Seconds.
-        time: f64,
-        /// The scene's tolerance.
-        tolerance: f64,
-    },
-    /// Reaching the requested instant took far more adaptive steps than the time step
-    /// implies: the time step is far too long for the motion.
-    #[error("{}", crate::scene::say("run-too-many-steps", &[
-        ("time", &time.to_string()),
-        ("target", &format!("{target:e}")),
-        ("limit", &limit.to_string()),
-        ("step", &format!("{time_step:e}")),
-    ]))]
-    TooManySteps {
-        /// Seconds, where it stopped.
-        time: f64,
-        /// Seconds, the instant asked for.
-        target: f64,
-        /// The scene's time step, seconds.
-        time_step: f64,
-        /// The steps allowed.
-        limit: u64,
-    },
-    /// A particle left the world's bounds: too fast for the time step to resolve its
-    /// impacts with the walls.
-    #[error("{}", crate::scene::say("run-left-bounds", &[("time", &time.to_string()), ("particle", particle), ("speed", &format!("{speed:.3e}"))]))]
-    LeftBounds {
-        /// The particle's name.
-        particle: String,
-        /// Seconds.
-        time: f64,
-        /// Its speed then, m/s.
-        speed: f64,
-    },
-    /// Air resistance too strong for a fixed time step: the method would multiply the
-    /// velocity at each step instead of following its decay.
-    #[error("{}", crate::scene::say("run-drag-too-strong", &[
-        ("time", &time.to_string()),
-        ("particle", particle),
-        ("decay", &format!("{decay:.3e}")),
-        ("step", &time_step.to_string()),
-    ]))]
-    DragTooStrong {
-        /// The particle's name.
-        particle: String,
-        /// Seconds.
-        time: f64,
-        /// The time its velocity takes to fall by e, seconds: the longest step to take.
-        decay: f64,
-        /// The step it was to take, seconds.
-        time_step: f64,
-    },
-    /// A rod or a string could not be held at its length (forces far too strong for the
-    /// time step, masses too unequal for f64 to tie, or lengths that cannot all hold).
-    #[error("{}", crate::scene::say("run-tie-not-held", &[("time", &time.to_string()), ("tie", tie)]))]
-    TieNotHeld {
-        /// The rod's or string's name.
-        tie: String,
-        /// Seconds.
-        time: f64,
-    },
-    /// A rod or a string so far from the origin for its length that f64's rounding of its
-    /// ends' positions alone keeps it from being held to a billionth of its length.
-    #[error("{}", crate::scene::say("run-tie-too-far", &[("time", &time.to_string()), ("tie", tie), ("length", &length.to_string())]))]
-    TieTooFar {
-        /// The rod's or string's name.
-        tie: String,
-        /// Seconds.
-        time: f64,
-        /// Its length, m.
-        length: f64,
-    },
-}
 
 /// What [`Simulation::step_to_observed`] calls after each step: the state before it and
 /// after.
@@ -172,85 +78,6 @@ pub struct Simulation {
     ledger: Option<Ledger>,
     /// Time per stage, when a clock is lent with [`Simulation::set_clock`].
     profiler: Profiler,
-}
-
-/// An impact that happened: when, and between what.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ImpactRecord {
-    /// Seconds, located to the instant of contact.
-    pub time: f64,
-    /// The particle (the first of a pair, in scene order).
-    pub particle: usize,
-    /// What it hit.
-    pub other: ImpactTarget,
-    /// The impulse along the contact normal, N·s.
-    pub impulse: f64,
-    /// The approach speed along the normal just before, m/s.
-    pub normal_speed_before: f64,
-    /// The separation speed along the normal just after, m/s: the restitution times the
-    /// approach.
-    pub normal_speed_after: f64,
-    /// The kinetic energy the impact took, J: ½ μ (1 − e²) u² with μ the effective mass.
-    pub kinetic_energy_lost: f64,
-}
-
-/// The energy the dissipative parts of the physics took out of the motion since the
-/// ledger was started, joules. With the kinetic and potential energy it closes: kinetic +
-/// potential + these − the starting energy is what is left, the residual: the
-/// integrator's error.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Ledger {
-    /// Spring damping: ∫ b (closing speed)² dt, by Simpson's rule over each step.
-    pub damping: f64,
-    /// Friction: ∫ −F·v dt of the surfaces' tangential force on points, the same way;
-    /// for turning particles, what it takes at impacts and in slipping (exactly: its
-    /// force is fixed through a step, `crate::turning`).
-    pub friction: f64,
-    /// Air resistance: ∫ (b |v|² + c |v|³) dt, the same way.
-    pub drag: f64,
-    /// Impacts and resting contact: ½ μ (1 − e²) u² per impact, the kinetic energy the
-    /// resting contacts' inelastic impulses remove, less the potential energy their
-    /// position correction adds (a pile at rest sinks by ½ g h² a step under gravity and is
-    /// lifted back: each step the impulses take ½ m (g h)² and the lift gives it back, so
-    /// a pile at rest dissipates nothing, as it should).
-    pub impacts: f64,
-}
-
-impl Ledger {
-    /// All of them, joules.
-    pub fn total(&self) -> f64 {
-        self.damping + self.friction + self.impacts + self.drag
-    }
-}
-
-use crate::forces::Power;
-
-/// The effective mass of an impact, kg: 1/(1/mᵢ + 1/mⱼ) for a pair, m against a
-/// surface (0 when nothing can move). `w` is each particle's 1/m.
-fn effective_mass(applied: &Applied, w: &[f64]) -> f64 {
-    let inverse = match applied.impact {
-        Impact::Pair(i, j) => w[i] + w[j],
-        Impact::Obstacle(p, _) => w[p],
-    };
-    if inverse > 0.0 { 1.0 / inverse } else { 0.0 }
-}
-
-/// The kinetic energy an impact takes, joules: ½ μ (1 − e²) u², the approach u becoming
-/// a separation e·u.
-fn impact_energy_lost(applied: &Applied, w: &[f64]) -> f64 {
-    let (u, e) = (applied.approach, applied.restitution);
-    0.5 * effective_mass(applied, w) * (1.0 - e * e) * u * u
-}
-
-/// What a particle hit.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ImpactTarget {
-    /// Another particle, by index.
-    Particle(usize),
-    /// A ramp, by index in the scene's ramps.
-    Ramp(usize),
-    /// A wall of the world's bounds.
-    Wall,
 }
 
 impl Simulation {

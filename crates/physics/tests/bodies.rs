@@ -359,6 +359,7 @@ fn in_a_box(gravity: [f64; 2], restitution: f64, body: Body) -> Scene {
         min: Vector::cartesian(-2.0, 0.0),
         max: Vector::cartesian(2.0, 3.0),
         friction: 0.0,
+        static_friction: None,
     });
     Scene::new()
         .with_world(world)
@@ -469,4 +470,49 @@ fn a_held_block_s_forces_are_its_free_body_diagram() {
     assert!(friction.dot(up) > 0.0, "friction holds it up the slope");
     let total: DVec2 = forces.iter().map(|f| f.force).sum();
     assert!(total.length() < 1e-9, "{total}");
+}
+
+/// A ramp's own static friction: μs = 0.5 holds a block on 25° (tan 25° = 0.47), where
+/// its kinetic μk = 0.3 alone would not; a block sent down it slides with
+/// g (sin θ − μk cos θ), faster than it would under μs; a static coefficient below the
+/// kinetic one is refused, and the key reads and writes back on ramps and walls.
+#[test]
+fn static_friction_holds_and_kinetic_friction_slides() {
+    let held = |v0: f64| {
+        let mut scene = on_incline(25.0, 0.3, Integrator::Rk4);
+        scene.ramps[0].static_friction = Some(0.5);
+        let down = -DVec2::from_angle(25_f64.to_radians()) * v0;
+        scene.bodies[0].velocity = down.into();
+        scene
+    };
+    let scene = held(0.0);
+    let start = scene.bodies[0].position.to_dvec2();
+    let mut simulation = Simulation::new(&scene).expect("valid");
+    simulation.step_to(2.0).expect("runs");
+    assert!(simulation.body(0).position.distance(start) < 1e-10);
+    let scene = held(0.5);
+    let mut simulation = Simulation::new(&scene).expect("valid");
+    simulation.step_to(0.5).expect("runs");
+    let theta = 25_f64.to_radians();
+    let a = G * (theta.sin() - 0.3 * theta.cos());
+    let v = simulation.body(0).velocity.length();
+    assert!((v - (0.5 + a * 0.5)).abs() < 1e-9, "{v}");
+    let mut wrong = held(0.0);
+    wrong.ramps[0].static_friction = Some(0.1);
+    assert!(
+        wrong.validate()[0]
+            .message
+            .contains("at least the kinetic friction 0.3")
+    );
+    let mut both = held(0.0);
+    both.world.bounds = Some(Bounds {
+        min: Vector::cartesian(-5.0, -1.0),
+        max: Vector::cartesian(10.0, 10.0),
+        friction: 0.2,
+        static_friction: Some(0.6),
+    });
+    let text = both.to_toml();
+    assert!(text.contains("static_friction = 0.5") && text.contains("static_friction = 0.6"));
+    assert_eq!(Scene::from_toml(&text).expect("reads"), both);
+    assert_eq!(Scene::from_json(&both.to_json()).expect("reads"), both);
 }

@@ -342,6 +342,7 @@ fn balls_on_a_floor(restitution: f64, balls: &[(f64, f64)]) -> Scene {
             min: Vector::cartesian(-20.0, 0.0),
             max: Vector::cartesian(20.0, 10.0),
             friction: 0.0,
+            static_friction: None,
         }),
         ..World::gravity_only()
     });
@@ -453,6 +454,7 @@ fn bounds_reflect_with_the_world_restitution() {
         min: [0.0, 0.0].into(),
         max: [10.0, 10.0].into(),
         friction: 0.0,
+        static_friction: None,
     });
     let scene = Scene::new().with_world(world).with_particle(
         Particle::new("ball", 1.0)
@@ -501,6 +503,7 @@ fn one_step_in_a_box(h: f64, particles: &[Particle], theory: &[f64]) -> Simulati
         min: [-10.0, -5.0].into(),
         max: [6.0, 5.0].into(),
         friction: 0.0,
+        static_friction: None,
     });
     let mut scene = Scene::new()
         .with_world(world)
@@ -625,6 +628,7 @@ fn without_collisions(min: [f64; 2], max: [f64; 2]) -> World {
         min: min.into(),
         max: max.into(),
         friction: 0.0,
+        static_friction: None,
     });
     world
 }
@@ -732,6 +736,7 @@ fn box_with_a_floor(height: f64) -> World {
             min: [-1.0, 0.0].into(),
             max: [1.0, height].into(),
             friction: 0.0,
+            static_friction: None,
         }),
         ..World::gravity_only()
     }

@@ -171,6 +171,7 @@ fn a_bounce_reverses_the_velocity_at_the_impacts_instant() {
         min: [-5.0, 0.0].into(),
         max: [5.0, 10.0].into(),
         friction: 0.0,
+        static_friction: None,
     });
     let scene = Scene::new()
         .with_world(world)

@@ -96,6 +96,7 @@ fn impacts_take_what_a_bouncing_ball_loses() {
         min: Vector::cartesian(-5.0, 0.0),
         max: Vector::cartesian(5.0, 10.0),
         friction: 0.0,
+        static_friction: None,
     });
     let scene = Scene::new()
         .with_world(world)
@@ -202,6 +203,7 @@ fn a_pair_too_stiff_for_an_answer_closes_its_books_as_the_integrator_does() {
             min: Vector::cartesian(-2.0, 0.0),
             max: Vector::cartesian(2.0, 4.0),
             friction: 0.0,
+            static_friction: None,
         }),
         ..World::default()
     };
@@ -252,6 +254,7 @@ fn a_ball_sent_off_its_wall_and_floor_at_once_closes_its_books() {
                 min: [-1.0, 0.0].into(),
                 max: [1.0, 2.0].into(),
                 friction: 0.0,
+                static_friction: None,
             }),
             ..World::gravity_only()
         })

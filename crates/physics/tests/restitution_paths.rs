@@ -140,6 +140,7 @@ fn a_bounce_off_a_surface_has_its_restitution_free_or_coupled() {
                         min: [-5.0, 0.0].into(),
                         max: [5.0, 10.0].into(),
                         friction: 0.0,
+                        static_friction: None,
                     });
                 } else {
                     scene = scene.with_ramp(
@@ -272,6 +273,7 @@ fn a_ball_pulled_onto_a_wall_by_a_spring_bounces_then_rests() {
             min: [0.0, -5.0].into(),
             max: [10.0, 5.0].into(),
             friction: 0.0,
+            static_friction: None,
         }),
         ..world(false, e)
     };
@@ -347,6 +349,7 @@ fn the_impact_log_names_the_ramp_the_wall_or_the_particle_struck() {
             min: [-10.0, 0.0].into(),
             max: [10.0, 10.0].into(),
             friction: 0.0,
+            static_friction: None,
         }),
         ..world(false, 0.5)
     };
@@ -493,6 +496,7 @@ fn a_coupled_ball_rattling_between_walls_strikes_at_its_closed_form_instants() {
                 min: [-half, -1.0].into(),
                 max: [half, 1.0].into(),
                 friction: 0.0,
+                static_friction: None,
             }),
             ..world(false, e)
         })
@@ -559,6 +563,7 @@ fn a_free_ball_struck_by_a_coupled_one_is_followed_through_the_step() {
                 min: [-1.0, -1.0].into(),
                 max: [0.5, 1.0].into(),
                 friction: 0.0,
+                static_friction: None,
             }),
             ..world(false, 1.0)
         })
@@ -653,6 +658,7 @@ fn a_coupled_ball_struck_hard_into_its_floor_bounces_off_it() {
             min: [-5.0, 0.0].into(),
             max: [5.0, 10.0].into(),
             friction: 0.0,
+            static_friction: None,
         }),
         ..World::gravity_only()
     });
@@ -838,6 +844,7 @@ fn a_sprung_ball_on_the_floor_stays_on_it_through_its_impacts() {
                 min: [-0.2 - radius, 0.0].into(),
                 max: [0.2 + radius, 10.0].into(),
                 friction: 0.0,
+                static_friction: None,
             }),
             ..World::gravity_only()
         })

@@ -257,6 +257,7 @@ fn a_bob_on_a_spring_bounces_off_a_wall_and_retraces_its_path() {
         min: [-5.0, -5.0].into(),
         max: [0.5 + radius, 5.0].into(),
         friction: 0.0,
+        static_friction: None,
     });
     let scene = physics::Scene::new()
         .with_world(world)

@@ -217,6 +217,7 @@ fn a_spinning_disc_bounces_off_a_gripping_floor_as_theory_says() {
             min: Vector::cartesian(-10.0, 0.0),
             max: Vector::cartesian(10.0, 10.0),
             friction,
+            static_friction: None,
         });
         let scene = Scene::new()
             .with_world(world)
@@ -288,6 +289,7 @@ fn backspin_bounces_a_ball_back() {
         min: Vector::cartesian(-20.0, 0.0),
         max: Vector::cartesian(20.0, 20.0),
         friction: 10.0,
+        static_friction: None,
     });
     let scene = Scene::new()
         .with_world(world)

@@ -352,6 +352,7 @@ fn from_python(kind: Kind, value: &Bound<'_, PyAny>, what: &str) -> PyResult<Val
                     min: vector(min, &format!("{what}'s lower-left corner"))?,
                     max: vector(max, &format!("{what}'s upper-right corner"))?,
                     friction,
+                    static_friction: None,
                 }))
             }
         }

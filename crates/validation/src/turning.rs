@@ -129,6 +129,7 @@ fn bounce(report: &mut Report, checks: &mut Checks) -> Outcome {
         min: Vector::cartesian(-10.0, 0.0),
         max: Vector::cartesian(10.0, 10.0),
         friction: 5.0,
+        static_friction: None,
     });
     let scene = Scene::new()
         .with_world(world)

@@ -130,6 +130,7 @@ fn the_stopwatch_times_a_bounce_between_two_impacts() {
             min: [-5.0, 0.0].into(),
             max: [5.0, 10.0].into(),
             friction: 0.0,
+            static_friction: None,
         }),
         ..World::default()
     };

@@ -614,7 +614,7 @@ fn hold(
         // pushing the way it was needed.
         let slipping = patches.iter().enumerate().find_map(|(p, patch)| {
             let (grip, normal) = forces[p];
-            let mu = solids[patch.solid].friction;
+            let mu = solids[patch.solid].static_friction;
             (patch.sliding.is_none() && grip.abs() > mu * normal * (1.0 + 1e-12))
                 .then_some((p, grip))
         });

@@ -22,8 +22,10 @@ pub(crate) struct Obstacle {
     pub target: ImpactTarget,
     /// Coefficient of restitution of impacts, 0..=1.
     pub restitution: f64,
-    /// Coefficient of friction, static and kinetic.
+    /// Coefficient of friction, kinetic (and static, for particles).
     pub friction: f64,
+    /// Coefficient of static friction for rigid bodies: the scene's, or `friction`.
+    pub static_friction: f64,
 }
 
 impl Shape {
@@ -101,6 +103,7 @@ pub(crate) fn obstacles(scene: &Scene) -> Vec<Obstacle> {
             },
             restitution: ramp.restitution,
             friction: ramp.friction,
+            static_friction: ramp.static_friction.unwrap_or(ramp.friction),
         })
         .collect();
     if let Some(bounds) = scene.world.bounds {
@@ -117,6 +120,7 @@ pub(crate) fn obstacles(scene: &Scene) -> Vec<Obstacle> {
                 shape: Shape::HalfPlane { point, normal },
                 restitution: scene.world.restitution,
                 friction: bounds.friction,
+                static_friction: bounds.static_friction.unwrap_or(bounds.friction),
             });
         }
     }

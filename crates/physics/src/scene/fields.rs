@@ -706,6 +706,16 @@ pub const BODY: &[Field<Body>] = &[
     },
 ];
 
+/// A ramp's key outside [`RAMP`], with the reference's line: the static friction, whose
+/// default is another field.
+pub const RAMP_STATIC_FRICTION: (&str, &str, &str, &str, &str) = (
+    "static_friction",
+    "number ≥ friction",
+    "",
+    "friction",
+    "Static coefficient of friction for rigid bodies resting on it (particles hold and slide with `friction`)",
+);
+
 /// The keys of `[[body]]` outside [`BODY`], with the reference's line for each: the
 /// shape, its vertices, and the static friction (whose default is another field).
 pub const BODY_SHAPE_KEYS: [(&str, &str, &str, &str, &str); 3] = [
@@ -780,6 +790,10 @@ pub fn reference() -> String {
     section(&mut out, "[[rod]]", ROD);
     section(&mut out, "[[string]]", STRING);
     section(&mut out, "[[ramp]]", RAMP);
+    out.pop();
+    let (key, kind, unit, default, help) = RAMP_STATIC_FRICTION;
+    let _ = writeln!(out, "| `{key}` | {kind} | {unit} | {default} | {help} |");
+    out.push('\n');
     section(&mut out, "[[body]]", BODY);
     // The body's keys outside the table, in the table just written.
     out.pop();
@@ -835,6 +849,7 @@ mod tests {
             min: Vector::cartesian(-1.0, -1.0),
             max: Vector::cartesian(1.0, 1.0),
             friction: 0.0,
+            static_friction: None,
         });
         world.restitution = 0.3;
         check(WORLD, &world, &mut World::default());

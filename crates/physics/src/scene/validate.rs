@@ -75,6 +75,24 @@ impl Scene {
     }
 }
 
+/// What is wrong with a static coefficient of friction beside the kinetic `friction`:
+/// negative, not finite, or below it.
+pub(crate) fn static_problem(value: Option<f64>, friction: f64) -> Option<String> {
+    let value = value?;
+    if let Err(reason) = check_value(Rule::NonNegative, "static_friction", value) {
+        return Some(reason);
+    }
+    (value < friction).then(|| {
+        say(
+            "scene-body-static-friction",
+            &[
+                ("static", &value.to_string()),
+                ("kinetic", &friction.to_string()),
+            ],
+        )
+    })
+}
+
 /// `kind #n` (1-based): an object without a name.
 pub(crate) fn numbered(kind: &str, index: usize) -> String {
     say(
@@ -226,6 +244,9 @@ impl Checker<'_> {
                 );
             }
             if let Err(reason) = check_value(Rule::NonNegative, "friction", bounds.friction) {
+                self.report(s, "bounds", &format!("bounds {reason}"));
+            }
+            if let Some(reason) = static_problem(bounds.static_friction, bounds.friction) {
                 self.report(s, "bounds", &format!("bounds {reason}"));
             }
         }
@@ -454,6 +475,9 @@ impl Checker<'_> {
     fn ramps(&mut self) {
         for (i, ramp) in self.scene.ramps.iter().enumerate() {
             self.rules(Section::Ramp(i), fields::RAMP, ramp);
+            if let Some(reason) = static_problem(ramp.static_friction, ramp.friction) {
+                self.report(Section::Ramp(i), "static_friction", &reason);
+            }
         }
         self.inside_ramps();
     }

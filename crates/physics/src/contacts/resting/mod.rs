@@ -535,6 +535,7 @@ mod tests {
             },
             restitution: 0.0,
             friction: 0.0,
+            static_friction: 0.0,
         }];
         let touching = Touching {
             pairs: &[(0, 1)],

@@ -424,7 +424,10 @@ impl<'t> Reader<'t> {
         if let Some((mut t, name)) = self.object(node, "ramp", Section::Ramp(index), index) {
             ramp.name = name;
             self.fields(&mut t, fields::RAMP, &mut ramp);
-            self.close(&t, &fields::keys(&["name"], fields::RAMP));
+            ramp.static_friction = self.field(&mut t, "static_friction", read_number);
+            let mut known = fields::keys(&["name"], fields::RAMP);
+            known.push("static_friction");
+            self.close(&t, &known);
         }
         ramp
     }
@@ -761,7 +764,10 @@ pub(super) fn read_bounds(node: &Node) -> Result<Bounds, String> {
         say(
             id,
             &[
-                ("form", "{ min = [x, y], max = [x, y], friction = μ }"),
+                (
+                    "form",
+                    "{ min = [x, y], max = [x, y], friction = μ, static_friction = μs }",
+                ),
                 arg,
             ],
         )
@@ -771,7 +777,7 @@ pub(super) fn read_bounds(node: &Node) -> Result<Bounds, String> {
     };
     if let Some(extra) = entries
         .iter()
-        .find(|e| !["min", "max", "friction"].contains(&&*e.key))
+        .find(|e| !["min", "max", "friction", "static_friction"].contains(&&*e.key))
     {
         return Err(wrong("scene-bounds-extra", ("key", &extra.key)));
     }
@@ -780,11 +786,16 @@ pub(super) fn read_bounds(node: &Node) -> Result<Bounds, String> {
         Some(node) => read_number(node).map_err(|e| format!("friction {e}"))?,
         None => 0.0,
     };
+    let static_friction = match get("static_friction") {
+        Some(node) => Some(read_number(node).map_err(|e| format!("static_friction {e}"))?),
+        None => None,
+    };
     match (get("min"), get("max")) {
         (Some(min), Some(max)) => Ok(Bounds {
             min: read_vector(min).map_err(|e| format!("min {e}"))?,
             max: read_vector(max).map_err(|e| format!("max {e}"))?,
             friction,
+            static_friction,
         }),
         _ => Err(wrong("scene-bounds-both", ("got", ""))),
     }

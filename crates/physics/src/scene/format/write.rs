@@ -95,11 +95,13 @@ impl Scene {
                     out_fields(fields::tie_fields(t.kind), t),
                 )
             }))
-            .chain(
-                self.ramps
-                    .iter()
-                    .map(|r| ("ramp", &r.name, out_fields(fields::RAMP, r))),
-            )
+            .chain(self.ramps.iter().map(|r| {
+                let mut entries = out_fields(fields::RAMP, r);
+                if let Some(s) = r.static_friction {
+                    entries.push(("static_friction", Out::Number(s)));
+                }
+                ("ramp", &r.name, entries)
+            }))
             .chain(
                 self.bodies
                     .iter()
@@ -314,17 +316,21 @@ impl Out {
                     .collect();
                 format!("[{}]", items.join(", "))
             }
-            Self::Bounds(b) if b.friction == 0.0 => format!(
-                "{{ min = {}, max = {} }}",
-                toml_vector(b.min),
-                toml_vector(b.max)
-            ),
-            Self::Bounds(b) => format!(
-                "{{ min = {}, max = {}, friction = {} }}",
-                toml_vector(b.min),
-                toml_vector(b.max),
-                toml_float(b.friction)
-            ),
+            Self::Bounds(b) => {
+                let mut text = format!(
+                    "{{ min = {}, max = {}",
+                    toml_vector(b.min),
+                    toml_vector(b.max)
+                );
+                if b.friction != 0.0 {
+                    let _ = write!(text, ", friction = {}", toml_float(b.friction));
+                }
+                if let Some(s) = b.static_friction {
+                    let _ = write!(text, ", static_friction = {}", toml_float(s));
+                }
+                text.push_str(" }");
+                text
+            }
         }
     }
 
@@ -345,6 +351,9 @@ impl Out {
                     serde_json::json!({ "min": json_vector(b.min), "max": json_vector(b.max) });
                 if b.friction != 0.0 {
                     bounds["friction"] = b.friction.into();
+                }
+                if let Some(s) = b.static_friction {
+                    bounds["static_friction"] = s.into();
                 }
                 bounds
             }

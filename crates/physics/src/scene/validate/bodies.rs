@@ -4,7 +4,7 @@
 
 use glam::DVec2;
 
-use super::{Checker, Rule, check_value};
+use super::Checker;
 use crate::scene::error::Section;
 use crate::scene::fields;
 use crate::scene::{Body, Shape, say};
@@ -29,22 +29,8 @@ impl Checker<'_> {
             let before = self.problems.len();
             let s = Section::Body(i);
             self.rules(s, fields::BODY, body);
-            if let Some(value) = body.static_friction {
-                if let Err(reason) = check_value(Rule::NonNegative, "static_friction", value) {
-                    self.report(s, "static_friction", &reason);
-                } else if value < body.friction {
-                    self.report(
-                        s,
-                        "static_friction",
-                        &say(
-                            "scene-body-static-friction",
-                            &[
-                                ("static", &value.to_string()),
-                                ("kinetic", &body.friction.to_string()),
-                            ],
-                        ),
-                    );
-                }
+            if let Some(reason) = super::static_problem(body.static_friction, body.friction) {
+                self.report(s, "static_friction", &reason);
             }
             self.shape(s, body);
             self.mass(s, body);

@@ -35,6 +35,7 @@ enum What {
     Rod(String),
     String(String),
     Ramp(String),
+    Body(String),
     World,
     Simulation,
 }
@@ -47,6 +48,7 @@ impl What {
             Self::Rod(_) => "rod",
             Self::String(_) => "string",
             Self::Ramp(_) => "ramp",
+            Self::Body(_) => "body",
             Self::World => "world",
             Self::Simulation => "simulation",
         }
@@ -58,7 +60,8 @@ impl What {
             | Self::Spring(n)
             | Self::Rod(n)
             | Self::String(n)
-            | Self::Ramp(n) => Some(n),
+            | Self::Ramp(n)
+            | Self::Body(n) => Some(n),
             Self::World | Self::Simulation => None,
         }
     }
@@ -123,6 +126,14 @@ impl What {
                 .ok_or_else(|| {
                     missing(name, scene.ramps.iter().map(|r| r.name.as_str()).collect())
                 }),
+            Self::Body(name) => scene
+                .bodies
+                .iter()
+                .position(|b| b.name == *name)
+                .map(Section::Body)
+                .ok_or_else(|| {
+                    missing(name, scene.bodies.iter().map(|b| b.name.as_str()).collect())
+                }),
             Self::World => Ok(Section::World),
             Self::Simulation => Ok(Section::Simulation),
         }
@@ -139,6 +150,7 @@ fn keys(scene: &physics::Scene, section: Section) -> Vec<&'static str> {
         Section::Spring(_) => of(fields::SPRING),
         Section::Tie(i) => of(fields::tie_fields(scene.ties[i].kind)),
         Section::Ramp(_) => of(fields::RAMP),
+        Section::Body(_) => of(fields::BODY),
         Section::World => of(fields::WORLD),
         Section::Simulation => of(fields::SIMULATION),
         _ => Vec::new(),
@@ -156,6 +168,7 @@ fn get(scene: &physics::Scene, section: Section, key: &str) -> Option<(Kind, Val
         Section::Spring(i) => of(fields::SPRING, &scene.springs[i], key),
         Section::Tie(i) => of(fields::tie_fields(scene.ties[i].kind), &scene.ties[i], key),
         Section::Ramp(i) => of(fields::RAMP, &scene.ramps[i], key),
+        Section::Body(i) => of(fields::BODY, &scene.bodies[i], key),
         Section::World => of(fields::WORLD, &scene.world, key),
         Section::Simulation => of(fields::SIMULATION, &scene.simulation, key),
         _ => None,
@@ -177,6 +190,7 @@ fn set(scene: &mut physics::Scene, section: Section, key: &str, value: Value) {
             of(fields, &mut scene.ties[i], key, value);
         }
         Section::Ramp(i) => of(fields::RAMP, &mut scene.ramps[i], key, value),
+        Section::Body(i) => of(fields::BODY, &mut scene.bodies[i], key, value),
         Section::World => of(fields::WORLD, &mut scene.world, key, value),
         Section::Simulation => of(fields::SIMULATION, &mut scene.simulation, key, value),
         _ => {}
@@ -537,6 +551,12 @@ impl Scene {
         SceneObject::of(slf, What::Ramp(name.to_owned()))
     }
 
+    /// The rigid body called `name`: its table's fields as attributes (`block.angle`,
+    /// `block.mass`); its shape stays as the file gives it.
+    fn body(slf: Bound<'_, Self>, name: &str) -> PyResult<SceneObject> {
+        SceneObject::of(slf, What::Body(name.to_owned()))
+    }
+
     /// The world: gravity, the pair forces' constants, the bounds.
     #[getter]
     fn world(slf: Bound<'_, Self>) -> PyResult<SceneObject> {
@@ -579,9 +599,15 @@ impl Scene {
         self.inner.ramps.iter().map(|r| r.name.clone()).collect()
     }
 
+    /// The rigid bodies' names.
+    #[getter]
+    fn bodies(&self) -> Vec<String> {
+        self.inner.bodies.iter().map(|b| b.name.clone()).collect()
+    }
+
     fn __repr__(&self) -> String {
         format!(
-            "<newtonlab.Scene {}: {} particles, {} springs, {} rods and strings, {} ramps>",
+            "<newtonlab.Scene {}: {} particles, {} springs, {} rods and strings, {} ramps, {} bodies>",
             self.inner
                 .name
                 .as_deref()
@@ -589,7 +615,8 @@ impl Scene {
             self.inner.particles.len(),
             self.inner.springs.len(),
             self.inner.ties.len(),
-            self.inner.ramps.len()
+            self.inner.ramps.len(),
+            self.inner.bodies.len()
         )
     }
 }
@@ -605,8 +632,8 @@ impl Scene {
     }
 }
 
-/// One object of a scene — a particle, spring, rod, string or ramp, the world or the
-/// settings — with the scene file's keys as attributes (`ball.mass`, `ball.velocity`).
+/// One object of a scene — a particle, spring, rod, string, ramp or body, the world or
+/// the settings — with the scene file's keys as attributes (`ball.mass`, `ball.velocity`).
 /// Writing one checks the value by the file's rules; a bad value raises `SceneError` and
 /// leaves the scene as it was.
 #[pyclass(module = "newtonlab")]
@@ -677,6 +704,7 @@ impl SceneObject {
                 What::Rod(_) => What::Rod(new),
                 What::String(_) => What::String(new),
                 What::Ramp(_) => What::Ramp(new),
+                What::Body(_) => What::Body(new),
                 other => other.clone(),
             };
             return Ok(());

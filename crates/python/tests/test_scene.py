@@ -138,3 +138,30 @@ def test_examples_list_what_load_takes():
 def test_the_package_has_a_version():
     assert isinstance(newtonlab.__version__, str)
     assert newtonlab.__version__.count(".") == 2, newtonlab.__version__
+
+
+def test_bodies_are_objects_with_the_files_keys_and_columns():
+    scene = newtonlab.load("example:block-on-incline")
+    assert scene.bodies == ["held", "sliding"]
+    held = scene.body("held")
+    assert held.mass == 2.0 and held.angle == 20.0
+    held.mass = 3.0
+    assert scene.body("held").mass == 3.0
+    with pytest.raises(newtonlab.SceneError, match="between 0 and 1"):
+        held.restitution = 2.0
+    # A density typed replaces the mass, as in the app's inspector.
+    held.density = 10.0
+    assert (held.mass, held.density) == (0.0, 10.0)
+    held.mass = 2.0
+    with pytest.raises(newtonlab.SceneError, match="no body named 'nothing'"):
+        scene.body("nothing")
+    traj = newtonlab.run(scene, until=1.0, every=0.5)
+    assert traj.columns[1:9] == [
+        "held.x", "held.y", "held.vx", "held.vy", "held.ax", "held.ay",
+        "held.angle", "held.spin",
+    ]
+    # Held by friction: it stays where it was put.
+    assert np.ptp(traj["held.x"]) < 1e-9
+    # Sliding at g (sin 30° − 0.5 cos 30°): its speed after 1 s.
+    speed = np.hypot(traj["sliding.vx"][-1], traj["sliding.vy"][-1])
+    assert abs(speed - 9.81 * (0.5 - 0.5 * np.cos(np.radians(30.0)))) < 1e-9

@@ -65,6 +65,9 @@ class Scene:
         """The string called ``name``."""
     def ramp(self, name: str) -> SceneObject:
         """The ramp called ``name``."""
+    def body(self, name: str) -> SceneObject:
+        """The rigid body called ``name``: ``mass``, ``angle``, ``spin``, … (its shape as
+        the file gives it)."""
     @property
     def world(self) -> SceneObject:
         """The world: ``gravity``, the pair forces' constants, ``bounds``."""
@@ -82,6 +85,9 @@ class Scene:
     def strings(self) -> List[str]: ...
     @property
     def ramps(self) -> List[str]: ...
+    @property
+    def bodies(self) -> List[str]:
+        """The rigid bodies' names, in scene order."""
 
 class Table:
     """Named columns of equal length: ``table["t"]`` is a numpy float64 array (a text

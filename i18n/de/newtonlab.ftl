@@ -826,3 +826,5 @@ field-body-fixed-help = Ein fester Körper bewegt sich nie
 field-body-color = Farbe
 field-body-color-help = Anzeigefarbe, "#rrggbb"
 status-bodies = { $bodies } Körper
+tool-polygon = Polygon
+tool-polygon-hint = Die Ecken eines starren konvexen Polygons anklicken; die erste erneut anklicken, um es zu schließen (8)

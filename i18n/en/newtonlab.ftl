@@ -827,3 +827,5 @@ field-body-fixed-help = A fixed body never moves
 field-body-color = colour
 field-body-color-help = Display colour, "#rrggbb"
 status-bodies = { $bodies } bodies
+tool-polygon = Polygon
+tool-polygon-hint = Click the corners of a rigid convex polygon; click the first again to close it (8)

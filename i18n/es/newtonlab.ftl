@@ -826,3 +826,5 @@ field-body-fixed-help = Un cuerpo fijo nunca se mueve
 field-body-color = color
 field-body-color-help = Color de dibujo, "#rrggbb"
 status-bodies = { $bodies } cuerpos
+tool-polygon = Polígono
+tool-polygon-hint = Hacer clic en las esquinas de un polígono convexo rígido; clic de nuevo en la primera para cerrarlo (8)

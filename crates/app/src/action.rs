@@ -116,6 +116,7 @@ pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
     (plain(Key::Num5), Action::Tool(Tool::Rod)),
     (plain(Key::Num6), Action::Tool(Tool::String)),
     (plain(Key::Num7), Action::Tool(Tool::Box)),
+    (plain(Key::Num8), Action::Tool(Tool::Polygon)),
     (plain(Key::M), Action::Instrument(Instrument::Tape)),
     (plain(Key::P), Action::Instrument(Instrument::Probe)),
     (plain(Key::T), Action::ToggleStopwatch),

@@ -319,6 +319,8 @@ impl App {
                 self.canvas.instruments.active = None;
                 if self.runner.is_editing() {
                     self.canvas.tool = tool;
+                    // A polygon half drawn is left behind with its tool.
+                    self.canvas.corners.clear();
                 }
             }
             Action::ToggleInspector => self.panels.inspector = !self.panels.inspector,

@@ -409,6 +409,26 @@ impl Canvas {
 
     pub(super) fn draw_drag_preview(&self, painter: &egui::Painter, rect: Rect, frame: &Frame) {
         let screen = |p: DVec2| self.view.to_screen(rect, p);
+        if !self.corners.is_empty() {
+            // The polygon being drawn: its convex outline so far, and each corner clicked.
+            let hull: Vec<Pos2> = super::tools::convex_hull(&self.corners)
+                .into_iter()
+                .map(screen)
+                .collect();
+            let colour = Color32::from_rgba_unmultiplied(80, 120, 200, 120);
+            if hull.len() >= 3 {
+                painter.add(Shape::convex_polygon(
+                    hull,
+                    colour,
+                    Stroke::new(self.palette.width, self.palette.ink),
+                ));
+            } else if let [a, b] = hull[..] {
+                painter.line_segment([a, b], Stroke::new(self.palette.width, self.palette.ink));
+            }
+            for &corner in &self.corners {
+                painter.circle_filled(screen(corner), 3.0, self.palette.ink);
+            }
+        }
         match self.drag {
             Some(Drag::NewLink { from, tip, tool }) => {
                 if let Some(&a) = frame.positions.get(from) {

@@ -20,7 +20,7 @@ use std::fmt::Write as _;
 use egui::{Key, Response, Ui};
 use physics::{DVec2, Endpoint, Scene};
 
-use super::tools::{add_box, add_link, add_ramp};
+use super::tools::{add_box, add_link, add_polygon, add_ramp};
 use super::view::nice_length;
 use super::{Canvas, Frame, Selection, Tool};
 use crate::document::Document;
@@ -117,7 +117,7 @@ impl Canvas {
 
     /// Enter: an object of the current tool at the view's centre.
     fn add_at_centre(
-        &self,
+        &mut self,
         document: &mut Document,
         frame: &Frame,
         selection: &mut Option<Selection>,
@@ -134,6 +134,21 @@ impl Canvas {
                 centre + DVec2::new(2.0 * grid, 0.0),
             )),
             Tool::Box => Some(add_box(document, centre, DVec2::new(2.0 * grid, grid))),
+            // Enter closes a polygon being drawn, or adds a triangle at the centre.
+            Tool::Polygon => {
+                let corners = if self.corners.len() >= 3 {
+                    std::mem::take(&mut self.corners)
+                } else {
+                    [
+                        DVec2::new(-grid, 0.0),
+                        DVec2::new(grid, 0.0),
+                        DVec2::new(0.0, grid),
+                    ]
+                    .map(|v| centre + v)
+                    .to_vec()
+                };
+                add_polygon(document, &corners)
+            }
             tool @ (Tool::Spring | Tool::Rod | Tool::String) => {
                 let Some(Selection::Particle(from)) = *selection else {
                     return;

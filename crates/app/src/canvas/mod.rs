@@ -49,10 +49,12 @@ pub enum Tool {
     Ramp,
     /// A rigid box, drawn corner to corner.
     Box,
+    /// A rigid convex polygon, its corners clicked one by one.
+    Polygon,
 }
 
 impl Tool {
-    pub const ALL: [Self; 7] = [
+    pub const ALL: [Self; 8] = [
         Self::Select,
         Self::Particle,
         Self::Spring,
@@ -60,6 +62,7 @@ impl Tool {
         Self::String,
         Self::Ramp,
         Self::Box,
+        Self::Polygon,
     ];
 
     /// The tool's name in the app's language.
@@ -72,6 +75,7 @@ impl Tool {
             Self::String => "tool-string",
             Self::Ramp => "tool-ramp",
             Self::Box => "tool-box",
+            Self::Polygon => "tool-polygon",
         })
     }
 
@@ -84,6 +88,7 @@ impl Tool {
             Self::String => "tool-string-hint",
             Self::Ramp => "tool-ramp-hint",
             Self::Box => "tool-box-hint",
+            Self::Polygon => "tool-polygon-hint",
         })
     }
 }
@@ -185,6 +190,8 @@ pub struct Canvas {
     /// or more, the selection among them; empty otherwise. Moved, deleted, copied and
     /// duplicated together.
     pub group: Vec<Selection>,
+    /// The corners of a polygon being drawn (the Polygon tool), in the world.
+    pub corners: Vec<DVec2>,
     framing: Option<Framing>,
     /// The canvas rectangle of the last frame, for fitting from menus.
     pub rect: Rect,
@@ -215,6 +222,7 @@ impl Default for Canvas {
             followed: None,
             drag: None,
             group: Vec::new(),
+            corners: Vec::new(),
             framing: Some(Framing::Fit),
             rect: Rect::from_min_size(Pos2::ZERO, Vec2::new(800.0, 600.0)),
             scaled_for: Vec2::ZERO,

@@ -176,7 +176,7 @@ impl Canvas {
                     let from = snap(self.view.to_world(rect, start));
                     Some(Drag::NewBox { from, to: from })
                 }
-                Tool::Particle => None,
+                Tool::Particle | Tool::Polygon => None,
             };
         }
         if response.dragged_by(egui::PointerButton::Primary) {
@@ -191,6 +191,17 @@ impl Canvas {
                 Tool::Particle => {
                     let position = self.snapped(rect, document.scene(), at, free);
                     *selection = Some(self.add_particle(document, position));
+                }
+                Tool::Polygon => {
+                    let corner = self.snapped(rect, document.scene(), at, free);
+                    let closes = self.corners.len() >= 3
+                        && self.view.to_screen(rect, self.corners[0]).distance(at) <= 8.0;
+                    if closes {
+                        let corners = std::mem::take(&mut self.corners);
+                        *selection = add_polygon(document, &corners).or(*selection);
+                    } else if self.corners.last() != Some(&corner) {
+                        self.corners.push(corner);
+                    }
                 }
                 Tool::Select if shift => {
                     let hit = self.hit(rect, document.scene(), frame, at);
@@ -555,6 +566,52 @@ pub(super) fn add_link(
 }
 
 /// Adds a ramp from `from` to `to`.
+/// Adds a polygon of 1 kg whose outline is the convex hull of `corners` (world), its
+/// centroid where the hull's is; `None` when they enclose no area.
+pub(super) fn add_polygon(document: &mut Document, corners: &[DVec2]) -> Option<Selection> {
+    let hull = convex_hull(corners);
+    let moments = physics::moments(&hull);
+    if hull.len() < 3 || moments.area <= 0.0 {
+        return None;
+    }
+    let local: Vec<DVec2> = hull.iter().map(|&v| v - moments.centroid).collect();
+    let name = document.unused_name("polygon");
+    let body = physics::Body::polygon(name, local, 1.0).position(moments.centroid);
+    document.apply(Edit::Add(Object::Body), |scene| scene.bodies.push(body));
+    Some(Selection::Body(document.scene().bodies.len() - 1))
+}
+
+/// The convex hull of `points`, counter-clockwise, without points on its edges (Andrew's
+/// monotone chain).
+pub(super) fn convex_hull(points: &[DVec2]) -> Vec<DVec2> {
+    let mut sorted = points.to_vec();
+    sorted.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    sorted.dedup();
+    if sorted.len() < 3 {
+        return sorted;
+    }
+    let turn = |o: DVec2, a: DVec2, b: DVec2| (a - o).perp_dot(b - o);
+    let mut hull: Vec<DVec2> = Vec::with_capacity(2 * sorted.len());
+    for pass in 0..2 {
+        let start = hull.len();
+        let points: Box<dyn Iterator<Item = &DVec2>> = if pass == 0 {
+            Box::new(sorted.iter())
+        } else {
+            Box::new(sorted.iter().rev())
+        };
+        for &p in points {
+            while hull.len() >= start + 2
+                && turn(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(p);
+        }
+        hull.pop();
+    }
+    hull
+}
+
 /// Adds a box of 1 kg, `size` metres wide and high, centred at `at`.
 pub(super) fn add_box(document: &mut Document, at: DVec2, size: DVec2) -> Selection {
     let name = document.unused_name("box");

@@ -106,3 +106,40 @@ fn a_selected_body_shows_its_forces() {
         a * 2.0
     );
 }
+
+/// The Polygon tool: corners clicked one by one, the first clicked again to close; the body
+/// is their convex outline, counter-clockwise, its centroid where the outline's is.
+#[test]
+fn the_polygon_tool_makes_a_body_of_the_corners_clicked() {
+    let scene = Scene::new().with_world(World::gravity_only());
+    let mut harness = harness(App::new(scene));
+    harness.get_by_label("Polygon").click();
+    harness.run();
+    let app = harness.state();
+    let (rect, view) = (app.canvas.rect, app.canvas.view);
+    // Clockwise on purpose: the outline is made counter-clockwise.
+    let corners = [
+        DVec2::new(0.0, 0.0),
+        DVec2::new(0.0, 1.0),
+        DVec2::new(2.0, 0.0),
+    ];
+    for corner in corners.iter().chain([&corners[0]]) {
+        crate::common::click_canvas(&mut harness, view.to_screen(rect, *corner));
+    }
+    let scene = harness.state().document.scene();
+    assert_eq!(scene.bodies.len(), 1, "a polygon was added");
+    let body = &scene.bodies[0];
+    let physics::Shape::Polygon(vertices) = &body.shape else {
+        panic!("a polygon: {body:?}");
+    };
+    assert_eq!(vertices.len(), 3);
+    assert!(physics::moments(vertices).area > 0.0, "counter-clockwise");
+    let step = newtonlab_app::canvas::nice_length(80.0 / view.pixels_per_metre) / 10.0;
+    let centroid = body.position.to_dvec2();
+    assert!(
+        (centroid - DVec2::new(2.0 / 3.0, 1.0 / 3.0)).length() <= 2.0 * step,
+        "{centroid}"
+    );
+    assert!((body.total_mass() - 1.0).abs() < 1e-15);
+    assert!(harness.state().canvas.corners.is_empty());
+}

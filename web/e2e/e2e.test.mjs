@@ -90,7 +90,7 @@ test("an example opened from the Examples menu runs when Play is clicked", async
   let s = await status(page);
   assert.equal(s.particles, 2);
   assert.equal(s.time, 0);
-  await page.mouse.click(400, 40); // the Play button (after the six tools)
+  await page.mouse.click(516, 40); // the Play button (after the eight tools)
   await page.waitForFunction(() => window.newtonlab_status().time > 0.2, null, { timeout: 10000 });
   s = await status(page);
   assert.ok(s.playing, "playing");

@@ -516,3 +516,16 @@ fn static_friction_holds_and_kinetic_friction_slides() {
     assert_eq!(Scene::from_toml(&text).expect("reads"), both);
     assert_eq!(Scene::from_json(&both.to_json()).expect("reads"), both);
 }
+
+/// The app asks for a body's forces while its scene is being edited, valid or not: a body
+/// of no mass or no area gives finite forces or none, never a panic.
+#[test]
+fn forces_of_a_body_being_edited_are_finite_or_none() {
+    let mut scene = on_incline(20.0, 0.5, Integrator::Rk4);
+    scene.bodies[0].mass = 0.0;
+    assert!(!scene.validate().is_empty());
+    assert!(scene.body_forces(0).iter().all(|f| f.force.is_finite()));
+    scene.bodies[0] = Body::polygon("flat", vec![DVec2::ZERO, DVec2::X], 1.0);
+    assert!(scene.body_forces(0).iter().all(|f| f.force.is_finite()));
+    assert!(scene.body_forces(5).is_empty());
+}

@@ -617,7 +617,8 @@ impl Canvas {
 }
 
 /// Body `i`'s forces, each with the point it acts at (world): from the run while there is
-/// one, else from the scene as edited (when it is valid).
+/// one, else from the scene as edited (only body `i` is looked at: no validation of the
+/// whole scene every frame).
 fn free_body(scene: &Scene, runner: &Runner, i: usize) -> Vec<(DVec2, physics::Applied)> {
     if let Some(simulation) = runner.simulation() {
         if i >= simulation.body_names().len() {
@@ -633,9 +634,6 @@ fn free_body(scene: &Scene, runner: &Runner, i: usize) -> Vec<(DVec2, physics::A
     let Some(body) = scene.bodies.get(i) else {
         return Vec::new();
     };
-    if !scene.validate().is_empty() {
-        return Vec::new();
-    }
     let centroid = body.position.to_dvec2();
     scene
         .body_forces(i)

@@ -291,14 +291,18 @@ impl Bodies {
 impl Scene {
     /// The forces on body `i` at the scene's start, each where it acts: its free-body
     /// diagram before Play ([`Simulation::body_forces`] while it runs).
+    /// A scene being edited may not be valid yet: forces that are not finite (a body of
+    /// no mass or no area) are left out rather than drawn.
     pub fn body_forces(&self, i: usize) -> Vec<Applied> {
-        let mut bodies = Bodies::new(self);
-        bodies.settle(self.simulation.time_step);
-        if i < bodies.len() {
-            bodies.forces(i)
-        } else {
-            Vec::new()
+        let bodies = Bodies::new(self);
+        if i >= bodies.len() {
+            return Vec::new();
         }
+        bodies
+            .forces(i)
+            .into_iter()
+            .filter(|f| f.force.is_finite() && f.arm.is_finite())
+            .collect()
     }
 }
 

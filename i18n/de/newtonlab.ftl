@@ -385,6 +385,9 @@ scene-named = { $kind ->
         [string] Faden
         [ramp] Rampe
         [body] Körper
+        [series] Messreihe
+        [slider] Schieberegler
+        [question] Frage
        *[graph] Graph
     } '{ $name }'
 scene-numbered = { $kind ->
@@ -394,6 +397,9 @@ scene-numbered = { $kind ->
         [string] Faden
         [ramp] Rampe
         [body] Körper
+        [series] Messreihe
+        [slider] Schieberegler
+        [question] Frage
        *[graph] Graph
     } #{ $number }
 scene-not-finite = { $field } muss eine endliche Zahl sein, nicht { $value }
@@ -828,3 +834,34 @@ field-body-color-help = Anzeigefarbe, "#rrggbb"
 status-bodies = { $bodies } Körper
 tool-polygon = Polygon
 tool-polygon-hint = Die Ecken eines starren konvexen Polygons anklicken; die erste erneut anklicken, um es zu schließen (8)
+lesson-no-title = eine Lektion braucht einen Titel
+lesson-text-too-long = der Text hat { $size } KiB; der Text einer Lektion darf höchstens { $most } KiB haben (ein Bild gehört neben die Szene, nicht hinein)
+lesson-html = der Text enthält HTML (ein Tag wie <script> oder <img>), das eine Lektion nie zeigt oder ausführt: schreiben Sie Markdown und in einer Formel ein Leerzeichen nach <
+lesson-bad-id = die Kennung '{ $id }' darf nur Buchstaben, Ziffern, _ oder - enthalten (eine Antwort nennt sie: ID=WERT)
+lesson-repeated-id = die Kennung '{ $id }' hat schon eine frühere Frage
+lesson-no-prompt = eine Frage braucht einen Fragetext
+lesson-unit-misfit = die Einheit '{ $unit }' passt nicht zur Messung, die in { $si } misst
+lesson-tolerance = tolerance muss größer als 0 sein, ist aber { $tolerance }
+lesson-slider-range = min { $min } muss kleiner als max { $max } sein
+lesson-slider-step = step muss größer als 0 und höchstens max − min sein, ist aber { $step }
+lesson-slider-rule = bei { $value } verletzt die Szene eine Regel: { $why }
+cli-check-lesson = Lektion '{ $title }': { $sliders } Schieberegler, { $questions } Frage(n)
+cli-lesson-none = { $source } hat keine [lesson]: geben Sie eine Szenendatei mit einer Lektion an, oder eine Beispiel-Lektion (newtonlab examples)
+cli-lesson-answer-malformed = --answer '{ $text }' muss ID=WERT sein, etwa { $ids }=1.34 s
+cli-lesson-unknown-id = --answer '{ $text }': die Lektion hat keine Frage mit dieser Kennung; ihre { $count } Frage(n): { $ids }
+cli-lesson-answer-unreadable = --answer für '{ $id }' muss eine Größe in { $unit } sein (oder in einer anderen Einheit dieser Art): { $why }
+cli-lesson-unmeasured = die Simulation kann die Frage '{ $id }' nicht beantworten: { $why }
+menu-lesson = Lektion
+menu-lesson-hint = Die Lektion zeigen oder verbergen: Anleitung, Schieberegler und Fragen
+key-lesson = Lektion zeigen oder verbergen
+edit-slide = Schieberegler der Lektion bewegen
+inspector-about = Über diese Szene
+lesson-sliders = Probieren Sie
+lesson-sliders-reset = Setzen Sie den Lauf zurück, um diese zu ändern
+lesson-questions = Fragen
+lesson-answer-hint = Ihre Antwort, in { $unit }
+lesson-check = Prüfen
+lesson-right = Richtig
+lesson-close = Knapp daneben — prüfen Sie Ihre Messung
+lesson-not-yet = Noch nicht — messen Sie noch einmal
+lesson-revealed = Die Simulation misst { $value }.

@@ -386,6 +386,9 @@ scene-named = { $kind ->
         [string] string
         [ramp] ramp
         [body] body
+        [series] series
+        [slider] slider
+        [question] question
        *[graph] graph
     } '{ $name }'
 scene-numbered = { $kind ->
@@ -395,6 +398,9 @@ scene-numbered = { $kind ->
         [string] string
         [ramp] ramp
         [body] body
+        [series] series
+        [slider] slider
+        [question] question
        *[graph] graph
     } #{ $number }
 scene-not-finite = { $field } must be a finite number, got { $value }
@@ -829,3 +835,34 @@ field-body-color-help = Display colour, "#rrggbb"
 status-bodies = { $bodies } bodies
 tool-polygon = Polygon
 tool-polygon-hint = Click the corners of a rigid convex polygon; click the first again to close it (8)
+lesson-no-title = a lesson needs a title
+lesson-text-too-long = the text is { $size } KiB; a lesson's text may hold at most { $most } KiB (a picture belongs beside the scene, not in it)
+lesson-html = the text holds HTML (a tag such as <script> or <img>), which a lesson never shows or runs: write Markdown, and in a formula put a space after <
+lesson-bad-id = the id '{ $id }' must be letters, digits, _ or - (it is what an answer names: ID=VALUE)
+lesson-repeated-id = the id '{ $id }' is used by an earlier question
+lesson-no-prompt = a question needs a prompt
+lesson-unit-misfit = the unit '{ $unit }' does not fit the measure, which is in { $si }
+lesson-tolerance = tolerance must be greater than 0, got { $tolerance }
+lesson-slider-range = min { $min } must be less than max { $max }
+lesson-slider-step = step must be greater than 0 and at most max − min, got { $step }
+lesson-slider-rule = at { $value } the scene breaks a rule: { $why }
+cli-check-lesson = lesson '{ $title }': { $sliders } slider(s), { $questions } question(s)
+cli-lesson-none = { $source } has no [lesson]: give a scene file with one, or an example lesson (newtonlab examples)
+cli-lesson-answer-malformed = --answer '{ $text }' must be ID=VALUE, such as { $ids }=1.34 s
+cli-lesson-unknown-id = --answer '{ $text }': the lesson has no question of that id; its { $count } question(s): { $ids }
+cli-lesson-answer-unreadable = --answer for '{ $id }' must be a quantity in { $unit } (or another unit of its kind): { $why }
+cli-lesson-unmeasured = the simulation cannot answer question '{ $id }': { $why }
+menu-lesson = Lesson
+menu-lesson-hint = Show or hide the lesson: its instructions, sliders and questions
+key-lesson = Show or hide the lesson
+edit-slide = move a lesson's slider
+inspector-about = About this scene
+lesson-sliders = Try changing
+lesson-sliders-reset = Reset the run to change these
+lesson-questions = Questions
+lesson-answer-hint = your answer, in { $unit }
+lesson-check = Check
+lesson-right = Right
+lesson-close = Close — check your measurement
+lesson-not-yet = Not yet — measure again
+lesson-revealed = The simulation measures { $value }.

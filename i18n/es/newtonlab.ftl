@@ -385,6 +385,9 @@ scene-named = { $kind ->
         [string] cuerda
         [ramp] rampa
         [body] cuerpo
+        [series] serie
+        [slider] deslizador
+        [question] pregunta
        *[graph] gráfica
     } '{ $name }'
 scene-numbered = { $kind ->
@@ -394,6 +397,9 @@ scene-numbered = { $kind ->
         [string] cuerda
         [ramp] rampa
         [body] cuerpo
+        [series] serie
+        [slider] deslizador
+        [question] pregunta
        *[graph] gráfica
     } #{ $number }
 scene-not-finite = { $field } debe ser un número finito, no { $value }
@@ -828,3 +834,34 @@ field-body-color-help = Color de dibujo, "#rrggbb"
 status-bodies = { $bodies } cuerpos
 tool-polygon = Polígono
 tool-polygon-hint = Hacer clic en las esquinas de un polígono convexo rígido; clic de nuevo en la primera para cerrarlo (8)
+lesson-no-title = una lección necesita un título
+lesson-text-too-long = el texto ocupa { $size } KiB; el texto de una lección puede ocupar como mucho { $most } KiB (una imagen va junto a la escena, no dentro)
+lesson-html = el texto contiene HTML (una etiqueta como <script> o <img>), que una lección nunca muestra ni ejecuta: escriba Markdown y, en una fórmula, deje un espacio tras <
+lesson-bad-id = el id '{ $id }' debe tener solo letras, cifras, _ o - (es lo que nombra una respuesta: ID=VALOR)
+lesson-repeated-id = el id '{ $id }' ya lo usa una pregunta anterior
+lesson-no-prompt = una pregunta necesita un enunciado
+lesson-unit-misfit = la unidad '{ $unit }' no encaja con la medida, que está en { $si }
+lesson-tolerance = tolerance debe ser mayor que 0, pero es { $tolerance }
+lesson-slider-range = min { $min } debe ser menor que max { $max }
+lesson-slider-step = step debe ser mayor que 0 y como mucho max − min, pero es { $step }
+lesson-slider-rule = con { $value } la escena incumple una regla: { $why }
+cli-check-lesson = lección '{ $title }': { $sliders } deslizador(es), { $questions } pregunta(s)
+cli-lesson-none = { $source } no tiene [lesson]: indique un archivo de escena con una lección, o una lección de ejemplo (newtonlab examples)
+cli-lesson-answer-malformed = --answer '{ $text }' debe ser ID=VALOR, como { $ids }=1.34 s
+cli-lesson-unknown-id = --answer '{ $text }': la lección no tiene ninguna pregunta con ese id; sus { $count } pregunta(s): { $ids }
+cli-lesson-answer-unreadable = --answer para '{ $id }' debe ser una magnitud en { $unit } (u otra unidad de su tipo): { $why }
+cli-lesson-unmeasured = la simulación no puede responder la pregunta '{ $id }': { $why }
+menu-lesson = Lección
+menu-lesson-hint = Mostrar u ocultar la lección: sus instrucciones, deslizadores y preguntas
+key-lesson = Mostrar u ocultar la lección
+edit-slide = mover un deslizador de la lección
+inspector-about = Acerca de esta escena
+lesson-sliders = Pruebe a cambiar
+lesson-sliders-reset = Reinicie la ejecución para cambiarlos
+lesson-questions = Preguntas
+lesson-answer-hint = su respuesta, en { $unit }
+lesson-check = Comprobar
+lesson-right = Correcto
+lesson-close = Cerca — revise su medida
+lesson-not-yet = Todavía no — mida otra vez
+lesson-revealed = La simulación mide { $value }.

@@ -46,6 +46,8 @@ pub enum Action {
     ToggleInspector,
     /// Show or hide the graph panel.
     ToggleGraphs,
+    /// Shows or hides the lesson panel.
+    ToggleLesson,
     /// Full canvas with large text, for a projector.
     ToggleProjector,
     /// Take up or put away a measuring instrument.
@@ -126,6 +128,7 @@ pub const SHORTCUTS: &[(KeyboardShortcut, Action)] = &[
     (plain(Key::Backspace), Action::Delete),
     (plain(Key::F9), Action::ToggleInspector),
     (plain(Key::F10), Action::ToggleGraphs),
+    (plain(Key::F8), Action::ToggleLesson),
     (plain(Key::F11), Action::ToggleProjector),
     (plain(Key::F1), Action::ToggleHelp),
     // Shift+F6 first: a shortcut without Shift also matches with it.
@@ -172,6 +175,7 @@ impl Action {
             Self::ToggleStopwatch => "key-stopwatch",
             Self::ToggleInspector => "key-inspector",
             Self::ToggleGraphs => "key-graphs",
+            Self::ToggleLesson => "key-lesson",
             Self::ToggleProjector => "key-projector",
             Self::ToggleHelp => "key-help",
             Self::NextRegion => "key-next-region",
@@ -186,7 +190,7 @@ impl Action {
         // A function key types nothing: F6 leaves a field for the next region.
         let function = matches!(
             shortcut.logical_key,
-            Key::F1 | Key::F6 | Key::F9 | Key::F10 | Key::F11
+            Key::F1 | Key::F6 | Key::F8 | Key::F9 | Key::F10 | Key::F11
         );
         shortcut.modifiers.is_none() && !function
     }

@@ -53,12 +53,14 @@ pub enum Edit {
     /// Objects selected together, moved or deleted.
     MoveGroup,
     DeleteGroup,
+    /// A lesson's slider moved.
+    Slide,
 }
 
 impl Edit {
     /// Every edit but [`Edit::Set`]'s fields, for the tests.
     #[cfg(test)]
-    const ALL: [Self; 33] = [
+    const ALL: [Self; 34] = [
         Self::Add(Object::Particle),
         Self::Add(Object::Spring),
         Self::Add(Object::Rod),
@@ -92,6 +94,7 @@ impl Edit {
         Self::Paste,
         Self::MoveGroup,
         Self::DeleteGroup,
+        Self::Slide,
     ];
 
     /// The message of its words, but for [`Edit::Set`] (whose words name the field).
@@ -131,6 +134,7 @@ impl Edit {
             Self::Paste => "edit-paste",
             Self::MoveGroup => "edit-move-group",
             Self::DeleteGroup => "edit-delete-group",
+            Self::Slide => "edit-slide",
         }
     }
 

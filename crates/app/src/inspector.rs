@@ -256,6 +256,12 @@ pub fn ui(
     if let Some(message) = ui.data(|d| d.get_temp::<String>(Id::unique("inspector problem"))) {
         ui.label(RichText::new(message).color(ERROR));
     }
+    if let Some(description) = &document.scene().description {
+        egui::CollapsingHeader::new(tr("inspector-about"))
+            .id_salt("about")
+            .default_open(true)
+            .show(ui, |ui| crate::lesson::markdown(ui, description));
+    }
     let mut problem = None;
     let mut action = None;
     ui.add_enabled_ui(editable, |ui| {
@@ -833,6 +839,7 @@ fn section_kind(scene: &Scene, section: Section) -> &'static str {
         Section::Graph(_) => "graph",
         Section::Series(_) => "series",
         Section::Root | Section::View => "scene",
+        Section::Lesson | Section::Slider(_) | Section::Question(_) => "lesson",
     }
 }
 

@@ -38,6 +38,7 @@ pub mod help;
 pub use newtonlab_i18n as i18n;
 pub mod inspector;
 pub mod landmarks;
+pub mod lesson;
 pub mod picture;
 pub mod platform;
 pub mod plots;
@@ -49,7 +50,7 @@ pub mod share;
 pub mod stopwatch;
 pub mod timeline;
 pub mod toolbar;
-pub mod units;
+pub use physics::units;
 pub mod watching;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
@@ -102,6 +103,8 @@ pub struct Launch {
 pub struct Panels {
     pub inspector: bool,
     pub graphs: bool,
+    /// The lesson panel, where the scene has a lesson.
+    pub lesson: bool,
     pub projector: bool,
     pub help: bool,
     /// The Getting started page (Help), open on the first run.
@@ -117,6 +120,7 @@ impl Default for Panels {
         Self {
             inspector: true,
             graphs: true,
+            lesson: true,
             projector: false,
             help: false,
             getting_started: false,
@@ -140,6 +144,8 @@ pub struct App {
     pub notice: Option<(String, Option<f64>)>,
     /// The experiment series panel: each series' results and the run in progress.
     pub experiments: experiments::Experiments,
+    /// The lesson's answers and what Check said of them.
+    pub lesson: lesson::LessonPanel,
     /// A CSV table waiting for the file dialog's answer (an experiment's results).
     table_ready: Option<String>,
     /// Where the desktop keeps them; none: not kept.
@@ -199,6 +205,11 @@ impl App {
     pub fn new(scene: Scene) -> Self {
         let mut canvas = canvas::Canvas::default();
         canvas.open(&scene);
+        // A lesson opens in the student's view: the lesson beside the canvas, no inspector.
+        let panels = Panels {
+            inspector: scene.lesson.is_none(),
+            ..Panels::default()
+        };
         Self {
             document: Document::new(scene),
             runner: Runner::default(),
@@ -209,6 +220,7 @@ impl App {
             announcer: announcer::Announcer::default(),
             notice: None,
             experiments: experiments::Experiments::default(),
+            lesson: lesson::LessonPanel::default(),
             table_ready: None,
             #[cfg(not(target_arch = "wasm32"))]
             settings_file: None,
@@ -217,7 +229,7 @@ impl App {
             next_region: None,
             files: Files::default(),
             selection: None,
-            panels: Panels::default(),
+            panels,
             invalid: Vec::new(),
             launch: Launch::default(),
             frame_times: Vec::new(),
@@ -325,6 +337,7 @@ impl App {
             }
             Action::ToggleInspector => self.panels.inspector = !self.panels.inspector,
             Action::ToggleGraphs => self.panels.graphs = !self.panels.graphs,
+            Action::ToggleLesson => self.panels.lesson = !self.panels.lesson,
             Action::ToggleProjector => {
                 self.panels.projector = !self.panels.projector;
                 self.canvas.projector(self.panels.projector);
@@ -561,6 +574,7 @@ impl App {
     /// Replaces the document with `scene` from `path` (a file, or `None` for new), shown
     /// as `label` when it has no file.
     fn replace(&mut self, scene: Scene, path: Option<String>, label: Option<String>) {
+        let had_lesson = self.document.scene().lesson.is_some();
         self.runner = Runner::default();
         // Measurements, and what was said of the run, are of the scene they were taken in.
         self.announcer = announcer::Announcer::default();
@@ -578,6 +592,13 @@ impl App {
         self.canvas.group.clear();
         self.graphs = Graphs::default();
         self.experiments.clear();
+        self.lesson = lesson::LessonPanel::default();
+        // A lesson opens in the student's view; the scene after one, in the teacher's.
+        let lesson = self.document.scene().lesson.is_some();
+        if lesson != had_lesson {
+            self.panels.inspector = !lesson;
+            self.panels.lesson = true;
+        }
         self.forget_entries = true;
     }
 
@@ -936,6 +957,17 @@ impl App {
                             &self.runner,
                             &mut self.selection,
                         ));
+                    });
+                });
+        }
+        if side_panels && self.panels.lesson && self.document.scene().lesson.is_some() {
+            egui::Panel::left("lesson")
+                .resizable(true)
+                .default_size(lesson::WIDTH)
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical().show(ui, |ui| {
+                        ui.set_width(ui.available_width());
+                        self.lesson.ui(ui, &mut self.document, &self.runner);
                     });
                 });
         }

@@ -153,6 +153,15 @@ impl App {
                     Action::ToggleGraphs,
                     true,
                 );
+                if self.document.scene().lesson.is_some() {
+                    item(
+                        ui,
+                        &format!("{}{}", tick(self.panels.lesson), tr("menu-lesson")),
+                        &tr("menu-lesson-hint"),
+                        Action::ToggleLesson,
+                        true,
+                    );
+                }
                 item(
                     ui,
                     &format!("{}{}", tick(self.panels.projector), tr("menu-projector")),

@@ -1,5 +1,5 @@
 //! `newtonlab`: the command line of `NewtonLab`. With no subcommand it opens the app; `run`,
-//! `sweep`, `check`, `examples`, `bench` and `validate` are headless.
+//! `sweep`, `check`, `lesson`, `examples`, `bench` and `validate` are headless.
 //!
 //! Exit codes, for every subcommand: 0 success; 1 the simulation failed (a non-finite
 //! value: the message names the particle and the time); 2 bad input (arguments or scene:
@@ -15,6 +15,7 @@ macro_rules! out {
 }
 
 mod bench;
+mod lesson;
 mod plots;
 mod run;
 mod scene_source;
@@ -61,6 +62,9 @@ enum Command {
         /// A scene file (.toml or .json), or example:NAME for a built-in scene.
         scene: String,
     },
+    /// Check a student's answers to a scene's lesson against the simulation, or list its
+    /// questions.
+    Lesson(lesson::LessonArgs),
     /// List the built-in example scenes.
     Examples,
     /// Measure simulation speed (steps per second, pair interactions per second).
@@ -139,6 +143,7 @@ fn main() -> ExitCode {
         Some(Command::Run(args)) => run::run(&args),
         Some(Command::Sweep(args)) => sweep::sweep(&args),
         Some(Command::Check { scene }) => check(&scene),
+        Some(Command::Lesson(args)) => lesson::lesson(&args),
         Some(Command::Examples) => {
             examples();
             Ok(())
@@ -214,6 +219,14 @@ fn check(source: &str) -> Result<(), Failure> {
         );
         for body in &scene.bodies {
             out!("{}", describe_body(body));
+        }
+        if let Some(lesson) = &scene.lesson {
+            let words = [
+                ("title", lesson.title.as_str()),
+                ("sliders", &lesson.sliders.len().to_string()),
+                ("questions", &lesson.questions.len().to_string()),
+            ];
+            out!("{}", say("cli-check-lesson", &words));
         }
         if !scene.bodies.is_empty() {
             out!("{}", say("cli-check-bodies-free", &[]));

@@ -101,6 +101,11 @@ examples!(
     "thrown-board",
     "block-on-incline",
     "tipping-box",
+    "lesson-galileo-incline",
+    "lesson-projectile-range",
+    "lesson-spring-period",
+    "lesson-collisions",
+    "lesson-block-slide",
 );
 
 /// The built-in scene with this name.

@@ -100,6 +100,7 @@ mod testing;
 mod trajectory;
 mod tuning;
 mod turning;
+pub mod units;
 
 pub use diagnostics::{Diagnostics, Energy, ParticleReadout};
 pub use events::{Direction, Event, Located, Turn, Watch};
@@ -114,9 +115,9 @@ pub use scene::error::{LoadError, Problem};
 pub use scene::fields;
 pub use scene::format::SceneFormat;
 pub use scene::{
-    Body, Bounds, Color, Endpoint, FieldRef, Follow, Graph, Moments, PairForces, Particle, Ramp,
-    Rule, Scene, Section, Series, Settings, Shape, Spring, Tie, TieKind, Vector, View, World,
-    check_value, moments,
+    Body, Bounds, Color, Endpoint, FieldRef, Follow, Graph, Lesson, Moments, PairForces, Particle,
+    Question, Ramp, Rule, Scene, Section, Series, Settings, Shape, Slider, Spring, Tie, TieKind,
+    Vector, Verdict, View, World, check_value, lesson, moments,
 };
 pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};
 pub use trajectory::{

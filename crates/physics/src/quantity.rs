@@ -196,7 +196,8 @@ impl Quantity {
     /// # Errors
     /// What the text should have been.
     pub fn parse(text: &str) -> Result<Self, String> {
-        if text == "t" {
+        // `time` as well as `t`: a lesson's question reads "time at EVENT" as people say it.
+        if text == "t" || text == "time" {
             return Ok(Self::Time);
         }
         if let Some(total) = Total::ALL.into_iter().find(|t| t.key() == text) {

@@ -10,6 +10,7 @@ mod edit;
 pub mod error;
 pub mod fields;
 pub mod format;
+pub mod lesson;
 mod presentation;
 mod validate;
 
@@ -20,6 +21,7 @@ pub(crate) use newtonlab_i18n::tr_text as say;
 
 pub use body::{Body, Moments, Shape, moments};
 pub use error::{FieldRef, Section};
+pub use lesson::{Lesson, Question, Slider, Verdict};
 pub use presentation::{Follow, Graph, Series, View};
 pub use validate::{Rule, check_value};
 
@@ -700,6 +702,8 @@ pub struct Scene {
     pub series: Vec<Series>,
     /// The app's framing when the scene opens (`[view]`).
     pub view: Option<View>,
+    /// What the scene teaches (`[lesson]`).
+    pub lesson: Option<Lesson>,
 }
 
 impl Scene {

@@ -47,6 +47,19 @@ enum Part {
 }
 
 impl Part {
+    /// This part of `vector`.
+    fn get(self, vector: Vector) -> f64 {
+        let v = vector.to_dvec2();
+        match (self, vector) {
+            (Self::X, _) => v.x,
+            (Self::Y, _) => v.y,
+            (Self::Magnitude, Vector::Polar { magnitude, .. }) => magnitude,
+            (Self::Angle, Vector::Polar { angle, .. }) => angle,
+            (Self::Magnitude, Vector::Cartesian(c)) => c.length(),
+            (Self::Angle, Vector::Cartesian(c)) => c.y.atan2(c.x).to_degrees(),
+        }
+    }
+
     fn parse(text: &str) -> Option<Self> {
         Some(match text {
             "x" => Self::X,
@@ -88,6 +101,8 @@ pub struct Setting {
     target: Target,
     key: &'static str,
     part: Option<Part>,
+    /// The SI unit of the number written.
+    unit: &'static str,
 }
 
 impl fmt::Display for Setting {
@@ -96,12 +111,26 @@ impl fmt::Display for Setting {
     }
 }
 
-/// The field of `fields` called `key` that holds a number (or a vector, with a part).
-fn numeric<T>(fields: &'static [Field<T>], key: &str) -> Option<(&'static str, bool)> {
+/// The field of `fields` called `key` that holds a number (or a vector, with a part):
+/// its key, whether it is a vector, and its unit.
+fn numeric<T>(
+    fields: &'static [Field<T>],
+    key: &str,
+) -> Option<(&'static str, bool, &'static str)> {
     let field = fields.iter().find(|f| f.key == key)?;
     match field.kind {
-        Kind::Number(_) => Some((field.key, false)),
-        Kind::Vector => Some((field.key, true)),
+        Kind::Number(_) => Some((field.key, false, field.unit)),
+        Kind::Vector => Some((field.key, true, field.unit)),
+        _ => None,
+    }
+}
+
+/// The number in `object`'s field `key` (its `part`, for a vector).
+fn read<T>(fields: &[Field<T>], object: &T, key: &str, part: Option<Part>) -> Option<f64> {
+    let field = fields.iter().find(|f| f.key == key)?;
+    match ((field.get)(object), part) {
+        (Value::Number(n), None) => Some(n),
+        (Value::Vector(v), Some(part)) => Some(part.get(v)),
         _ => None,
     }
 }
@@ -184,18 +213,59 @@ impl Setting {
             Target::World => numeric(fields::WORLD, key),
             Target::Simulation => numeric(fields::SIMULATION, key),
         };
-        let (key, vector) = found.ok_or_else(|| unknown("setting-key"))?;
+        let (key, vector, unit) = found.ok_or_else(|| unknown("setting-key"))?;
         let part = match (vector, part) {
             (false, None) => None,
             (true, Some(part)) => Some(Part::parse(part).ok_or_else(|| unknown("setting-part"))?),
             (true, None) | (false, Some(_)) => return Err(unknown("setting-part")),
+        };
+        let unit = if part == Some(Part::Angle) {
+            "°"
+        } else {
+            unit
         };
         Ok(Self {
             text: text.to_owned(),
             target,
             key,
             part,
+            unit,
         })
+    }
+
+    /// The unit of the number written: the field's, degrees for a vector's angle.
+    pub fn unit(&self) -> &'static str {
+        self.unit
+    }
+
+    /// The number in `scene` (0 where the scene no longer has the object).
+    pub fn value(&self, scene: &Scene) -> f64 {
+        let (key, part) = (self.key, self.part);
+        match self.target {
+            Target::Particle(i) => scene
+                .particles
+                .get(i)
+                .and_then(|p| read(fields::PARTICLE, p, key, part)),
+            Target::Spring(i) => scene
+                .springs
+                .get(i)
+                .and_then(|s| read(fields::SPRING, s, key, part)),
+            Target::Tie(i) => scene
+                .ties
+                .get(i)
+                .and_then(|t| read(fields::tie_fields(t.kind), t, key, part)),
+            Target::Ramp(i) => scene
+                .ramps
+                .get(i)
+                .and_then(|r| read(fields::RAMP, r, key, part)),
+            Target::Body(i) => scene
+                .bodies
+                .get(i)
+                .and_then(|b| read(fields::BODY, b, key, part)),
+            Target::World => read(fields::WORLD, &scene.world, key, part),
+            Target::Simulation => read(fields::SIMULATION, &scene.simulation, key, part),
+        }
+        .unwrap_or(0.0)
     }
 
     /// Writes `value` into `scene`.
@@ -386,6 +456,14 @@ impl Measure {
             event: Event::parse(event)?,
             nth,
         })
+    }
+
+    /// The unit of its number: seconds for a period, else its quantity's.
+    pub fn unit(&self) -> &'static str {
+        match self {
+            Self::Period(_) => "s",
+            _ => self.quantity().unit(),
+        }
     }
 
     /// The quantity it reads.

@@ -14,6 +14,7 @@ mod files;
 mod instruments;
 mod keyboard;
 mod languages;
+mod lesson_panel;
 mod lessons;
 mod readouts;
 mod run_controls;

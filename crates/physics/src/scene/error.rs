@@ -30,6 +30,12 @@ pub enum Section {
     Series(usize),
     /// `[view]`.
     View,
+    /// `[lesson]`.
+    Lesson,
+    /// The lesson's slider at this index (`[[lesson.slider]]`).
+    Slider(usize),
+    /// The lesson's question at this index (`[[lesson.question]]`).
+    Question(usize),
 }
 
 /// A field of a section: where a problem is, for the app's inspector and for locating

@@ -35,6 +35,7 @@ impl Scene {
         check.series();
         check.coincident();
         check.view();
+        check.lesson();
         check.problems
     }
 
@@ -71,6 +72,16 @@ impl Scene {
             ),
             Section::Series(i) => numbered("series", i),
             Section::View => "[view]".to_owned(),
+            Section::Lesson => "[lesson]".to_owned(),
+            Section::Slider(i) => numbered("slider", i),
+            Section::Question(i) => named(
+                "question",
+                self.lesson
+                    .as_ref()
+                    .and_then(|l| l.questions.get(i))
+                    .map(|q| q.id.as_str()),
+                i,
+            ),
         }
     }
 }
@@ -577,6 +588,17 @@ impl Checker<'_> {
             for (field, why) in series.problems(self.scene) {
                 self.report(Section::Series(i), field, &why);
             }
+        }
+    }
+
+    /// A lesson's text holds no HTML, its sliders name numbers of the scene within their
+    /// rules, its questions read and name what the scene has ([`super::Lesson::problems`]).
+    fn lesson(&mut self) {
+        let Some(lesson) = &self.scene.lesson else {
+            return;
+        };
+        for (section, field, why) in lesson.problems(self.scene) {
+            self.report(section, field, &why);
         }
     }
 

@@ -9,9 +9,11 @@
 //!
 //! One job a file: `tree.rs` parses the text into that tree, `slices.rs` parses a long TOML
 //! file a slice at a time (so that memory stays near the tree's own size), `read.rs` reads
-//! the scene from the tree, `write.rs` writes a scene back; what can be wrong is
+//! the scene from the tree, `write.rs` writes a scene back, `lesson.rs` does both for a
+//! lesson; what can be wrong is
 //! `super::error`.
 
+mod lesson;
 mod read;
 mod slices;
 mod tree;

@@ -60,6 +60,7 @@ pub(super) const ROOT_KEYS: &[&str] = &[
     "graph",
     "series",
     "view",
+    "lesson",
 ];
 pub(super) const GRAPH_KEYS: &[&str] = &["title", "x", "y"];
 pub(super) const SERIES_KEYS: &[&str] =
@@ -285,6 +286,9 @@ impl<'t> Reader<'t> {
         }
         if let Some(node) = top.get("view") {
             scene.view = Some(self.view(node));
+        }
+        if let Some(node) = top.get("lesson") {
+            scene.lesson = Some(self.lesson(node));
         }
         self.close(&top, ROOT_KEYS);
         scene
@@ -640,6 +644,9 @@ fn section_node<'n>(root: &'n Node<'n>, section: Section) -> Option<&'n Node<'n>
         Section::World => get("world"),
         Section::Simulation => get("simulation"),
         Section::View => get("view"),
+        Section::Lesson | Section::Slider(_) | Section::Question(_) => {
+            super::lesson::lesson_node(root, section)
+        }
         Section::Particle(i) => items("particle").get(i),
         Section::Spring(i) => items("spring").get(i),
         Section::Ramp(i) => items("ramp").get(i),

@@ -15,6 +15,7 @@ impl Scene {
                 Header::Root => Ok(()),
                 Header::Table(name) => write!(out, "\n[{name}]\n"),
                 Header::ArrayItem(name) => write!(out, "\n[[{name}]]\n"),
+                Header::Nested(table, name) => write!(out, "\n[[{table}.{name}]]\n"),
             };
             for (key, value) in &section.entries {
                 let _ = writeln!(out, "{key} = {}", value.to_toml());
@@ -37,6 +38,19 @@ impl Scene {
                 Header::Root => root.extend(entries),
                 Header::Table(name) => {
                     root.insert(name.to_owned(), Value::Object(entries));
+                }
+                Header::Nested(table, name) => {
+                    let parent = root
+                        .entry(table.to_owned())
+                        .or_insert_with(|| Value::Object(Map::new()));
+                    if let Value::Object(parent) = parent {
+                        let list = parent
+                            .entry(name.to_owned())
+                            .or_insert_with(|| Value::Array(Vec::new()));
+                        if let Value::Array(list) = list {
+                            list.push(Value::Object(entries));
+                        }
+                    }
                 }
                 Header::ArrayItem(name) => {
                     let list = root
@@ -116,6 +130,9 @@ impl Scene {
             });
         }
         sections.extend(self.presentation());
+        if let Some(lesson) = &self.lesson {
+            sections.extend(super::lesson::lesson_sections(lesson));
+        }
         sections
     }
 
@@ -250,6 +267,8 @@ pub(super) enum Header {
     Root,
     Table(&'static str),
     ArrayItem(&'static str),
+    /// An item of an array of tables inside a table: `[[lesson.question]]`.
+    Nested(&'static str, &'static str),
 }
 
 pub(super) struct OutSection {

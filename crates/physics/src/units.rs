@@ -6,6 +6,9 @@
 //! sin, cos, tan (radians), asin, acos, atan, exp, ln, log10, abs, and the constants pi
 //! (also π or PI), tau and e. The units are a small table per SI unit, below; a field's
 //! own unit is always accepted.
+//!
+//! A lesson's answer is read the same way, in the unit its question names, which may be
+//! any unit of a table ([`parse_in`]: `201 cm` for a question in metres is 2.01).
 
 /// Units that may follow a number for a field in `si` units, with what one of each is
 /// in `si`. Longer names first, so that `km/h` is not read as `h`.
@@ -44,6 +47,16 @@ fn units(si: &str) -> &'static [(&'static str, f64)] {
             ("rev", 360.0),
             ("°", 1.0),
         ],
+        "J" => &[("kJ", 1000.0), ("mJ", 1e-3), ("J", 1.0)],
+        "N" => &[("kN", 1000.0), ("mN", 1e-3), ("N", 1.0)],
+        "W" => &[("kW", 1000.0), ("mW", 1e-3), ("W", 1.0)],
+        "kg·m/s" => &[
+            ("kg·m/s", 1.0),
+            ("kg*m/s", 1.0),
+            ("kg m/s", 1.0),
+            ("N·s", 1.0),
+            ("Ns", 1.0),
+        ],
         "rad/s" => &[
             ("rpm", std::f64::consts::TAU / 60.0),
             ("rev/s", std::f64::consts::TAU),
@@ -52,6 +65,52 @@ fn units(si: &str) -> &'static [(&'static str, f64)] {
             ("rad/s", 1.0),
         ],
         _ => &[],
+    }
+}
+
+/// The SI units that have a table of other units.
+const SI_UNITS: [&str; 14] = [
+    "m", "m/s", "m/s²", "kg", "s", "C", "N/m", "N·s/m", "°", "J", "N", "W", "kg·m/s", "rad/s",
+];
+
+/// The SI unit whose table holds `unit`, and how much of it one `unit` is: (`m`, 0.01)
+/// for `cm`; `unit` itself, one to one, where no table holds it.
+pub fn si_of(unit: &str) -> (&str, f64) {
+    let unit = unit.trim();
+    SI_UNITS
+        .iter()
+        .find_map(|&si| {
+            let factor = units(si)
+                .iter()
+                .find(|(name, _)| *name == unit)
+                .map(|&(_, factor)| factor)
+                .or_else(|| (si == unit).then_some(1.0))?;
+            Some((si, factor))
+        })
+        .unwrap_or((unit, 1.0))
+}
+
+/// Whether a number in `unit` measures the same kind of thing as one in `si` (a length
+/// in `cm` for a measure in `m`).
+pub fn fits(unit: &str, si: &str) -> bool {
+    si_of(unit).0 == si_of(si).0
+}
+
+/// The value of `text` in `unit`, any unit of the tables: `201 cm` in `m` is 2.01, in
+/// `cm` 201, and `2.01 m` in `cm` also 201; a number without a unit is in `unit` (`201`
+/// in `cm` is 201).
+///
+/// # Errors
+/// As [`parse`]: arithmetic that does not read, or a unit of another kind.
+pub fn parse_in(text: &str, unit: &str) -> Result<f64, String> {
+    let (si, factor) = si_of(unit);
+    let text = text.trim();
+    let (expression, _) = split_unit(text, si);
+    if expression.len() == text.len() {
+        // No unit written: the number as typed, in the question's unit.
+        parse(text, si)
+    } else {
+        Ok(parse(text, si)? / factor)
     }
 }
 
@@ -70,11 +129,11 @@ pub fn parse(text: &str, si: &str) -> Result<f64, String> {
         let units: Vec<&str> = units(si).iter().map(|(name, _)| *name).collect();
         let words = [("text", text), ("reason", reason.as_str())];
         if units.is_empty() {
-            crate::i18n::tr_text("units-not-a-number", &words)
+            newtonlab_i18n::tr_text("units-not-a-number", &words)
         } else {
             let units = units.join(", ");
             let words = [words[0], words[1], ("units", units.as_str())];
-            crate::i18n::tr_text("units-not-a-number-unit", &words)
+            newtonlab_i18n::tr_text("units-not-a-number-unit", &words)
         }
     })?;
     Ok(value * factor)
@@ -129,11 +188,11 @@ fn evaluate(expression: &str) -> Result<f64, String> {
         })
         .collect();
     let value = exmex::eval_str::<f64>(&spelled)
-        .map_err(|_| crate::i18n::tr_text("units-unreadable", &[]))?;
+        .map_err(|_| newtonlab_i18n::tr_text("units-unreadable", &[]))?;
     if value.is_finite() {
         Ok(value)
     } else {
-        Err(crate::i18n::tr_text(
+        Err(newtonlab_i18n::tr_text(
             "units-comes-to",
             &[("value", &value.to_string())],
         ))
@@ -211,7 +270,7 @@ fn degrees_in_brackets(expression: &str) -> String {
 /// reading it: empty, brackets that do not match, an operator at the end, or a word that
 /// is no function, constant or unit of the field.
 fn plain_reason(expression: &str) -> Option<String> {
-    let say = |id: &str, args: &[(&str, &str)]| Some(crate::i18n::tr_text(id, args));
+    let say = |id: &str, args: &[(&str, &str)]| Some(newtonlab_i18n::tr_text(id, args));
     let trimmed = expression.trim();
     if trimmed.is_empty() {
         return say("units-empty", &[]);
@@ -296,6 +355,30 @@ mod tests {
                 "{text} in {si}: {value}, expected {expected}"
             );
         }
+    }
+
+    /// An answer in any unit of the question's kind is read in the question's unit.
+    #[test]
+    fn answers_are_read_in_the_questions_unit() {
+        let cases = [
+            ("201 cm", "m", 2.01),
+            ("2.01 m", "cm", 201.0),
+            ("2.01", "cm", 2.01),
+            ("201", "cm", 201.0),
+            ("2*100 cm", "m", 2.0),
+            ("1340 ms", "s", 1.34),
+            ("1.34 s", "ms", 1340.0),
+            ("3 kJ", "J", 3000.0),
+            ("2 N·s", "kg·m/s", 2.0),
+            ("90 deg", "rad", std::f64::consts::FRAC_PI_2),
+        ];
+        for (text, unit, expected) in cases {
+            let value = parse_in(text, unit).unwrap_or_else(|e| panic!("{text}: {e}"));
+            assert!(close(value, expected), "{text} in {unit}: {value}");
+        }
+        assert!(parse_in("2 kg", "m").is_err(), "a mass is no length");
+        assert!(fits("cm", "m") && fits("km/h", "m/s") && !fits("s", "m"));
+        assert!(fits("furlong", "furlong"), "a unit of no table fits itself");
     }
 
     /// Text that is not a quantity of the field is refused with a reason.

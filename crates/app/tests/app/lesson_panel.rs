@@ -1,0 +1,248 @@
+//! The shipped lessons as a student uses them: each question answered in the lesson panel
+//! with the value theory (or an integration written apart from the simulation) gives, and
+//! checked right; a wrong answer checked "not yet"; a slider moved, and the answer key
+//! moving with it.
+
+use std::f64::consts::PI;
+
+use egui_kittest::Harness;
+use egui_kittest::kittest::Queryable;
+use newtonlab_app::App;
+
+use crate::common::{example_scene, tall_harness};
+
+const G: f64 = 9.81;
+
+/// The lesson example `name` open in the app.
+fn open(name: &str) -> Harness<'static, App> {
+    let harness = tall_harness(App::new(example_scene(name)));
+    assert!(
+        !harness.state().panels.inspector,
+        "a lesson opens in the student's view"
+    );
+    harness
+}
+
+/// Types `answer` to question `number` (from 1) and presses Enter: Check.
+fn answer(harness: &mut Harness<'_, App>, number: usize, answer: &str) {
+    let lesson = harness.state().document.scene().lesson.clone();
+    let question = &lesson.expect("a lesson").questions[number - 1];
+    let prompt = format!("{number}. {}", question.prompt);
+    harness.get_by_label(&prompt).focus();
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    harness.get_by_label(&prompt).type_text(answer);
+    harness.key_press(egui::Key::Enter);
+    harness.run();
+}
+
+/// What Check said of each question, in order (`None`: not checked).
+fn verdicts(harness: &Harness<'_, App>) -> Vec<Option<String>> {
+    harness
+        .state()
+        .lesson
+        .checked
+        .iter()
+        .map(|c| c.as_ref().map(|c| format!("{c:?}")))
+        .collect()
+}
+
+/// Every answer right: the panel says so, once per question.
+fn all_right(harness: &Harness<'_, App>, count: usize) {
+    let said = verdicts(harness);
+    assert_eq!(said.len(), count, "one result per question");
+    for verdict in &said {
+        let verdict = verdict.as_deref().unwrap_or("unchecked");
+        assert!(verdict.starts_with("Verdict(Right"), "{said:?}");
+    }
+    assert_eq!(
+        harness.get_all_by_label("Right").count(),
+        count,
+        "each shown"
+    );
+}
+
+#[test]
+fn galileo_incline_rolling_times_from_theory_are_right() {
+    let mut harness = open("lesson-galileo-incline");
+    let slope = 20_f64.to_radians().sin() * G;
+    let (disc, ring) = (slope / 1.5, slope / 2.0);
+    answer(&mut harness, 1, &format!("{:.3} s", (4.0 / disc).sqrt()));
+    answer(
+        &mut harness,
+        2,
+        &format!("{:.0} ms", 1000.0 * (4.0 / ring).sqrt()),
+    );
+    answer(&mut harness, 3, &format!("{:.3} m/s", (4.0 * disc).sqrt()));
+    all_right(&harness, 3);
+    // The disc's speed is revealed; its times are not.
+    harness.get_by_label_contains("The simulation measures 2.99");
+    assert_eq!(
+        harness
+            .query_all_by_label_contains("The simulation measures")
+            .count(),
+        1,
+        "only the revealed value"
+    );
+    // A ring's time for the disc is not yet right; the verdict never shows the number.
+    answer(&mut harness, 1, &format!("{:.3}", (4.0 / ring).sqrt()));
+    harness.get_by_label_contains("Not yet");
+}
+
+#[test]
+fn a_spring_period_and_top_speed_from_theory_are_right() {
+    let mut harness = open("lesson-spring-period");
+    let (m, k, amplitude) = (0.5_f64, 20.0_f64, 0.2);
+    answer(
+        &mut harness,
+        1,
+        &format!("{:.4}", 2.0 * PI * (m / k).sqrt()),
+    );
+    answer(
+        &mut harness,
+        2,
+        &format!("{:.1} cm/s", 100.0 * amplitude * (k / m).sqrt()),
+    );
+    all_right(&harness, 2);
+    // Half the period is not yet right; within ten tolerances it is close.
+    answer(&mut harness, 1, &format!("{:.4}", PI * (m / k).sqrt()));
+    harness.get_by_label_contains("Not yet");
+    answer(
+        &mut harness,
+        1,
+        &format!("{:.4}", 2.0 * PI * (m / k).sqrt() + 0.05),
+    );
+    harness.get_by_label_contains("Close");
+}
+
+/// The velocities after a collision of restitution `e`: cart 1 of mass `m1` at `v` into
+/// cart 2 of mass `m2` at rest.
+fn after(m1: f64, m2: f64, v: f64, e: f64) -> (f64, f64) {
+    (
+        (m1 - e * m2) * v / (m1 + m2),
+        (1.0 + e) * m1 * v / (m1 + m2),
+    )
+}
+
+#[test]
+fn collisions_follow_the_restitution_the_student_sets() {
+    let mut harness = open("lesson-collisions");
+    let (a, b) = after(1.0, 3.0, 2.0, 0.5);
+    answer(&mut harness, 1, &format!("{b}"));
+    answer(&mut harness, 2, &format!("{a} m/s"));
+    answer(&mut harness, 3, "2 N·s");
+    let energy = 0.5 * a * a + 0.5 * 3.0 * b * b;
+    answer(&mut harness, 4, &format!("{:.0} mJ", energy * 1000.0));
+    all_right(&harness, 4);
+    // The restitution slider one step up (the arrow key): the scene changes, one undo step,
+    // and the answer key follows the scene as the student set it.
+    // The lesson panel's first slider (the panel is at the left; the tool bar's and the
+    // time bar's sliders are not in it).
+    let slider = harness
+        .get_all_by_role(egui::accesskit::Role::Slider)
+        .filter(|s| s.rect().left() < newtonlab_app::lesson::WIDTH)
+        .min_by(|a, b| a.rect().top().total_cmp(&b.rect().top()))
+        .expect("the restitution slider");
+    slider.focus();
+    harness.run();
+    harness.key_press(egui::Key::ArrowRight);
+    harness.run();
+    let restitution = harness.state().document.scene().world.restitution;
+    assert_eq!(restitution, 0.6, "a step of the slider, as typed");
+    // 0.75 m/s against 0.8: within ten tolerances.
+    answer(&mut harness, 1, &format!("{b}"));
+    harness.get_by_label_contains("Close");
+    let (_, b) = after(1.0, 3.0, 2.0, 0.6);
+    answer(&mut harness, 1, &format!("{b}"));
+    assert!(
+        verdicts(&harness)[0]
+            .as_deref()
+            .is_some_and(|v| v.starts_with("Verdict(Right"))
+    );
+}
+
+#[test]
+fn a_block_slides_as_theory_says_and_a_wrong_unit_is_told() {
+    let mut harness = open("lesson-block-slide");
+    let (sin, cos) = 30_f64.to_radians().sin_cos();
+    let a = G * (sin - 0.3 * cos);
+    let along = (2.090_063_509_461_097 - 1.18) / cos;
+    answer(&mut harness, 1, &format!("{a:.3}"));
+    answer(
+        &mut harness,
+        2,
+        &format!("{:.4} s", (2.0 * along / a).sqrt()),
+    );
+    all_right(&harness, 2);
+    answer(&mut harness, 1, "2.3 kg");
+    harness.get_by_label_contains("'kg' is no function, constant or unit");
+}
+
+/// The range of a ball thrown at `speed` and `angle` (degrees) from the ground against a
+/// quadratic drag `c` (kg/m) on mass `m`: RK4 at 1e-4 s, the landing found by linear
+/// interpolation between the two steps around it.
+fn range_in_air(speed: f64, angle: f64, m: f64, c: f64) -> f64 {
+    let (sin, cos) = angle.to_radians().sin_cos();
+    let mut s = [0.0, 0.0, speed * cos, speed * sin];
+    let f = |s: [f64; 4]| {
+        let v = s[2].hypot(s[3]);
+        [s[2], s[3], -c / m * v * s[2], -G - c / m * v * s[3]]
+    };
+    let h = 1e-4;
+    loop {
+        let k1 = f(s);
+        let at = |k: [f64; 4], w: f64| std::array::from_fn(|i| s[i] + w * h * k[i]);
+        let k2 = f(at(k1, 0.5));
+        let k3 = f(at(k2, 0.5));
+        let k4 = f(at(k3, 1.0));
+        let next: [f64; 4] =
+            std::array::from_fn(|i| s[i] + h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]));
+        if next[1] < 0.0 && next[3] < 0.0 {
+            let w = s[1] / (s[1] - next[1]);
+            return s[0] + w * (next[0] - s[0]);
+        }
+        s = next;
+    }
+}
+
+#[test]
+fn ranges_with_and_without_air_from_theory_and_an_integration_apart_are_right() {
+    let mut harness = open("lesson-projectile-range");
+    let v = 35.0_f64;
+    let theta = 45_f64.to_radians();
+    answer(
+        &mut harness,
+        1,
+        &format!("{:.2} m", v * v * (2.0 * theta).sin() / G),
+    );
+    answer(
+        &mut harness,
+        2,
+        &format!("{:.2}", range_in_air(35.0, 45.0, 0.145, 0.00077)),
+    );
+    answer(
+        &mut harness,
+        3,
+        &format!("{:.3}", (v * theta.sin()).powi(2) / (2.0 * G)),
+    );
+    all_right(&harness, 3);
+}
+
+/// Every example's description (the inspector's *About this scene*) and lesson drawn: a
+/// letter the app's fonts lack would stop the frame.
+#[test]
+fn every_example_opens_with_its_description_and_lesson_drawn() {
+    for example in physics::EXAMPLES.iter().filter(|e| e.file_text().is_some()) {
+        let mut app = App::new(example_scene(example.name));
+        app.panels.inspector = true;
+        let harness = tall_harness(app);
+        let scene = harness.state().document.scene().clone();
+        if let Some(lesson) = &scene.lesson {
+            harness.get_by_label(&lesson.title);
+        }
+        assert!(
+            scene.description.is_some(),
+            "{} has a description",
+            example.name
+        );
+    }
+}

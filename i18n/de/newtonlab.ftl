@@ -847,7 +847,7 @@ lesson-slider-step = step muss größer als 0 und höchstens max − min sein, i
 lesson-slider-rule = bei { $value } verletzt die Szene eine Regel: { $why }
 cli-check-lesson = Lektion '{ $title }': { $sliders } Schieberegler, { $questions } Frage(n)
 cli-lesson-none = { $source } hat keine [lesson]: geben Sie eine Szenendatei mit einer Lektion an, oder eine Beispiel-Lektion (newtonlab examples)
-cli-lesson-answer-malformed = --answer '{ $text }' muss ID=WERT sein, etwa { $ids }=1.34 s
+cli-lesson-answer-malformed = --answer '{ $text }' muss ID=WERT sein, etwa { $first }="1.5 s"; die Kennungen: { $ids }
 cli-lesson-unknown-id = --answer '{ $text }': die Lektion hat keine Frage mit dieser Kennung; ihre { $count } Frage(n): { $ids }
 cli-lesson-answer-unreadable = --answer für '{ $id }' muss eine Größe in { $unit } sein (oder in einer anderen Einheit dieser Art): { $why }
 cli-lesson-unmeasured = die Simulation kann die Frage '{ $id }' nicht beantworten: { $why }

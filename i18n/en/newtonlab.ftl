@@ -848,7 +848,7 @@ lesson-slider-step = step must be greater than 0 and at most max − min, got { 
 lesson-slider-rule = at { $value } the scene breaks a rule: { $why }
 cli-check-lesson = lesson '{ $title }': { $sliders } slider(s), { $questions } question(s)
 cli-lesson-none = { $source } has no [lesson]: give a scene file with one, or an example lesson (newtonlab examples)
-cli-lesson-answer-malformed = --answer '{ $text }' must be ID=VALUE, such as { $ids }=1.34 s
+cli-lesson-answer-malformed = --answer '{ $text }' must be ID=VALUE, such as { $first }="1.5 s"; the ids: { $ids }
 cli-lesson-unknown-id = --answer '{ $text }': the lesson has no question of that id; its { $count } question(s): { $ids }
 cli-lesson-answer-unreadable = --answer for '{ $id }' must be a quantity in { $unit } (or another unit of its kind): { $why }
 cli-lesson-unmeasured = the simulation cannot answer question '{ $id }': { $why }

@@ -847,7 +847,7 @@ lesson-slider-step = step debe ser mayor que 0 y como mucho max − min, pero es
 lesson-slider-rule = con { $value } la escena incumple una regla: { $why }
 cli-check-lesson = lección '{ $title }': { $sliders } deslizador(es), { $questions } pregunta(s)
 cli-lesson-none = { $source } no tiene [lesson]: indique un archivo de escena con una lección, o una lección de ejemplo (newtonlab examples)
-cli-lesson-answer-malformed = --answer '{ $text }' debe ser ID=VALOR, como { $ids }=1.34 s
+cli-lesson-answer-malformed = --answer '{ $text }' debe ser ID=VALOR, como { $first }="1.5 s"; los ids: { $ids }
 cli-lesson-unknown-id = --answer '{ $text }': la lección no tiene ninguna pregunta con ese id; sus { $count } pregunta(s): { $ids }
 cli-lesson-answer-unreadable = --answer para '{ $id }' debe ser una magnitud en { $unit } (u otra unidad de su tipo): { $why }
 cli-lesson-unmeasured = la simulación no puede responder la pregunta '{ $id }': { $why }

@@ -3,7 +3,7 @@
 //! `ID: not yet`); without, the questions are listed.
 
 use newtonlab_i18n::tr_text as say;
-use physics::{Lesson, Scene, Verdict};
+use physics::{Lesson, Verdict};
 
 use crate::{Failure, scene_source};
 
@@ -33,7 +33,7 @@ pub(crate) fn lesson(args: &LessonArgs) -> Result<(), Failure> {
         .iter()
         .map(|text| read_answer(lesson, text))
         .collect::<Result<Vec<_>, _>>()?;
-    let measured = measure(lesson, &scene)?;
+    let measured = lesson.answers(&scene).map_err(Failure::Simulation)?;
     for (index, value) in answers {
         let question = &lesson.questions[index];
         let verdict = match &measured[index] {
@@ -58,11 +58,13 @@ fn list(lesson: &Lesson) {
 
 /// `ID=VALUE`: the question's index and the value in its unit.
 fn read_answer(lesson: &Lesson, text: &str) -> Result<(usize, f64), Failure> {
+    let first = lesson.questions.first().map_or("ID", |q| q.id.as_str());
     let bad = |id: &str| {
         Failure::Input(say(
             id,
             &[
                 ("text", text),
+                ("first", first),
                 ("ids", &ids(lesson)),
                 ("count", &lesson.questions.len().to_string()),
             ],
@@ -90,9 +92,4 @@ fn read_answer(lesson: &Lesson, text: &str) -> Result<(usize, f64), Failure> {
 fn ids(lesson: &Lesson) -> String {
     let ids: Vec<&str> = lesson.questions.iter().map(|q| q.id.as_str()).collect();
     ids.join(", ")
-}
-
-/// What the scene measures for each question, or why the run failed.
-fn measure(lesson: &Lesson, scene: &Scene) -> Result<Vec<Result<f64, String>>, Failure> {
-    lesson.answers(scene).map_err(Failure::Simulation)
 }

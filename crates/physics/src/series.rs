@@ -21,7 +21,7 @@ use crate::cycle::NoCycle;
 use crate::events::{Event, Located, Turn, Watch};
 use crate::quantity::{Quantity, Reading};
 use crate::scene::fields::{self, Field, Kind, Value};
-use crate::scene::{Scene, Vector, say};
+use crate::scene::{Scene, Section, Vector, say};
 use crate::simulation::{Simulation, SimulationError};
 
 /// Which object a [`Setting`] writes to.
@@ -50,13 +50,12 @@ impl Part {
     /// This part of `vector`.
     fn get(self, vector: Vector) -> f64 {
         let v = vector.to_dvec2();
-        match (self, vector) {
-            (Self::X, _) => v.x,
-            (Self::Y, _) => v.y,
-            (Self::Magnitude, Vector::Polar { magnitude, .. }) => magnitude,
-            (Self::Angle, Vector::Polar { angle, .. }) => angle,
-            (Self::Magnitude, Vector::Cartesian(c)) => c.length(),
-            (Self::Angle, Vector::Cartesian(c)) => c.y.atan2(c.x).to_degrees(),
+        let (magnitude, angle) = polar(vector);
+        match self {
+            Self::X => v.x,
+            Self::Y => v.y,
+            Self::Magnitude => magnitude,
+            Self::Angle => angle,
         }
     }
 
@@ -74,10 +73,7 @@ impl Part {
     /// of the polar pair; x or y the other component).
     fn set(self, vector: Vector, value: f64) -> Vector {
         let v = vector.to_dvec2();
-        let (magnitude, angle) = match vector {
-            Vector::Polar { magnitude, angle } => (magnitude, angle),
-            Vector::Cartesian(c) => (c.length(), c.y.atan2(c.x).to_degrees()),
-        };
+        let (magnitude, angle) = polar(vector);
         match self {
             Self::X => Vector::Cartesian(glam::DVec2::new(value, v.y)),
             Self::Y => Vector::Cartesian(glam::DVec2::new(v.x, value)),
@@ -90,6 +86,14 @@ impl Part {
                 angle: value,
             },
         }
+    }
+}
+
+/// `vector`'s magnitude and angle (degrees), as written where it is polar.
+fn polar(vector: Vector) -> (f64, f64) {
+    match vector {
+        Vector::Polar { magnitude, angle } => (magnitude, angle),
+        Vector::Cartesian(c) => (c.length(), c.y.atan2(c.x).to_degrees()),
     }
 }
 
@@ -231,6 +235,23 @@ impl Setting {
             part,
             unit,
         })
+    }
+
+    /// The field it writes, as a problem with the scene names it.
+    pub fn field(&self) -> crate::scene::FieldRef {
+        let section = match self.target {
+            Target::Particle(i) => Section::Particle(i),
+            Target::Spring(i) => Section::Spring(i),
+            Target::Tie(i) => Section::Tie(i),
+            Target::Ramp(i) => Section::Ramp(i),
+            Target::Body(i) => Section::Body(i),
+            Target::World => Section::World,
+            Target::Simulation => Section::Simulation,
+        };
+        crate::scene::FieldRef {
+            section,
+            field: self.key,
+        }
     }
 
     /// The unit of the number written: the field's, degrees for a vector's angle.

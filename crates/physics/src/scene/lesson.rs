@@ -112,6 +112,23 @@ fn is_id(id: &str) -> bool {
             .all(|c| c.is_alphanumeric() || c == '_' || c == '-')
 }
 
+/// Why `text` (a title, instructions, a prompt) cannot be shown: longer than
+/// [`MOST_TEXT`], or holding HTML.
+fn text_problem(text: &str) -> Option<String> {
+    if text.len() > MOST_TEXT {
+        let size = format!("{:.1}", text.len() as f64 / 1024.0);
+        let most = (MOST_TEXT / 1024).to_string();
+        Some(say(
+            "lesson-text-too-long",
+            &[("size", &size), ("most", &most)],
+        ))
+    } else if holds_html(text) {
+        Some(say("lesson-html", &[]))
+    } else {
+        None
+    }
+}
+
 /// Raw HTML in Markdown: a tag (`<script>`, `<img …>`, `</b>`) or a comment. The lesson
 /// panel and the worksheet show text, never run or embed what a file brings.
 fn holds_html(text: &str) -> bool {
@@ -189,13 +206,8 @@ impl Lesson {
             problems.push((lesson, "title", say("lesson-no-title", &[])));
         }
         for (key, text) in [("title", &self.title), ("text", &self.text)] {
-            if text.len() > MOST_TEXT {
-                let size = format!("{:.1}", text.len() as f64 / 1024.0);
-                let most = (MOST_TEXT / 1024).to_string();
-                let why = say("lesson-text-too-long", &[("size", &size), ("most", &most)]);
+            if let Some(why) = text_problem(text) {
                 problems.push((lesson, key, why));
-            } else if holds_html(text) {
-                problems.push((lesson, key, say("lesson-html", &[])));
             }
         }
         let until = self.until(scene);
@@ -224,8 +236,8 @@ impl Lesson {
             }
             if question.prompt.trim().is_empty() {
                 problems.push((section, "prompt", say("lesson-no-prompt", &[])));
-            } else if question.prompt.len() > MOST_TEXT || holds_html(&question.prompt) {
-                problems.push((section, "prompt", say("lesson-html", &[])));
+            } else if let Some(why) = text_problem(&question.prompt) {
+                problems.push((section, "prompt", why));
             }
             match question
                 .parsed()
@@ -279,21 +291,16 @@ impl Slider {
             let why = say("lesson-slider-step", &[("step", &step)]);
             return vec![("step", why)];
         }
-        // The ends must obey the field's rules as a file's value would: a scene with the
-        // slider at either end is checked, and a problem it has that the scene has not is
-        // the slider's.
-        let mut bare = scene.clone();
-        bare.lesson = None;
-        let before: Vec<String> = bare.validate().into_iter().map(|p| p.message).collect();
+        // The ends must obey the field's rules as a file's value would: the scene with the
+        // slider at either end is checked, and a problem with the slider's field is the
+        // slider's (as the inspector judges a typed value).
+        let field = Some(setting.field());
+        let mut moved = scene.clone();
+        moved.lesson = None;
         let mut problems = Vec::new();
         for (key, value) in [("min", self.min), ("max", self.max)] {
-            let mut moved = bare.clone();
             setting.set(&mut moved, value);
-            if let Some(new) = moved
-                .validate()
-                .into_iter()
-                .find(|p| !before.contains(&p.message))
-            {
+            if let Some(new) = moved.validate().into_iter().find(|p| p.field == field) {
                 let value = value.to_string();
                 let words = [("value", value.as_str()), ("why", new.message.as_str())];
                 problems.push((key, say("lesson-slider-rule", &words)));

@@ -1,6 +1,6 @@
 //! Reading and writing `[lesson]` with its `[[lesson.slider]]` and `[[lesson.question]]`.
 
-use super::read::{Reader, read_bool, read_number, read_text};
+use super::read::{Reader, array_items, read_bool, read_number, read_text};
 use super::tree::{Node, Value};
 use super::write::{Header, Out, OutSection};
 use crate::scene::error::Section;
@@ -76,25 +76,14 @@ impl Reader<'_> {
     }
 }
 
-/// The lesson's table in the tree, and its sliders' and questions' items.
-pub(super) fn lesson_node<'n>(root: &'n Node<'n>, section: Section) -> Option<&'n Node<'n>> {
-    let Value::Table(top) = &root.value else {
-        return None;
-    };
-    let lesson = &top.iter().find(|e| e.key == "lesson")?.node;
+/// Within the lesson's table `lesson`: itself, or a slider's or a question's item.
+pub(super) fn lesson_node<'n>(lesson: &'n Node<'n>, section: Section) -> Option<&'n Node<'n>> {
     let Value::Table(entries) = &lesson.value else {
         return None;
     };
-    let items = |key: &str| match entries.iter().find(|e| e.key == key).map(|e| &e.node) {
-        Some(Node {
-            value: Value::Array(items),
-            ..
-        }) => items.as_slice(),
-        _ => &[],
-    };
     match section {
-        Section::Slider(i) => items("slider").get(i),
-        Section::Question(i) => items("question").get(i),
+        Section::Slider(i) => array_items(entries, "slider").get(i),
+        Section::Question(i) => array_items(entries, "question").get(i),
         _ => Some(lesson),
     }
 }

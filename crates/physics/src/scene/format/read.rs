@@ -624,28 +624,32 @@ fn value_span(entries: &[Entry], key: &str) -> Span {
     entry.node.span.clone()
 }
 
+/// The items of the array of tables `key` among a table's entries; none where the key is
+/// missing or no array (the reader reads none there either).
+pub(super) fn array_items<'n>(entries: &'n [Entry<'n>], key: &str) -> &'n [Node<'n>] {
+    match entries.iter().find(|e| e.key == key).map(|e| &e.node) {
+        Some(Node {
+            value: Value::Array(items),
+            ..
+        }) => items,
+        _ => &[],
+    }
+}
+
 /// A section's table in the tree, counted as the reader counts them.
 fn section_node<'n>(root: &'n Node<'n>, section: Section) -> Option<&'n Node<'n>> {
     let Value::Table(top) = &root.value else {
         return None;
     };
     let get = |key: &str| top.iter().find(|e| e.key == key).map(|e| &e.node);
-    // An array of tables' items; none where the key is missing or no array (the reader
-    // reads none there either).
-    let items = |key: &str| match get(key) {
-        Some(Node {
-            value: Value::Array(items),
-            ..
-        }) => items.as_slice(),
-        _ => &[],
-    };
+    let items = |key: &str| array_items(top, key);
     match section {
         Section::Root => Some(root),
         Section::World => get("world"),
         Section::Simulation => get("simulation"),
         Section::View => get("view"),
         Section::Lesson | Section::Slider(_) | Section::Question(_) => {
-            super::lesson::lesson_node(root, section)
+            super::lesson::lesson_node(get("lesson")?, section)
         }
         Section::Particle(i) => items("particle").get(i),
         Section::Spring(i) => items("spring").get(i),

@@ -19,6 +19,8 @@ pub enum Action {
     ExportPicture(Subject),
     /// Save graph number N as a figure to print (PNG or SVG).
     ExportFigure(usize, crate::picture::Format),
+    /// The lesson's worksheet as a PDF; with the answer key (`true`) after it.
+    ExportWorksheet(bool),
     /// Run experiment series number N.
     RunExperiment(usize),
     /// Export experiment series number N's results: CSV (`None`) or a figure.

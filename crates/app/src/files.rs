@@ -20,6 +20,8 @@ pub enum Purpose {
     ExportSvg,
     /// Save the CSV table waiting in the app (an experiment series' results).
     ExportTable,
+    /// Write the lesson's worksheet (with its answer key when `true`).
+    ExportPdf(bool),
 }
 
 impl Purpose {
@@ -30,6 +32,7 @@ impl Purpose {
             Self::ExportCsv(_) | Self::ExportTable => &["csv"],
             Self::ExportPng => &["png"],
             Self::ExportSvg => &["svg"],
+            Self::ExportPdf(_) => &["pdf"],
         }
     }
 }
@@ -236,7 +239,8 @@ impl Files {
                 Purpose::ExportCsv(_)
                 | Purpose::ExportTable
                 | Purpose::ExportPng
-                | Purpose::ExportSvg => "file-verb-export",
+                | Purpose::ExportSvg
+                | Purpose::ExportPdf(_) => "file-verb-export",
             });
             let extensions = dialog.purpose.extensions();
             Modal::new(Id::unique("file dialog")).show(ui.ctx(), |ui| {
@@ -247,6 +251,7 @@ impl Files {
                     Purpose::ExportCsv(_) | Purpose::ExportTable => "file-title-csv",
                     Purpose::ExportPng => "file-title-png",
                     Purpose::ExportSvg => "file-title-svg",
+                    Purpose::ExportPdf(_) => "file-title-pdf",
                 }));
                 ui.horizontal(|ui| {
                     let label = ui.label(tr("file-folder"));

@@ -10,7 +10,7 @@ use egui::text::LayoutJob;
 use egui::{Color32, RichText, TextFormat, Ui};
 use physics::series::Setting;
 use physics::{Lesson, Scene, Verdict};
-use pulldown_cmark::{Event, HeadingLevel, Options, Parser, Tag, TagEnd};
+use pulldown_cmark::{Event, Options, Parser, Tag, TagEnd};
 
 use crate::document::Document;
 use crate::edit::Edit;
@@ -200,31 +200,63 @@ fn result_ui(ui: &mut Ui, checked: &Checked, unit: &str) {
     }
 }
 
-/// Markdown as the panel shows it: headings, paragraphs with emphasis and strong text,
-/// numbered and bulleted lists, inline code. HTML is never shown (a scene with any is
-/// refused when it loads); images show as their description.
-pub fn markdown(ui: &mut Ui, text: &str) {
-    let body = egui::TextStyle::Body.resolve(ui.style());
-    let colour = ui.visuals().text_color();
-    let mut job = LayoutJob::default();
-    let (mut strong, mut emphasis, mut heading) = (false, false, false);
+/// A run of text in one style.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Span {
+    pub text: String,
+    pub strong: bool,
+    pub emphasis: bool,
+}
+
+/// A block of a lesson's Markdown, as the panel and the worksheet lay it out.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Block {
+    Heading(Vec<Span>),
+    Paragraph(Vec<Span>),
+    /// A list's item: its mark (`3. `, `• `) and how deep the list is (0 outermost).
+    Item {
+        mark: String,
+        depth: usize,
+        spans: Vec<Span>,
+    },
+    Rule,
+}
+
+/// The blocks of Markdown `text`: headings, paragraphs with strong and emphasised words,
+/// numbered and bulleted lists (nested), rules; inline code as text. HTML is never kept
+/// (a scene with any is refused when it loads); an image is its description.
+pub fn blocks(text: &str) -> Vec<Block> {
+    let mut blocks = Vec::new();
+    let mut spans: Vec<Span> = Vec::new();
+    let (mut strong, mut emphasis) = (false, false);
+    // What the text gathered now will be: a heading, or an item with its mark.
+    let mut heading = false;
+    let mut item: Option<(String, usize)> = None;
     // Each open list: the next item's number, or none for bullets.
     let mut lists: Vec<Option<u64>> = Vec::new();
-    let flush = |ui: &mut Ui, job: &mut LayoutJob| {
-        if !job.text.is_empty() {
-            let mut done = std::mem::take(job);
-            done.wrap.max_width = ui.available_width();
-            ui.label(done);
+    // The spans gathered so far as a block: an item, a heading or a paragraph.
+    let flush = |blocks: &mut Vec<Block>,
+                 spans: &mut Vec<Span>,
+                 heading: bool,
+                 item: &mut Option<(String, usize)>| {
+        if spans.is_empty() {
+            return;
         }
+        let spans = std::mem::take(spans);
+        blocks.push(match item.take() {
+            Some((mark, depth)) => Block::Item { mark, depth, spans },
+            None if heading => Block::Heading(spans),
+            None => Block::Paragraph(spans),
+        });
     };
     for event in Parser::new_ext(text, Options::empty()) {
         match event {
-            Event::Start(Tag::Heading { level, .. }) => {
-                flush(ui, &mut job);
-                heading = level <= HeadingLevel::H3;
+            Event::Start(Tag::Heading { .. }) => {
+                flush(&mut blocks, &mut spans, heading, &mut item);
+                heading = true;
             }
             Event::End(TagEnd::Heading(_)) => {
-                flush(ui, &mut job);
+                flush(&mut blocks, &mut spans, heading, &mut item);
                 heading = false;
             }
             Event::Start(Tag::Strong) => strong = true,
@@ -232,46 +264,96 @@ pub fn markdown(ui: &mut Ui, text: &str) {
             Event::Start(Tag::Emphasis) => emphasis = true,
             Event::End(TagEnd::Emphasis) => emphasis = false,
             Event::Start(Tag::List(first)) => {
-                flush(ui, &mut job);
+                flush(&mut blocks, &mut spans, heading, &mut item);
                 lists.push(first);
             }
             Event::End(TagEnd::List(_)) => {
-                flush(ui, &mut job);
+                flush(&mut blocks, &mut spans, heading, &mut item);
                 lists.pop();
             }
             Event::Start(Tag::Item) => {
-                flush(ui, &mut job);
-                let indent = "    ".repeat(lists.len().saturating_sub(1));
+                flush(&mut blocks, &mut spans, heading, &mut item);
                 let mark = match lists.last_mut() {
                     Some(Some(n)) => {
                         *n += 1;
-                        format!("{indent}{}. ", *n - 1)
+                        format!("{}. ", *n - 1)
                     }
-                    _ => format!("{indent}• "),
+                    _ => "• ".to_owned(),
                 };
-                job.append(&mark, 0.0, TextFormat::simple(body.clone(), colour));
+                item = Some((mark, lists.len().saturating_sub(1)));
             }
-            Event::End(TagEnd::Paragraph | TagEnd::Item) => flush(ui, &mut job),
-            Event::Text(text) | Event::Code(text) => {
-                let mut format = TextFormat::simple(body.clone(), colour);
-                if heading {
-                    format.font_id = egui::TextStyle::Heading.resolve(ui.style());
-                    format.font_id.size *= 0.8;
-                }
-                if strong || heading {
-                    format.color = ui.visuals().strong_text_color();
-                }
-                format.italics = emphasis;
-                job.append(&text, 0.0, format);
+            Event::End(TagEnd::Paragraph | TagEnd::Item) => {
+                flush(&mut blocks, &mut spans, heading, &mut item);
             }
-            Event::SoftBreak => job.append(" ", 0.0, TextFormat::simple(body.clone(), colour)),
-            Event::HardBreak => job.append("\n", 0.0, TextFormat::simple(body.clone(), colour)),
+            Event::Text(text) | Event::Code(text) => spans.push(Span {
+                text: text.into_string(),
+                strong: strong || heading,
+                emphasis,
+            }),
+            Event::SoftBreak => spans.push(Span {
+                text: " ".to_owned(),
+                strong: false,
+                emphasis: false,
+            }),
+            Event::HardBreak => spans.push(Span {
+                text: "\n".to_owned(),
+                strong: false,
+                emphasis: false,
+            }),
             Event::Rule => {
-                flush(ui, &mut job);
-                ui.separator();
+                flush(&mut blocks, &mut spans, heading, &mut item);
+                blocks.push(Block::Rule);
             }
             _ => {}
         }
     }
-    flush(ui, &mut job);
+    flush(&mut blocks, &mut spans, heading, &mut item);
+    blocks
+}
+
+/// Markdown as the panel shows it ([`blocks`]), wrapped to the panel's width.
+pub fn markdown(ui: &mut Ui, text: &str) {
+    let body = egui::TextStyle::Body.resolve(ui.style());
+    let (plain, strong) = (ui.visuals().text_color(), ui.visuals().strong_text_color());
+    let job = |spans: &[Span], first: &str, font: &egui::FontId| {
+        let mut job = LayoutJob::default();
+        job.append(first, 0.0, TextFormat::simple(font.clone(), plain));
+        for span in spans {
+            let mut format =
+                TextFormat::simple(font.clone(), if span.strong { strong } else { plain });
+            format.italics = span.emphasis;
+            job.append(&span.text, 0.0, format);
+        }
+        job
+    };
+    let mut heading_font = egui::TextStyle::Heading.resolve(ui.style());
+    heading_font.size *= 0.8;
+    for block in blocks(text) {
+        let mut laid = match &block {
+            Block::Heading(spans) => job(spans, "", &heading_font),
+            Block::Paragraph(spans) => job(spans, "", &body),
+            Block::Item { mark, depth, spans } => {
+                job(spans, &format!("{}{mark}", "    ".repeat(*depth)), &body)
+            }
+            Block::Rule => {
+                ui.separator();
+                continue;
+            }
+        };
+        laid.wrap.max_width = ui.available_width();
+        ui.label(laid);
+    }
+}
+
+impl crate::App {
+    /// Asks where to write the lesson's worksheet (with the answer key when `key`).
+    pub(crate) fn ask_worksheet(&mut self, key: bool) {
+        let name = if key {
+            "answer-key.pdf"
+        } else {
+            "worksheet.pdf"
+        };
+        self.files
+            .ask(crate::files::Purpose::ExportPdf(key), None, name);
+    }
 }

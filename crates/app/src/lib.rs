@@ -54,6 +54,8 @@ pub use physics::units;
 pub mod watching;
 #[cfg(target_arch = "wasm32")]
 pub mod web;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod worksheet;
 
 mod frames;
 mod keeping;
@@ -307,6 +309,7 @@ impl App {
             Action::SaveAs => self.save_as(),
             Action::ExportGraph(graph) => self.ask_export(graph),
             Action::ExportPicture(subject) => self.picture_asked = Some(subject),
+            Action::ExportWorksheet(key) => self.ask_worksheet(key),
             Action::ExportFigure(graph, format) => self.export_figure(graph, format),
             Action::RunExperiment(index) => {
                 if let Err(why) = self.experiments.start(self.document.scene(), index) {
@@ -830,6 +833,13 @@ impl App {
             Some(Choice::Path(Purpose::ExportCsv(graph), path)) => self.export_csv(&path, graph),
             Some(Choice::Path(Purpose::ExportPng, path)) => self.save_picture(&path),
             Some(Choice::Path(Purpose::ExportTable, path)) => self.save_table(&path),
+            Some(Choice::Path(Purpose::ExportPdf(key), path)) => {
+                // The worksheet's PDF is written on the desktop (no file dialog in the browser).
+                #[cfg(not(target_arch = "wasm32"))]
+                self.export_worksheet(&path, key);
+                #[cfg(target_arch = "wasm32")]
+                let _ = (path, key);
+            }
             Some(Choice::Path(Purpose::ExportSvg, path)) => {
                 // No file dialog in the browser: SVG figures are the desktop's.
                 #[cfg(not(target_arch = "wasm32"))]

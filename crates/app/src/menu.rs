@@ -62,6 +62,22 @@ impl App {
                         Action::SaveAs,
                         true,
                     );
+                    #[cfg(not(target_arch = "wasm32"))]
+                    {
+                        let lesson = self.document.scene().lesson.is_some();
+                        for (key, label, hint) in [
+                            (false, "menu-worksheet", "menu-worksheet-hint"),
+                            (true, "menu-answer-key", "menu-answer-key-hint"),
+                        ] {
+                            item(
+                                ui,
+                                &tr(label),
+                                &tr(hint),
+                                Action::ExportWorksheet(key),
+                                lesson,
+                            );
+                        }
+                    }
                     #[cfg(target_arch = "wasm32")]
                     if ui
                         .button(tr("menu-copy-link"))
@@ -124,15 +140,16 @@ impl App {
             .response
             .on_hover_text(tr("menu-edit-hint"));
             ui.menu_button(tr("menu-examples"), |ui| {
-                for (name, title) in example_titles() {
-                    item(
-                        ui,
-                        title,
-                        &format!("example:{name}"),
-                        Action::Example(name),
-                        true,
-                    );
-                }
+                // The lessons in a menu of their own: one list of every scene would run
+                // past a laptop's screen.
+                let mut list = |ui: &mut Ui, lessons: bool| {
+                    for (name, title, _) in example_titles().iter().filter(|e| e.2 == lessons) {
+                        let hint = format!("example:{name}");
+                        item(ui, title, &hint, Action::Example(name), true);
+                    }
+                };
+                list(ui, false);
+                ui.menu_button(tr("menu-lessons"), |ui| list(ui, true));
             })
             .response
             .on_hover_text(tr("menu-examples-hint"));
@@ -331,21 +348,21 @@ impl App {
     }
 }
 
+/// A built-in scene as the menu lists it: its name, its title, and whether it is a lesson.
+type Listed = (&'static str, String, bool);
+
 /// Every built-in scene's name and title, read once: the menu is drawn every frame it is
 /// open, and parsing a thousand-ball scene each time would make it stutter.
-fn example_titles() -> &'static [(&'static str, String)] {
-    static TITLES: std::sync::OnceLock<Vec<(&'static str, String)>> = std::sync::OnceLock::new();
+fn example_titles() -> &'static [Listed] {
+    static TITLES: std::sync::OnceLock<Vec<Listed>> = std::sync::OnceLock::new();
     TITLES.get_or_init(|| {
         physics::EXAMPLES
             .iter()
             .map(|e| {
-                (
-                    e.name,
-                    e.scene()
-                        .ok()
-                        .and_then(|s| s.name)
-                        .unwrap_or_else(|| e.name.to_owned()),
-                )
+                let scene = e.scene().ok();
+                let lesson = scene.as_ref().is_some_and(|s| s.lesson.is_some());
+                let title = scene.and_then(|s| s.name);
+                (e.name, title.unwrap_or_else(|| e.name.to_owned()), lesson)
             })
             .collect()
     })

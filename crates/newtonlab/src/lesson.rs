@@ -1,6 +1,7 @@
 //! `newtonlab lesson`: a scene's lesson on the command line. With `--answer ID=VALUE`,
 //! each answer is checked against what the scene measures (`ID: right`, `ID: close` or
-//! `ID: not yet`); without, the questions are listed.
+//! `ID: not yet`); with `--worksheet FILE.pdf [--key]`, the worksheet is written (with the
+//! answer key after it); with neither, the questions are listed.
 
 use newtonlab_i18n::tr_text as say;
 use physics::{Lesson, Verdict};
@@ -16,6 +17,14 @@ pub(crate) struct LessonArgs {
     /// scene's own run.
     #[arg(long, value_name = "ID=VALUE", allow_hyphen_values = true)]
     answer: Vec<String>,
+    /// Write the lesson's worksheet to print (PDF, A4): its title, instructions, a picture
+    /// of the scene and its questions with lines for the answers.
+    #[arg(long, value_name = "FILE.pdf")]
+    worksheet: Option<String>,
+    /// With --worksheet: add the answer key (the simulation's value of every question) on
+    /// a page of its own after the worksheet.
+    #[arg(long, requires = "worksheet")]
+    key: bool,
 }
 
 pub(crate) fn lesson(args: &LessonArgs) -> Result<(), Failure> {
@@ -23,8 +32,17 @@ pub(crate) fn lesson(args: &LessonArgs) -> Result<(), Failure> {
     let lesson = scene.lesson.as_ref().ok_or_else(|| {
         Failure::Input(say("cli-lesson-none", &[("source", args.scene.as_str())]))
     })?;
+    if let Some(path) = &args.worksheet {
+        let bytes = newtonlab_app::worksheet::pdf(&scene, args.key).map_err(Failure::Simulation)?;
+        std::fs::write(path, bytes).map_err(|error| {
+            let words = [("path", path.as_str()), ("error", &error.to_string())];
+            Failure::Input(say("cli-cannot-create", &words))
+        })?;
+    }
     if args.answer.is_empty() {
-        list(lesson);
+        if args.worksheet.is_none() {
+            list(lesson);
+        }
         return Ok(());
     }
     // Every answer is read before the run: a typing mistake is told at once.

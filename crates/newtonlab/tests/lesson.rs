@@ -154,3 +154,76 @@ fn a_bad_lesson_is_refused_by_check_with_every_problem_at_its_place() {
         assert!(text.contains(words), "{words:?} in {text}");
     }
 }
+
+/// The number of pages a PDF says it has (its page tree's `/Count`).
+fn pages(pdf: &[u8]) -> Option<usize> {
+    let text = String::from_utf8_lossy(pdf);
+    let at = text.find("/Count ")? + "/Count ".len();
+    let digits: String = text[at..]
+        .chars()
+        .take_while(char::is_ascii_digit)
+        .collect();
+    digits.parse().ok()
+}
+
+#[test]
+fn the_worksheet_is_a_pdf_and_the_key_adds_a_page_of_its_own() {
+    let dir = std::env::temp_dir().join(format!("newtonlab-worksheet-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a folder");
+    let sheet = dir.join("sheet.pdf");
+    let keyed = dir.join("keyed.pdf");
+    let sheet_path = sheet.to_string_lossy().into_owned();
+    let keyed_path = keyed.to_string_lossy().into_owned();
+    let scene = "example:lesson-spring-period";
+    let output = newtonlab(&["lesson", scene, "--worksheet", &sheet_path]);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    assert!(
+        stdout(&output).is_empty(),
+        "nothing listed: {}",
+        stdout(&output)
+    );
+    let args = ["lesson", scene, "--worksheet", &keyed_path, "--key"];
+    let output = newtonlab(&args);
+    assert_eq!(output.status.code(), Some(0), "{}", stderr(&output));
+    let (sheet, keyed) = (
+        std::fs::read(&sheet).expect("the worksheet"),
+        std::fs::read(&keyed).expect("the worksheet with its key"),
+    );
+    assert!(
+        sheet.starts_with(b"%PDF-") && keyed.starts_with(b"%PDF-"),
+        "PDFs"
+    );
+    let (plain, with_key) = (pages(&sheet), pages(&keyed));
+    assert_eq!(
+        with_key,
+        plain.map(|n| n + 1),
+        "the key on a page of its own"
+    );
+    // Answers are still checked beside the worksheet.
+    let output = newtonlab(&[
+        "lesson",
+        scene,
+        "--worksheet",
+        &sheet_path,
+        "--answer",
+        "period=0.9935",
+    ]);
+    assert_eq!(stdout(&output), "period: right\n", "{}", stderr(&output));
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn a_worksheet_that_cannot_be_written_or_has_no_lesson_exits_2() {
+    let (_dir, plain) = scene_file("plain.toml", DROP.split("[lesson]").next().unwrap_or(""));
+    let output = newtonlab(&["lesson", &plain, "--worksheet", "w.pdf"]);
+    assert_refused(&output, "has no [lesson]", &"no lesson");
+    let output = newtonlab(&[
+        "lesson",
+        "example:lesson-spring-period",
+        "--worksheet",
+        "/nonexistent-folder/w.pdf",
+    ]);
+    assert_refused(&output, "cannot create the output file", &"no such folder");
+    let output = newtonlab(&["lesson", "example:lesson-spring-period", "--key"]);
+    assert_eq!(output.status.code(), Some(2), "--key needs --worksheet");
+}

@@ -30,7 +30,7 @@ use proptest::test_runner::{Config, RngAlgorithm, TestRng, TestRunner};
 
 /// Longest wall time for checking and running one scene: the run's work is bounded by
 /// the trajectory's limits, so only a hang takes longer.
-const PATIENCE: Duration = Duration::from_secs(60);
+const PATIENCE: Duration = Duration::from_mins(1);
 
 /// The scenes the fuzzing campaign broke (`issues`: "Unbreakable, round two"), kept so
 /// that every run of the harness tries them first.

@@ -6,7 +6,7 @@
 use std::f64::consts::PI;
 
 use egui_kittest::Harness;
-use egui_kittest::kittest::Queryable;
+use egui_kittest::kittest::{NodeT as _, Queryable};
 use newtonlab_app::App;
 
 use crate::common::{example_scene, tall_harness};
@@ -245,4 +245,83 @@ fn every_example_opens_with_its_description_and_lesson_drawn() {
             example.name
         );
     }
+}
+
+/// File → Export worksheet with answer key writes a PDF with one page more than the
+/// worksheet alone; a scene without a lesson has the item greyed.
+#[test]
+fn the_file_menu_exports_the_worksheet_and_its_key() {
+    let folder =
+        std::env::temp_dir().join(format!("newtonlab-worksheet-app-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).expect("a folder");
+    let mut harness = open("lesson-collisions");
+    let mut pages = Vec::new();
+    for (item, name) in [
+        ("Export worksheet…", "sheet.pdf"),
+        ("Export worksheet with answer key…", "keyed.pdf"),
+    ] {
+        harness.get_by_label("File").click();
+        harness.run();
+        harness.get_by_label(item).click();
+        harness.run();
+        harness.run();
+        for (label, text) in [
+            ("folder", folder.to_string_lossy().into_owned()),
+            ("file name", name.to_owned()),
+        ] {
+            harness.get_by_label(label).focus();
+            harness.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+            harness.get_by_label(label).type_text(&text);
+            harness.run();
+        }
+        harness.get_by_label("Export").click();
+        harness.run();
+        let bytes = std::fs::read(folder.join(name)).expect("the worksheet was written");
+        assert!(bytes.starts_with(b"%PDF-"), "a PDF");
+        let text = String::from_utf8_lossy(&bytes);
+        let count = text.split("/Count ").nth(1).and_then(|rest| {
+            let digits: String = rest.chars().take_while(char::is_ascii_digit).collect();
+            digits.parse::<usize>().ok()
+        });
+        pages.push(count.expect("a page count"));
+    }
+    assert_eq!(pages[1], pages[0] + 1, "the key on a page of its own");
+    let mut plain = tall_harness(App::new(example_scene("pendulum")));
+    plain.get_by_label("File").click();
+    plain.run();
+    assert!(
+        plain
+            .get_by_label("Export worksheet…")
+            .accesskit_node()
+            .is_disabled(),
+        "no lesson, no worksheet"
+    );
+    std::fs::remove_dir_all(&folder).ok();
+}
+
+/// The lessons are in Examples → Lessons; one opens in the student's view, and the next
+/// scene without a lesson brings the inspector back.
+#[test]
+fn a_lesson_opens_from_the_examples_menu_in_the_student_s_view() {
+    let mut harness = tall_harness(App::new(example_scene("pendulum")));
+    assert!(harness.state().panels.inspector, "the teacher's view");
+    for label in [
+        "Examples",
+        "Lessons",
+        "Lesson: a spring's period against its mass",
+    ] {
+        harness.get_by_label(label).click();
+        harness.run();
+    }
+    assert!(
+        harness.state().document.scene().lesson.is_some(),
+        "the lesson"
+    );
+    assert!(!harness.state().panels.inspector, "the student's view");
+    harness.get_by_label("A spring's period against its mass");
+    for label in ["Examples", "Two balls colliding off-centre"] {
+        harness.get_by_label(label).click();
+        harness.run();
+    }
+    assert!(harness.state().panels.inspector, "the teacher's view again");
 }

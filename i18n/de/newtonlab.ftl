@@ -375,6 +375,22 @@ link-not-base64 = Dieser Link ist beschädigt: seine Szene ist kein gültiges Ba
 link-too-large = Die Szene dieses Links ist entpackt größer als { $megabytes } MB; sie wurde nicht geöffnet.
 link-not-unpacked = Dieser Link ist beschädigt: seine Szene ließ sich nicht entpacken (wurde er gekürzt oder bearbeitet?).
 link-not-text = Dieser Link ist beschädigt: seine Szene ist kein Text.
+menu-share-link = Link teilen…
+menu-share-link-hint = Ein Link, der diese Szene samt Lektion in der Browser-Version öffnet: für eine E-Mail oder die Seite der Klasse
+menu-open-link = Link öffnen…
+menu-open-link-hint = Die Szene eines hier eingefügten NewtonLab-Links öffnen
+link-share-title = Link teilen
+link-open-title = Link öffnen
+link-address = Adresse der Browser-Version, die Ihre Klasse öffnet:
+link-address-hint = Wo der Ordner von scripts/build-web.sh bereitgestellt wird (ein Schulserver, GitHub Pages); die Szene steckt im Link selbst und geht nie an einen Server.
+link-length = { $length } Zeichen insgesamt
+link-copy = Link kopieren
+link-copied = Der Link zu dieser Szene ist in der Zwischenablage.
+link-paste = Einen Link zu einer NewtonLab-Szene einfügen:
+link-open = Öffnen
+link-untitled = Verlinkte Szene
+link-not-newtonlab = Das ist kein Link zu einer NewtonLab-Szene: Er hat keinen Teil #scene= oder #example=.
+link-scene-too-large = Diese Szene ist zu groß für einen Link ({ $length } Zeichen; höchstens { $limit }): Speichern Sie sie stattdessen als Datei.
 
 ## The scene checker (the physics crate): problems in a scene file or a typed value
 scene-the-scene = Szene

@@ -376,6 +376,22 @@ link-not-base64 = This link is damaged: its scene is not valid base64 (was it cu
 link-too-large = This link's scene is larger than { $megabytes } MB once unpacked; it was not opened.
 link-not-unpacked = This link is damaged: its scene could not be unpacked (was it cut short or edited?).
 link-not-text = This link is damaged: its scene is not text.
+menu-share-link = Share link…
+menu-share-link-hint = A link that opens this scene, its lesson included, in the browser build: to copy into an e-mail or a class page
+menu-open-link = Open link…
+menu-open-link-hint = Open the scene of a NewtonLab link pasted here
+link-share-title = Share link
+link-open-title = Open link
+link-address = Address of the browser build your class opens:
+link-address-hint = Where scripts/build-web.sh's folder is served (a school server, GitHub Pages); the scene travels in the link itself, never to a server.
+link-length = { $length } characters in all
+link-copy = Copy link
+link-copied = The link to this scene is on the clipboard.
+link-paste = Paste a link to a NewtonLab scene:
+link-open = Open
+link-untitled = Linked scene
+link-not-newtonlab = This is not a link to a NewtonLab scene: it carries no #scene= or #example= part.
+link-scene-too-large = This scene is too large for a link ({ $length } characters; the limit is { $limit }): save it as a file instead.
 
 ## The scene checker (the physics crate): problems in a scene file or a typed value
 scene-the-scene = scene

@@ -375,6 +375,22 @@ link-not-base64 = Este enlace está dañado: su escena no es base64 válido (¿s
 link-too-large = La escena de este enlace ocupa más de { $megabytes } MB descomprimida; no se abrió.
 link-not-unpacked = Este enlace está dañado: su escena no se pudo descomprimir (¿se cortó o se editó?).
 link-not-text = Este enlace está dañado: su escena no es texto.
+menu-share-link = Compartir enlace…
+menu-share-link-hint = Un enlace que abre esta escena, con su lección, en la versión para navegador: para un correo o la página de la clase
+menu-open-link = Abrir enlace…
+menu-open-link-hint = Abrir la escena de un enlace de NewtonLab pegado aquí
+link-share-title = Compartir enlace
+link-open-title = Abrir enlace
+link-address = Dirección de la versión para navegador que abre su clase:
+link-address-hint = Donde se sirve la carpeta de scripts/build-web.sh (un servidor del centro, GitHub Pages); la escena viaja en el propio enlace, nunca a un servidor.
+link-length = { $length } caracteres en total
+link-copy = Copiar enlace
+link-copied = El enlace a esta escena está en el portapapeles.
+link-paste = Pegue un enlace a una escena de NewtonLab:
+link-open = Abrir
+link-untitled = Escena enlazada
+link-not-newtonlab = Esto no es un enlace a una escena de NewtonLab: no lleva ninguna parte #scene= ni #example=.
+link-scene-too-large = Esta escena es demasiado grande para un enlace ({ $length } caracteres; el límite es { $limit }): guárdela como archivo.
 
 ## The scene checker (the physics crate): problems in a scene file or a typed value
 scene-the-scene = escena

@@ -203,3 +203,24 @@ test("the browser's physics matches the desktop's", async () => {
   }
   await context.close();
 });
+
+test("a lesson shared from the desktop opens in the browser in the student's view", async () => {
+  // The link the desktop makes (File → Share link, or `newtonlab link`), to this server.
+  const lesson = path.join(root, "examples/scenes/lesson-galileo-incline.toml");
+  const url = execFileSync(newtonlab, ["link", lesson, "--address", base]).toString().trim();
+  assert.ok(url.startsWith(base + "#scene="), url.slice(0, 60));
+  const { page, context, errors } = await open(url.slice(base.length));
+  const s = await status(page);
+  assert.equal(s.message, "", "no error");
+  assert.equal(s.lesson, "Galileo's incline", "the lesson came with the scene");
+  assert.equal(s.student_view, true, "the lesson beside the canvas, no inspector");
+  assert.equal(s.particles, 2);
+  assert.deepEqual(errors, []);
+  await context.close();
+
+  // A scene too large for a link is refused by the desktop, with the advice.
+  assert.throws(
+    () => execFileSync(newtonlab, ["link", "example:star-cluster"], { stdio: "pipe" }),
+    (e) => e.status === 2 && /save it as a file instead/.test(String(e.stderr)),
+  );
+});

@@ -58,6 +58,10 @@ pub enum Action {
     FieldView(Option<FieldKind>),
     /// Take away the tape, the probe and the protractor.
     ClearMeasurements,
+    /// Show the scene's share link to the browser build (desktop).
+    ShareLink,
+    /// Open a scene from a pasted link.
+    OpenLink,
     /// Show or hide the stopwatch.
     ToggleStopwatch,
     /// One time step back in the run.

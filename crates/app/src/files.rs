@@ -48,11 +48,13 @@ pub struct Dialog {
 }
 
 /// Something that would discard unsaved changes, waiting for the user's word.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Pending {
     New,
     Open,
     Example(&'static str),
+    /// A scene a pasted link carries.
+    Link(Box<physics::Scene>),
     Quit,
 }
 

@@ -39,6 +39,7 @@ pub use newtonlab_i18n as i18n;
 pub mod inspector;
 pub mod landmarks;
 pub mod lesson;
+pub mod links;
 pub mod picture;
 pub mod platform;
 pub mod plots;
@@ -148,6 +149,8 @@ pub struct App {
     pub experiments: experiments::Experiments,
     /// The lesson's answers and what Check said of them.
     pub lesson: lesson::LessonPanel,
+    /// The share-link or open-link window, when open.
+    pub link: Option<links::LinkWindow>,
     /// A CSV table waiting for the file dialog's answer (an experiment's results).
     table_ready: Option<String>,
     /// Where the desktop keeps them; none: not kept.
@@ -223,6 +226,7 @@ impl App {
             notice: None,
             experiments: experiments::Experiments::default(),
             lesson: lesson::LessonPanel::default(),
+            link: None,
             table_ready: None,
             #[cfg(not(target_arch = "wasm32"))]
             settings_file: None,
@@ -395,11 +399,9 @@ impl App {
                 }
             }
             Action::EditFromHere => self.edit_from_here(),
-            Action::ClearMeasurements => {
-                self.canvas.instruments.tape = None;
-                self.canvas.instruments.probe = None;
-                self.canvas.instruments.protractor = None;
-            }
+            Action::ClearMeasurements => self.canvas.instruments.clear(),
+            Action::ShareLink => self.open_link_window(true),
+            Action::OpenLink => self.open_link_window(false),
         }
     }
 
@@ -582,9 +584,7 @@ impl App {
         // Measurements, and what was said of the run, are of the scene they were taken in.
         self.announcer = announcer::Announcer::default();
         self.stopwatch = stopwatch::Stopwatch::shown_as(self.stopwatch.shown);
-        self.canvas.instruments.tape = None;
-        self.canvas.instruments.protractor = None;
-        self.canvas.instruments.probe = None;
+        self.canvas.instruments.clear();
         self.canvas.open(&scene);
         self.document = Document::new(scene);
         self.document.label = label;
@@ -707,10 +707,6 @@ impl App {
         }
     }
 
-    #[expect(
-        clippy::needless_pass_by_value,
-        reason = "a pending action is used up by doing it"
-    )]
     fn proceed(&mut self, pending: Pending) {
         match pending {
             // A new scene has no pairwise gravitation: between classroom-sized masses
@@ -727,6 +723,10 @@ impl App {
             #[cfg(target_arch = "wasm32")]
             Pending::Open => platform::web::pick_scene_file(),
             Pending::Example(name) => self.load_example(name),
+            Pending::Link(scene) => {
+                let title = scene.name.clone().unwrap_or_else(|| tr("link-untitled"));
+                self.replace(*scene, None, Some(title));
+            }
             Pending::Quit => {
                 // Leaving without the changes, on purpose: no copy to recover.
                 #[cfg(not(target_arch = "wasm32"))]
@@ -1018,6 +1018,7 @@ impl App {
             landmarks::step(ui.ctx(), forward);
         }
         self.stopwatch_window(ui);
+        self.link_window(ui);
         help::window(ui.ctx(), &mut self.panels.help);
         help::getting_started(ui.ctx(), &mut self.panels.getting_started);
         self.take_picture(ui);

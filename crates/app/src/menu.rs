@@ -78,6 +78,21 @@ impl App {
                             );
                         }
                     }
+                    #[cfg(not(target_arch = "wasm32"))]
+                    item(
+                        ui,
+                        &tr("menu-share-link"),
+                        &tr("menu-share-link-hint"),
+                        Action::ShareLink,
+                        true,
+                    );
+                    item(
+                        ui,
+                        &tr("menu-open-link"),
+                        &tr("menu-open-link-hint"),
+                        Action::OpenLink,
+                        true,
+                    );
                     #[cfg(target_arch = "wasm32")]
                     if ui
                         .button(tr("menu-copy-link"))

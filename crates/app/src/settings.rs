@@ -24,6 +24,9 @@ pub struct Settings {
     pub language: Option<String>,
     /// Whether the Getting started page was shown (on the first run, once).
     pub welcomed: bool,
+    /// Where the class's browser build is served, for share links made on the desktop;
+    /// none: `share::DEFAULT_ADDRESS`.
+    pub web_address: Option<String>,
 }
 
 impl Default for Settings {
@@ -33,6 +36,7 @@ impl Default for Settings {
             high_contrast: false,
             language: None,
             welcomed: false,
+            web_address: None,
         }
     }
 }
@@ -142,6 +146,7 @@ mod tests {
             high_contrast: true,
             language: Some("de".to_owned()),
             welcomed: true,
+            web_address: Some("https://school.example/lab/".to_owned()),
         };
         assert_eq!(Settings::parse(&settings.to_text()), settings);
         assert_eq!(settings.language(), Some(Language::German));

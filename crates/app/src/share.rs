@@ -15,10 +15,59 @@ pub const MAX_LINK: usize = 512 * 1024;
 /// The largest scene file a link may inflate to, bytes.
 pub const MAX_SCENE: usize = 8 * 1024 * 1024;
 
+/// Where links point until the user names the address of their browser build: the
+/// build served on this computer, as the README's `python3 -m http.server` serves it.
+pub const DEFAULT_ADDRESS: &str = "http://127.0.0.1:8080/";
+
 /// The fragment (without `#`) that carries `scene`.
 pub fn encode(scene: &Scene) -> String {
     let compressed = miniz_oxide::deflate::compress_to_vec(scene.to_toml().as_bytes(), 9);
     format!("scene={}", URL_SAFE_NO_PAD.encode(compressed))
+}
+
+/// The fragment that carries `scene`, if it is short enough to open.
+///
+/// # Errors
+/// A scene too large for a link (the 20,000-star cluster), with the advice to save it as
+/// a file instead: a link cut short would not open.
+pub fn fragment(scene: &Scene) -> Result<String, String> {
+    let fragment = encode(scene);
+    if fragment.len() > MAX_LINK {
+        #[expect(clippy::cast_precision_loss, reason = "a count of characters")]
+        return Err(tr_with(
+            "link-scene-too-large",
+            &[
+                ("length", Arg::Number(fragment.len() as f64)),
+                ("limit", Arg::Number(MAX_LINK as f64)),
+            ],
+        ));
+    }
+    Ok(fragment)
+}
+
+/// A link to `scene` in the browser build at `address` (a page's address; anything after
+/// a `#` in it is replaced).
+///
+/// # Errors
+/// As [`fragment`].
+pub fn link(address: &str, scene: &Scene) -> Result<String, String> {
+    Ok(join(address, &fragment(scene)?))
+}
+
+/// The link of `fragment` on the page at `address` (anything after a `#` replaced).
+pub fn join(address: &str, fragment: &str) -> String {
+    let page = address.trim().split('#').next().unwrap_or_default();
+    format!("{page}#{fragment}")
+}
+
+/// The scene a link, or a bare fragment, carries: the text pasted into File → Open link.
+///
+/// # Errors
+/// Why it opens nothing, in words: no `NewtonLab` link at all, or [`decode`]'s reasons.
+pub fn open(text: &str) -> Result<Scene, String> {
+    let text = text.trim();
+    let fragment = text.split_once('#').map_or(text, |(_, fragment)| fragment);
+    decode(fragment)?.ok_or_else(|| tr("link-not-newtonlab"))
 }
 
 /// The scene a fragment carries; `Ok(None)` for a fragment that is not a `NewtonLab`
@@ -135,6 +184,36 @@ mod tests {
                 .contains("does not exist"),
             "unknown example"
         );
+    }
+
+    #[test]
+    fn a_pasted_link_opens_whatever_page_it_names() {
+        let scene = physics::example("lesson-galileo-incline")
+            .unwrap()
+            .scene()
+            .unwrap();
+        let made = link("https://school.example/newtonlab/#old", &scene).unwrap();
+        assert!(
+            made.starts_with("https://school.example/newtonlab/#scene="),
+            "{made}"
+        );
+        assert_eq!(open(&format!("  {made}\n")).unwrap(), scene, "pasted");
+        assert_eq!(open(&encode(&scene)).unwrap(), scene, "a bare fragment");
+        assert_eq!(
+            open("http://127.0.0.1:8080/#example=collision").unwrap(),
+            physics::example("collision").unwrap().scene().unwrap()
+        );
+        for text in ["", "https://example.org/", "https://example.org/#top"] {
+            assert!(
+                open(text)
+                    .unwrap_err()
+                    .contains("not a link to a NewtonLab scene"),
+                "{text:?}"
+            );
+        }
+        let cluster = physics::example("star-cluster").unwrap().scene().unwrap();
+        let refused = link(DEFAULT_ADDRESS, &cluster).unwrap_err();
+        assert!(refused.contains("save it as a file"), "{refused}");
     }
 
     /// A kilobyte-sized link that would inflate to gigabytes stops at the limit.

@@ -154,7 +154,7 @@ impl WebApp {
         let app = &self.app;
         let scene = app.document.scene();
         let status = format!(
-            r#"{{"time":{},"playing":{},"particles":{},"name":{},"title":{},"message":{},"frames":{},"first_frame_ms":{}}}"#,
+            r#"{{"time":{},"playing":{},"particles":{},"name":{},"title":{},"message":{},"frames":{},"first_frame_ms":{},"lesson":{},"student_view":{}}}"#,
             app.time(),
             app.runner.playing,
             scene.particles.len(),
@@ -163,6 +163,9 @@ impl WebApp {
             json_string(app.files.message.as_deref().unwrap_or("")),
             self.frames,
             self.first_frame_ms.unwrap_or(0.0),
+            json_string(scene.lesson.as_ref().map_or("", |l| l.title.as_str())),
+            // The lesson beside the canvas, the inspector away: what a student sees.
+            scene.lesson.is_some() && app.panels.lesson && !app.panels.inspector,
         );
         STATUS.with(|s| *s.borrow_mut() = status);
     }
@@ -210,14 +213,7 @@ fn json_string(text: &str) -> String {
 /// A scene too large for a link (the 20,000-star cluster) is refused with the reason,
 /// rather than given a link that would not open.
 pub fn copy_link(scene: &Scene) -> Result<String, String> {
-    let fragment = share::encode(scene);
-    if fragment.len() > share::MAX_LINK {
-        return Err(format!(
-            "This scene is too large for a link ({} characters; the limit is {}): save it as a file instead.",
-            fragment.len(),
-            share::MAX_LINK
-        ));
-    }
+    let fragment = share::fragment(scene)?;
     browser::store(LINK_KEY, &fragment);
     let url = browser::set_fragment(&fragment);
     browser::copy_to_clipboard(&url);

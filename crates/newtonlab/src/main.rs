@@ -65,6 +65,14 @@ enum Command {
     /// Check a student's answers to a scene's lesson against the simulation, or list its
     /// questions.
     Lesson(lesson::LessonArgs),
+    /// Print a link that opens a scene, its lesson included, in the browser build.
+    Link {
+        /// A scene file (.toml or .json), or example:NAME for a built-in scene.
+        scene: String,
+        /// The address where the browser build is served.
+        #[arg(long, value_name = "URL", default_value = newtonlab_app::share::DEFAULT_ADDRESS)]
+        address: String,
+    },
     /// List the built-in example scenes.
     Examples,
     /// Measure simulation speed (steps per second, pair interactions per second).
@@ -144,6 +152,7 @@ fn main() -> ExitCode {
         Some(Command::Sweep(args)) => sweep::sweep(&args),
         Some(Command::Check { scene }) => check(&scene),
         Some(Command::Lesson(args)) => lesson::lesson(&args),
+        Some(Command::Link { scene, address }) => link(&scene, &address),
         Some(Command::Examples) => {
             examples();
             Ok(())
@@ -166,7 +175,7 @@ fn open_app(args: &AppArgs, language: Option<Language>) -> Result<(), Failure> {
             let scene = scene_source::load(source)?;
             let title = scene.name.clone();
             let mut app = newtonlab_app::App::new(scene);
-            if source.starts_with("example:") {
+            if source.starts_with("example:") || scene_source::is_link(source) {
                 app.document.label = title;
             } else {
                 app.document.mark_saved(source.clone());
@@ -198,6 +207,14 @@ fn open_app(args: &AppArgs, language: Option<Language>) -> Result<(), Failure> {
     });
     newtonlab_app::run_native(app)
         .map_err(|e| Failure::Simulation(say("cli-no-window", &[("error", &e.to_string())])))
+}
+
+/// Prints the share link to `source` in the browser build at `address`.
+fn link(source: &str, address: &str) -> Result<(), Failure> {
+    let scene = scene_source::load(source)?;
+    let link = newtonlab_app::share::link(address, &scene).map_err(Failure::Input)?;
+    out!("{link}");
+    Ok(())
 }
 
 fn check(source: &str) -> Result<(), Failure> {

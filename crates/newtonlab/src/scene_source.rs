@@ -1,4 +1,5 @@
-//! Where a scene comes from: a file path, or `example:NAME` for a built-in scene.
+//! Where a scene comes from: a file path, `example:NAME` for a built-in scene, or a
+//! share link (`https://…/#scene=…`, as File → Share link makes them).
 
 use physics::{LoadError, Scene, SceneFormat};
 
@@ -10,7 +11,17 @@ use newtonlab_i18n::tr_text as say;
 /// far beyond the app's and the CLI's reach anyway).
 const MAX_SCENE_BYTES: u64 = 100_000_000;
 
+/// Whether `source` is a share link rather than a file's name: it carries a scene or an
+/// example in its fragment, and no file has that name.
+pub(crate) fn is_link(source: &str) -> bool {
+    (source.contains("#scene=") || source.contains("#example="))
+        && !std::path::Path::new(source).exists()
+}
+
 pub(crate) fn load(source: &str) -> Result<Scene, Failure> {
+    if is_link(source) {
+        return newtonlab_app::share::open(source).map_err(Failure::Input);
+    }
     if let Some(name) = source.strip_prefix("example:") {
         let example = physics::example(name).ok_or_else(|| {
             let names: Vec<&str> = physics::EXAMPLES.iter().map(|e| e.name).collect();

@@ -227,3 +227,27 @@ fn a_worksheet_that_cannot_be_written_or_has_no_lesson_exits_2() {
     let output = newtonlab(&["lesson", "example:lesson-spring-period", "--key"]);
     assert_eq!(output.status.code(), Some(2), "--key needs --worksheet");
 }
+
+/// `newtonlab link` gives the link File → Share link gives; every command takes one where
+/// it takes a scene file, and reads the same scene from it; a scene too large is refused.
+#[test]
+fn a_lesson_travels_in_a_link_that_every_command_opens() {
+    let (_dir, path) = scene_file("drop.toml", DROP);
+    let made = newtonlab(&["link", &path, "--address", "https://school.example/lab/"]);
+    assert!(made.status.success(), "{}", stderr(&made));
+    let link = stdout(&made).trim().to_owned();
+    assert!(
+        link.starts_with("https://school.example/lab/#scene="),
+        "{link}"
+    );
+    let from_file = newtonlab(&["run", &path, "--until", "1", "--every", "0.5"]);
+    let from_link = newtonlab(&["run", &link, "--until", "1", "--every", "0.5"]);
+    assert_eq!(stdout(&from_link), stdout(&from_file), "the same rows");
+    let judged = answers(&link, &["fall_time=1 s"]);
+    assert_eq!(stdout(&judged).trim(), "fall_time: right");
+
+    let big = newtonlab(&["link", "example:star-cluster"]);
+    assert_refused(&big, "save it as a file instead", &"the star cluster");
+    let damaged = newtonlab(&["check", &link[..link.len() / 2]]);
+    assert_refused(&damaged, "damaged", &"a link cut in half");
+}

@@ -105,6 +105,16 @@ pub struct Instruments {
     pub readings: Vec<(Rect, String)>,
 }
 
+impl Instruments {
+    /// Takes away the tape, the protractor and the probe (a measurement is of the scene
+    /// it was taken in).
+    pub fn clear(&mut self) {
+        self.tape = None;
+        self.protractor = None;
+        self.probe = None;
+    }
+}
+
 /// Whether `mark` was laid by hand where nothing fixes it: a point that is no fixed end of
 /// a rod, string or spring and no ramp's end (those, and particles, are exact).
 fn is_free(mark: Mark, scene: &Scene) -> bool {

@@ -16,6 +16,7 @@ mod keyboard;
 mod languages;
 mod lesson_panel;
 mod lessons;
+mod links;
 mod readouts;
 mod run_controls;
 mod timeline;

@@ -451,6 +451,14 @@ scene-graph-no-tie = { $field }: '{ $text }' nennt keine Stange und keinen Faden
 scene-graph-no-link = { $field }: „{ $text }“ nennt keine Stange, keinen Faden und keine Feder; es gibt keine namens „{ $name }“
 scene-graph-time-on-y = y: die Zeit gehört auf die x-Achse (x = "t")
 scene-follow-unknown = follow: es gibt kein Teilchen '{ $name }'; einem Teilchennamen folgen, oder "all"
+scene-trigger-unknown = muss eines von { $words } sein, erhalten: '{ $got }'
+scene-instrument-ends = hat { $least } bis { $most } Enden, jedes ein Punkt [x, y] oder der Name eines Teilchens; erhalten: { $got }
+scene-count-not-whole = muss eine ganze Zahl ab 1 sein (das wievielte Ereignis), erhalten: { $got }
+scene-instrument-no-particle = { $field }: es gibt kein Teilchen namens '{ $name }', dem ein Ende folgen könnte
+scene-stopwatch-stop-on-play = stop: Play kann die Stoppuhr starten, nicht anhalten
+scene-stopwatch-gate-no-tape = { $field }: die Lichtschranke ist die Strecke des Maßbands; legen Sie ein Maßband in [instruments]
+scene-stopwatch-no-event = event: eine Stoppuhr, die ein Ereignis startet oder anhält, braucht das Ereignis (bob.x crosses 0 up)
+scene-stopwatch-count = { $field } muss eine ganze Zahl ab 1 sein
 scene-quantity-of-particle = „{ $text }“: eine Größe eines Teilchens ist eine von { $keys }; die einer Stange, eines Fadens oder einer Feder ist angle oder length, die einer Stange oder eines Fadens auch tension
 scene-not-a-quantity = „{ $text }“ ist keine Größe: schreiben Sie t, NAME.x (oder .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy; turning: .angle, .spin), STANGE.angle (oder .length, .tension) oder eine von { $keys }
 quantity-no-particle = „{ $text }“: es gibt kein Teilchen namens „{ $name }“ (die Teilchen: { $names })

@@ -452,6 +452,14 @@ scene-graph-no-tie = { $field }: '{ $text }' names no rod or string; there is no
 scene-graph-no-link = { $field }: '{ $text }' names no rod, string or spring; there is none named '{ $name }'
 scene-graph-time-on-y = y: time goes on the x axis (x = "t")
 scene-follow-unknown = follow: there is no particle '{ $name }'; follow a particle's name, or "all"
+scene-trigger-unknown = must be one of { $words }, got '{ $got }'
+scene-instrument-ends = takes { $least } to { $most } ends, each a point [x, y] or a particle's name; got { $got }
+scene-count-not-whole = must be a whole number from 1 (which occurrence), got { $got }
+scene-instrument-no-particle = { $field }: there is no particle named '{ $name }' for an end to follow
+scene-stopwatch-stop-on-play = stop: Play can start the stopwatch, not stop it
+scene-stopwatch-gate-no-tape = { $field }: the light gate is the tape measure's segment; lay a tape in [instruments]
+scene-stopwatch-no-event = event: a stopwatch started or stopped by an event needs the event (bob.x crosses 0 up)
+scene-stopwatch-count = { $field } must be a whole number from 1
 scene-quantity-of-particle = '{ $text }': a particle's quantity is one of { $keys }; a rod's, string's or spring's is angle or length, and a rod's or string's also tension
 scene-not-a-quantity = '{ $text }' is not a quantity: write t, NAME.x (or .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy; turning: .angle, .spin), ROD.angle (or .length, .tension), or one of { $keys }
 quantity-no-particle = '{ $text }': there is no particle named '{ $name }' (the particles: { $names })

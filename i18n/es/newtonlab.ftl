@@ -451,6 +451,14 @@ scene-graph-no-tie = { $field }: '{ $text }' no nombra ninguna varilla ni cuerda
 scene-graph-no-link = { $field }: «{ $text }» no nombra ninguna barra, cuerda ni muelle; no hay ninguno llamado «{ $name }»
 scene-graph-time-on-y = y: el tiempo va en el eje x (x = "t")
 scene-follow-unknown = follow: no hay ninguna partícula '{ $name }'; seguir el nombre de una partícula, o "all"
+scene-trigger-unknown = debe ser uno de { $words }, se obtuvo '{ $got }'
+scene-instrument-ends = lleva de { $least } a { $most } extremos, cada uno un punto [x, y] o el nombre de una partícula; se obtuvo { $got }
+scene-count-not-whole = debe ser un número entero desde 1 (qué ocurrencia), se obtuvo { $got }
+scene-instrument-no-particle = { $field }: no hay ninguna partícula llamada '{ $name }' a la que siga un extremo
+scene-stopwatch-stop-on-play = stop: Play puede poner en marcha el cronómetro, no pararlo
+scene-stopwatch-gate-no-tape = { $field }: la barrera de luz es el segmento de la cinta métrica; ponga una cinta en [instruments]
+scene-stopwatch-no-event = event: un cronómetro que arranca o para con un evento necesita el evento (bob.x crosses 0 up)
+scene-stopwatch-count = { $field } debe ser un número entero desde 1
 scene-quantity-of-particle = «{ $text }»: una magnitud de una partícula es una de { $keys }; la de una barra, cuerda o muelle es angle o length, y la de una barra o cuerda también tension
 scene-not-a-quantity = «{ $text }» no es una magnitud: escriba t, NOMBRE.x (o .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy; turning: .angle, .spin), BARRA.angle (o .length, .tension) o una de { $keys }
 quantity-no-particle = «{ $text }»: no hay ninguna partícula llamada «{ $name }» (las partículas: { $names })

@@ -149,6 +149,12 @@ impl Document {
         self.scene.view = Some(view);
     }
 
+    /// Sets the scene's `[instruments]` (when saving or sharing) without an undo step:
+    /// laying a tape is a measurement, not an edit.
+    pub fn set_instruments(&mut self, instruments: Option<physics::Instruments>) {
+        self.scene.instruments = instruments;
+    }
+
     /// A name not used by any object, `prefix` followed by the smallest free number.
     pub fn unused_name(&self, prefix: &str) -> String {
         let scene = &self.scene;

@@ -838,7 +838,7 @@ fn section_kind(scene: &Scene, section: Section) -> &'static str {
         Section::Body(_) => "body",
         Section::Graph(_) => "graph",
         Section::Series(_) => "series",
-        Section::Root | Section::View => "scene",
+        Section::Root | Section::View | Section::Instruments | Section::Stopwatch => "scene",
         Section::Lesson | Section::Slider(_) | Section::Question(_) => "lesson",
     }
 }

@@ -197,6 +197,19 @@ pub struct App {
     autosave_failed: bool,
 }
 
+/// The stopwatch `scene` keeps, or a new one (its window `shown` or not: a new scene keeps
+/// the window, not the reading).
+fn stopwatch_of(scene: &Scene, shown: bool) -> stopwatch::Stopwatch {
+    scene
+        .instruments
+        .as_ref()
+        .and_then(|i| i.stopwatch.as_ref())
+        .map_or_else(
+            || stopwatch::Stopwatch::shown_as(shown),
+            stopwatch::Stopwatch::from_saved,
+        )
+}
+
 impl Default for App {
     fn default() -> Self {
         let mut app = Self::new(Scene::new());
@@ -210,6 +223,7 @@ impl App {
     pub fn new(scene: Scene) -> Self {
         let mut canvas = canvas::Canvas::default();
         canvas.open(&scene);
+        let stopwatch = stopwatch_of(&scene, false);
         // A lesson opens in the student's view: the lesson beside the canvas, no inspector.
         let panels = Panels {
             inspector: scene.lesson.is_none(),
@@ -220,7 +234,7 @@ impl App {
             runner: Runner::default(),
             canvas,
             graphs: Graphs::default(),
-            stopwatch: stopwatch::Stopwatch::default(),
+            stopwatch,
             settings: settings::Settings::default(),
             announcer: announcer::Announcer::default(),
             notice: None,
@@ -583,8 +597,7 @@ impl App {
         self.runner = Runner::default();
         // Measurements, and what was said of the run, are of the scene they were taken in.
         self.announcer = announcer::Announcer::default();
-        self.stopwatch = stopwatch::Stopwatch::shown_as(self.stopwatch.shown);
-        self.canvas.instruments.clear();
+        self.stopwatch = stopwatch_of(&scene, self.stopwatch.shown);
         self.canvas.open(&scene);
         self.document = Document::new(scene);
         self.document.label = label;
@@ -657,9 +670,19 @@ impl App {
         self.write_scene(path);
     }
 
+    /// Puts the camera and the instruments into the scene, as it is saved or shared.
+    pub(crate) fn keep_layout(&mut self) {
+        self.document.set_view(self.canvas.scene_view());
+        let scene = self.document.scene();
+        let mut instruments = self.canvas.instruments.kept(scene);
+        instruments.stopwatch = self.stopwatch.saved(scene, instruments.tape.is_some());
+        self.document
+            .set_instruments(Some(instruments).filter(|i| !i.is_empty()));
+    }
+
     /// Writes the scene to `path`, whatever is there.
     fn write_scene(&mut self, path: &str) {
-        self.document.set_view(self.canvas.scene_view());
+        self.keep_layout();
         let text = self
             .document
             .scene()

@@ -38,6 +38,9 @@ impl App {
     }
 
     pub(crate) fn open_link_window(&mut self, share: bool) {
+        if share {
+            self.keep_layout();
+        }
         self.link = Some(if share {
             LinkWindow::Share(share::fragment(self.document.scene()))
         } else {

@@ -12,53 +12,26 @@ use physics::ImpactRecord;
 
 use crate::watching::{Cue, Wanted};
 
-/// What starts or stops the stopwatch.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Trigger {
-    /// The Start and Stop buttons.
-    Hand,
-    /// The run starting to play (a start only).
-    Play,
-    /// An impact of any two things.
-    Impact,
-    /// A particle's centre crossing the tape measure's segment.
-    Gate,
-    /// The typed event.
-    Event,
+/// What starts or stops the stopwatch: the scene format's words
+/// (`[instruments.stopwatch]`), so that a scene keeps them.
+pub use physics::Trigger;
+
+/// A trigger in the user's words.
+pub fn label(trigger: Trigger) -> String {
+    crate::i18n::tr(match trigger {
+        Trigger::Hand => "stopwatch-by-hand",
+        Trigger::Play => "stopwatch-on-play",
+        Trigger::Impact => "stopwatch-impact",
+        Trigger::Gate => "stopwatch-gate",
+        Trigger::Event => "stopwatch-event",
+    })
 }
 
-impl Trigger {
-    /// What may start it.
-    pub const STARTS: [Self; 5] = [
-        Self::Hand,
-        Self::Play,
-        Self::Impact,
-        Self::Gate,
-        Self::Event,
-    ];
-    /// What may stop it.
-    pub const STOPS: [Self; 4] = [Self::Hand, Self::Impact, Self::Gate, Self::Event];
-
-    pub fn label(self) -> String {
-        crate::i18n::tr(match self {
-            Self::Hand => "stopwatch-by-hand",
-            Self::Play => "stopwatch-on-play",
-            Self::Impact => "stopwatch-impact",
-            Self::Gate => "stopwatch-gate",
-            Self::Event => "stopwatch-event",
-        })
-    }
-
-    /// Whether it comes in numbered occurrences (the first, the third).
-    pub fn counts(self) -> bool {
-        matches!(self, Self::Impact | Self::Gate | Self::Event)
-    }
-
-    fn of(cue: Cue) -> Self {
-        match cue {
-            Cue::Event => Self::Event,
-            Cue::Gate => Self::Gate,
-        }
+/// The trigger a watched instant is.
+fn trigger_of(cue: Cue) -> Trigger {
+    match cue {
+        Cue::Event => Trigger::Event,
+        Cue::Gate => Trigger::Gate,
     }
 }
 
@@ -137,6 +110,51 @@ impl Stopwatch {
         }
     }
 
+    /// The stopwatch a scene keeps: shown, set as it was saved, and armed when anything
+    /// but a hand starts it, so that the run's first instants count.
+    pub fn from_saved(saved: &physics::Stopwatch) -> Self {
+        Self {
+            shown: true,
+            start_on: saved.start,
+            start_nth: saved.start_count,
+            stop_on: saved.stop,
+            stop_nth: saved.stop_count,
+            event: saved.event.clone().unwrap_or_default(),
+            lap_mode: saved.laps,
+            state: if saved.start == Trigger::Hand {
+                State::Stopped
+            } else {
+                State::Armed
+            },
+            ..Self::default()
+        }
+    }
+
+    /// What a scene keeps of it: its settings, when it is shown or set to anything but
+    /// the hand. An event that does not read on `scene`, or a gate without a tape
+    /// (`has_tape`), is kept as the hand (the window shows why meanwhile): a file that
+    /// would not open again is never written.
+    pub fn saved(&self, scene: &physics::Scene, has_tape: bool) -> Option<physics::Stopwatch> {
+        let event = self.event.trim();
+        let event_reads = physics::Event::parse(event)
+            .and_then(|e| e.quantity.check_in(scene))
+            .is_ok();
+        let kept = |trigger: Trigger| match trigger {
+            Trigger::Event if !event_reads => Trigger::Hand,
+            Trigger::Gate if !has_tape => Trigger::Hand,
+            other => other,
+        };
+        let saved = physics::Stopwatch {
+            start: kept(self.start_on),
+            start_count: self.start_nth.max(1),
+            stop: kept(self.stop_on),
+            stop_count: self.stop_nth.max(1),
+            event: event_reads.then(|| event.to_owned()),
+            laps: self.lap_mode,
+        };
+        (self.shown || saved != physics::Stopwatch::default()).then_some(saved)
+    }
+
     /// Sets it to time a full period at the light gate: the 1st to the 3rd crossing of
     /// the tape (a pendulum crosses a gate through its pivot twice a period).
     pub fn period_at_the_gate(&mut self) {
@@ -212,7 +230,7 @@ impl Stopwatch {
             .iter()
             .skip(self.seen)
             .map(|i| (Trigger::Impact, i.time))
-            .chain(cues.iter().map(|&(cue, t)| (Trigger::of(cue), t)))
+            .chain(cues.iter().map(|&(cue, t)| (trigger_of(cue), t)))
             .collect();
         self.seen = impacts.len();
         instants.sort_by(|a, b| a.1.total_cmp(&b.1));

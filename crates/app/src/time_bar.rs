@@ -312,10 +312,10 @@ fn triggers(ui: &mut Ui, watch: &mut stopwatch::Stopwatch) {
         ui.horizontal(|ui| {
             let text = ui.label(tr(salt));
             egui::ComboBox::from_id_salt(salt)
-                .selected_text(trigger.label())
+                .selected_text(stopwatch::label(*trigger))
                 .show_ui(ui, |ui| {
                     for &choice in choices {
-                        ui.selectable_value(trigger, choice, choice.label());
+                        ui.selectable_value(trigger, choice, stopwatch::label(choice));
                     }
                 })
                 .response

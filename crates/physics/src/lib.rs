@@ -115,9 +115,10 @@ pub use scene::error::{LoadError, Problem};
 pub use scene::fields;
 pub use scene::format::SceneFormat;
 pub use scene::{
-    Body, Bounds, Color, Endpoint, FieldRef, Follow, Graph, Lesson, Moments, PairForces, Particle,
-    Question, Ramp, Rule, Scene, Section, Series, Settings, Shape, Slider, Spring, Tie, TieKind,
-    Vector, Verdict, View, World, check_value, lesson, moments,
+    Body, Bounds, Color, Endpoint, FieldRef, Follow, Graph, Instruments, Lesson, Moments,
+    PairForces, Particle, Protractor, Question, Ramp, Rule, Scene, Section, Series, Settings,
+    Shape, Slider, Spring, Stopwatch, Tie, TieKind, Trigger, Vector, Verdict, View, World,
+    check_value, lesson, moments,
 };
 pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};
 pub use trajectory::{

@@ -10,6 +10,7 @@ mod edit;
 pub mod error;
 pub mod fields;
 pub mod format;
+pub mod instruments;
 pub mod lesson;
 mod presentation;
 mod validate;
@@ -21,6 +22,7 @@ pub(crate) use newtonlab_i18n::tr_text as say;
 
 pub use body::{Body, Moments, Shape, moments};
 pub use error::{FieldRef, Section};
+pub use instruments::{Instruments, Protractor, Stopwatch, Trigger};
 pub use lesson::{Lesson, Question, Slider, Verdict};
 pub use presentation::{Follow, Graph, Series, View};
 pub use validate::{Rule, check_value};
@@ -704,6 +706,8 @@ pub struct Scene {
     pub view: Option<View>,
     /// What the scene teaches (`[lesson]`).
     pub lesson: Option<Lesson>,
+    /// The app's measuring instruments where the scene was saved (`[instruments]`).
+    pub instruments: Option<Instruments>,
 }
 
 impl Scene {

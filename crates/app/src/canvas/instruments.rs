@@ -14,7 +14,7 @@
 //! tenth of a grid step (Shift: a hundredth).
 
 use egui::{Align2, Color32, FontId, Pos2, Rect, Stroke, Vec2};
-use physics::{DVec2, Scene, field_at};
+use physics::{DVec2, Endpoint, Scene, field_at};
 
 use super::View;
 use crate::format;
@@ -112,6 +112,57 @@ impl Instruments {
         self.tape = None;
         self.protractor = None;
         self.probe = None;
+    }
+
+    /// Lays out the tape, protractor and probe `scene` keeps (`[instruments]`), or
+    /// clears them.
+    pub fn lay_out(&mut self, scene: &Scene) {
+        self.clear();
+        let Some(saved) = &scene.instruments else {
+            return;
+        };
+        let mark = |end: &Endpoint| match end {
+            Endpoint::Point(p) => Some(Mark::Point(p.to_dvec2())),
+            Endpoint::Particle(name) => scene
+                .particles
+                .iter()
+                .position(|p| p.name == *name)
+                .map(Mark::Particle),
+        };
+        self.tape = saved
+            .tape
+            .as_ref()
+            .and_then(|[a, b]| Some((mark(a)?, mark(b)?)));
+        self.protractor = saved.protractor.as_ref().and_then(|p| {
+            let second = p.second_arm.as_ref().and_then(mark);
+            Some((mark(&p.vertex)?, mark(&p.arm)?, second))
+        });
+        self.probe = saved.probe;
+    }
+
+    /// The tape, protractor and probe as `scene` keeps them; the stopwatch's part is the
+    /// app's to add. An end on a particle the scene no longer has is left out with its
+    /// instrument.
+    pub fn kept(&self, scene: &Scene) -> physics::Instruments {
+        let end = |mark: Mark| match mark {
+            Mark::Point(p) => Some(Endpoint::Point(physics::Vector::Cartesian(p))),
+            Mark::Particle(i) => scene
+                .particles
+                .get(i)
+                .map(|p| Endpoint::Particle(p.name.clone())),
+        };
+        physics::Instruments {
+            tape: self.tape.and_then(|(a, b)| Some([end(a)?, end(b)?])),
+            protractor: self.protractor.and_then(|(vertex, arm, second)| {
+                Some(physics::Protractor {
+                    vertex: end(vertex)?,
+                    arm: end(arm)?,
+                    second_arm: second.and_then(end),
+                })
+            }),
+            probe: self.probe,
+            stopwatch: None,
+        }
     }
 }
 

@@ -304,6 +304,7 @@ impl Canvas {
 
     /// Frames a scene that was just opened as its file says (`[view]`), or fits it.
     pub fn open(&mut self, scene: &Scene) {
+        self.instruments.lay_out(scene);
         self.follow = scene.view.as_ref().and_then(|v| v.follow.clone());
         // The toggles as the scene was saved; those it does not say, as they were.
         if let Some(view) = &scene.view {

@@ -199,6 +199,13 @@ fn start_and_read_the_period(harness: &mut Harness<'_, App>) {
         State::Armed,
         "armed before Play"
     );
+    play_the_period(harness);
+}
+
+/// A swing and a half played: the stopwatch has stopped on the gate's third crossing and
+/// reads the 60° pendulum's period, 4 √(L/g) K(sin 30°) with L = 2 m, to 1e-6 s.
+fn play_the_period(harness: &mut Harness<'_, App>) {
+    use newtonlab_app::stopwatch::State;
     play_frames(harness, 45);
     let watch = &harness.state().stopwatch;
     assert_eq!(watch.state, State::Stopped, "stopped by the third crossing");
@@ -359,4 +366,84 @@ fn the_protractor_reads_the_angle_between_its_arms() {
     harness.run();
     let said = &harness.state().announcer.text;
     assert!(said.contains(&full) && said.contains("copied"), "{said}");
+}
+
+/// A scene keeps its instruments: the pendulum saved with a light gate down from the
+/// pivot, a protractor from the vertical to the bob and the stopwatch set for a period
+/// reopens with them laid out, the watch shown and armed, so that Play alone reads the
+/// period, 4 √(L/g) K(sin 30°), to 1e-6 s. A share link carries them too.
+#[test]
+fn a_saved_scene_reopens_with_its_instruments_in_place_and_the_watch_armed() {
+    use newtonlab_app::canvas::Mark;
+    use newtonlab_app::stopwatch::{State, Trigger};
+    let mut teacher = harness(App::new(example_scene("pendulum")));
+    let bob = teacher
+        .state()
+        .document
+        .scene()
+        .particles
+        .iter()
+        .position(|p| p.name == "bob")
+        .unwrap();
+    {
+        let app = teacher.state_mut();
+        let instruments = &mut app.canvas.instruments;
+        instruments.tape = Some((Mark::Point(DVec2::ZERO), Mark::Point(DVec2::new(0.0, -3.0))));
+        instruments.protractor = Some((
+            Mark::Point(DVec2::ZERO),
+            Mark::Point(DVec2::new(0.0, -1.0)),
+            Some(Mark::Particle(bob)),
+        ));
+        app.stopwatch.shown = true;
+        app.stopwatch.period_at_the_gate();
+    }
+    let folder = std::env::temp_dir().join(format!("newtonlab-keep-{}", std::process::id()));
+    std::fs::create_dir_all(&folder).unwrap();
+    let path = folder.join("pendulum.toml");
+    teacher.state_mut().save_path(path.to_str().unwrap());
+    let text = std::fs::read_to_string(&path).unwrap();
+    std::fs::remove_dir_all(&folder).ok();
+    assert!(
+        text.contains("protractor = [[0.0, 0.0], [0.0, -1.0], \"bob\"]"),
+        "{text}"
+    );
+    assert!(
+        text.contains("[instruments.stopwatch]\nstart = \"gate\""),
+        "{text}"
+    );
+
+    let mut student = harness(App::new(Scene::from_toml(&text).unwrap()));
+    let app = student.state();
+    assert_eq!(
+        app.canvas.instruments.tape,
+        teacher.state().canvas.instruments.tape
+    );
+    assert_eq!(
+        app.canvas.instruments.protractor.map(|p| p.2),
+        Some(Some(Mark::Particle(bob))),
+        "the arm follows the bob"
+    );
+    let watch = &app.stopwatch;
+    assert!(watch.shown, "the stopwatch is out");
+    assert_eq!(watch.state, State::Armed, "armed: Play is enough");
+    assert_eq!(
+        (watch.start_on, watch.stop_on, watch.stop_nth),
+        (Trigger::Gate, Trigger::Gate, 3)
+    );
+    play_the_period(&mut student);
+
+    // What cannot be kept is kept as the hand: an event that does not read.
+    let app = teacher.state_mut();
+    app.stopwatch.stop_on = Trigger::Event;
+    app.stopwatch.event = "bob.x crosses".to_owned();
+    app.perform(newtonlab_app::Action::ShareLink);
+    let Some(newtonlab_app::links::LinkWindow::Share(Ok(fragment))) = app.link.clone() else {
+        panic!("a link");
+    };
+    let shared = newtonlab_app::share::open(&fragment).unwrap();
+    let kept = shared.instruments.and_then(|i| i.stopwatch).unwrap();
+    assert_eq!(
+        (kept.start, kept.stop, kept.event),
+        (Trigger::Gate, Trigger::Hand, None)
+    );
 }

@@ -111,7 +111,13 @@ fn a_spring_period_and_top_speed_from_theory_are_right() {
         1,
         &format!("{:.4}", 2.0 * PI * (m / k).sqrt() + 0.05),
     );
-    harness.get_by_label_contains("Close");
+    let said = verdicts(&harness);
+    assert!(
+        said[0]
+            .as_deref()
+            .is_some_and(|v| v.starts_with("Verdict(Close")),
+        "{said:?}"
+    );
 }
 
 /// The velocities after a collision of restitution `e`: cart 1 of mass `m1` at `v` into
@@ -324,4 +330,40 @@ fn a_lesson_opens_from_the_examples_menu_in_the_student_s_view() {
         harness.run();
     }
     assert!(harness.state().panels.inspector, "the teacher's view again");
+}
+
+/// The lessons' instruments come with them: Galileo's stopwatch, armed, starts on Play
+/// and stops when the disc has rolled 2 m, at √(2 d / a) with a = g sin 20° / 1.5; the
+/// spring's takes a lap at each highest point, each a period 2π √(m / k). Both to 1e-6 s
+/// (the events are located inside the step; the rolling and the spring are exact to far
+/// better).
+#[test]
+fn the_lessons_stopwatches_time_what_their_questions_ask() {
+    use newtonlab_app::stopwatch::State;
+    let mut harness = open("lesson-galileo-incline");
+    assert!(
+        harness.state().canvas.instruments.tape.is_some(),
+        "the 2 m tape"
+    );
+    assert_eq!(harness.state().stopwatch.state, State::Armed);
+    crate::common::play_frames(&mut harness, 30);
+    let watch = &harness.state().stopwatch;
+    assert_eq!(watch.state, State::Stopped, "stopped at 2 m");
+    // The event's 2.2297 m is the 2 m mark rounded: the distance it means along the slope.
+    let distance = (2.2297 - 0.350_311_814_900_906_24) / 20_f64.to_radians().cos();
+    let time = (2.0 * distance / (20_f64.to_radians().sin() * G / 1.5)).sqrt();
+    assert!(
+        (watch.reading - time).abs() < 1e-6,
+        "{} s, theory {time} s",
+        watch.reading
+    );
+
+    let mut harness = open("lesson-spring-period");
+    crate::common::play_frames(&mut harness, 60);
+    let watch = &harness.state().stopwatch;
+    let period = 2.0 * PI * (0.5_f64 / 20.0).sqrt();
+    assert!(watch.laps.len() >= 3, "{:?}", watch.laps);
+    for lap in watch.laps.iter().chain(watch.mean_lap().as_ref()) {
+        assert!((lap - period).abs() < 1e-6, "{lap} s, theory {period} s");
+    }
 }

@@ -66,11 +66,16 @@ fn a_lesson_shared_from_the_desktop_opens_from_its_link_in_the_students_view() {
     let mut student = harness(App::new(one_ball()));
     paste_link(&mut student, &link);
     let app = student.state();
+    // The scene as the teacher left it: the lesson, the instruments, the camera (which
+    // also says the canvas's toggles).
+    let mut shared = app.document.scene().clone();
+    assert_eq!(shared.view.as_ref().and_then(|v| v.width), Some(14.0));
+    shared.view.clone_from(&lesson.view);
     assert_eq!(
-        app.document.scene(),
-        &lesson,
-        "the same scene, lesson included"
+        shared, lesson,
+        "the same scene, lesson and instruments included"
     );
+    assert!(app.canvas.instruments.tape.is_some(), "the tape laid out");
     assert!(
         app.panels.lesson && !app.panels.inspector,
         "in the student's view"

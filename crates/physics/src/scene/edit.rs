@@ -85,7 +85,11 @@ impl Scene {
     pub fn remove(&mut self, section: Section) {
         match section {
             Section::Particle(i) if i < self.particles.len() => {
-                let name = self.particles.remove(i).name;
+                let particle = self.particles.remove(i);
+                let name = particle.name;
+                if let Some(instruments) = &mut self.instruments {
+                    instruments.unpin(&name, particle.position);
+                }
                 let attached = |end: &Endpoint| matches!(end, Endpoint::Particle(n) if *n == name);
                 self.springs
                     .retain(|s| !attached(&s.from) && !attached(&s.to));

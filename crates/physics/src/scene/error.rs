@@ -36,6 +36,10 @@ pub enum Section {
     Slider(usize),
     /// The lesson's question at this index (`[[lesson.question]]`).
     Question(usize),
+    /// `[instruments]`.
+    Instruments,
+    /// `[instruments.stopwatch]`.
+    Stopwatch,
 }
 
 /// A field of a section: where a problem is, for the app's inspector and for locating

@@ -179,6 +179,9 @@ impl Scene {
     /// Renames every reference to the particle, rod or string `old` in the graphs, the
     /// series and the view, as renaming a particle does for its springs.
     pub(super) fn rename_in_presentation(&mut self, old: &str, new: &str) {
+        if let Some(instruments) = &mut self.instruments {
+            instruments.rename(old, new);
+        }
         let rename = |quantity: &mut Quantity| match quantity {
             Quantity::Particle(name, _) | Quantity::Link(name, _) if name == old => {
                 new.clone_into(name);

@@ -36,6 +36,7 @@ impl Scene {
         check.coincident();
         check.view();
         check.lesson();
+        check.instruments();
         check.problems
     }
 
@@ -72,6 +73,8 @@ impl Scene {
             ),
             Section::Series(i) => numbered("series", i),
             Section::View => "[view]".to_owned(),
+            Section::Instruments => "[instruments]".to_owned(),
+            Section::Stopwatch => "[instruments.stopwatch]".to_owned(),
             Section::Lesson => "[lesson]".to_owned(),
             Section::Slider(i) => numbered("slider", i),
             Section::Question(i) => named(
@@ -598,6 +601,17 @@ impl Checker<'_> {
             return;
         };
         for (section, field, why) in lesson.problems(self.scene) {
+            self.report(section, field, &why);
+        }
+    }
+
+    /// The instruments' ends follow particles that exist; the stopwatch's triggers have
+    /// what they need ([`super::Instruments::problems`]).
+    fn instruments(&mut self) {
+        let Some(instruments) = &self.scene.instruments else {
+            return;
+        };
+        for (section, field, why) in instruments.problems(self.scene) {
             self.report(section, field, &why);
         }
     }

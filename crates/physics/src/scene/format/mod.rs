@@ -13,6 +13,7 @@
 //! lesson; what can be wrong is
 //! `super::error`.
 
+mod instruments;
 mod lesson;
 mod read;
 mod slices;

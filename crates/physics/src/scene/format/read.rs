@@ -61,6 +61,7 @@ pub(super) const ROOT_KEYS: &[&str] = &[
     "series",
     "view",
     "lesson",
+    "instruments",
 ];
 pub(super) const GRAPH_KEYS: &[&str] = &["title", "x", "y"];
 pub(super) const SERIES_KEYS: &[&str] =
@@ -289,6 +290,9 @@ impl<'t> Reader<'t> {
         }
         if let Some(node) = top.get("lesson") {
             scene.lesson = Some(self.lesson(node));
+        }
+        if let Some(node) = top.get("instruments") {
+            scene.instruments = Some(self.instruments(node));
         }
         self.close(&top, ROOT_KEYS);
         scene
@@ -648,6 +652,9 @@ fn section_node<'n>(root: &'n Node<'n>, section: Section) -> Option<&'n Node<'n>
         Section::World => get("world"),
         Section::Simulation => get("simulation"),
         Section::View => get("view"),
+        Section::Instruments | Section::Stopwatch => {
+            super::instruments::instruments_node(get("instruments")?, section)
+        }
         Section::Lesson | Section::Slider(_) | Section::Question(_) => {
             super::lesson::lesson_node(get("lesson")?, section)
         }

@@ -16,6 +16,7 @@ impl Scene {
                 Header::Table(name) => write!(out, "\n[{name}]\n"),
                 Header::ArrayItem(name) => write!(out, "\n[[{name}]]\n"),
                 Header::Nested(table, name) => write!(out, "\n[[{table}.{name}]]\n"),
+                Header::Sub(table, name) => write!(out, "\n[{table}.{name}]\n"),
             };
             for (key, value) in &section.entries {
                 let _ = writeln!(out, "{key} = {}", value.to_toml());
@@ -50,6 +51,14 @@ impl Scene {
                         if let Value::Array(list) = list {
                             list.push(Value::Object(entries));
                         }
+                    }
+                }
+                Header::Sub(table, name) => {
+                    let parent = root
+                        .entry(table.to_owned())
+                        .or_insert_with(|| Value::Object(Map::new()));
+                    if let Value::Object(parent) = parent {
+                        parent.insert(name.to_owned(), Value::Object(entries));
                     }
                 }
                 Header::ArrayItem(name) => {
@@ -130,6 +139,9 @@ impl Scene {
             });
         }
         sections.extend(self.presentation());
+        if let Some(instruments) = self.instruments.as_ref().filter(|i| !i.is_empty()) {
+            sections.extend(super::instruments::instruments_sections(instruments));
+        }
         if let Some(lesson) = &self.lesson {
             sections.extend(super::lesson::lesson_sections(lesson));
         }
@@ -269,6 +281,8 @@ pub(super) enum Header {
     ArrayItem(&'static str),
     /// An item of an array of tables inside a table: `[[lesson.question]]`.
     Nested(&'static str, &'static str),
+    /// A table inside a table: `[instruments.stopwatch]`.
+    Sub(&'static str, &'static str),
 }
 
 pub(super) struct OutSection {
@@ -285,6 +299,8 @@ pub(super) enum Out {
     Vector(Vector),
     Bounds(Bounds),
     Points(Vec<glam::DVec2>),
+    /// A list of mixed values: an instrument's ends, each a name or a point.
+    List(Vec<Out>),
 }
 
 /// A TOML float that parses back to the same `f64`: Rust's `Debug` for `f64` is the
@@ -328,6 +344,10 @@ impl Out {
                 format!("[{}]", items.join(", "))
             }
             Self::Vector(v) => toml_vector(*v),
+            Self::List(items) => {
+                let items: Vec<String> = items.iter().map(Out::to_toml).collect();
+                format!("[{}]", items.join(", "))
+            }
             Self::Points(points) => {
                 let items: Vec<String> = points
                     .iter()
@@ -361,6 +381,7 @@ impl Out {
             Self::Text(text) => text.clone().into(),
             Self::TextList(list) => list.clone().into(),
             Self::Vector(v) => json_vector(*v),
+            Self::List(items) => items.iter().map(Out::to_json).collect(),
             Self::Points(points) => points
                 .iter()
                 .map(|&p| json_vector(Vector::Cartesian(p)))

@@ -113,7 +113,7 @@ pub use profile::{Clock, Profile, Stage};
 pub use quantity::{Anchor, Link, LinkOf, Of, Quantity, Reading, Total, angle_from_down};
 pub use scene::error::{LoadError, Problem};
 pub use scene::fields;
-pub use scene::format::SceneFormat;
+pub use scene::format::{SceneFormat, closest as closest_key};
 pub use scene::{
     Body, Bounds, Color, Endpoint, FieldRef, Follow, Graph, Instruments, Lesson, Moments,
     PairForces, Particle, Protractor, Question, Ramp, Rule, Scene, Section, Series, Settings,

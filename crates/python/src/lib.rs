@@ -6,6 +6,7 @@
 //! with the scene's own words; a simulation that fails raises
 //! `newtonlab.SimulationError`. Long work releases the interpreter's lock.
 
+mod build;
 mod run;
 mod scene;
 mod simulation;

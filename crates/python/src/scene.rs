@@ -29,7 +29,7 @@ pub struct Scene {
 
 /// Which object of a scene a [`SceneObject`] is.
 #[derive(Clone, Debug, PartialEq, Eq)]
-enum What {
+pub(crate) enum What {
     Particle(String),
     Spring(String),
     Rod(String),
@@ -236,7 +236,7 @@ fn to_python(py: Python<'_>, value: Value) -> PyResult<Py<PyAny>> {
 }
 
 /// A number from Python: a float or an int, not a bool (which Python counts as an int).
-fn number(value: &Bound<'_, PyAny>, what: &str) -> PyResult<f64> {
+pub(crate) fn number(value: &Bound<'_, PyAny>, what: &str) -> PyResult<f64> {
     if value.is_instance_of::<PyBool>() {
         return Err(scene_error(format!("{what} must be a number, got a bool")));
     }
@@ -289,7 +289,7 @@ fn vector(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vector> {
 }
 
 /// The value of kind `kind` that `value` stands for, or why it cannot.
-fn from_python(kind: Kind, value: &Bound<'_, PyAny>, what: &str) -> PyResult<Value> {
+pub(crate) fn from_python(kind: Kind, value: &Bound<'_, PyAny>, what: &str) -> PyResult<Value> {
     let text = || -> PyResult<String> {
         value
             .extract::<String>()
@@ -557,6 +557,76 @@ impl Scene {
         SceneObject::of(slf, What::Body(name.to_owned()))
     }
 
+    /// Adds a particle and returns it: the scene file's keys as keywords (`mass` and
+    /// `position` required), checked by the file's rules.
+    #[pyo3(signature = (name=None, **fields))]
+    fn add_particle(
+        slf: Bound<'_, Self>,
+        name: Option<String>,
+        fields: Option<Bound<'_, PyDict>>,
+    ) -> PyResult<SceneObject> {
+        crate::build::add(&slf, crate::build::New::Particle, name, fields.as_ref())
+    }
+
+    /// Adds a spring (`from_`, `to`, `stiffness`, `natural_length`, …) and returns it.
+    #[pyo3(signature = (name=None, **fields))]
+    fn add_spring(
+        slf: Bound<'_, Self>,
+        name: Option<String>,
+        fields: Option<Bound<'_, PyDict>>,
+    ) -> PyResult<SceneObject> {
+        crate::build::add(&slf, crate::build::New::Spring, name, fields.as_ref())
+    }
+
+    /// Adds a rod (`from_`, `to`; `length` defaults to their distance) and returns it.
+    #[pyo3(signature = (name=None, **fields))]
+    fn add_rod(
+        slf: Bound<'_, Self>,
+        name: Option<String>,
+        fields: Option<Bound<'_, PyDict>>,
+    ) -> PyResult<SceneObject> {
+        crate::build::add(&slf, crate::build::New::Rod, name, fields.as_ref())
+    }
+
+    /// Adds a string (`from_`, `to`; `length` defaults to their distance) and returns it.
+    #[pyo3(signature = (name=None, **fields))]
+    fn add_string(
+        slf: Bound<'_, Self>,
+        name: Option<String>,
+        fields: Option<Bound<'_, PyDict>>,
+    ) -> PyResult<SceneObject> {
+        crate::build::add(&slf, crate::build::New::String, name, fields.as_ref())
+    }
+
+    /// Adds a ramp (`from_`, `to`, `friction`, `static_friction`, …) and returns it.
+    #[pyo3(signature = (name=None, **fields))]
+    fn add_ramp(
+        slf: Bound<'_, Self>,
+        name: Option<String>,
+        fields: Option<Bound<'_, PyDict>>,
+    ) -> PyResult<SceneObject> {
+        crate::build::add(&slf, crate::build::New::Ramp, name, fields.as_ref())
+    }
+
+    /// Adds `n` particles from arrays (positions and velocities of shape (n, 2), masses
+    /// and radii of n or one number for all); returns their names.
+    #[pyo3(signature = (positions, masses, velocities=None, radii=None))]
+    fn add_particles(
+        slf: Bound<'_, Self>,
+        positions: Bound<'_, PyAny>,
+        masses: Bound<'_, PyAny>,
+        velocities: Option<Bound<'_, PyAny>>,
+        radii: Option<Bound<'_, PyAny>>,
+    ) -> PyResult<Vec<String>> {
+        crate::build::add_particles(
+            &slf,
+            &positions,
+            velocities.as_ref(),
+            &masses,
+            radii.as_ref(),
+        )
+    }
+
     /// The world: gravity, the pair forces' constants, the bounds.
     #[getter]
     fn world(slf: Bound<'_, Self>) -> PyResult<SceneObject> {
@@ -643,7 +713,7 @@ pub struct SceneObject {
 }
 
 impl SceneObject {
-    fn of(scene: Bound<'_, Scene>, what: What) -> PyResult<Self> {
+    pub(crate) fn of(scene: Bound<'_, Scene>, what: What) -> PyResult<Self> {
         what.section(&scene.borrow().inner)?;
         Ok(Self {
             scene: scene.unbind(),

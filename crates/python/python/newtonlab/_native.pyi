@@ -68,6 +68,29 @@ class Scene:
     def body(self, name: str) -> SceneObject:
         """The rigid body called ``name``: ``mass``, ``angle``, ``spin``, … (its shape as
         the file gives it)."""
+    def add_particle(self, name: Optional[str] = None, **fields: Any) -> SceneObject:
+        """Adds a particle and returns it. Keywords are the scene file's keys (``mass`` and
+        ``position`` required; ``radius``, ``velocity``, ``charge``, ``fixed``, …); a missing
+        or unknown one raises ``TypeError``, a bad value ``SceneError``; the name, when not
+        given, is the one a file would give (``p1``, ``p2``, …)."""
+    def add_spring(self, name: Optional[str] = None, **fields: Any) -> SceneObject:
+        """Adds a spring: ``from_`` and ``to`` (a particle's name or a point), ``stiffness``,
+        ``natural_length``, ``damping``."""
+    def add_rod(self, name: Optional[str] = None, **fields: Any) -> SceneObject:
+        """Adds a rod: ``from_`` and ``to``; ``length`` defaults to the ends' distance."""
+    def add_string(self, name: Optional[str] = None, **fields: Any) -> SceneObject:
+        """Adds a string: ``from_`` and ``to``; ``length`` defaults to the ends' distance."""
+    def add_ramp(self, name: Optional[str] = None, **fields: Any) -> SceneObject:
+        """Adds a ramp: ``from_`` and ``to`` (points), ``friction``, ``static_friction``, …"""
+    def add_particles(
+        self,
+        positions: npt.ArrayLike,
+        masses: Union[float, npt.ArrayLike],
+        velocities: Optional[npt.ArrayLike] = None,
+        radii: Union[float, npt.ArrayLike, None] = None,
+    ) -> List[str]:
+        """Adds ``n`` particles at once: ``positions`` and ``velocities`` as (n, 2) arrays,
+        ``masses`` and ``radii`` as arrays of n or one number for all; returns their names."""
     @property
     def world(self) -> SceneObject:
         """The world: ``gravity``, the pair forces' constants, ``bounds``."""

@@ -21,6 +21,7 @@ mod tree;
 mod write;
 
 use self::read::Reader;
+pub use self::read::closest;
 use self::tree::{parse_json, parse_toml};
 use super::Scene;
 use super::error::LoadError;

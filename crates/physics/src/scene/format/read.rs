@@ -853,8 +853,9 @@ pub(super) fn read_color(node: &Node) -> Result<Color, String> {
     Color::parse_hex(&text).ok_or_else(|| say("scene-not-colour", &[("text", &text)]))
 }
 
-/// The known key closest to a misspelt one, if it is close enough to be a typo.
-pub(super) fn closest<'k>(key: &str, known: &[&'k str]) -> Option<&'k str> {
+/// The known key closest to a misspelt one, if it is close enough to be a typo: the
+/// scene file's "did you mean", and any front end's (Python's keywords).
+pub fn closest<'k>(key: &str, known: &[&'k str]) -> Option<&'k str> {
     known
         .iter()
         .map(|k| (edit_distance(key, k), *k))

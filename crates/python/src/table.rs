@@ -83,7 +83,8 @@ impl Table {
         Ok(dict)
     }
 
-    /// A pandas `DataFrame` of the columns, in order. Needs pandas (`pip install pandas`).
+    /// A pandas `DataFrame` of the columns, in order, indexed by time (`t`) where the
+    /// table has it, as a time series is. Needs pandas (`pip install pandas`).
     fn to_pandas(&self, py: Python<'_>) -> PyResult<Py<PyAny>> {
         let pandas = py.import("pandas").map_err(|_| {
             PyImportError::new_err(
@@ -92,10 +93,13 @@ impl Table {
         })?;
         let kwargs = PyDict::new(py);
         kwargs.set_item("columns", self.names.clone())?;
-        Ok(pandas
+        let frame = pandas
             .getattr("DataFrame")?
-            .call((self.to_dict(py)?,), Some(&kwargs))?
-            .unbind())
+            .call((self.to_dict(py)?,), Some(&kwargs))?;
+        if self.names.iter().any(|n| n == "t") {
+            return Ok(frame.call_method1("set_index", ("t",))?.unbind());
+        }
+        Ok(frame.unbind())
     }
 
     fn __repr__(slf: &Bound<'_, Self>) -> PyResult<String> {

@@ -101,12 +101,17 @@ def test_impacts_are_a_table_with_names():
     assert impacts["t"].dtype == np.float64
 
 
-def test_to_pandas_keeps_the_columns_in_order():
+def test_to_pandas_keeps_the_columns_in_order_indexed_by_time():
     pandas = pytest.importorskip("pandas")
     traj = newtonlab.run("example:spring-undamped", until=1.0, every=0.1)
     frame = traj.to_pandas()
     assert isinstance(frame, pandas.DataFrame)
-    assert list(frame.columns) == traj.columns and len(frame) == len(traj) == 11
+    assert frame.index.name == "t" and np.array_equal(frame.index.to_numpy(), traj["t"])
+    assert list(frame.columns) == traj.columns[1:] and len(frame) == len(traj) == 11
+    assert frame.loc[0.5].equals(frame.iloc[5]), "a row by its instant"
+    table = newtonlab.sweep("example:projectile-range", vary={"Ball.velocity.angle": [30.0, 60.0]},
+                            until=7.0, measure="Ball.x at Ball.y crosses 0 down")
+    assert list(table.to_pandas().columns) == table.columns, "no time: no index"
 
 
 def test_a_simulation_steps_and_reads_like_a_run():

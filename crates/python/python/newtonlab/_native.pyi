@@ -1,7 +1,7 @@
 """Type stubs of NewtonLab's native module (re-exported by ``newtonlab``)."""
 
 import os
-from typing import Any, Dict, Iterable, List, Mapping, Optional, Sequence, Tuple, Union
+from typing import Any, Dict, Iterable, List, Literal, Mapping, Optional, Sequence, Tuple, Union, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -118,14 +118,20 @@ class Table:
 
     @property
     def columns(self) -> List[str]: ...
-    def __getitem__(self, name: str) -> Union[npt.NDArray[np.float64], List[str]]: ...
+    @overload
+    def __getitem__(self, name: Literal["event", "particle", "other"]) -> List[str]: ...
+    @overload
+    def __getitem__(self, name: str) -> npt.NDArray[np.float64]:
+        """A column of numbers; the text columns (``event``, an impact's ``particle`` and
+        ``other``) are lists of strings."""
     def __contains__(self, name: str) -> bool: ...
     def __len__(self) -> int:
         """The number of rows."""
     def keys(self) -> List[str]: ...
     def to_dict(self) -> Dict[str, Union[npt.NDArray[np.float64], List[str]]]: ...
     def to_pandas(self) -> Any:
-        """A pandas DataFrame of the columns, in order (needs pandas)."""
+        """A pandas DataFrame of the columns, in order, indexed by ``t`` where the table
+        has it (needs pandas)."""
 
 class Trajectory(Table):
     """A run's rows by ``newtonlab run``'s column names (``traj["Ball.x"]``, ``traj["t"]``),

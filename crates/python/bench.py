@@ -85,13 +85,16 @@ def pit_pymunk():
         return None
     scene = newtonlab.load("example:ball-pit")
     (xmin, ymin), (xmax, ymax) = scene.world.bounds
-    restitution = scene.world.restitution
+    # pymunk's restitution of a contact is the product of its two shapes' elasticities:
+    # each shape gets the square root, so that ball on ball and ball on wall both bounce
+    # at the scene's restitution.
+    elasticity = scene.world.restitution ** 0.5
     space = pymunk.Space()
     space.gravity = scene.world.gravity
     walls = [((xmin, ymin), (xmax, ymin)), ((xmin, ymin), (xmin, ymax)), ((xmax, ymin), (xmax, ymax)), ((xmin, ymax), (xmax, ymax))]
     for a, b in walls:
         wall = pymunk.Segment(space.static_body, a, b, 0.0)
-        wall.elasticity = restitution
+        wall.elasticity = elasticity
         space.add(wall)
     for name in scene.particles:
         ball = scene.particle(name)
@@ -99,7 +102,7 @@ def pit_pymunk():
         body.position = ball.position
         body.velocity = ball.velocity
         shape = pymunk.Circle(body, ball.radius)
-        shape.elasticity = restitution
+        shape.elasticity = elasticity
         space.add(body, shape)
     return 1000 / timed(lambda: [space.step(0.001) for _ in range(1000)])
 

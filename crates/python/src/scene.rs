@@ -9,6 +9,7 @@ use physics::fields::{self, Field, Kind, Value};
 use physics::{Bounds, Color, Endpoint, Integrator, PairForces, Section, Vector};
 use pyo3::exceptions::{
     PyAttributeError, PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError,
+    PyTypeError,
 };
 use pyo3::prelude::*;
 use pyo3::types::{PyBool, PyDict, PyString};
@@ -238,18 +239,29 @@ fn to_python(py: Python<'_>, value: Value) -> PyResult<Py<PyAny>> {
 /// A number from Python: a float or an int, not a bool (which Python counts as an int).
 pub(crate) fn number(value: &Bound<'_, PyAny>, what: &str) -> PyResult<f64> {
     if value.is_instance_of::<PyBool>() {
-        return Err(scene_error(format!("{what} must be a number, got a bool")));
+        return Err(PyTypeError::new_err(format!(
+            "{what} must be a number, got a bool"
+        )));
     }
-    value
-        .extract::<f64>()
-        .map_err(|_| scene_error(format!("{what} must be a number, got {}", type_name(value))))
+    value.extract::<f64>().map_err(|_| {
+        PyTypeError::new_err(format!("{what} must be a number, got {}", type_name(value)))
+    })
 }
 
+/// A value's type as a message says it: "a str", "an int".
 fn type_name(value: &Bound<'_, PyAny>) -> String {
-    value
-        .get_type()
-        .name()
-        .map_or_else(|_| "something else".to_owned(), |n| format!("a {n}"))
+    value.get_type().name().map_or_else(
+        |_| "something else".to_owned(),
+        |n| {
+            let n = n.to_string();
+            let article = if n.starts_with(['a', 'e', 'i', 'o', 'u']) {
+                "an"
+            } else {
+                "a"
+            };
+            format!("{article} {n}")
+        },
+    )
 }
 
 /// A vector from Python: `(x, y)` (any sequence of two numbers, a numpy array too), or a
@@ -266,18 +278,20 @@ fn vector(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vector> {
         };
         return Ok(Vector::polar(part("magnitude")?, part("angle")?));
     }
-    let wrong = || {
-        scene_error(format!(
+    let message = || {
+        format!(
             "{what} must be (x, y) or {{\"magnitude\": m, \"angle\": degrees}}, got {}",
             type_name(value)
-        ))
+        )
     };
+    // Not a pair at all is a TypeError; a sequence of another length, a SceneError.
+    let wrong = || scene_error(message());
     if value.is_instance_of::<PyString>() {
-        return Err(wrong());
+        return Err(PyTypeError::new_err(message()));
     }
     let items: Vec<Bound<'_, PyAny>> = value
         .try_iter()
-        .map_err(|_| wrong())?
+        .map_err(|_| PyTypeError::new_err(message()))?
         .collect::<PyResult<_>>()?;
     let [x, y] = &items[..] else {
         return Err(wrong());
@@ -291,9 +305,9 @@ fn vector(value: &Bound<'_, PyAny>, what: &str) -> PyResult<Vector> {
 /// The value of kind `kind` that `value` stands for, or why it cannot.
 pub(crate) fn from_python(kind: Kind, value: &Bound<'_, PyAny>, what: &str) -> PyResult<Value> {
     let text = || -> PyResult<String> {
-        value
-            .extract::<String>()
-            .map_err(|_| scene_error(format!("{what} must be a string, got {}", type_name(value))))
+        value.extract::<String>().map_err(|_| {
+            PyTypeError::new_err(format!("{what} must be a string, got {}", type_name(value)))
+        })
     };
     Ok(match kind {
         Kind::Number(_) => Value::Number(number(value, what)?),
@@ -302,7 +316,7 @@ pub(crate) fn from_python(kind: Kind, value: &Bound<'_, PyAny>, what: &str) -> P
             value
                 .cast::<PyBool>()
                 .map_err(|_| {
-                    scene_error(format!(
+                    PyTypeError::new_err(format!(
                         "{what} must be True or False, got {}",
                         type_name(value)
                     ))
@@ -721,6 +735,17 @@ impl SceneObject {
         })
     }
 
+    /// The `AttributeError` of a key the object does not have, reading or writing it:
+    /// the key it most likely meant, or every key it has.
+    fn no_field(&self, scene: &physics::Scene, section: Section, key: &str) -> PyErr {
+        let keys = keys(scene, section);
+        let hint = physics::closest_key(key, &keys).map_or_else(
+            || format!("its fields are: {}", keys.join(", ")),
+            |k| format!("did you mean '{k}'?"),
+        );
+        PyAttributeError::new_err(format!("{} has no field '{key}'; {hint}", self.label()))
+    }
+
     /// How the object's messages name it: `particle 'Ball'`, `world`.
     fn label(&self) -> String {
         match self.what.name() {
@@ -746,11 +771,7 @@ impl SceneObject {
         }
         match get(&scene.inner, section, key) {
             Some((_, value)) => to_python(py, value),
-            None => Err(PyAttributeError::new_err(format!(
-                "{} has no field '{key}'; its fields are: {}",
-                self.label(),
-                keys(&scene.inner, section).join(", ")
-            ))),
+            None => Err(self.no_field(&scene.inner, section, key)),
         }
     }
 
@@ -761,7 +782,7 @@ impl SceneObject {
         let what = format!("{}: {key}", self.label());
         if key == "name" && self.what.name().is_some() {
             let new: String = value.extract().map_err(|_| {
-                scene_error(format!(
+                PyTypeError::new_err(format!(
                     "{what} must be a string, got {}",
                     type_name(&value)
                 ))
@@ -780,11 +801,7 @@ impl SceneObject {
             return Ok(());
         }
         let Some((kind, _)) = get(&scene.inner, section, key) else {
-            return Err(scene_error(format!(
-                "{} has no field '{key}'; its fields are: {}",
-                self.label(),
-                keys(&scene.inner, section).join(", ")
-            )));
+            return Err(self.no_field(&scene.inner, section, key));
         };
         let value = from_python(kind, &value, &what)?;
         set(&mut changed, section, key, value);

@@ -163,10 +163,14 @@ impl Document {
                 || scene.springs.iter().any(|s| s.name == name)
                 || scene.ties.iter().any(|t| t.name == name)
                 || scene.ramps.iter().any(|r| r.name == name)
+                || scene.bodies.iter().any(|b| b.name == name)
         };
         // Some number up to one past the count of objects is always free.
-        let count =
-            scene.particles.len() + scene.springs.len() + scene.ties.len() + scene.ramps.len();
+        let count = scene.particles.len()
+            + scene.springs.len()
+            + scene.ties.len()
+            + scene.ramps.len()
+            + scene.bodies.len();
         (1..=count + 1)
             .map(|n| format!("{prefix}{n}"))
             .find(|name| !taken(name))
@@ -179,6 +183,18 @@ mod tests {
     use super::*;
     use crate::edit::Object;
     use physics::Particle;
+
+    /// Names are unique among all objects, bodies too: a particle placed beside a body
+    /// called `p1` is not called `p1`.
+    #[test]
+    fn a_new_name_is_free_among_bodies_too() {
+        let mut scene = Scene::new();
+        scene
+            .bodies
+            .push(physics::Body::rectangle("p1", 0.4, 0.2, 1.0));
+        let document = Document::new(scene);
+        assert_eq!(document.unused_name("p"), "p2");
+    }
 
     #[test]
     fn undo_and_redo_without_limit() {

@@ -55,12 +55,14 @@ pub enum Edit {
     DeleteGroup,
     /// A lesson's slider moved.
     Slide,
+    /// A question added to the lesson from what is measured on the screen.
+    Ask,
 }
 
 impl Edit {
     /// Every edit but [`Edit::Set`]'s fields, for the tests.
     #[cfg(test)]
-    const ALL: [Self; 34] = [
+    const ALL: [Self; 35] = [
         Self::Add(Object::Particle),
         Self::Add(Object::Spring),
         Self::Add(Object::Rod),
@@ -95,6 +97,7 @@ impl Edit {
         Self::MoveGroup,
         Self::DeleteGroup,
         Self::Slide,
+        Self::Ask,
     ];
 
     /// The message of its words, but for [`Edit::Set`] (whose words name the field).
@@ -135,6 +138,7 @@ impl Edit {
             Self::MoveGroup => "edit-move-group",
             Self::DeleteGroup => "edit-delete-group",
             Self::Slide => "edit-slide",
+            Self::Ask => "edit-ask",
         }
     }
 

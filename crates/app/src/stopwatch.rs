@@ -155,6 +155,25 @@ impl Stopwatch {
         (self.shown || saved != physics::Stopwatch::default()).then_some(saved)
     }
 
+    /// The measure of a lesson's question whose answer is this stopwatch's reading, as a
+    /// series writes it: from Play to the Nth occurrence of a typed event that reads on
+    /// `scene`, a scene starting at t = 0 (the measure is the event's instant), no laps.
+    /// None for what no measure says (a gate, impacts, the hand).
+    pub fn question(&self, scene: &physics::Scene) -> Option<String> {
+        let event = self.event.trim();
+        let reads = physics::Event::parse(event)
+            .and_then(|e| e.quantity.check_in(scene))
+            .is_ok();
+        let timed = self.start_on == Trigger::Play && self.stop_on == Trigger::Event;
+        if !(timed && reads && !self.lap_mode && scene.simulation.start_time == 0.0) {
+            return None;
+        }
+        Some(match self.stop_nth {
+            0 | 1 => format!("t at {event}"),
+            n => format!("t at {event} #{n}"),
+        })
+    }
+
     /// Sets it to time a full period at the light gate: the 1st to the 3rd crossing of
     /// the tape (a pendulum crosses a gate through its pivot twice a period).
     pub fn period_at_the_gate(&mut self) {

@@ -220,6 +220,7 @@ impl App {
         use stopwatch::State;
         let mut shown = self.stopwatch.shown;
         let now = self.time();
+        let mut asked = None;
         egui::Window::new(tr("stopwatch-title"))
             .open(&mut shown)
             .resizable(false)
@@ -268,9 +269,56 @@ impl App {
                 });
                 triggers(ui, watch);
                 laps(ui, watch);
+                // The teacher's view only: the inspector is out.
+                if let Some(measure) = self
+                    .stopwatch
+                    .question(self.document.scene())
+                    .filter(|_| self.panels.inspector)
+                    && ui
+                        .button(tr("stopwatch-ask"))
+                        .on_hover_text(tr("stopwatch-ask-hint"))
+                        .clicked()
+                {
+                    asked = Some(measure);
+                }
                 ui.label(egui::RichText::new(tr("stopwatch-note")).small());
             });
         self.stopwatch.shown = shown;
+        if let Some(measure) = asked {
+            let event = self.stopwatch.event.trim().to_owned();
+            let prompt = tr_with("stopwatch-ask-prompt", &[("event", Arg::Text(&event))]);
+            self.ask(prompt, measure, "s", 0.01);
+        }
+    }
+
+    /// Adds a question to the scene's lesson (a lesson titled as the scene when it has
+    /// none), one undoable edit, and shows the lesson: the teacher's "ask about this".
+    /// Its answer key is the measure, as every question's is.
+    pub(crate) fn ask(&mut self, prompt: String, measure: String, unit: &str, tolerance: f64) {
+        let scene = self.document.scene();
+        let lesson = scene.lesson.clone().unwrap_or_else(|| physics::Lesson {
+            title: scene.name.clone().unwrap_or_else(|| tr("lesson-untitled")),
+            ..physics::Lesson::default()
+        });
+        let id = (1..=lesson.questions.len() + 1)
+            .map(|n| format!("q{n}"))
+            .find(|id| lesson.question(id).is_none())
+            .unwrap_or_default();
+        let question = physics::Question {
+            id: id.clone(),
+            prompt,
+            measure,
+            unit: unit.to_owned(),
+            tolerance,
+            reveal: false,
+        };
+        self.document.apply(crate::edit::Edit::Ask, |scene| {
+            let mut lesson = lesson;
+            lesson.questions.push(question);
+            scene.lesson = Some(lesson);
+        });
+        self.panels.lesson = true;
+        self.tell(tr_with("stopwatch-asked", &[("id", Arg::Text(&id))]));
     }
 }
 

@@ -447,3 +447,58 @@ fn a_saved_scene_reopens_with_its_instruments_in_place_and_the_watch_armed() {
         (Trigger::Gate, Trigger::Hand, None)
     );
 }
+
+/// "Ask about this": the stopwatch timing the 60° pendulum from Play to the bob's second
+/// turning point (`bob.vx crosses 0`, the 2nd: a full period) adds a question to a new
+/// lesson whose measure is that instant, and the simulation's answer key is the
+/// stopwatch's reading (to 1e-9 s: both are the event located inside its step), and the
+/// elliptic integral's period to 1e-6 s. Back in the editor, one undo takes it away.
+#[test]
+fn ask_about_this_turns_the_stopwatchs_reading_into_a_lesson_question() {
+    use newtonlab_app::stopwatch::{State, Trigger};
+    let mut harness = harness(App::new(example_scene("pendulum")));
+    {
+        let watch = &mut harness.state_mut().stopwatch;
+        watch.shown = true;
+        watch.start_on = Trigger::Play;
+        watch.stop_on = Trigger::Event;
+        watch.stop_nth = 2;
+        watch.event = "bob.vx crosses 0".to_owned();
+    }
+    harness.run();
+    harness.get_by_label("Start").click();
+    harness.run();
+    play_frames(&mut harness, 45);
+    let reading = harness.state().stopwatch.reading;
+    assert_eq!(harness.state().stopwatch.state, State::Stopped);
+    harness.get_by_label("Ask about this").click();
+    harness.run();
+    let scene = harness.state().document.scene().clone();
+    let lesson = scene
+        .lesson
+        .clone()
+        .expect("a lesson made for the question");
+    let question = &lesson.questions[0];
+    assert_eq!(
+        (
+            question.id.as_str(),
+            question.measure.as_str(),
+            question.unit.as_str()
+        ),
+        ("q1", "t at bob.vx crosses 0 #2", "s")
+    );
+    let key = lesson.answers(&scene).unwrap()[0].clone().unwrap();
+    assert!(
+        (key - reading).abs() < 1e-9,
+        "key {key} s, stopwatch {reading} s"
+    );
+    let period = pendulum_period(2.0, 60.0);
+    assert!(
+        (key - period).abs() < 1e-6,
+        "key {key} s, theory {period} s"
+    );
+    assert!(scene.validate().is_empty(), "a valid lesson");
+    harness.state_mut().reset();
+    harness.state_mut().undo();
+    assert!(harness.state().document.scene().lesson.is_none(), "undone");
+}

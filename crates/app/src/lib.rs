@@ -756,6 +756,7 @@ impl App {
                 .show(ui, |ui| {
                     egui::ScrollArea::vertical().show(ui, |ui| {
                         ui.set_width(ui.available_width());
+                        self.graphs.can_ask = self.panels.inspector;
                         actions.extend(self.graphs.ui(ui, &mut self.document, &self.runner));
                         ui.separator();
                         let selected = self.selected_particle_name();
@@ -776,6 +777,10 @@ impl App {
     /// The frame's end: the actions asked for carried out, then what needs the
     /// context (the clipboard, the focus), the windows, the picture, the autosave.
     fn end_frame(&mut self, ui: &mut Ui, actions: Vec<Action>) {
+        if let Some(name) = self.graphs.asked.take() {
+            let prompt = tr_with("graph-ask-prompt", &[("quantity", Arg::Text(&name))]);
+            self.ask(prompt, format!("period {name}"), "s", 0.01);
+        }
         for action in actions {
             self.perform(action);
         }

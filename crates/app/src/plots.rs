@@ -49,6 +49,10 @@ pub struct Graphs {
     read: Vec<Option<Read>>,
     /// Where each graph's plot was drawn last frame, for its picture.
     pub rects: Vec<egui::Rect>,
+    /// Whether a period read may become a lesson's question (the teacher's view).
+    pub can_ask: bool,
+    /// The quantity whose period the teacher asked about this frame.
+    pub asked: Option<String>,
 }
 
 /// `A.vx (m/s)`, `total_energy (J)`, `t (s)`.
@@ -516,12 +520,25 @@ impl Graphs {
             .chain(fits.iter().map(|(name, fit, _)| fit_words(name, fit)))
             .collect();
         // Monospace: its font has the superscripts of a power of ten (1.2 × 10⁻¹³).
-        for words in &self.readings[g] {
-            ui.label(
-                egui::RichText::new(words)
-                    .small()
-                    .family(egui::FontFamily::Monospace),
-            );
+        let periods = analyses.iter().filter(|a| a.period_words().is_some());
+        let askable = periods.map(|a| a.has_period().then(|| a.name.clone()));
+        let askable: Vec<Option<String>> = askable.chain(fits.iter().map(|_| None)).collect();
+        for (words, ask) in self.readings[g].iter().zip(askable) {
+            ui.horizontal_wrapped(|ui| {
+                ui.label(
+                    egui::RichText::new(words)
+                        .small()
+                        .family(egui::FontFamily::Monospace),
+                );
+                if let Some(name) = ask.filter(|_| self.can_ask)
+                    && ui
+                        .small_button(tr("stopwatch-ask"))
+                        .on_hover_text(tr("graph-ask-hint"))
+                        .clicked()
+                {
+                    self.asked = Some(name);
+                }
+            });
         }
         self.rects[g] = shown.response.rect;
         action
@@ -766,6 +783,11 @@ impl Analysis {
                     .color(egui::Color32::from_rgb(200, 120, 20)),
             );
         }
+    }
+
+    /// Whether its maxima give a period (a lesson may ask for it: `period NAME`).
+    fn has_period(&self) -> bool {
+        matches!(analysis::period(&self.extremes), Some(Ok(_)))
     }
 
     /// "period of bob.x: 3.0446 s (mean of 2 cycles, located in the run)", or why the

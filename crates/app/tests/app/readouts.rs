@@ -414,3 +414,30 @@ fn system_quantities_are_offered_in_words() {
     set_language(Language::English);
     assert!(found, "in German");
 }
+
+/// "Ask about this" beside a graph's period: a question `period bob.x` added to a new
+/// lesson, whose answer key (the run measured as a series measures it) is the elliptic
+/// integral's period of the 60° pendulum to 1e-6 s.
+#[test]
+fn a_graphs_period_becomes_a_lesson_question() {
+    let mut harness =
+        crate::common::tall_harness(App::new(crate::common::example_scene("pendulum")));
+    play_frames(&mut harness, 100);
+    harness
+        .get_all_by_label("extremes and zeros")
+        .next()
+        .expect("a checkbox")
+        .click();
+    harness.run();
+    harness.get_by_label("Ask about this").click();
+    harness.run();
+    let scene = harness.state().document.scene().clone();
+    let lesson = scene.lesson.clone().expect("a lesson");
+    assert_eq!(lesson.questions[0].measure, "period bob.x");
+    let key = lesson.answers(&scene).unwrap()[0].clone().unwrap();
+    let period = crate::common::pendulum_period(2.0, 60.0);
+    assert!(
+        (key - period).abs() < 1e-6,
+        "key {key} s, theory {period} s"
+    );
+}

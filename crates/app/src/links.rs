@@ -38,11 +38,9 @@ impl App {
     }
 
     pub(crate) fn open_link_window(&mut self, share: bool) {
-        if share {
-            self.keep_layout();
-        }
+        // The scene as it would be saved, the document untouched: sharing is no edit.
         self.link = Some(if share {
-            LinkWindow::Share(share::fragment(self.document.scene()))
+            LinkWindow::Share(share::fragment(&self.laid_out()))
         } else {
             LinkWindow::Open {
                 text: String::new(),

@@ -93,14 +93,25 @@ impl App {
         self.write_scene(path);
     }
 
-    /// Puts the camera and the instruments into the scene, as it is saved or shared.
+    /// The scene as it is saved or shared: with the camera as its `[view]` and the
+    /// instruments as its `[instruments]`.
+    pub(crate) fn laid_out(&self) -> Scene {
+        let mut scene = self.document.scene().clone();
+        scene.view = Some(self.canvas.scene_view());
+        let mut instruments = self.canvas.instruments.kept(&scene);
+        instruments.stopwatch = self.stopwatch.saved(&scene, instruments.tape.is_some());
+        scene.instruments = Some(instruments).filter(|i| !i.is_empty());
+        scene
+    }
+
+    /// Puts the camera and the instruments into the document, as it is saved (no undo
+    /// step: neither is an edit).
     pub(crate) fn keep_layout(&mut self) {
-        self.document.set_view(self.canvas.scene_view());
-        let scene = self.document.scene();
-        let mut instruments = self.canvas.instruments.kept(scene);
-        instruments.stopwatch = self.stopwatch.saved(scene, instruments.tape.is_some());
-        self.document
-            .set_instruments(Some(instruments).filter(|i| !i.is_empty()));
+        let laid_out = self.laid_out();
+        if let Some(view) = laid_out.view {
+            self.document.set_view(view);
+        }
+        self.document.set_instruments(laid_out.instruments);
     }
 
     /// Writes the scene to `path`, whatever is there.

@@ -62,6 +62,10 @@ fn a_lesson_shared_from_the_desktop_opens_from_its_link_in_the_students_view() {
     );
     teacher.run();
     assert!(teacher.state().link.is_none(), "the window closes");
+    assert!(
+        !teacher.state().document.is_dirty(),
+        "sharing is no edit: nothing to save afterwards"
+    );
 
     let mut student = harness(App::new(one_ball()));
     paste_link(&mut student, &link);

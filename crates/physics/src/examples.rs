@@ -101,6 +101,8 @@ examples!(
     "thrown-board",
     "block-on-incline",
     "tipping-box",
+    "colliding-blocks",
+    "stacked-boxes",
     "lesson-galileo-incline",
     "lesson-projectile-range",
     "lesson-spring-period",

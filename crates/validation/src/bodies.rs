@@ -211,14 +211,24 @@ fn on_incline(slope: f64, (mu, mu_s): (f64, f64), (width, height): (f64, f64)) -
 /// exactly, and strikes it at (x₀ − w/2 − wall)/v when it does not spin, to 1e-9 s; a
 /// board dropped turning onto an elastic floor keeps its total energy through its bounces,
 /// to 1e-9 (each impact located and struck by its closed form, the flight between exact).
+/// Bodies meeting bodies: two boxes of 2 and 1 kg face to face, e the smaller of 0.5 and
+/// 0.8, leave at (m₁v₁ + m₂v₂ ∓ m₂,₁ e (v₁ − v₂))/(m₁ + m₂) to 1e-12 and lie on their new
+/// lines at 0.8 s to 1e-9 m (the impact located in time); a square turned 45° strikes a
+/// standing board 0.3 m above its centroid and turns it at
+/// `ω = −r j/I`, `j = 2u/(1/mₐ + 1/m_b + r²/I)`, to 1e-12; a box dropped on another rests on
+/// it, both where statics puts them after 10 s, to 1e-9 m; a block on a fixed wedge
+/// slides g (sin θ − μ cos θ) t²/2 with μ the geometric mean of the two bodies' kinetic
+/// frictions, to 1e-9 m.
 fn contacts(report: &mut Report) -> Outcome {
     let mut checks = Checks::new("bodies");
     inclines(report, &mut checks)?;
     landings(report, &mut checks)?;
     bouncing(report, &mut checks)?;
+    meeting(report, &mut checks)?;
+    resting_on_bodies(report, &mut checks)?;
     report.tables.push(checks.table(
         "Rigid bodies: resting, sliding, tipping and striking",
-        "a block holds while tan θ ≤ μs and slides g(sin θ − μk cos θ)t²/2 beyond; a tall box tips past arctan(w/h); a box dropped flat lands without turning; an elastic wall keeps the kinetic energy and the velocity along it, a bouncing board its total energy; errors relative to the scale shown (movement in metres)",
+        "a block holds while tan θ ≤ μs and slides g(sin θ − μk cos θ)t²/2 beyond; a tall box tips past arctan(w/h); a box dropped flat lands without turning; an elastic wall keeps the kinetic energy and the velocity along it, a bouncing board its total energy; bodies meeting bodies by the law of restitution with the angular impulse, resting on each other, sliding with the two frictions' geometric mean; errors relative to the scale shown (movement in metres)",
     ));
     Ok(())
 }
@@ -412,6 +422,169 @@ fn bouncing(report: &mut Report, checks: &mut Checks) -> Outcome {
         simulation.diagnostics().energy.total(),
         energy,
         energy,
+        1e-9,
+    );
+    Ok(())
+}
+
+fn coefficients(mut body: Body, restitution: f64, friction: f64) -> Body {
+    body.restitution = restitution;
+    body.friction = friction;
+    body
+}
+
+/// The bodies meeting bodies of [`contacts`].
+fn meeting(report: &mut Report, checks: &mut Checks) -> Outcome {
+    let mut row = |report: &mut Report, what: &str, simulated: f64, theory: f64, scale, limit| {
+        checks.check(report, what.to_owned(), (simulated, theory, scale), limit);
+    };
+    let mut weightless = World::gravity_only();
+    weightless.gravity = Vector::cartesian(0.0, 0.0);
+    let (m1, m2, v1, v2, e) = (2.0, 1.0, 3.0, -1.0, 0.5);
+    let head_on = Scene::new()
+        .with_world(weightless.clone())
+        .with_integrator(Integrator::Rk4, 1e-3)
+        .with_body(
+            coefficients(Body::rectangle("a", 0.4, 0.2, m1), 0.5, 0.0)
+                .position([-1.0, 0.0])
+                .moving([v1, 0.0], 0.0),
+        )
+        .with_body(
+            coefficients(Body::rectangle("b", 0.2, 0.2, m2), 0.8, 0.0)
+                .position([0.5, 0.0])
+                .moving([v2, 0.0], 0.0),
+        );
+    let mut simulation = start(&head_on)?;
+    let t = 0.8;
+    step_to(&mut simulation, t)?;
+    let contact = (0.5 - 0.1 - (-1.0 + 0.2)) / (v1 - v2);
+    let after1 = (m1 * v1 + m2 * v2 - m2 * e * (v1 - v2)) / (m1 + m2);
+    let after2 = (m1 * v1 + m2 * v2 + m1 * e * (v1 - v2)) / (m1 + m2);
+    let (a, b) = (simulation.body(0), simulation.body(1));
+    row(
+        report,
+        "boxes face to face, 2 and 1 kg, e = 0.5: v₁ after (m/s)",
+        a.velocity.x,
+        after1,
+        v1,
+        1e-12,
+    );
+    row(
+        report,
+        "boxes face to face: v₂ after (m/s)",
+        b.velocity.x,
+        after2,
+        v1,
+        1e-12,
+    );
+    row(
+        report,
+        "boxes face to face: x₂ at 0.8 s, impact located (m)",
+        b.position.x,
+        0.5 + v2 * contact + after2 * (t - contact),
+        1.0,
+        1e-9,
+    );
+    let (ma, mb, (w, h), arm) = (0.5, 1.0, (0.2, 1.0), 0.3);
+    let inertia = mb * (w * w + h * h) / 12.0;
+    let strike = Scene::new()
+        .with_world(weightless)
+        .with_integrator(Integrator::Rk4, 1e-3)
+        .with_body(
+            coefficients(Body::rectangle("a", 0.2, 0.2, ma), 1.0, 0.0)
+                .position([-1.0, arm])
+                .angle(45.0)
+                .moving([2.0, 0.0], 0.0),
+        )
+        .with_body(coefficients(Body::rectangle("board", w, h, mb), 1.0, 0.0));
+    let mut simulation = start(&strike)?;
+    step_to(&mut simulation, 0.5)?;
+    let j = 2.0 * 2.0 / (1.0 / ma + 1.0 / mb + arm * arm / inertia);
+    row(
+        report,
+        "corner strikes a board 0.3 m off centre, e = 1: board's spin (rad/s)",
+        simulation.body(1).spin,
+        -arm * j / inertia,
+        arm * j / inertia,
+        1e-12,
+    );
+    Ok(())
+}
+
+/// The bodies resting on bodies of [`contacts`].
+fn resting_on_bodies(report: &mut Report, checks: &mut Checks) -> Outcome {
+    let mut row = |report: &mut Report, what: &str, simulated: f64, theory: f64, scale, limit| {
+        checks.check(report, what.to_owned(), (simulated, theory, scale), limit);
+    };
+    let mut floor = World::gravity_only();
+    floor.restitution = 0.0;
+    floor.bounds = Some(Bounds {
+        min: Vector::cartesian(-2.0, 0.0),
+        max: Vector::cartesian(2.0, 4.0),
+        friction: 0.5,
+        static_friction: None,
+    });
+    let stack = Scene::new()
+        .with_world(floor)
+        .with_integrator(Integrator::Rk4, 1e-3)
+        .with_body(
+            coefficients(Body::rectangle("lower", 0.6, 0.3, 2.0), 0.0, 0.5).position([0.1, 0.15]),
+        )
+        .with_body(
+            coefficients(Body::rectangle("upper", 0.3, 0.2, 1.0), 0.0, 0.5).position([0.0, 0.9]),
+        );
+    let mut simulation = start(&stack)?;
+    step_to(&mut simulation, 10.0)?;
+    row(
+        report,
+        "box dropped on a box, e = 0: its height after 10 s (m)",
+        simulation.body(1).position.y,
+        0.4,
+        1.0,
+        1e-9,
+    );
+    let slope = 30.0_f64.to_radians();
+    let mut wedge = coefficients(
+        Body::polygon(
+            "wedge",
+            vec![
+                DVec2::new(0.0, 0.0),
+                DVec2::new(3.0, 0.0),
+                DVec2::new(3.0, 3.0 * slope.tan()),
+            ],
+            10.0,
+        ),
+        0.0,
+        0.32,
+    )
+    .position([2.0, slope.tan()]);
+    wedge.fixed = true;
+    let (along, normal) = (
+        DVec2::new(slope.cos(), slope.sin()),
+        DVec2::new(-slope.sin(), slope.cos()),
+    );
+    let centre = along * 2.0 + normal * 0.1;
+    let mut world = World::gravity_only();
+    world.restitution = 0.0;
+    let on_wedge = Scene::new()
+        .with_world(world)
+        .with_integrator(Integrator::Rk4, 1e-3)
+        .with_body(wedge)
+        .with_body(
+            coefficients(Body::rectangle("block", 0.4, 0.2, 1.0), 0.0, 0.5)
+                .position([centre.x, centre.y])
+                .angle(30.0),
+        );
+    let mut simulation = start(&on_wedge)?;
+    step_to(&mut simulation, 1.0)?;
+    let mu = (0.32_f64 * 0.5).sqrt();
+    let slid = (simulation.body(1).position - centre).length();
+    row(
+        report,
+        "block on a wedge body, μ = √(0.32 × 0.5): distance slid in 1 s (m)",
+        slid,
+        0.5 * G * (slope.sin() - mu * slope.cos()),
+        1.0,
         1e-9,
     );
     Ok(())

@@ -1,19 +1,14 @@
-//! A rigid body against the static solids (the walls of the bounds, the ramps): where it
-//! touches them, impacts located in time along its motion and resolved together by their
-//! closed-form impulses, and resting contact held by its forces with Coulomb friction,
-//! sticking or sliding, the instant a slide stops located.
+//! Where rigid bodies touch: a body against the static solids (the walls of the bounds,
+//! the ramps) and two bodies against each other, each point of touch with its normal and
+//! its gap; and the separations a search for the next contact follows.
 //!
-//! Through a span without events a body's accelerations are constant — the field's, and
-//! the forces of the surfaces it rests on, which on a plane are constant while it sticks
-//! or slides — so its motion is the closed form the scene's method gives (the exact
-//! quadratic for all but the two Euler methods). A span ends at the first new contact
-//! (found by conservative advancement: a body whose points move at most B m/s cannot
-//! close a gap d in less than d/B) or where a slide stops; the step goes on from there.
+//! Two convex outlines touch along one line: its normal is the face of either outline
+//! that separates them best (the separating axis), and the points of touch are the other
+//! outline's corners on that face and the face's own ends on the other outline — a box on
+//! a box touches at two points, a tilted box at its corner.
 
 use glam::DVec2;
 
-use super::Taken;
-use super::solve::{self, MOST_CONTACTS};
 use crate::Integrator;
 use crate::contacts::obstacles::{Obstacle, Shape as Solid};
 
@@ -38,12 +33,44 @@ pub(crate) struct Rigid<'a> {
     pub radius: f64,
     /// The uniform field, m/s².
     pub gravity: DVec2,
+    /// Held where it is: it pushes, and nothing moves it.
+    pub fixed: bool,
+    /// Its own coefficients, which meet another body's (the smaller restitution, the
+    /// geometric mean of the frictions).
+    pub restitution: f64,
+    pub friction: f64,
+    pub static_friction: f64,
 }
 
 impl Rigid<'_> {
-    /// ½ m v² + ½ I ω², joules.
+    /// ½ m v² + ½ I ω², joules (none for a fixed body).
     pub fn kinetic_energy(&self, pose: &Pose) -> f64 {
+        if self.fixed {
+            return 0.0;
+        }
         0.5 * self.mass * pose.velocity.length_squared() + 0.5 * self.inertia * pose.spin.powi(2)
+    }
+
+    /// 1/m, none for a fixed body.
+    pub fn inverse_mass(&self) -> f64 {
+        if self.fixed { 0.0 } else { 1.0 / self.mass }
+    }
+
+    /// 1/I, none for a fixed body.
+    pub fn inverse_inertia(&self) -> f64 {
+        if self.fixed { 0.0 } else { 1.0 / self.inertia }
+    }
+
+    /// Its accelerations with nothing touching it.
+    pub fn free(&self) -> Push {
+        Push {
+            linear: if self.fixed {
+                DVec2::ZERO
+            } else {
+                self.gravity
+            },
+            angular: 0.0,
+        }
     }
 }
 
@@ -106,45 +133,116 @@ impl Pose {
     }
 
     /// The velocity of the body's point at `r` from the centroid.
-    fn velocity_at(&self, r: DVec2) -> DVec2 {
+    pub fn velocity_at(&self, r: DVec2) -> DVec2 {
         self.velocity + self.spin * r.perp()
     }
 }
 
-/// Which point of a body touches: a vertex, or the edge nearest a ramp's rounded end
-/// (0: its `from`, 1: its `to`).
+/// What a body touches: a solid (by its index) or another body of the island.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Feature {
+pub(crate) enum Other {
+    Solid(usize),
+    Body(usize),
+}
+
+/// Which point of an outline touches: one of its vertices, or the edge nearest a ramp's
+/// rounded end (0: its `from`, 1: its `to`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Feature {
     Vertex(usize),
     Cap(usize),
 }
 
-/// One point where a body touches a solid.
-#[derive(Clone, Copy, Debug)]
-struct Touch {
-    solid: usize,
-    feature: Feature,
-    /// The contact point on the solid's surface.
-    point: DVec2,
-    /// Unit, from the solid into the body.
-    normal: DVec2,
-    /// The separation, m (negative: overlapping).
-    gap: f64,
+/// A touching feature, as the search for the next contact knows it: `feature` of body
+/// `owner` against `against`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Key {
+    pub owner: usize,
+    pub against: Other,
+    pub feature: Feature,
 }
 
-/// Every point of `outline` within `reach` of a solid.
-fn touches(outline: &[DVec2], solids: &[Obstacle], reach: f64) -> Vec<Touch> {
+/// One point where a body touches a solid or another body.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Touch {
+    /// The body the normal points into.
+    pub body: usize,
+    pub other: Other,
+    /// The point of touch, on the other's surface.
+    pub point: DVec2,
+    /// Unit, from the other into the body; for two bodies, a face of the other's.
+    pub normal: DVec2,
+    /// The separation, m (negative: overlapping).
+    pub gap: f64,
+    pub key: Key,
+}
+
+/// The island's outlines and centroids now, for finding what touches.
+pub(crate) struct Placed {
+    pub outlines: Vec<Vec<DVec2>>,
+    pub centres: Vec<DVec2>,
+    pub radii: Vec<f64>,
+    pub fixed: Vec<bool>,
+    /// Whether bodies meet each other (`[world] collisions`).
+    pub collide: bool,
+}
+
+/// Every point where a body comes within `reach` of a solid or of another body.
+pub(crate) fn touches(placed: &Placed, solids: &[Obstacle], reach: f64) -> Vec<Touch> {
     let mut found = Vec::new();
+    for (body, outline) in placed.outlines.iter().enumerate() {
+        if !placed.fixed[body] {
+            against_solids(body, outline, solids, reach, &mut found);
+        }
+    }
+    for (i, j) in near_pairs(placed, reach) {
+        between(placed, i, j, reach, &mut found);
+    }
+    found
+}
+
+/// The pairs of bodies whose bounding circles come within `reach`, not both fixed.
+pub(crate) fn near_pairs(placed: &Placed, reach: f64) -> Vec<(usize, usize)> {
+    let n = placed.outlines.len();
+    let mut pairs = Vec::new();
+    if !placed.collide {
+        return pairs;
+    }
+    for i in 0..n {
+        for j in i + 1..n {
+            let apart =
+                placed.centres[i].distance(placed.centres[j]) - placed.radii[i] - placed.radii[j];
+            if apart <= reach && !(placed.fixed[i] && placed.fixed[j]) {
+                pairs.push((i, j));
+            }
+        }
+    }
+    pairs
+}
+
+fn against_solids(
+    body: usize,
+    outline: &[DVec2],
+    solids: &[Obstacle],
+    reach: f64,
+    found: &mut Vec<Touch>,
+) {
     for (k, solid) in solids.iter().enumerate() {
+        let key = |feature| Key {
+            owner: body,
+            against: Other::Solid(k),
+            feature,
+        };
         for (i, &v) in outline.iter().enumerate() {
             let (gap, normal) = solid.shape.distance(v);
             if gap <= reach {
                 found.push(Touch {
-                    solid: k,
-                    feature: Feature::Vertex(i),
+                    body,
+                    other: Other::Solid(k),
                     point: v - normal * gap,
                     normal,
                     gap,
+                    key: key(Feature::Vertex(i)),
                 });
             }
         }
@@ -157,17 +255,154 @@ fn touches(outline: &[DVec2], solids: &[Obstacle], reach: f64) -> Vec<Touch> {
                 if gap <= reach {
                     let normal = (nearest - centre) / distance;
                     found.push(Touch {
-                        solid: k,
-                        feature: Feature::Cap(c),
+                        body,
+                        other: Other::Solid(k),
                         point: centre + normal * radius,
                         normal,
                         gap,
+                        key: key(Feature::Cap(c)),
                     });
                 }
             }
         }
     }
-    found
+}
+
+/// The outward unit normal of the edge from `a` to `b` of a counter-clockwise outline.
+fn outward(a: DVec2, b: DVec2) -> DVec2 {
+    let e = (b - a).normalize();
+    DVec2::new(e.y, -e.x)
+}
+
+/// The face of `reference` that separates `other` from it best: its index and the
+/// separation, the least distance of `other`'s vertices in front of it.
+fn best_face(reference: &[DVec2], other: &[DVec2]) -> (usize, f64) {
+    let n = reference.len();
+    let mut best = (0, f64::NEG_INFINITY);
+    for f in 0..n {
+        let (a, b) = (reference[f], reference[(f + 1) % n]);
+        let normal = outward(a, b);
+        let separation = other
+            .iter()
+            .map(|&v| normal.dot(v - a))
+            .fold(f64::INFINITY, f64::min);
+        if separation > best.1 {
+            best = (f, separation);
+        }
+    }
+    best
+}
+
+/// The points where bodies `i` and `j` touch, within `reach`: the other outline's
+/// vertices on the separating face, and the face's ends on the other outline.
+fn between(placed: &Placed, i: usize, j: usize, reach: f64, found: &mut Vec<Touch>) {
+    let (oi, oj) = (&placed.outlines[i], &placed.outlines[j]);
+    let (face_i, separation_i) = best_face(oi, oj);
+    let (face_j, separation_j) = best_face(oj, oi);
+    if separation_i.max(separation_j) > reach {
+        return;
+    }
+    // The reference face is the better separating one; parallel faces tie, and either
+    // gives the same line of touch.
+    let (reference, incident, face) = if separation_i >= separation_j {
+        (i, j, face_i)
+    } else {
+        (j, i, face_j)
+    };
+    let (ro, io) = (&placed.outlines[reference], &placed.outlines[incident]);
+    let (a, b) = (ro[face], ro[(face + 1) % ro.len()]);
+    let normal = outward(a, b);
+    let along = (b - a).normalize();
+    let length = a.distance(b);
+    let first = found.len();
+    for (k, &v) in io.iter().enumerate() {
+        let gap = normal.dot(v - a);
+        let s = along.dot(v - a);
+        if gap <= reach && s >= -reach && s <= length + reach {
+            found.push(Touch {
+                body: incident,
+                other: Other::Body(reference),
+                point: v - normal * gap,
+                normal,
+                gap,
+                key: Key {
+                    owner: incident,
+                    against: Other::Body(reference),
+                    feature: Feature::Vertex(k),
+                },
+            });
+        }
+    }
+    for (k, corner) in [(face, a), ((face + 1) % ro.len(), b)] {
+        let gap = signed_distance(corner, io);
+        let repeated = found[first..]
+            .iter()
+            .any(|t| t.point.distance(corner) <= reach.max(1e-9 * length));
+        if gap <= reach && !repeated {
+            found.push(Touch {
+                body: incident,
+                other: Other::Body(reference),
+                point: corner,
+                normal,
+                gap,
+                key: Key {
+                    owner: reference,
+                    against: Other::Body(incident),
+                    feature: Feature::Vertex(k),
+                },
+            });
+        }
+    }
+}
+
+/// The distance from `p` to a convex counter-clockwise `outline`: to its nearest edge
+/// outside, the depth below its nearest face (negative) inside.
+pub(crate) fn signed_distance(p: DVec2, outline: &[DVec2]) -> f64 {
+    let n = outline.len();
+    let mut deepest = f64::NEG_INFINITY;
+    let mut nearest = f64::INFINITY;
+    for k in 0..n {
+        let (a, b) = (outline[k], outline[(k + 1) % n]);
+        deepest = deepest.max(outward(a, b).dot(p - a));
+        let edge = b - a;
+        let s = ((p - a).dot(edge) / edge.length_squared()).clamp(0.0, 1.0);
+        nearest = nearest.min((a + edge * s).distance(p));
+    }
+    if deepest > 0.0 { nearest } else { deepest }
+}
+
+/// The gaps of every feature of the island, touching or not, by key: each vertex's
+/// distance from the solids and from the bodies near it (`pairs`), and each ramp end's
+/// from the outlines' edges. The first contact is where the least of those not already
+/// touching reaches zero.
+pub(crate) fn gaps(
+    placed: &Placed,
+    solids: &[Obstacle],
+    pairs: &[(usize, usize)],
+    mut each: impl FnMut(Key, f64),
+) {
+    for (body, outline) in placed.outlines.iter().enumerate() {
+        if placed.fixed[body] {
+            continue;
+        }
+        let mut found = Vec::new();
+        against_solids(body, outline, solids, f64::INFINITY, &mut found);
+        for t in found {
+            each(t.key, t.gap);
+        }
+    }
+    for &(i, j) in pairs {
+        for (owner, against) in [(i, j), (j, i)] {
+            for (k, &v) in placed.outlines[owner].iter().enumerate() {
+                let key = Key {
+                    owner,
+                    against: Other::Body(against),
+                    feature: Feature::Vertex(k),
+                };
+                each(key, signed_distance(v, &placed.outlines[against]));
+            }
+        }
+    }
 }
 
 /// The point of the outline's edges nearest `p` and its distance, when `p` lies outside
@@ -194,577 +429,7 @@ fn nearest_on_an_edge(outline: &[DVec2], p: DVec2) -> Option<(DVec2, f64)> {
     (!inside && interior && d > 0.0).then_some((q, d))
 }
 
-/// How near counts as touching, as a fraction of the body's size: rounding leaves a body
-/// resting on a plane a few ulps off it.
-const TOUCHING: f64 = 1e-9;
-
-/// A new contact is located to this fraction of the body's size: with speeds of metres
-/// per second, to well under 1e-9 s.
-const LOCATED: f64 = 1e-13;
-
-/// The most events (impacts, slides stopping) in one step of a body; the rest of the step
-/// is then taken without looking for more (a body chattering in a corner).
-const MOST_EVENTS: usize = 64;
-
-/// The most advances of the conservative search in one span.
-const MOST_ADVANCES: usize = 10_000;
-
-/// The body's acceleration now under the surfaces it rests on (no impact applied), and
-/// their forces.
-pub(crate) fn now(
-    rigid: &Rigid<'_>,
-    pose: Pose,
-    solids: &[Obstacle],
-    h: f64,
-) -> (DVec2, Vec<Applied>) {
-    let outline = pose.outline(rigid.outline);
-    let mut touching = touches(&outline, solids, TOUCHING * rigid.radius);
-    touching.sort_by(|a, b| a.gap.total_cmp(&b.gap));
-    touching.truncate(MOST_CONTACTS);
-    if touching.is_empty() {
-        return (rigid.gravity, Vec::new());
-    }
-    let (push, _, applied) = hold(rigid, &pose, &touching, solids, rigid.gravity.length() * h);
-    (push.linear, applied)
-}
-
-/// Moves a body `h` seconds on with `method`, against `solids`; returns its
-/// accelerations over the last part of the step, and what its impacts (the kinetic energy
-/// they took) and its sliding friction (μ N times the distance slid) took, joules.
-pub(crate) fn advance(
-    rigid: &Rigid<'_>,
-    pose: &mut Pose,
-    solids: &[Obstacle],
-    method: Integrator,
-    h: f64,
-) -> (Push, Taken) {
-    let band = TOUCHING * rigid.radius;
-    // Slower than what the field adds in a step, an impact would bounce less than a step
-    // high: it comes to rest instead, and no run of ever smaller bounces stalls the step.
-    let resting_speed = rigid.gravity.length() * h;
-    let mut left = h;
-    let mut push = Push {
-        linear: rigid.gravity,
-        angular: 0.0,
-    };
-    let mut events = 0;
-    let (mut struck, mut rubbed) = (0.0, 0.0);
-    while left > 0.0 {
-        let outline = pose.outline(rigid.outline);
-        let mut touching = touches(&outline, solids, band);
-        touching.sort_by(|a, b| a.gap.total_cmp(&b.gap));
-        touching.truncate(MOST_CONTACTS);
-        let mut slides = Vec::new();
-        if touching.is_empty() {
-            push = Push {
-                linear: rigid.gravity,
-                angular: 0.0,
-            };
-        } else {
-            let before = rigid.kinetic_energy(pose);
-            strike(rigid, pose, &touching, solids, resting_speed);
-            struck += before - rigid.kinetic_energy(pose);
-            (push, slides, _) = hold(rigid, pose, &touching, solids, resting_speed);
-        }
-        events += 1;
-        if events > MOST_EVENTS {
-            *pose = pose.after(push, method, left);
-            break;
-        }
-        let mut span = left;
-        let excluded: Vec<(usize, Feature)> =
-            touching.iter().map(|t| (t.solid, t.feature)).collect();
-        if let Some(at) = first_contact(rigid, *pose, push, method, span, solids, &excluded) {
-            span = span.min(at);
-        }
-        for slide in &slides {
-            if slide.speed * slide.acceleration < 0.0 {
-                span = span.min(-slide.speed / slide.acceleration);
-            }
-        }
-        rubbed += slides.iter().map(|slide| slide.work(span)).sum::<f64>();
-        *pose = pose.after(push, method, span);
-        left = if span >= left { 0.0 } else { left - span };
-    }
-    lift_out(rigid, pose, solids);
-    (
-        push,
-        Taken {
-            impacts: struck,
-            friction: rubbed,
-        },
-    )
-}
-
-/// Lifts a body out of a solid it has sunk into by more than the contact band (a body
-/// turning about a corner, whose constant forces over a step let the corner stray).
-fn lift_out(rigid: &Rigid<'_>, pose: &mut Pose, solids: &[Obstacle]) {
-    let outline = pose.outline(rigid.outline);
-    let deepest = touches(&outline, solids, 0.0)
-        .into_iter()
-        .min_by(|a, b| a.gap.total_cmp(&b.gap));
-    if let Some(touch) = deepest.filter(|t| t.gap < -TOUCHING * rigid.radius) {
-        pose.position -= touch.normal * touch.gap;
-    }
-}
-
-/// The first instant in (0, `span`] at which a point of the body, other than `excluded`,
-/// comes within [`LOCATED`] of a solid. Conservative advancement (no point moves faster
-/// than the bound, so no gap closes sooner than gap/bound), but by at least a
-/// [`SEARCH_PIECES`]th of the span: where that lands inside a solid, the first contact
-/// lies in the piece just taken and is found there by regula falsi (Illinois) on the
-/// least gap.
-fn first_contact(
-    rigid: &Rigid<'_>,
-    pose: Pose,
-    push: Push,
-    method: Integrator,
-    span: f64,
-    solids: &[Obstacle],
-    excluded: &[(usize, Feature)],
-) -> Option<f64> {
-    let tolerance = LOCATED * rigid.radius;
-    // The fastest any point moves over [s, span]: the centroid's speed and the spin's,
-    // each largest at an end of the span (both change linearly).
-    let fastest = |s: f64| {
-        let v = (pose.velocity + push.linear * s)
-            .length()
-            .max((pose.velocity + push.linear * span).length());
-        let w = (pose.spin + push.angular * s)
-            .abs()
-            .max((pose.spin + push.angular * span).abs());
-        v + w * rigid.radius
-    };
-    let gap_at = |s: f64| {
-        let outline = pose.after(push, method, s).outline(rigid.outline);
-        touches(&outline, solids, f64::INFINITY)
-            .into_iter()
-            .filter(|t| !excluded.contains(&(t.solid, t.feature)))
-            .map(|t| t.gap)
-            .fold(f64::INFINITY, f64::min)
-    };
-    let (mut s, mut gap) = (0.0, gap_at(0.0));
-    for _ in 0..MOST_ADVANCES {
-        if gap <= tolerance {
-            return Some(s);
-        }
-        let speed = fastest(s);
-        if !(speed > 0.0 && gap.is_finite()) {
-            return None;
-        }
-        let next = (s + (gap / speed).max(span / SEARCH_PIECES)).min(span);
-        let gap_next = gap_at(next);
-        if gap_next < -tolerance {
-            return Some(falsi((s, gap), (next, gap_next), tolerance, gap_at));
-        }
-        if next >= span && gap_next > tolerance {
-            return None;
-        }
-        (s, gap) = (next, gap_next);
-    }
-    Some(s)
-}
-
-/// The root of `gap` between `a` (gap above `tolerance`) and `b` (below −`tolerance`),
-/// by the Illinois method, to within `tolerance` of the gap: the instant returned is
-/// never past the root by more than that.
-fn falsi(
-    (mut a, mut ga): (f64, f64),
-    (mut b, mut gb): (f64, f64),
-    tolerance: f64,
-    gap: impl Fn(f64) -> f64,
-) -> f64 {
-    let mut side = 0;
-    for _ in 0..crate::tuning::EVENT_ITERATIONS {
-        let c = (a * gb - b * ga) / (gb - ga);
-        if !(c > a && c < b) {
-            break;
-        }
-        let gc = gap(c);
-        if gc.abs() <= tolerance {
-            return c;
-        }
-        if gc > 0.0 {
-            (a, ga) = (c, gc);
-            if side == 1 {
-                gb *= 0.5;
-            }
-            side = 1;
-        } else {
-            (b, gb) = (c, gc);
-            if side == -1 {
-                ga *= 0.5;
-            }
-            side = -1;
-        }
-    }
-    a
-}
-
-/// The least fraction of a span the search for a contact advances by at once.
-const SEARCH_PIECES: f64 = 16.0;
-
-/// The point velocity change per unit push at `at` along `along`: the body's answer at
-/// `r` along `to`.
-fn answer(rigid: &Rigid<'_>, at: DVec2, along: DVec2, r: DVec2, to: DVec2) -> f64 {
-    let turn = at.perp_dot(along) / rigid.inertia;
-    to.dot(along / rigid.mass + turn * r.perp())
-}
-
-/// The impacts of the touching points that approach their solids, together: the normal
-/// impulses by the complementarity problem (each approaching point leaves at e times its
-/// approach, slow ones at none), then Coulomb friction at each point that took one.
-fn strike(
-    rigid: &Rigid<'_>,
-    pose: &mut Pose,
-    touching: &[Touch],
-    solids: &[Obstacle],
-    resting_speed: f64,
-) {
-    let arms: Vec<DVec2> = touching.iter().map(|t| t.point - pose.position).collect();
-    let approach: Vec<f64> = touching
-        .iter()
-        .zip(&arms)
-        .map(|(t, &r)| t.normal.dot(pose.velocity_at(r)))
-        .collect();
-    if approach.iter().all(|&u| u >= 0.0) {
-        return;
-    }
-    let n = touching.len();
-    let m: Vec<Vec<f64>> = (0..n)
-        .map(|k| {
-            (0..n)
-                .map(|j| {
-                    answer(
-                        rigid,
-                        arms[j],
-                        touching[j].normal,
-                        arms[k],
-                        touching[k].normal,
-                    )
-                })
-                .collect()
-        })
-        .collect();
-    let q: Vec<f64> = (0..n)
-        .map(|k| {
-            let u = approach[k];
-            let e = solids[touching[k].solid].restitution;
-            if u < -resting_speed {
-                u + e * u
-            } else {
-                u.min(0.0)
-            }
-        })
-        .collect();
-    let Some(impulses) = solve::solve(&m, &q, n) else {
-        return;
-    };
-    for (k, &j) in impulses.iter().enumerate() {
-        apply(rigid, pose, arms[k], touching[k].normal * j);
-    }
-    if touching.iter().all(|t| solids[t.solid].friction == 0.0) {
-        return;
-    }
-    // Friction at the impacts: each point's normal and tangential impulses solved
-    // together (a tangential blow at a corner turns the body, which changes the corner's
-    // normal speed), sticking within μ jₙ or sliding on its edge, point by point until
-    // they agree.
-    let targets: Vec<f64> = q.iter().zip(&approach).map(|(q, u)| u - q).collect();
-    let mut given: Vec<(f64, f64)> = impulses.iter().map(|&j| (j, 0.0)).collect();
-    for _ in 0..FRICTION_PASSES {
-        for k in 0..n {
-            let (normal, r) = (touching[k].normal, arms[k]);
-            let tangent = normal.perp();
-            let mu = solids[touching[k].solid].friction;
-            let u = pose.velocity_at(r);
-            let (un, ut) = (normal.dot(u), tangent.dot(u));
-            let (jn, jt) = given[k];
-            let k_nn = answer(rigid, r, normal, r, normal);
-            let k_nt = answer(rigid, r, tangent, r, normal);
-            let k_tn = answer(rigid, r, normal, r, tangent);
-            let k_tt = answer(rigid, r, tangent, r, tangent);
-            // Sticking: the normal speed at its target and no slip.
-            let (bn, bt) = (targets[k] - un, -ut);
-            let det = k_nn * k_tt - k_nt * k_tn;
-            let (mut n_new, mut t_new) = if det.abs() > 0.0 {
-                (
-                    jn + (bn * k_tt - k_nt * bt) / det,
-                    jt + (k_nn * bt - k_tn * bn) / det,
-                )
-            } else {
-                (jn, jt)
-            };
-            if t_new.abs() > mu * n_new.max(0.0) {
-                // Sliding: the tangential impulse on the cone's edge.
-                let side = t_new.signum() * mu;
-                let scale = k_nn + k_nt * side;
-                n_new = if scale > 0.0 {
-                    (bn + k_nn * jn + k_nt * jt) / scale
-                } else {
-                    jn
-                };
-                t_new = side * n_new.max(0.0);
-            }
-            if n_new < 0.0 {
-                (n_new, t_new) = (0.0, 0.0);
-            }
-            apply(
-                rigid,
-                pose,
-                r,
-                normal * (n_new - jn) + tangent * (t_new - jt),
-            );
-            given[k] = (n_new, t_new);
-        }
-    }
-}
-
-/// The passes over the points of an impact that settle their friction together.
-const FRICTION_PASSES: usize = 32;
-
-/// Applies the impulse `j` at `r` from the centroid.
-fn apply(rigid: &Rigid<'_>, pose: &mut Pose, r: DVec2, j: DVec2) {
-    pose.velocity += j / rigid.mass;
-    pose.spin += r.perp_dot(j) / rigid.inertia;
-}
-
-/// A patch of a body sliding on a solid: its slip speed along `tangent` and how that
-/// changes, for locating the instant it stops.
-#[derive(Clone, Copy, Debug)]
-struct Slide {
-    speed: f64,
-    acceleration: f64,
-    /// The friction force, μ N, newtons.
-    force: f64,
-}
-
-impl Slide {
-    /// The work its friction does over `s` seconds, joules: μ N times the distance slid,
-    /// u s + a s²/2 (a span ends where a slide stops, so the slip keeps its sign).
-    fn work(&self, s: f64) -> f64 {
-        self.force * (self.speed * s + 0.5 * self.acceleration * s * s).abs()
-    }
-}
-
-/// The points of one solid a body rests on, with one normal: friction acts on the patch
-/// as a whole (on a plane its torque about the centroid is the same wherever along the
-/// patch it acts, so its share between the points is not needed).
-struct Patch {
-    solid: usize,
-    normal: DVec2,
-    points: Vec<usize>,
-    /// `None` while it sticks, else the friction's direction along the tangent (+1/−1).
-    sliding: Option<f64>,
-}
-
-/// The forces of the surfaces the body rests on: normal forces that keep every touching
-/// point from sinking (and pull none), friction that holds a patch still within μ N or
-/// slides against its motion with μ N. Returns the body's accelerations under them and the
-/// patches that slide.
-fn hold(
-    rigid: &Rigid<'_>,
-    pose: &Pose,
-    touching: &[Touch],
-    solids: &[Obstacle],
-    resting_speed: f64,
-) -> (Push, Vec<Slide>, Vec<Applied>) {
-    let free = Push {
-        linear: rigid.gravity,
-        angular: 0.0,
-    };
-    let arms: Vec<DVec2> = touching.iter().map(|t| t.point - pose.position).collect();
-    let speed_scale = pose.velocity.length() + pose.spin.abs() * rigid.radius;
-    let still = 1e-9 * (speed_scale + resting_speed) + f64::MIN_POSITIVE;
-    // Only points that neither leave nor strike rest: a bouncing body's points leave.
-    let resting: Vec<usize> = (0..touching.len())
-        .filter(|&k| touching[k].normal.dot(pose.velocity_at(arms[k])).abs() <= still)
-        .collect();
-    if resting.is_empty() {
-        return (free, Vec::new(), Vec::new());
-    }
-    let mut patches: Vec<Patch> = Vec::new();
-    for &k in &resting {
-        let t = &touching[k];
-        if let Some(patch) = patches
-            .iter_mut()
-            .find(|p| p.solid == t.solid && p.normal.dot(t.normal) > 1.0 - 1e-9)
-        {
-            patch.points.push(k);
-        } else {
-            let slip = t.normal.perp().dot(pose.velocity_at(arms[k]));
-            patches.push(Patch {
-                solid: t.solid,
-                normal: t.normal,
-                points: vec![k],
-                sliding: (slip.abs() > still).then(|| -slip.signum()),
-            });
-        }
-    }
-    for _ in 0..=patches.len() {
-        let Some(Held {
-            push,
-            totals: forces,
-            applied,
-        }) = forces(rigid, pose, (touching, solids), &arms, &resting, &patches)
-        else {
-            return (free, Vec::new(), Vec::new());
-        };
-        // A sticking patch that needs more friction than μ N slides, the friction then
-        // pushing the way it was needed.
-        let slipping = patches.iter().enumerate().find_map(|(p, patch)| {
-            let (grip, normal) = forces[p];
-            let mu = solids[patch.solid].static_friction;
-            (patch.sliding.is_none() && grip.abs() > mu * normal * (1.0 + 1e-12))
-                .then_some((p, grip))
-        });
-        if let Some((p, grip)) = slipping {
-            patches[p].sliding = Some(grip.signum());
-            continue;
-        }
-        let slides = patches
-            .iter()
-            .zip(&forces)
-            .filter(|(p, _)| p.sliding.is_some())
-            .map(|(p, &(_, normal))| {
-                let (k, tangent) = (p.points[0], p.normal.perp());
-                let r = arms[k];
-                let a = push.linear + push.angular * r.perp() - pose.spin.powi(2) * r;
-                Slide {
-                    speed: tangent.dot(pose.velocity_at(r)),
-                    acceleration: tangent.dot(a),
-                    force: solids[p.solid].friction * normal,
-                }
-            })
-            .collect();
-        return (push, slides, applied);
-    }
-    (free, Vec::new(), Vec::new())
-}
-
-/// The forces for the patches as they are (sticking or sliding): the body's
-/// accelerations, and each patch's friction and total normal force.
-fn forces(
-    rigid: &Rigid<'_>,
-    pose: &Pose,
-    (touching, solids): (&[Touch], &[Obstacle]),
-    arms: &[DVec2],
-    resting: &[usize],
-    patches: &[Patch],
-) -> Option<Held> {
-    let n = resting.len();
-    let sticking: Vec<usize> = (0..patches.len())
-        .filter(|&p| patches[p].sliding.is_none())
-        .collect();
-    let patch_of = |k: usize| patches.iter().position(|p| p.points.contains(&k));
-    // Each unknown as a unit force at an arm.
-    let mut columns: Vec<(DVec2, DVec2)> = Vec::new();
-    for &k in resting {
-        let normal = touching[k].normal;
-        let mut force = normal;
-        if let Some(direction) = patch_of(k).and_then(|p| patches[p].sliding) {
-            force += normal.perp() * (direction * solids[touching[k].solid].friction);
-        }
-        columns.push((force, arms[k]));
-    }
-    for &p in &sticking {
-        let k = patches[p].points[0];
-        columns.push((patches[p].normal.perp(), arms[k]));
-    }
-    // Each condition: a point's acceleration along a direction.
-    let mut rows: Vec<(DVec2, DVec2)> = resting
-        .iter()
-        .map(|&k| (touching[k].normal, arms[k]))
-        .collect();
-    rows.extend(
-        sticking
-            .iter()
-            .map(|&p| (patches[p].normal.perp(), arms[patches[p].points[0]])),
-    );
-    let accelerate = |force: DVec2, arm: DVec2| Push {
-        linear: force / rigid.mass,
-        angular: arm.perp_dot(force) / rigid.inertia,
-    };
-    let along = |push: Push, (to, r): (DVec2, DVec2)| to.dot(push.linear + push.angular * r.perp());
-    let m: Vec<Vec<f64>> = rows
-        .iter()
-        .map(|&row| {
-            columns
-                .iter()
-                .map(|&(f, r)| along(accelerate(f, r), row))
-                .collect()
-        })
-        .collect();
-    let q: Vec<f64> = rows
-        .iter()
-        .map(|&(to, r)| to.dot(rigid.gravity - pose.spin.powi(2) * r))
-        .collect();
-    let x = solve::solve(&m, &q, n)?;
-    let mut push = Push {
-        linear: rigid.gravity,
-        angular: 0.0,
-    };
-    for (&(f, r), &amount) in columns.iter().zip(&x) {
-        let a = accelerate(f * amount, r);
-        push.linear += a.linear;
-        push.angular += a.angular;
-    }
-    let mut applied = Vec::new();
-    for (column, &k) in resting.iter().enumerate() {
-        let (normal, amount) = (touching[k].normal, x[column]);
-        applied.push(Applied {
-            arm: arms[k],
-            force: normal * amount,
-            friction: false,
-        });
-        if let Some(direction) = patch_of(k).and_then(|p| patches[p].sliding) {
-            let mu = solids[touching[k].solid].friction;
-            applied.push(Applied {
-                arm: arms[k],
-                force: normal.perp() * (direction * mu * amount),
-                friction: true,
-            });
-        }
-    }
-    for (s, &p) in sticking.iter().enumerate() {
-        applied.push(Applied {
-            arm: arms[patches[p].points[0]],
-            force: patches[p].normal.perp() * x[n + s],
-            friction: true,
-        });
-    }
-    let totals = patches
-        .iter()
-        .enumerate()
-        .map(|(p, patch)| {
-            let normal: f64 = patch
-                .points
-                .iter()
-                .map(|k| x[resting.iter().position(|r| r == k).unwrap_or(0)])
-                .sum();
-            let grip = sticking
-                .iter()
-                .position(|&s| s == p)
-                .map_or(0.0, |s| x[n + s]);
-            (grip, normal)
-        })
-        .collect();
-    Some(Held {
-        push,
-        totals,
-        applied,
-    })
-}
-
-/// What the surfaces' forces come to: the body's accelerations, each patch's friction and
-/// total normal force, and each force where it acts.
-struct Held {
-    push: Push,
-    totals: Vec<(f64, f64)>,
-    applied: Vec<Applied>,
-}
-
-/// A force of a surface on a body, where it acts.
+/// A force on a body, where it acts.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Applied {
     /// From the centroid to where it acts, m.
@@ -773,4 +438,59 @@ pub struct Applied {
     pub force: DVec2,
     /// Friction (along the surface), or the normal force.
     pub friction: bool,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn square(centre: DVec2, half: f64) -> Vec<DVec2> {
+        [(-1.0, -1.0), (1.0, -1.0), (1.0, 1.0), (-1.0, 1.0)]
+            .iter()
+            .map(|&(x, y)| centre + DVec2::new(x, y) * half)
+            .collect()
+    }
+
+    fn placed_touches(outlines: &[Vec<DVec2>], centres: &[DVec2]) -> Vec<Touch> {
+        let radii: Vec<f64> = outlines
+            .iter()
+            .zip(centres)
+            .map(|(o, &c)| o.iter().fold(0.0, |r: f64, v| r.max(v.distance(c))))
+            .collect();
+        let placed = Placed {
+            outlines: outlines.to_vec(),
+            centres: centres.to_vec(),
+            radii,
+            fixed: vec![false, false],
+            collide: true,
+        };
+        touches(&placed, &[], 1e-9)
+    }
+
+    /// A box resting on a wider one touches at its two lower corners, the normal up
+    /// into it; one resting on a box of its own width touches at two points, not four.
+    #[test]
+    fn a_box_on_a_box_touches_at_two_corners() {
+        for upper in [0.5, 1.0] {
+            let centres = [DVec2::ZERO, DVec2::new(0.0, 1.0 + upper)];
+            let outlines = [square(centres[0], 1.0), square(centres[1], upper)];
+            let found = placed_touches(&outlines, &centres);
+            assert_eq!(found.len(), 2, "{found:?}");
+            for t in &found {
+                assert_eq!((t.body, t.other), (1, Other::Body(0)));
+                assert!((t.normal - DVec2::Y).length() < 1e-15);
+                assert!(t.gap.abs() < 1e-15 && (t.point.y - 1.0).abs() < 1e-15);
+            }
+        }
+    }
+
+    /// A point's distance from a square: outside to its nearest edge or corner, inside
+    /// the depth below the nearest face.
+    #[test]
+    fn signed_distance_of_a_point() {
+        let s = square(DVec2::ZERO, 1.0);
+        assert!((signed_distance(DVec2::new(3.0, 0.0), &s) - 2.0).abs() < 1e-15);
+        assert!((signed_distance(DVec2::new(4.0, 5.0), &s) - 5.0).abs() < 1e-15);
+        assert!((signed_distance(DVec2::new(0.5, 0.0), &s) + 0.5).abs() < 1e-15);
+    }
 }

@@ -2,15 +2,17 @@
 //! moved through the step the particles took.
 //!
 //! A body feels the uniform field at its centroid, which gives it no torque, and the
-//! forces of the walls and ramps it touches (`contact.rs`): between events its
+//! forces of the walls, ramps and other bodies it touches (`contact.rs` finds where,
+//! `island.rs` moves bodies that may touch one another together): between events its
 //! accelerations are constant, and the integration methods take their own step on that
 //! motion — euler x + v h, semi-implicit euler x + (v + a h) h, and the others (verlet,
 //! rk4, pefrl, dopri5), whose error vanishes for a constant acceleration,
 //! x + v h + a h²/2 — so that a body under euler departs from the parabola exactly as a
-//! particle beside it does. Bodies do not yet meet particles or each other: they pass
-//! through them (docs/scene-format.md says so).
+//! particle beside it does. Bodies do not yet meet particles: they pass through them
+//! (docs/scene-format.md says so).
 
 mod contact;
+mod island;
 mod solve;
 
 use std::sync::Arc;
@@ -18,7 +20,8 @@ use std::sync::Arc;
 use glam::DVec2;
 
 pub use contact::Applied;
-use contact::{Pose, Push, Rigid};
+use contact::{Pose, Rigid};
+use island::Island;
 
 use crate::contacts::obstacles::{self, Obstacle};
 use crate::diagnostics::{Diagnostics, ParticleReadout};
@@ -46,6 +49,10 @@ pub(crate) struct Bodies {
     fixed: Arc<[bool]>,
     /// The farthest vertex from the centroid, m.
     radius: Arc<[f64]>,
+    /// Each body's restitution, kinetic and static friction, met by another body's.
+    coefficients: Arc<[(f64, f64, f64)]>,
+    /// Whether bodies meet each other (`[world] collisions`).
+    collide: bool,
     /// The walls and ramps.
     solids: Arc<[Obstacle]>,
     /// The uniform field, m/s².
@@ -65,6 +72,18 @@ pub(crate) struct Bodies {
     /// Radians per second, counter-clockwise.
     spin: Vec<f64>,
 }
+
+/// The root of `i`'s group in a union–find forest, halving the path on the way.
+fn find(root: &mut [usize], mut i: usize) -> usize {
+    while root[i] != i {
+        root[i] = root[root[i]];
+        i = root[i];
+    }
+    i
+}
+
+/// Bodies this close, as a fraction of the largest's size, are in touch.
+const TOUCHING_REACH: f64 = 1e-9;
 
 impl Bodies {
     pub fn new(scene: &Scene) -> Self {
@@ -90,6 +109,11 @@ impl Bodies {
                         .fold(0.0, |r: f64, v| r.max(v.length()))
                 })
                 .collect(),
+            coefficients: bodies
+                .iter()
+                .map(|b| (b.restitution, b.friction, b.static_friction()))
+                .collect(),
+            collide: scene.world.collisions,
             solids: obstacles::obstacles(scene).into(),
             gravity: scene.world.gravity.to_dvec2(),
             acceleration: Vec::new(),
@@ -135,69 +159,145 @@ impl Bodies {
     }
 
     fn rigid(&self, i: usize) -> Rigid<'_> {
+        let (restitution, friction, static_friction) = self.coefficients[i];
         Rigid {
             mass: self.mass[i],
             inertia: self.inertia[i],
             outline: &self.outline[i],
             radius: self.radius[i],
             gravity: self.gravity,
+            fixed: self.fixed[i],
+            restitution,
+            friction,
+            static_friction,
         }
     }
 
-    /// Finds what each body's accelerations are at the start, under the surfaces it
-    /// rests on (a step of `h` sets how slow an approach comes to rest).
+    /// The bodies that may touch one another while each moves at most `travel` metres,
+    /// in groups, each in scene order: moving bodies joined through the moving bodies
+    /// near them, with the fixed bodies near any of them (a fixed body joins no two
+    /// groups, so a floor of boxes does not make one island of everything on it).
+    fn islands(&self, travel: f64) -> Vec<Vec<usize>> {
+        let n = self.len();
+        let reach =
+            2.0 * travel + TOUCHING_REACH * self.radius.iter().fold(0.0, |r: f64, &x| r.max(x));
+        let near = |i: usize, j: usize| {
+            self.collide
+                && self.position[i].distance(self.position[j]) - self.radius[i] - self.radius[j]
+                    <= reach
+        };
+        let mut root: Vec<usize> = (0..n).collect();
+        let moving: Vec<usize> = (0..n).filter(|&i| !self.fixed[i]).collect();
+        for (a, &i) in moving.iter().enumerate() {
+            for &j in &moving[a + 1..] {
+                if near(i, j) {
+                    let (ri, rj) = (find(&mut root, i), find(&mut root, j));
+                    root[ri.max(rj)] = ri.min(rj);
+                }
+            }
+        }
+        let mut groups: Vec<Vec<usize>> = Vec::new();
+        let mut group_of = vec![usize::MAX; n];
+        for &i in &moving {
+            let r = find(&mut root, i);
+            if group_of[r] == usize::MAX {
+                group_of[r] = groups.len();
+                groups.push(Vec::new());
+            }
+            groups[group_of[r]].push(i);
+        }
+        for group in &mut groups {
+            let fixed: Vec<usize> = (0..n)
+                .filter(|&f| self.fixed[f] && group.iter().any(|&i| near(i, f)))
+                .collect();
+            group.extend(fixed);
+            group.sort_unstable();
+        }
+        groups
+    }
+
+    fn island(&self, members: &[usize]) -> (Island<'_>, Vec<Pose>) {
+        (
+            Island {
+                members: members.iter().map(|&i| self.rigid(i)).collect(),
+                solids: &self.solids,
+                collide: self.collide,
+            },
+            members.iter().map(|&i| self.pose(i)).collect(),
+        )
+    }
+
+    /// Finds what each body's accelerations are at the start, under what it rests on
+    /// (a step of `h` sets how slow an approach comes to rest).
     pub fn settle(&mut self, h: f64) {
         self.time_step = h;
-        self.acceleration = (0..self.len())
-            .map(|i| contact::now(&self.rigid(i), self.pose(i), &self.solids, h).0)
-            .collect();
+        self.acceleration = vec![self.gravity; self.len()];
+        for members in self.islands(0.0) {
+            let (island, poses) = self.island(&members);
+            let pushes = island.now(&poses, h).0;
+            for (&i, push) in members.iter().zip(pushes) {
+                self.acceleration[i] = push.linear;
+            }
+        }
     }
 
     /// The forces on body `i` now, each where it acts: its weight at the centroid, then
-    /// the normal force and friction of each surface it rests on.
+    /// the normal force and friction of each surface or body it rests on.
     pub fn forces(&self, i: usize) -> Vec<Applied> {
         let weight = Applied {
             arm: DVec2::ZERO,
             force: self.gravity * self.mass[i],
             friction: false,
         };
-        let contacts = if self.fixed[i] {
-            Vec::new()
-        } else {
-            contact::now(&self.rigid(i), self.pose(i), &self.solids, self.time_step).1
+        let mut forces = vec![weight];
+        if self.fixed[i] {
+            return forces;
+        }
+        let Some(members) = self.islands(0.0).into_iter().find(|g| g.contains(&i)) else {
+            return forces;
         };
-        std::iter::once(weight).chain(contacts).collect()
+        let (island, poses) = self.island(&members);
+        let me = members.iter().position(|&m| m == i);
+        forces.extend(
+            island
+                .now(&poses, self.time_step)
+                .1
+                .into_iter()
+                .filter(|&(body, _)| Some(body) == me)
+                .map(|(_, applied)| applied),
+        );
+        forces
     }
 
     /// Moves every body through a step of `h` seconds taken with `method`; returns what
     /// the surfaces took from the bodies' energy in it.
     pub fn advance(&mut self, method: Integrator, h: f64) -> Taken {
         self.acceleration.resize(self.len(), self.gravity);
+        // How far any body may go in the step, with room for what an impact gives it.
+        let fastest = (0..self.len())
+            .filter(|&i| !self.fixed[i])
+            .map(|i| {
+                self.velocity[i].length()
+                    + self.gravity.length() * h
+                    + self.spin[i].abs() * self.radius[i]
+            })
+            .fold(0.0, f64::max);
         let mut taken = Taken::default();
-        for i in 0..self.len() {
-            if self.fixed[i] {
-                continue;
+        for members in self.islands(2.0 * fastest * h) {
+            let (island, mut poses) = self.island(&members);
+            let (pushes, books) = island.advance(&mut poses, method, h);
+            taken.impacts += books.impacts;
+            taken.friction += books.friction;
+            for ((&i, pose), push) in members.iter().zip(poses).zip(pushes) {
+                if self.fixed[i] {
+                    continue;
+                }
+                self.acceleration[i] = push.linear;
+                self.position[i] = pose.position;
+                self.velocity[i] = pose.velocity;
+                self.angle[i] = pose.angle;
+                self.spin[i] = pose.spin;
             }
-            let mut pose = self.pose(i);
-            let push = if self.solids.is_empty() {
-                let free = Push {
-                    linear: self.gravity,
-                    angular: 0.0,
-                };
-                pose = pose.after(free, method, h);
-                free
-            } else {
-                let (push, books) =
-                    contact::advance(&self.rigid(i), &mut pose, &self.solids, method, h);
-                taken.impacts += books.impacts;
-                taken.friction += books.friction;
-                push
-            };
-            self.acceleration[i] = push.linear;
-            self.position[i] = pose.position;
-            self.velocity[i] = pose.velocity;
-            self.angle[i] = pose.angle;
-            self.spin[i] = pose.spin;
         }
         taken
     }

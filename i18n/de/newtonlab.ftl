@@ -913,4 +913,5 @@ menu-answer-key = Arbeitsblatt mit Lösungen exportieren…
 menu-answer-key-hint = Das Arbeitsblatt, danach der Wert der Simulation für jede Frage auf einer eigenen Seite (PDF)
 file-title-pdf = Arbeitsblatt exportieren (PDF)
 notice-worksheet-saved = Arbeitsblatt gespeichert: { $path }
+menu-bodies = Starre Körper
 menu-lessons = Lektionen

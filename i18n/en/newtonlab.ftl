@@ -914,4 +914,5 @@ menu-answer-key = Export worksheet with answer key…
 menu-answer-key-hint = The worksheet, then the simulation's value of every question on a page of its own (PDF)
 file-title-pdf = Export the worksheet (PDF)
 notice-worksheet-saved = Worksheet written to { $path }
+menu-bodies = Rigid bodies
 menu-lessons = Lessons

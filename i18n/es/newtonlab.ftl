@@ -913,4 +913,5 @@ menu-answer-key = Exportar hoja de trabajo con soluciones…
 menu-answer-key-hint = La hoja de trabajo y, en una página aparte, el valor de la simulación para cada pregunta (PDF)
 file-title-pdf = Exportar la hoja de trabajo (PDF)
 notice-worksheet-saved = Hoja de trabajo guardada en { $path }
+menu-bodies = Cuerpos rígidos
 menu-lessons = Lecciones

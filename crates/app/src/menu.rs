@@ -155,16 +155,17 @@ impl App {
             .response
             .on_hover_text(tr("menu-edit-hint"));
             ui.menu_button(tr("menu-examples"), |ui| {
-                // The lessons in a menu of their own: one list of every scene would run
-                // past a laptop's screen.
-                let mut list = |ui: &mut Ui, lessons: bool| {
-                    for (name, title, _) in example_titles().iter().filter(|e| e.2 == lessons) {
+                // The rigid bodies and the lessons in menus of their own: one list of
+                // every scene would run past a laptop's screen.
+                let mut list = |ui: &mut Ui, kind: Kind| {
+                    for (name, title, _) in example_titles().iter().filter(|e| e.2 == kind) {
                         let hint = format!("example:{name}");
                         item(ui, title, &hint, Action::Example(name), true);
                     }
                 };
-                list(ui, false);
-                ui.menu_button(tr("menu-lessons"), |ui| list(ui, true));
+                list(ui, Kind::Particles);
+                ui.menu_button(tr("menu-bodies"), |ui| list(ui, Kind::Bodies));
+                ui.menu_button(tr("menu-lessons"), |ui| list(ui, Kind::Lesson));
             })
             .response
             .on_hover_text(tr("menu-examples-hint"));
@@ -364,7 +365,16 @@ impl App {
 }
 
 /// A built-in scene as the menu lists it: its name, its title, and whether it is a lesson.
-type Listed = (&'static str, String, bool);
+type Listed = (&'static str, String, Kind);
+
+/// Where an example is listed: the Examples menu itself, its rigid bodies' menu, or its
+/// lessons' menu (a lesson with bodies is a lesson).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Kind {
+    Particles,
+    Bodies,
+    Lesson,
+}
 
 /// Every built-in scene's name and title, read once: the menu is drawn every frame it is
 /// open, and parsing a thousand-ball scene each time would make it stutter.
@@ -375,9 +385,13 @@ fn example_titles() -> &'static [Listed] {
             .iter()
             .map(|e| {
                 let scene = e.scene().ok();
-                let lesson = scene.as_ref().is_some_and(|s| s.lesson.is_some());
+                let kind = match &scene {
+                    Some(s) if s.lesson.is_some() => Kind::Lesson,
+                    Some(s) if !s.bodies.is_empty() => Kind::Bodies,
+                    _ => Kind::Particles,
+                };
                 let title = scene.and_then(|s| s.name);
-                (e.name, title.unwrap_or_else(|| e.name.to_owned()), lesson)
+                (e.name, title.unwrap_or_else(|| e.name.to_owned()), kind)
             })
             .collect()
     })

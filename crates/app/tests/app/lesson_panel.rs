@@ -332,6 +332,24 @@ fn a_lesson_opens_from_the_examples_menu_in_the_student_s_view() {
     assert!(harness.state().panels.inspector, "the teacher's view again");
 }
 
+/// The rigid bodies' scenes are in Examples → Rigid bodies, out of the main list, which
+/// would otherwise run past a laptop's screen.
+#[test]
+fn rigid_bodies_open_from_their_own_menu() {
+    let mut harness = tall_harness(App::new(example_scene("pendulum")));
+    for label in ["Examples", "Rigid bodies", "A box dropped on a box"] {
+        harness.get_by_label(label).click();
+        harness.run();
+    }
+    assert_eq!(harness.state().document.scene().bodies.len(), 2);
+    harness.get_by_label("Examples").click();
+    harness.run();
+    assert!(
+        harness.query_by_label("A box dropped on a box").is_none(),
+        "not in the main list"
+    );
+}
+
 /// The lessons' instruments come with them: Galileo's stopwatch, armed, starts on Play
 /// and stops when the disc has rolled 2 m, at √(2 d / a) with a = g sin 20° / 1.5; the
 /// spring's takes a lap at each highest point, each a period 2π √(m / k). Both to 1e-6 s

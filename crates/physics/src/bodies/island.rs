@@ -20,7 +20,7 @@ use crate::contacts::obstacles::Obstacle;
 
 /// How near counts as touching, as a fraction of the bodies' size: rounding leaves a
 /// body resting on a plane a few ulps off it.
-const TOUCHING: f64 = 1e-9;
+pub(super) const TOUCHING: f64 = 1e-9;
 
 /// A new contact is located to this fraction of the bodies' size: with speeds of metres
 /// per second, to well under 1e-9 s.

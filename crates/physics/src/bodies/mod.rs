@@ -82,9 +82,6 @@ fn find(root: &mut [usize], mut i: usize) -> usize {
     i
 }
 
-/// Bodies this close, as a fraction of the largest's size, are in touch.
-const TOUCHING_REACH: f64 = 1e-9;
-
 impl Bodies {
     pub fn new(scene: &Scene) -> Self {
         let bodies = &scene.bodies;
@@ -180,7 +177,7 @@ impl Bodies {
     fn islands(&self, travel: f64) -> Vec<Vec<usize>> {
         let n = self.len();
         let reach =
-            2.0 * travel + TOUCHING_REACH * self.radius.iter().fold(0.0, |r: f64, &x| r.max(x));
+            2.0 * travel + island::TOUCHING * self.radius.iter().fold(0.0, |r: f64, &x| r.max(x));
         let near = |i: usize, j: usize| {
             self.collide
                 && self.position[i].distance(self.position[j]) - self.radius[i] - self.radius[j]

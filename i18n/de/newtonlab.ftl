@@ -409,6 +409,8 @@ scene-named = { $kind ->
         [string] Faden
         [ramp] Rampe
         [body] Körper
+        [pin] Stift
+        [hinge] Scharnier
         [series] Messreihe
         [slider] Schieberegler
         [question] Frage
@@ -421,6 +423,8 @@ scene-numbered = { $kind ->
         [string] Faden
         [ramp] Rampe
         [body] Körper
+        [pin] Stift
+        [hinge] Scharnier
         [series] Messreihe
         [slider] Schieberegler
         [question] Frage
@@ -471,6 +475,7 @@ scene-quantity-of-particle = „{ $text }“: eine Größe eines Teilchens ist e
 scene-not-a-quantity = „{ $text }“ ist keine Größe: schreiben Sie t, NAME.x (oder .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy; turning: .angle, .spin), STANGE.angle (oder .length, .tension) oder eine von { $keys }
 quantity-no-particle = „{ $text }“: es gibt kein Teilchen namens „{ $name }“ (die Teilchen: { $names })
 quantity-no-link = „{ $text }“: es gibt keine Stange, keinen Faden und keine Feder namens „{ $name }“ (vorhanden: { $names })
+quantity-no-joint = „{ $text }“: es gibt keinen Stift und kein Scharnier namens „{ $name }“ (vorhanden: { $names })
 quantity-spring-tension = „{ $text }“: „{ $name }“ ist eine Feder; ihr Winkel und ihre Länge lassen sich lesen, eine Spannkraft nur bei Stangen und Fäden
 event-malformed = „{ $text }“ ist kein Ereignis: schreiben Sie GRÖSSE crosses WERT, wahlweise gefolgt von up oder down (Ball.y crosses 0 down)
 event-value = „{ $text }“: „{ $value }“ ist keine endliche Zahl, die überschritten werden kann
@@ -832,8 +837,19 @@ scene-body-no-mass = braucht eine Masse (kg) oder eine Dichte (kg/m²)
 scene-body-mass-and-density = eine Masse oder eine Dichte angeben, nicht beides
 scene-body-static-friction = static_friction { $static } muss mindestens die Gleitreibung { $kinetic } sein
 scene-body-overlap = überlappt am Anfang den Körper „{ $other }“: die beiden auseinanderrücken
+scene-motor = motor muss {"{"} torque = N·m {"}"} oder {"{"} spin = rad/s, max_torque = N·m {"}"} sein
+scene-joint-no-body = es gibt keinen Körper „{ $name }“ (Stifte und Scharniere halten Körper, [[body]])
+scene-joint-particle = „{ $name }“ ist ein Teilchen: Stifte und Scharniere halten Körper ([[body]]); Teilchen verbindet eine Stange oder ein Faden
+scene-hinge-itself = ein Scharnier verbindet zwei Körper, aber a und b sind beide „{ $body }“
+scene-joint-twice = hält dieselben Körper am selben Punkt wie „{ $other }“: lass eines weg
+scene-joint-fixed = hält nichts Bewegliches: jeder verbundene Körper ist fest
+scene-joint-anchor = { $field } liegt nicht am Gelenkpunkt at: lass es weg, dann wird es aus at bestimmt
 cli-check-body = Körper „{ $name }“: { $shape }, Fläche { $area } m², Masse { $mass } kg, Trägheitsmoment { $inertia } kg·m² um seinen Schwerpunkt, bei { $centroid } m im Umriss wie eingegeben
-cli-check-bodies-free = Körper stoßen an Wände und Rampen und liegen auf ihnen auf (mit deren Stoßzahl und Reibung); Teilchen und einander begegnen sie noch nicht, und Federn, Stangen und Fäden greifen noch nicht an ihnen an
+cli-check-pin = Stift „{ $name }“: hält den Körper „{ $body }“ bei { $at } m; sein Trägheitsmoment um den Stift ist { $inertia } kg·m²
+cli-check-hinge = Scharnier „{ $name }“: verbindet den Körper „{ $b }“ mit dem Körper „{ $a }“ bei { $at } m
+cli-check-motor-torque = , angetrieben von einem Motor mit { $torque } N·m
+cli-check-motor-spin = , angetrieben von einem Motor auf { $spin } rad/s mit höchstens { $torque } N·m
+cli-check-bodies-free = Körper stoßen an Wände, Rampen und einander, liegen auf ihnen auf und gleiten (zwischen zwei Körpern die kleinere Stoßzahl, das geometrische Mittel der Reibungen); Körper an Stiften und Scharnieren begegnen noch nichts; Teilchen begegnen Körper noch nicht, und Federn, Stangen und Fäden greifen noch nicht an ihnen an
 edit-move-body = Körper verschieben
 edit-add-body = Körper hinzufügen
 edit-delete-body = Körper löschen

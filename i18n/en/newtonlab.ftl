@@ -410,6 +410,8 @@ scene-named = { $kind ->
         [string] string
         [ramp] ramp
         [body] body
+        [pin] pin
+        [hinge] hinge
         [series] series
         [slider] slider
         [question] question
@@ -422,6 +424,8 @@ scene-numbered = { $kind ->
         [string] string
         [ramp] ramp
         [body] body
+        [pin] pin
+        [hinge] hinge
         [series] series
         [slider] slider
         [question] question
@@ -472,6 +476,7 @@ scene-quantity-of-particle = '{ $text }': a particle's quantity is one of { $key
 scene-not-a-quantity = '{ $text }' is not a quantity: write t, NAME.x (or .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy; turning: .angle, .spin), ROD.angle (or .length, .tension), or one of { $keys }
 quantity-no-particle = '{ $text }': there is no particle named '{ $name }' (the particles: { $names })
 quantity-no-link = '{ $text }': there is no rod, string or spring named '{ $name }' (they are: { $names })
+quantity-no-joint = '{ $text }': there is no pin or hinge named '{ $name }' (they are: { $names })
 quantity-spring-tension = '{ $text }': '{ $name }' is a spring; its angle and length can be read, a tension only of rods and strings
 event-malformed = '{ $text }' is not an event: write QUANTITY crosses VALUE, optionally followed by up or down (Ball.y crosses 0 down)
 event-value = '{ $text }': '{ $value }' is not a finite number to cross
@@ -833,8 +838,19 @@ scene-body-no-mass = needs a mass (kg) or a density (kg/m²)
 scene-body-mass-and-density = give a mass or a density, not both
 scene-body-static-friction = static_friction { $static } must be at least the kinetic friction { $kinetic }
 scene-body-overlap = overlaps body '{ $other }' at the start: move one of them apart
+scene-motor = motor must be {"{"} torque = N·m {"}"} or {"{"} spin = rad/s, max_torque = N·m {"}"}
+scene-joint-no-body = there is no body '{ $name }' (pins and hinges hold bodies, [[body]])
+scene-joint-particle = '{ $name }' is a particle: pins and hinges hold bodies ([[body]]); tie particles with a rod or a string
+scene-hinge-itself = a hinge joins two bodies, and a and b are both '{ $body }'
+scene-joint-twice = holds the same bodies at the same point as '{ $other }': leave one out
+scene-joint-fixed = holds nothing that can move: every body it joins is fixed
+scene-joint-anchor = { $field } is not at the joint's point at: leave it out, and it is found from at
 cli-check-body = body '{ $name }': { $shape }, area { $area } m², mass { $mass } kg, moment of inertia { $inertia } kg·m² about its centroid, at { $centroid } m in the outline as typed
-cli-check-bodies-free = bodies strike and rest on the walls and ramps (their restitution and friction); they do not yet meet particles or each other, and springs, rods and strings do not attach to them
+cli-check-pin = pin '{ $name }': holds body '{ $body }' at { $at } m; its moment of inertia about the pin is { $inertia } kg·m²
+cli-check-hinge = hinge '{ $name }': joins body '{ $b }' to body '{ $a }' at { $at } m
+cli-check-motor-torque = , driven by a motor of { $torque } N·m
+cli-check-motor-spin = , driven by a motor to { $spin } rad/s with at most { $torque } N·m
+cli-check-bodies-free = bodies strike, rest on and slide on the walls, the ramps and each other (the smaller restitution, the frictions' geometric mean between two bodies); pinned and hinged bodies meet nothing yet; bodies do not yet meet particles, and springs, rods and strings do not attach to them
 edit-move-body = move body
 edit-add-body = add body
 edit-delete-body = delete body

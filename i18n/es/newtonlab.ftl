@@ -409,6 +409,8 @@ scene-named = { $kind ->
         [string] cuerda
         [ramp] rampa
         [body] cuerpo
+        [pin] pasador
+        [hinge] bisagra
         [series] serie
         [slider] deslizador
         [question] pregunta
@@ -421,6 +423,8 @@ scene-numbered = { $kind ->
         [string] cuerda
         [ramp] rampa
         [body] cuerpo
+        [pin] pasador
+        [hinge] bisagra
         [series] serie
         [slider] deslizador
         [question] pregunta
@@ -471,6 +475,7 @@ scene-quantity-of-particle = «{ $text }»: una magnitud de una partícula es un
 scene-not-a-quantity = «{ $text }» no es una magnitud: escriba t, NOMBRE.x (o .y, .vx, .vy, .speed, .ax, .ay, .kinetic_energy; turning: .angle, .spin), BARRA.angle (o .length, .tension) o una de { $keys }
 quantity-no-particle = «{ $text }»: no hay ninguna partícula llamada «{ $name }» (las partículas: { $names })
 quantity-no-link = «{ $text }»: no hay ninguna barra, cuerda ni muelle llamado «{ $name }» (los que hay: { $names })
+quantity-no-joint = «{ $text }»: no hay ningún pasador ni bisagra llamado «{ $name }» (los que hay: { $names })
 quantity-spring-tension = «{ $text }»: «{ $name }» es un muelle; se leen su ángulo y su longitud, una tensión solo de barras y cuerdas
 event-malformed = «{ $text }» no es un evento: escriba MAGNITUD crosses VALOR, seguido opcionalmente de up o down (Ball.y crosses 0 down)
 event-value = «{ $text }»: «{ $value }» no es un número finito que cruzar
@@ -832,8 +837,19 @@ scene-body-no-mass = necesita una masa (kg) o una densidad (kg/m²)
 scene-body-mass-and-density = dé una masa o una densidad, no ambas
 scene-body-static-friction = static_friction { $static } debe ser al menos el rozamiento cinético { $kinetic }
 scene-body-overlap = se solapa con el cuerpo «{ $other }» al comenzar: separe uno de ellos
+scene-motor = motor debe ser {"{"} torque = N·m {"}"} o {"{"} spin = rad/s, max_torque = N·m {"}"}
+scene-joint-no-body = no hay ningún cuerpo «{ $name }» (pasadores y bisagras sujetan cuerpos, [[body]])
+scene-joint-particle = «{ $name }» es una partícula: pasadores y bisagras sujetan cuerpos ([[body]]); une partículas con una varilla o una cuerda
+scene-hinge-itself = una bisagra une dos cuerpos, pero a y b son ambos «{ $body }»
+scene-joint-twice = sujeta los mismos cuerpos en el mismo punto que «{ $other }»: quita uno
+scene-joint-fixed = no sujeta nada que pueda moverse: todos sus cuerpos son fijos
+scene-joint-anchor = { $field } no está en el punto de la articulación at: omítelo y se calcula a partir de at
 cli-check-body = cuerpo «{ $name }»: { $shape }, área { $area } m², masa { $mass } kg, momento de inercia { $inertia } kg·m² respecto a su centroide, en { $centroid } m del contorno tal como se escribió
-cli-check-bodies-free = los cuerpos chocan con paredes y rampas y se apoyan en ellas (con su restitución y rozamiento); aún no se encuentran con partículas ni entre sí, y resortes, varillas y cuerdas no se les unen
+cli-check-pin = pasador «{ $name }»: sujeta el cuerpo «{ $body }» en { $at } m; su momento de inercia respecto al pasador es { $inertia } kg·m²
+cli-check-hinge = bisagra «{ $name }»: une el cuerpo «{ $b }» al cuerpo «{ $a }» en { $at } m
+cli-check-motor-torque = , movido por un motor de { $torque } N·m
+cli-check-motor-spin = , movido por un motor a { $spin } rad/s con { $torque } N·m como máximo
+cli-check-bodies-free = los cuerpos chocan con paredes, rampas y entre sí, se apoyan y deslizan sobre ellos (entre dos cuerpos, la menor restitución y la media geométrica de los rozamientos); los cuerpos con pasador o bisagra aún no se encuentran con nada; aún no se encuentran con partículas, y resortes, varillas y cuerdas no se les unen
 edit-move-body = mover cuerpo
 edit-add-body = añadir cuerpo
 edit-delete-body = eliminar cuerpo

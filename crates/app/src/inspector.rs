@@ -836,6 +836,7 @@ fn section_kind(scene: &Scene, section: Section) -> &'static str {
         Section::Tie(i) => scene.ties.get(i).map_or("rod", |tie| tie.kind.as_str()),
         Section::Ramp(_) => "ramp",
         Section::Body(_) => "body",
+        Section::Joint(i) => scene.joints.get(i).map_or("pin", |j| j.kind_str()),
         Section::Graph(_) => "graph",
         Section::Series(_) => "series",
         Section::Root | Section::View | Section::Instruments | Section::Stopwatch => "scene",

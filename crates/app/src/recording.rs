@@ -10,7 +10,8 @@
 //! scene keeps that resolution for about three hours of simulated time.
 
 use physics::{
-    Anchor, DVec2, Diagnostics, ImpactRecord, Link, LinkOf, Of, Quantity, Simulation, Total,
+    Anchor, DVec2, Diagnostics, ImpactRecord, JointOf, Link, LinkOf, Of, Quantity, Simulation,
+    Total,
 };
 
 /// Numbers kept at most: 32 MiB of f64.
@@ -24,6 +25,11 @@ const TOTALS: [Total; 6] = Total::ALL;
 /// Numbers per particle per sample after the totals, when any particle turns: angle,
 /// spin, angular momentum.
 const PER_TURNING: usize = 3;
+/// Numbers per rigid body per sample, after the particles' turning: every particle
+/// quantity but the speed, in [`Of::ALL`]'s order.
+const PER_BODY: usize = Of::ALL.len();
+/// Numbers per joint per sample, after the bodies': angle, force x and y, torque.
+const PER_JOINT: usize = 4;
 
 /// Where a quantity is in a sample: a number stored, the speed from the velocity's two
 /// components, or a rod's, string's or spring's angle or length from its ends.
@@ -58,6 +64,10 @@ pub struct Recording {
     width: usize,
     /// Whether the samples hold the particles' turning.
     turning: bool,
+    /// The rigid bodies' names at Play, whose numbers follow the particles' turning.
+    bodies: Vec<String>,
+    /// The pins' and hinges' names at Play, whose numbers follow the bodies'.
+    joints: Vec<String>,
     /// Samples, one after another.
     data: Vec<f64>,
     /// Steps between samples.
@@ -100,8 +110,12 @@ impl Recording {
                     PER_TURNING * simulation.len()
                 } else {
                     0
-                },
+                }
+                + PER_BODY * simulation.body_names().len()
+                + PER_JOINT * simulation.joint_names().len(),
             turning: simulation.turns(),
+            bodies: simulation.body_names().to_vec(),
+            joints: simulation.joint_names().to_vec(),
             data: Vec::new(),
             stride,
             first_step: simulation.steps_taken(),
@@ -181,6 +195,27 @@ impl Recording {
             Total::AngularMomentum => d.angular_momentum,
         }));
         self.data.extend(turning);
+        for b in 0..self.bodies.len() {
+            let body = simulation.body(b);
+            self.data.extend(Of::ALL.map(|of| match of {
+                Of::X => body.position.x,
+                Of::Y => body.position.y,
+                Of::Vx => body.velocity.x,
+                Of::Vy => body.velocity.y,
+                Of::Speed => body.speed,
+                Of::Ax => body.acceleration.x,
+                Of::Ay => body.acceleration.y,
+                Of::KineticEnergy => body.kinetic_energy,
+                Of::Angle => body.angle,
+                Of::Spin => body.spin,
+                Of::AngularMomentum => body.angular_momentum,
+            }));
+        }
+        for j in 0..self.joints.len() {
+            let joint = simulation.joint(j);
+            self.data
+                .extend([joint.angle, joint.force.x, joint.force.y, joint.torque]);
+        }
         d
     }
 
@@ -228,6 +263,9 @@ impl Recording {
     /// Where `quantity` is in every sample; `None` for a particle not in the run. Found
     /// once, then read for every sample with [`Self::at`].
     pub fn column(&self, quantity: &Quantity) -> Option<Column> {
+        if let Some(column) = self.body_column(quantity) {
+            return Some(column);
+        }
         Some(match quantity {
             Quantity::Time => Column::Plain(0),
             Quantity::Particle(name, of) => {
@@ -274,17 +312,58 @@ impl Recording {
                 let j = TOTALS.iter().position(|t| t == total)?;
                 Column::Plain(self.turning_start() - TOTALS.len() + j)
             }
+            Quantity::Joint(..) => return None,
         })
+    }
+
+    /// Where a rigid body's or a joint's quantity is in every sample; `None` for any
+    /// other.
+    fn body_column(&self, quantity: &Quantity) -> Option<Column> {
+        let bodies = self.turning_start()
+            + if self.turning {
+                PER_TURNING * self.names.len()
+            } else {
+                0
+            };
+        let joints = bodies + PER_BODY * self.bodies.len();
+        let body = |name: &str| self.bodies.iter().position(|n| n == name);
+        let joint = |name: &str| self.joints.iter().position(|n| n == name);
+        let of_body = |b: usize, of: Of| {
+            let k = Of::ALL.iter().position(|&o| o == of).unwrap_or(0);
+            Column::Plain(bodies + PER_BODY * b + k)
+        };
+        let of_joint = |j: usize, of: JointOf| {
+            let k = [
+                JointOf::Angle,
+                JointOf::ForceX,
+                JointOf::ForceY,
+                JointOf::Torque,
+            ]
+            .iter()
+            .position(|&o| o == of)
+            .unwrap_or(0);
+            Column::Plain(joints + PER_JOINT * j + k)
+        };
+        match quantity {
+            Quantity::Particle(name, of) if !self.index.contains_key(name) => {
+                body(name).map(|b| of_body(b, *of))
+            }
+            Quantity::Link(name, LinkOf::Angle)
+                if !self.index.contains_key(name) && !self.links.iter().any(|(n, _)| n == name) =>
+            {
+                joint(name)
+                    .map(|j| of_joint(j, JointOf::Angle))
+                    .or_else(|| body(name).map(|b| of_body(b, Of::Angle)))
+            }
+            Quantity::Joint(name, of) => joint(name).map(|j| of_joint(j, *of)),
+            _ => None,
+        }
     }
 
     /// Where the particles' turning begins in a sample: after the totals, at the end of
     /// the row when nothing turns.
     fn turning_start(&self) -> usize {
-        if self.turning {
-            self.width - PER_TURNING * self.names.len()
-        } else {
-            self.width
-        }
+        1 + PER_PARTICLE * self.names.len() + self.ties.len() + TOTALS.len()
     }
 
     /// The value in `column` at sample `k`.
@@ -434,6 +513,72 @@ mod tests {
             recording.value(0, &Quantity::Particle("nobody".into(), Of::X)),
             None
         );
+    }
+
+    /// A scene with a ball, a body on a pin and a hinged one records the bodies' and the
+    /// joints' quantities (a body's angle also as `NAME.angle`), each the simulation's
+    /// own value, and leaves the ball's where they were.
+    #[test]
+    fn bodies_and_joints_are_recorded() {
+        let text = r#"
+version = 1
+[[particle]]
+name = "ball"
+mass = 1.0
+position = [0.0, 3.0]
+velocity = [1.0, 2.0]
+[[body]]
+name = "ruler"
+shape = "box"
+width = 1.0
+height = 0.05
+mass = 0.5
+position = [0.5, 0.0]
+[[body]]
+name = "tag"
+shape = "box"
+width = 0.1
+height = 0.1
+mass = 0.1
+position = [1.0, -0.2]
+[[pin]]
+name = "nail"
+body = "ruler"
+at = [0.0, 0.0]
+motor = { torque = 0.3 }
+[[hinge]]
+name = "hook"
+a = "ruler"
+b = "tag"
+at = [1.0, 0.0]
+"#;
+        let scene = Scene::from_toml(text).expect("valid");
+        let mut simulation = Simulation::new(&scene).unwrap();
+        let mut recording = Recording::start(&simulation);
+        for _ in 0..200 {
+            simulation.step().unwrap();
+            recording.after_step(&simulation);
+        }
+        let k = recording.len() - 1;
+        let read = |text: &str| {
+            let quantity = Quantity::parse(text).expect(text);
+            recording.value(k, &quantity).expect(text)
+        };
+        for (text, expected) in [
+            ("ball.vy", simulation.velocities()[0].y),
+            ("ruler.angle", simulation.body(0).angle),
+            ("ruler.spin", simulation.body(0).spin),
+            ("tag.y", simulation.body(1).position.y),
+            ("tag.speed", simulation.body(1).speed),
+            ("nail.angle", simulation.joint(0).angle),
+            ("nail.force_y", simulation.joint(0).force.y),
+            ("nail.torque", 0.3),
+            ("hook.angle", simulation.joint(1).angle),
+            ("hook.force_x", simulation.joint(1).force.x),
+        ] {
+            assert_eq!(read(text).to_bits(), expected.to_bits(), "{text}");
+        }
+        assert!(read("nail.angle") < -1.0, "the ruler swings down");
     }
 
     /// A scene with a turning particle records its angle, spin and angular momentum

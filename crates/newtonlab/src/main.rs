@@ -237,6 +237,9 @@ fn check(source: &str) -> Result<(), Failure> {
         for body in &scene.bodies {
             out!("{}", describe_body(body));
         }
+        for joint in &scene.joints {
+            out!("{}", describe_joint(&scene, joint));
+        }
         if let Some(lesson) = &scene.lesson {
             let words = [
                 ("title", lesson.title.as_str()),
@@ -265,12 +268,61 @@ fn check(source: &str) -> Result<(), Failure> {
     Ok(())
 }
 /// A body's mass properties as `check` says them, to nine significant digits.
-fn describe_body(body: &physics::Body) -> String {
-    // Nine significant digits: the shortest text of the number rounded to them.
-    let number = |x: f64| {
-        let rounded: f64 = format!("{x:.8e}").parse().unwrap_or(x);
-        format!("{}", rounded + 0.0)
+/// `x` to nine significant digits, as the shortest text of the number rounded to them.
+fn nine_digits(x: f64) -> String {
+    let rounded: f64 = format!("{x:.8e}").parse().unwrap_or(x);
+    format!("{}", rounded + 0.0)
+}
+
+/// A pin's body and its moment of inertia about the pin (I + m d², what its swing
+/// obeys), or the two bodies a hinge joins; where, and its motor.
+fn describe_joint(scene: &physics::Scene, joint: &physics::Joint) -> String {
+    let at = joint.at.to_dvec2();
+    let place = format!("({}, {})", nine_digits(at.x), nine_digits(at.y));
+    let motor = match joint.motor {
+        None => String::new(),
+        Some(physics::Motor::Torque(torque)) => say(
+            "cli-check-motor-torque",
+            &[("torque", &nine_digits(torque))],
+        ),
+        Some(physics::Motor::Spin { spin, max_torque }) => say(
+            "cli-check-motor-spin",
+            &[
+                ("spin", &nine_digits(spin)),
+                ("torque", &nine_digits(max_torque)),
+            ],
+        ),
     };
+    let text = if let Some(a) = joint.other() {
+        say(
+            "cli-check-hinge",
+            &[
+                ("name", &joint.name),
+                ("a", a),
+                ("b", &joint.body),
+                ("at", &place),
+            ],
+        )
+    } else {
+        let body = scene.bodies.iter().find(|b| b.name == joint.body);
+        let about = body.map_or(f64::NAN, |b| {
+            b.inertia() + b.total_mass() * b.position.to_dvec2().distance_squared(at)
+        });
+        say(
+            "cli-check-pin",
+            &[
+                ("name", &joint.name),
+                ("body", &joint.body),
+                ("at", &place),
+                ("inertia", &nine_digits(about)),
+            ],
+        )
+    };
+    text + &motor
+}
+
+fn describe_body(body: &physics::Body) -> String {
+    let number = nine_digits;
     let outline = body.outline();
     let moments = physics::moments(&outline);
     // A centroid within rounding of the frame's origin is at it.

@@ -28,6 +28,12 @@ impl Simulation {
                 columns.push(format!("{name}.{quantity}"));
             }
         }
+        for (j, name) in self.joint_names().iter().enumerate() {
+            columns.push(format!("{name}.angle"));
+            if self.joint_is_pin(j) {
+                columns.extend([format!("{name}.force_x"), format!("{name}.force_y")]);
+            }
+        }
         columns.extend(
             [
                 "kinetic_energy",
@@ -84,6 +90,13 @@ impl Simulation {
                 b.angle,
                 b.spin,
             ]);
+        }
+        for j in 0..self.joint_names().len() {
+            let joint = self.joint(j);
+            out.push(joint.angle);
+            if self.joint_is_pin(j) {
+                out.extend([joint.force.x, joint.force.y]);
+            }
         }
         let energy = diagnostics.energy;
         out.extend([

@@ -78,7 +78,7 @@ mod constraints;
 mod contacts;
 mod csv;
 mod cycle;
-pub use bodies::Applied;
+pub use bodies::{Applied, JointReadout};
 pub use csv::csv_field;
 pub use cycle::{Cycle, NoCycle, cycle};
 mod diagnostics;
@@ -110,17 +110,18 @@ pub use glam::DVec2;
 pub use integrators::{Integrator, UnknownIntegrator};
 pub use parallel::every_core;
 pub use profile::{Clock, Profile, Stage};
-pub use quantity::{Anchor, Link, LinkOf, Of, Quantity, Reading, Total, angle_from_down};
+pub use quantity::{Anchor, JointOf, Link, LinkOf, Of, Quantity, Reading, Total, angle_from_down};
 pub use scene::error::{LoadError, Problem};
 pub use scene::fields;
 pub use scene::format::{SceneFormat, closest as closest_key};
 pub use scene::{
-    Body, Bounds, Color, Endpoint, FieldRef, Follow, Graph, Instruments, Lesson, Moments,
-    PairForces, Particle, Protractor, Question, Ramp, Rule, Scene, Section, Series, Settings,
-    Shape, Slider, Spring, Stopwatch, Tie, TieKind, Trigger, Vector, Verdict, View, World,
-    check_value, lesson, moments,
+    Body, Bounds, Color, Endpoint, FieldRef, Follow, Graph, Instruments, Joint, JointKind, Lesson,
+    Moments, Motor, PairForces, Particle, Protractor, Question, Ramp, Rule, Scene, Section, Series,
+    Settings, Shape, Slider, Spring, Stopwatch, Tie, TieKind, Trigger, Vector, Verdict, View,
+    World, check_value, lesson, moments,
 };
 pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};
 pub use trajectory::{
-    IMPACT_COLUMNS, LEDGER_COLUMNS, MAX_NUMBERS, MAX_STEPS, MAX_WORK, Plan, Row, Trajectory,
+    IMPACT_COLUMNS, LEDGER_COLUMNS, MAX_NUMBERS, MAX_STEPS, MAX_WORK, MOTOR_WORK_COLUMN, Plan, Row,
+    Trajectory,
 };

@@ -124,6 +124,44 @@ impl LinkOf {
     }
 }
 
+/// A quantity of a pin or a hinge.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum JointOf {
+    /// The body's turn (a hinge's b less a) from the joint's reference, degrees,
+    /// unwrapped (written `NAME.angle`, as a link's).
+    Angle,
+    /// The joint's force on the body it holds (a hinge's b), x, N.
+    ForceX,
+    /// The same, y.
+    ForceY,
+    /// The motor's torque on the body, N·m.
+    Torque,
+}
+
+impl JointOf {
+    /// The joint quantities other than the angle (which `NAME.angle` reads), by key.
+    pub const FORCES: [Self; 3] = [Self::ForceX, Self::ForceY, Self::Torque];
+
+    /// The key after the dot in `pin.force_x`.
+    pub fn key(self) -> &'static str {
+        match self {
+            Self::Angle => "angle",
+            Self::ForceX => "force_x",
+            Self::ForceY => "force_y",
+            Self::Torque => "torque",
+        }
+    }
+
+    /// The SI unit (degrees for the angle).
+    pub fn unit(self) -> &'static str {
+        match self {
+            Self::Angle => "°",
+            Self::ForceX | Self::ForceY => "N",
+            Self::Torque => "N·m",
+        }
+    }
+}
+
 /// A quantity of the whole system.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Total {
@@ -183,8 +221,11 @@ pub enum Quantity {
     Particle(String, Of),
     /// A system quantity.
     Total(Total),
-    /// `NAME.tension`, `NAME.angle`, `NAME.length` of a rod, string or spring.
+    /// `NAME.tension`, `NAME.angle`, `NAME.length` of a rod, string or spring (and
+    /// `NAME.angle` of a joint, a turning particle or a body).
     Link(String, LinkOf),
+    /// `NAME.force_x`, `NAME.force_y`, `NAME.torque` of a pin or a hinge.
+    Joint(String, JointOf),
 }
 
 impl Quantity {
@@ -208,6 +249,9 @@ impl Quantity {
         {
             if let Some(of) = LinkOf::ALL.into_iter().find(|of| of.key() == key) {
                 return Ok(Self::Link(name.to_owned(), of));
+            }
+            if let Some(of) = JointOf::FORCES.into_iter().find(|of| of.key() == key) {
+                return Ok(Self::Joint(name.to_owned(), of));
             }
             return match Of::ALL.into_iter().find(|of| of.key() == key) {
                 Some(of) => Ok(Self::Particle(name.to_owned(), of)),
@@ -233,6 +277,7 @@ impl Quantity {
             Self::Particle(_, of) => of.unit(),
             Self::Total(total) => total.unit(),
             Self::Link(_, of) => of.unit(),
+            Self::Joint(_, of) => of.unit(),
         }
     }
 
@@ -248,6 +293,7 @@ impl Quantity {
             ties: simulation.tie_names(),
             springs: simulation.spring_names(),
             bodies: simulation.body_names(),
+            joints: simulation.joint_names(),
         })
     }
 
@@ -261,11 +307,13 @@ impl Quantity {
         let ties = names(scene.ties.iter().map(|t| &t.name).collect());
         let springs = names(scene.springs.iter().map(|s| &s.name).collect());
         let bodies = names(scene.bodies.iter().map(|b| &b.name).collect());
+        let joints = names(scene.joints.iter().map(|j| &j.name).collect());
         self.find(&Names {
             particles: &particles,
             ties: &ties,
             springs: &springs,
             bodies: &bodies,
+            joints: &joints,
         })
         .map(|_| ())
     }
@@ -277,6 +325,7 @@ impl Quantity {
             ties,
             springs,
             bodies,
+            joints,
         } = *names;
         let find = |names: &[String], name: &str| names.iter().position(|n| n == name);
         match self {
@@ -292,6 +341,11 @@ impl Quantity {
             Self::Link(name, of) => {
                 if let Some(k) = find(ties, name) {
                     return Ok(Reading::Link(Link::Tie(k), *of));
+                }
+                if *of == LinkOf::Angle
+                    && let Some(j) = find(joints, name)
+                {
+                    return Ok(Reading::Joint(j, JointOf::Angle));
                 }
                 // `NAME.angle` of a particle or a body: a turning particle's orientation,
                 // a body's.
@@ -315,6 +369,9 @@ impl Quantity {
                     }
                 }
             }
+            Self::Joint(name, of) => find(joints, name)
+                .map(|j| Reading::Joint(j, *of))
+                .ok_or_else(|| unknown("quantity-no-joint", self, name, joints)),
         }
     }
 }
@@ -326,6 +383,7 @@ struct Names<'a> {
     ties: &'a [String],
     springs: &'a [String],
     bodies: &'a [String],
+    joints: &'a [String],
 }
 
 /// That `quantity` names `name`, which is not among `names`.
@@ -352,6 +410,7 @@ impl fmt::Display for Quantity {
             Self::Particle(name, of) => write!(f, "{name}.{}", of.key()),
             Self::Total(total) => f.write_str(total.key()),
             Self::Link(name, of) => write!(f, "{name}.{}", of.key()),
+            Self::Joint(name, of) => write!(f, "{name}.{}", of.key()),
         }
     }
 }
@@ -399,6 +458,8 @@ pub enum Reading {
     Total(Total),
     /// A quantity of a rod, string or spring.
     Link(Link, LinkOf),
+    /// A quantity of the pin or hinge at this index.
+    Joint(usize, JointOf),
     /// How far the particle at this index is past the line through `point` along its unit
     /// `normal`, metres: it crosses 0 where the particle's centre crosses the line.
     Side {
@@ -472,6 +533,15 @@ impl Simulation {
                 point,
                 normal,
             } => (self.positions()[particle] - point).dot(normal),
+            Reading::Joint(j, of) => {
+                let joint = self.joint(j);
+                match of {
+                    JointOf::Angle => joint.angle,
+                    JointOf::ForceX => joint.force.x,
+                    JointOf::ForceY => joint.force.y,
+                    JointOf::Torque => joint.torque,
+                }
+            }
             Reading::Link(link, of) => {
                 let (from, to) = self.link_ends(link);
                 let d = to - from;
@@ -509,6 +579,8 @@ mod tests {
             "rod.angle",
             "s 1.length",
             "string.tension",
+            "pin.force_x",
+            "hinge 2.torque",
         ] {
             let quantity = Quantity::parse(text).unwrap();
             assert_eq!(quantity.to_string(), text);

@@ -11,6 +11,7 @@ pub mod error;
 pub mod fields;
 pub mod format;
 pub mod instruments;
+mod joint;
 pub mod lesson;
 mod presentation;
 mod validate;
@@ -23,6 +24,8 @@ pub(crate) use newtonlab_i18n::tr_text as say;
 pub use body::{Body, Moments, Shape, moments};
 pub use error::{FieldRef, Section};
 pub use instruments::{Instruments, Protractor, Stopwatch, Trigger};
+pub(crate) use joint::in_frame;
+pub use joint::{Joint, JointKind, Motor};
 pub use lesson::{Lesson, Question, Slider, Verdict};
 pub use presentation::{Follow, Graph, Series, View};
 pub use validate::{Rule, check_value};
@@ -698,6 +701,9 @@ pub struct Scene {
     pub ramps: Vec<Ramp>,
     /// Rigid bodies, in file order; CSV columns follow the particles' in this order.
     pub bodies: Vec<Body>,
+    /// Pins and hinges: the pins in file order, then the hinges in file order; CSV
+    /// columns follow the bodies' in this order.
+    pub joints: Vec<Joint>,
     /// The app's graphs when the scene opens (`[[graph]]`), in file order.
     pub graphs: Vec<Graph>,
     /// The app's experiment series (`[[series]]`), in file order.
@@ -771,6 +777,13 @@ impl Scene {
     #[must_use]
     pub fn with_body(mut self, body: Body) -> Self {
         self.bodies.push(body);
+        self
+    }
+
+    /// Adds a pin or a hinge.
+    #[must_use]
+    pub fn with_joint(mut self, joint: Joint) -> Self {
+        self.joints.push(joint);
         self
     }
 

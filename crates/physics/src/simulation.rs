@@ -533,6 +533,7 @@ impl Simulation {
         if let Some(ledger) = &mut self.ledger {
             ledger.impacts += books.impacts;
             ledger.friction += books.friction;
+            ledger.motors += books.motors;
         }
         self.steps += 1;
         self.check_finite()?;

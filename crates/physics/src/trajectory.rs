@@ -40,6 +40,9 @@ pub const LEDGER_COLUMNS: [&str; 5] = [
     "dissipated_drag",
 ];
 
+/// The ledger's last column where the scene has a motor: the work the motors did, J.
+pub const MOTOR_WORK_COLUMN: &str = "work_motors";
+
 /// The impact table's columns.
 pub const IMPACT_COLUMNS: [&str; 7] = [
     "t",
@@ -196,6 +199,9 @@ impl Trajectory {
         let mut columns = self.simulation.csv_columns();
         if self.ledger_start.is_some() {
             columns.extend(LEDGER_COLUMNS.map(str::to_owned));
+            if self.simulation.has_motors() {
+                columns.push(MOTOR_WORK_COLUMN.to_owned());
+            }
         }
         columns
     }
@@ -337,6 +343,9 @@ fn row_values(simulation: &Simulation, ledger_start: Option<f64>, out: &mut Vec<
             residual,
             ledger.drag,
         ]);
+        if simulation.has_motors() {
+            out.push(ledger.motors);
+        }
     }
 }
 

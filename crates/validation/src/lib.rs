@@ -12,6 +12,7 @@ mod drag;
 mod events;
 mod experiments;
 pub mod figures;
+mod joints;
 mod methods;
 mod paper_method;
 pub mod report;
@@ -53,11 +54,12 @@ pub enum Group {
     Series,
     Turning,
     Bodies,
+    Joints,
 }
 
 impl Group {
     /// Every group, in the report's order.
-    pub const ALL: [Self; 14] = [
+    pub const ALL: [Self; 15] = [
         Self::Paper,
         Self::Rods,
         Self::Strings,
@@ -72,6 +74,7 @@ impl Group {
         Self::Series,
         Self::Turning,
         Self::Bodies,
+        Self::Joints,
     ];
 
     /// Its name, as `--only` takes it.
@@ -91,6 +94,7 @@ impl Group {
             Self::Series => "series",
             Self::Turning => "turning",
             Self::Bodies => "bodies",
+            Self::Joints => "joints",
         }
     }
 
@@ -136,6 +140,9 @@ impl Group {
             }
             Self::Bodies => {
                 "rigid bodies: moments of inertia from their outlines, free flight on the parabola with a steady turn, under each method"
+            }
+            Self::Joints => {
+                "pins, hinges and motors: a physical pendulum's period at small and large amplitude, a seesaw balanced by torques and one that turns, a motor's spin-up and its work"
             }
         }
     }
@@ -200,6 +207,7 @@ pub fn validate(
             Group::Series => series::series(report)?,
             Group::Turning => turning::turning(report)?,
             Group::Bodies => bodies::bodies(report)?,
+            Group::Joints => joints::joints(report)?,
         }
     }
     Ok((report, figures))

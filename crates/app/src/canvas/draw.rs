@@ -204,6 +204,27 @@ impl Canvas {
                 labels.push((pointed, Pos2::new(centre.x, top - 4.0), &body.name));
             }
         }
+        // Joints as a teacher draws them: a pin a ring with a cross (a nail in the
+        // world), a hinge a ring with a dot (an axle between two bodies).
+        for (joint, &at) in scene.joints.iter().zip(&frame.joints) {
+            let centre = screen(at);
+            let radius = 5.0 * w;
+            painter.circle(centre, radius, p.background, Stroke::new(1.5 * w, p.ink));
+            let ink = Stroke::new(1.2 * w, p.ink);
+            if joint.other().is_none() {
+                let arm = radius * std::f32::consts::FRAC_1_SQRT_2;
+                painter.line_segment([centre - Vec2::splat(arm), centre + Vec2::splat(arm)], ink);
+                painter.line_segment(
+                    [centre + Vec2::new(-arm, arm), centre + Vec2::new(arm, -arm)],
+                    ink,
+                );
+            } else {
+                painter.circle_filled(centre, 1.8 * w, p.ink);
+            }
+            if self.overlays.names {
+                labels.push((false, centre + Vec2::new(0.0, -radius - 4.0), &joint.name));
+            }
+        }
         self.draw_free_body(painter, rect, frame);
         if self.overlays.trails {
             painter.add(trails_mesh(

@@ -250,6 +250,8 @@ struct Frame {
     angles: Vec<f64>,
     /// Each rigid body's outline in the world, counter-clockwise.
     outlines: Vec<Vec<DVec2>>,
+    /// Each pin's and hinge's point in the world.
+    joints: Vec<DVec2>,
     /// The selected body's free-body diagram: each force (N) and where it acts.
     free_body: Vec<(DVec2, physics::Applied)>,
 }
@@ -278,6 +280,7 @@ impl Frame {
                 .iter()
                 .map(physics::Body::world_outline)
                 .collect(),
+            joints: scene.joints.iter().map(|j| j.at.to_dvec2()).collect(),
             free_body: Vec::new(),
         }
     }
@@ -596,6 +599,9 @@ impl Canvas {
             }
             frame.outlines = (0..simulation.body_names().len())
                 .map(|i| simulation.body_outline(i))
+                .collect();
+            frame.joints = (0..simulation.joint_names().len())
+                .map(|j| simulation.joint(j).at)
                 .collect();
             frame
         } else {

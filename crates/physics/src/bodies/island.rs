@@ -255,6 +255,7 @@ impl Island<'_> {
             Taken {
                 impacts: struck,
                 friction: rubbed,
+                motors: 0.0,
             },
         )
     }

@@ -13,27 +13,46 @@
 
 mod contact;
 mod island;
+mod joints;
 mod solve;
+mod stepping;
 
 use std::sync::Arc;
 
-use glam::DVec2;
+use glam::{DVec2, DVec3};
 
 pub use contact::Applied;
 use contact::{Pose, Rigid};
 use island::Island;
+use joints::{Held, Mechanism};
 
 use crate::contacts::obstacles::{self, Obstacle};
 use crate::diagnostics::{Diagnostics, ParticleReadout};
 use crate::forces::uniform;
 use crate::scene::Vector;
-use crate::{Integrator, Scene, Simulation};
+use crate::{Integrator, JointKind, Scene, Simulation};
 
 /// What the surfaces took from the bodies' energy in a step, joules.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Taken {
     pub impacts: f64,
     pub friction: f64,
+    /// What the joints' motors gave, joules.
+    pub motors: f64,
+}
+
+/// A pin's or a hinge's state now.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct JointReadout {
+    /// b's angle less a's (a pin's: the body's) from the joint's reference, degrees,
+    /// counter-clockwise, unwrapped.
+    pub angle: f64,
+    /// The joint's force on b (a pin's body), N.
+    pub force: DVec2,
+    /// The motor's torque on b, N·m (0 without a motor).
+    pub torque: f64,
+    /// The joint's point in the world, m.
+    pub at: DVec2,
 }
 
 /// The bodies of a scene, in scene order: what never changes shared between copies (a
@@ -55,6 +74,17 @@ pub(crate) struct Bodies {
     collide: bool,
     /// The walls and ramps.
     solids: Arc<[Obstacle]>,
+    /// The pins and hinges, in scene order.
+    joints: Arc<[Held]>,
+    joint_names: Arc<[String]>,
+    /// The bodies the joints hold (fixed ones too), in scene order: they move together,
+    /// and meet nothing yet.
+    jointed: Arc<[usize]>,
+    /// The mechanism's size, m: the widest jointed body's reach or the farthest pin from
+    /// the origin, what the joints are held to a fraction of.
+    jointed_size: f64,
+    /// Each joint's force on b and motor torque at the last step's end (or the start).
+    reactions: Vec<(DVec2, f64)>,
     /// The uniform field, m/s².
     gravity: DVec2,
     /// Each body's acceleration through the last step (or at the start): the field's
@@ -73,6 +103,49 @@ pub(crate) struct Bodies {
     spin: Vec<f64>,
 }
 
+/// The scene's joints in runtime form, their bodies numbered among `jointed` (the bodies
+/// in joints, in scene order). A scene that passed validation names only bodies.
+fn held(scene: &Scene, jointed: &[usize]) -> Vec<Held> {
+    let index = |name: &str| {
+        let body = scene.bodies.iter().position(|b| b.name == name)?;
+        jointed.binary_search(&body).ok().map(|k| (body, k))
+    };
+    scene
+        .joints
+        .iter()
+        .filter_map(|joint| {
+            let (body_b, b) = index(&joint.body)?;
+            let frame = |i: usize| {
+                let body = &scene.bodies[i];
+                (body.position.to_dvec2(), body.angle)
+            };
+            let (position_b, angle_b) = frame(body_b);
+            let at = joint.at.to_dvec2();
+            let anchor_b = joint
+                .anchor
+                .unwrap_or_else(|| crate::scene::in_frame(at, position_b, angle_b));
+            let (a, anchor_a, angle_a) = match &joint.kind {
+                JointKind::Pin => (None, at, 0.0),
+                JointKind::Hinge { a, anchor_a } => {
+                    let (body_a, a) = index(a)?;
+                    let (position_a, angle_a) = frame(body_a);
+                    let anchor =
+                        anchor_a.unwrap_or_else(|| crate::scene::in_frame(at, position_a, angle_a));
+                    (Some(a), anchor, angle_a)
+                }
+            };
+            Some(Held {
+                b,
+                a,
+                anchor_b,
+                anchor_a,
+                motor: joint.motor,
+                reference: joint.reference_angle.unwrap_or(angle_b - angle_a),
+            })
+        })
+        .collect()
+}
+
 /// The root of `i`'s group in a union–find forest, halving the path on the way.
 fn find(root: &mut [usize], mut i: usize) -> usize {
     while root[i] != i {
@@ -85,6 +158,15 @@ fn find(root: &mut [usize], mut i: usize) -> usize {
 impl Bodies {
     pub fn new(scene: &Scene) -> Self {
         let bodies = &scene.bodies;
+        let jointed: Vec<usize> = (0..bodies.len())
+            .filter(|&i| {
+                let name = bodies[i].name.as_str();
+                scene
+                    .joints
+                    .iter()
+                    .any(|j| j.body == name || j.other() == Some(name))
+            })
+            .collect();
         let moving = |b: &crate::Body, v: Vector, spin: f64| {
             if b.fixed {
                 (DVec2::ZERO, 0.0)
@@ -112,6 +194,11 @@ impl Bodies {
                 .collect(),
             collide: scene.world.collisions,
             solids: obstacles::obstacles(scene).into(),
+            joints: held(scene, &jointed).into(),
+            joint_names: scene.joints.iter().map(|j| j.name.clone()).collect(),
+            jointed: jointed.into(),
+            jointed_size: 0.0,
+            reactions: Vec::new(),
             gravity: scene.world.gravity.to_dvec2(),
             acceleration: Vec::new(),
             time_step: scene.simulation.time_step,
@@ -184,7 +271,9 @@ impl Bodies {
                     <= reach
         };
         let mut root: Vec<usize> = (0..n).collect();
-        let moving: Vec<usize> = (0..n).filter(|&i| !self.fixed[i]).collect();
+        let moving: Vec<usize> = (0..n)
+            .filter(|&i| !self.fixed[i] && !self.jointed.contains(&i))
+            .collect();
         for (a, &i) in moving.iter().enumerate() {
             for &j in &moving[a + 1..] {
                 if near(i, j) {
@@ -236,6 +325,94 @@ impl Bodies {
                 self.acceleration[i] = push.linear;
             }
         }
+        // From what a saved state keeps as it was (the bodies' sizes, the pins' points),
+        // so that a run continued from one projects exactly as the straight run.
+        self.jointed_size = self
+            .jointed
+            .iter()
+            .map(|&i| self.radius[i])
+            .chain(
+                self.joints
+                    .iter()
+                    .filter(|j| j.a.is_none())
+                    .map(|j| j.anchor_a.abs().max_element()),
+            )
+            .fold(0.0, f64::max)
+            .max(f64::MIN_POSITIVE);
+        self.read_joints();
+    }
+
+    /// The mechanism of the jointed bodies, and their positions (x, y, angle in radians)
+    /// and velocities.
+    fn mechanism(&self) -> (Mechanism<'_>, Vec<DVec3>, Vec<DVec3>) {
+        let mechanism = Mechanism {
+            joints: &self.joints,
+            inverse: self
+                .jointed
+                .iter()
+                .map(|&i| {
+                    if self.fixed[i] {
+                        DVec3::ZERO
+                    } else {
+                        let w = 1.0 / self.mass[i];
+                        DVec3::new(w, w, 1.0 / self.inertia[i])
+                    }
+                })
+                .collect(),
+            weight: self
+                .jointed
+                .iter()
+                .map(|&i| (self.gravity * self.mass[i]).extend(0.0))
+                .collect(),
+        };
+        let q = self
+            .jointed
+            .iter()
+            .map(|&i| self.position[i].extend(self.angle[i].to_radians()))
+            .collect();
+        let u = self
+            .jointed
+            .iter()
+            .map(|&i| self.velocity[i].extend(self.spin[i]))
+            .collect();
+        (mechanism, q, u)
+    }
+
+    /// The jointed bodies' accelerations and the joints' reactions now.
+    fn read_joints(&mut self) {
+        if self.joints.is_empty() {
+            return;
+        }
+        self.acceleration.resize(self.len(), self.gravity);
+        let (mechanism, q, u) = self.mechanism();
+        let (a, reactions) = mechanism.reactions(&q, &u);
+        self.reactions = reactions;
+        for (k, &i) in self.jointed.iter().enumerate() {
+            if !self.fixed[i] {
+                self.acceleration[i] = a[k].truncate();
+            }
+        }
+    }
+
+    /// Moves the jointed bodies through `h` seconds with `method`; returns the motors'
+    /// work.
+    fn advance_jointed(&mut self, method: Integrator, h: f64) -> f64 {
+        if self.joints.is_empty() {
+            return 0.0;
+        }
+        let (mechanism, mut q, mut u) = self.mechanism();
+        let work = mechanism.advance(method, (&mut q, &mut u), h, self.jointed_size);
+        for (k, &i) in self.jointed.iter().enumerate() {
+            if self.fixed[i] {
+                continue;
+            }
+            self.position[i] = q[k].truncate();
+            self.angle[i] = q[k].z.to_degrees();
+            self.velocity[i] = u[k].truncate();
+            self.spin[i] = u[k].z;
+        }
+        self.read_joints();
+        work
     }
 
     /// The forces on body `i` now, each where it acts: its weight at the centroid, then
@@ -248,6 +425,26 @@ impl Bodies {
         };
         let mut forces = vec![weight];
         if self.fixed[i] {
+            return forces;
+        }
+        if let Ok(k) = self.jointed.binary_search(&i) {
+            for (joint, &(force, _)) in self.joints.iter().zip(&self.reactions) {
+                let turn =
+                    |anchor: DVec2| DVec2::from_angle(self.angle[i].to_radians()).rotate(anchor);
+                if joint.b == k {
+                    forces.push(Applied {
+                        arm: turn(joint.anchor_b),
+                        force,
+                        friction: false,
+                    });
+                } else if joint.a == Some(k) {
+                    forces.push(Applied {
+                        arm: turn(joint.anchor_a),
+                        force: -force,
+                        friction: false,
+                    });
+                }
+            }
             return forces;
         }
         let Some(members) = self.islands(0.0).into_iter().find(|g| g.contains(&i)) else {
@@ -279,7 +476,10 @@ impl Bodies {
                     + self.spin[i].abs() * self.radius[i]
             })
             .fold(0.0, f64::max);
-        let mut taken = Taken::default();
+        let mut taken = Taken {
+            motors: self.advance_jointed(method, h),
+            ..Taken::default()
+        };
         for members in self.islands(2.0 * fastest * h) {
             let (island, mut poses) = self.island(&members);
             let (pushes, books) = island.advance(&mut poses, method, h);
@@ -352,8 +552,20 @@ impl Bodies {
         }
     }
 
-    /// Writes the state reached into `scene`'s bodies.
+    /// Writes the state reached into `scene`'s bodies and joints (each joint's anchors and
+    /// reference angle as they were, so that continuing is exact).
     pub fn save_into(&self, scene: &mut Scene) {
+        if scene.joints.len() == self.joints.len() {
+            for (j, (saved, joint)) in scene.joints.iter_mut().zip(self.joints.iter()).enumerate() {
+                saved.anchor = Some(joint.anchor_b);
+                saved.reference_angle = Some(joint.reference);
+                if let JointKind::Hinge { anchor_a, .. } = &mut saved.kind {
+                    *anchor_a = Some(joint.anchor_a);
+                    let at = self.joint(j).at;
+                    saved.at = Vector::cartesian(at.x, at.y);
+                }
+            }
+        }
         for (i, body) in scene.bodies.iter_mut().enumerate() {
             let x = self.position[i];
             body.position = Vector::cartesian(x.x, x.y);
@@ -368,6 +580,33 @@ impl Bodies {
 
     pub fn names(&self) -> &[String] {
         &self.names
+    }
+
+    pub fn joint_names(&self) -> &[String] {
+        &self.joint_names
+    }
+
+    pub fn has_motors(&self) -> bool {
+        self.joints.iter().any(|j| j.motor.is_some())
+    }
+
+    pub fn is_pin(&self, j: usize) -> bool {
+        self.joints[j].a.is_none()
+    }
+
+    /// Joint `j`'s angle, reaction and motor torque now, and where it is.
+    pub fn joint(&self, j: usize) -> JointReadout {
+        let joint = &self.joints[j];
+        let b = self.jointed[joint.b];
+        let angle_a = joint.a.map_or(0.0, |a| self.angle[self.jointed[a]]);
+        let (force, torque) = self.reactions.get(j).copied().unwrap_or_default();
+        JointReadout {
+            angle: self.angle[b] - angle_a - joint.reference,
+            force,
+            torque,
+            at: self.position[b]
+                + DVec2::from_angle(self.angle[b].to_radians()).rotate(joint.anchor_b),
+        }
     }
 
     /// Body `i`'s outline in the world now, counter-clockwise.
@@ -391,10 +630,11 @@ impl Scene {
     /// A scene being edited may not be valid yet: forces that are not finite (a body of
     /// no mass or no area) are left out rather than drawn.
     pub fn body_forces(&self, i: usize) -> Vec<Applied> {
-        let bodies = Bodies::new(self);
+        let mut bodies = Bodies::new(self);
         if i >= bodies.len() {
             return Vec::new();
         }
+        bodies.read_joints();
         bodies
             .forces(i)
             .into_iter()
@@ -413,6 +653,28 @@ impl Simulation {
     /// its angle (degrees, unwrapped) and spin, its energy and momenta.
     pub fn body(&self, i: usize) -> ParticleReadout {
         self.bodies.readout(i)
+    }
+
+    /// The pins' and hinges' names, in scene order (the pins, then the hinges).
+    pub fn joint_names(&self) -> &[String] {
+        self.bodies.joint_names()
+    }
+
+    /// Whether joint `j` is a pin (not a hinge): its rows carry its force.
+    pub fn joint_is_pin(&self, j: usize) -> bool {
+        self.bodies.is_pin(j)
+    }
+
+    /// Whether a joint has a motor: the ledger then books its work
+    /// ([`crate::MOTOR_WORK_COLUMN`]).
+    pub fn has_motors(&self) -> bool {
+        self.bodies.has_motors()
+    }
+
+    /// Joint `j` now: its angle, its force on the body it holds (a hinge's b), its
+    /// motor's torque, and its point.
+    pub fn joint(&self, j: usize) -> JointReadout {
+        self.bodies.joint(j)
     }
 
     /// Body `i`'s outline in the world now, counter-clockwise, metres.

@@ -223,7 +223,7 @@ mod tests {
         for seed in 0..200_u32 {
             let size = 6 + (seed % 3) as usize;
             let n = size - (seed % 2) as usize;
-            let mut state = u64::from(seed) * 6_364_136_223_846_793_005 + 1;
+            let mut state = u64::from(seed).wrapping_mul(6_364_136_223_846_793_005) + 1;
             let mut random = || {
                 state = state
                     .wrapping_mul(6_364_136_223_846_793_005)

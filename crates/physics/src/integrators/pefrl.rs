@@ -28,9 +28,9 @@ use crate::forces::ForceModel;
 use crate::integrators::Workspace;
 use crate::state::State;
 
-const XI: f64 = 0.178_617_895_844_809_1;
-const LAMBDA: f64 = -0.212_341_831_062_605_4;
-const CHI: f64 = -0.066_264_582_669_818_5;
+pub(crate) const XI: f64 = 0.178_617_895_844_809_1;
+pub(crate) const LAMBDA: f64 = -0.212_341_831_062_605_4;
+pub(crate) const CHI: f64 = -0.066_264_582_669_818_5;
 
 pub(crate) fn step(forces: &ForceModel, state: &mut State, h: f64, work: &mut Workspace) {
     let n = state.len();

@@ -24,6 +24,8 @@ pub enum Section {
     Ramp(usize),
     /// The rigid body at this index (`[[body]]`).
     Body(usize),
+    /// The pin or hinge at this index of [`Scene::joints`](super::Scene::joints).
+    Joint(usize),
     /// The graph at this index (`[[graph]]`).
     Graph(usize),
     /// The series at this index (`[[series]]`).

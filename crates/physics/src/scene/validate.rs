@@ -11,6 +11,7 @@ use super::{Color, Endpoint, Follow, Scene, Vector, say, say_numbers};
 use crate::quantity::{LinkOf, Quantity};
 
 mod bodies;
+mod joints;
 
 /// How far into a wall of the bounds a particle may start, as a fraction of its radius.
 const WALL_OVERLAP: f64 = 0.1;
@@ -31,6 +32,7 @@ impl Scene {
         check.ties();
         check.ramps();
         check.bodies();
+        check.joints();
         check.graphs();
         check.series();
         check.coincident();
@@ -66,6 +68,10 @@ impl Scene {
             },
             Section::Ramp(i) => named("ramp", self.ramps.get(i).map(|r| r.name.as_str()), i),
             Section::Body(i) => named("body", self.bodies.get(i).map(|b| b.name.as_str()), i),
+            Section::Joint(i) => match self.joints.get(i) {
+                Some(joint) => named(joint.kind_str(), Some(&joint.name), i),
+                None => named("pin", None, i),
+            },
             Section::Graph(i) => named(
                 "graph",
                 self.graphs.get(i).and_then(|g| g.title.as_deref()),
@@ -335,6 +341,9 @@ impl Checker<'_> {
             .chain((0..scene.ramps.len()).map(|i| (Section::Ramp(i), scene.ramps[i].name.as_str())))
             .chain(
                 (0..scene.bodies.len()).map(|i| (Section::Body(i), scene.bodies[i].name.as_str())),
+            )
+            .chain(
+                (0..scene.joints.len()).map(|i| (Section::Joint(i), scene.joints[i].name.as_str())),
             );
         let mut first_use: HashMap<&str, Section> = HashMap::new();
         for (section, name) in sections {
@@ -563,6 +572,7 @@ impl Checker<'_> {
                             && !self.scene.springs.iter().any(|t| t.name == name)
                             && !(of == LinkOf::Angle
                                 && (self.is_body(&name)
+                                    || self.is_joint(&name)
                                     || self.particle_index(&name).is_some())) =>
                     {
                         self.report(
@@ -573,6 +583,11 @@ impl Checker<'_> {
                                 &[("field", field), ("text", text), ("name", &name)],
                             ),
                         );
+                    }
+                    Quantity::Joint(ref name, _) if !self.is_joint(name) => {
+                        if let Err(reason) = quantity.check_in(self.scene) {
+                            self.report(s, field, &format!("{field}: {reason}"));
+                        }
                     }
                     Quantity::Time if field == "y" => {
                         self.report(s, field, &say("scene-graph-time-on-y", &[]));

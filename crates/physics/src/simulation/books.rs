@@ -43,12 +43,15 @@ pub struct Ledger {
     /// lifted back: each step the impulses take ½ m (g h)² and the lift gives it back, so
     /// a pile at rest dissipates nothing, as it should).
     pub impacts: f64,
+    /// The work the joints' motors did on the bodies (energy given, not taken): a
+    /// constant torque's τ Δθ exactly, a held spin's to the integrator's order.
+    pub motors: f64,
 }
 
 impl Ledger {
-    /// All of them, joules.
+    /// What left the motion, joules: everything taken less what the motors gave.
     pub fn total(&self) -> f64 {
-        self.damping + self.friction + self.impacts + self.drag
+        self.damping + self.friction + self.impacts + self.drag - self.motors
     }
 }
 

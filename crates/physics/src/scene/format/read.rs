@@ -9,8 +9,8 @@ use crate::scene::error::{FieldRef, LoadError, Problem, Section};
 use crate::scene::fields::{self, Field, Kind, Value as FieldValue};
 use crate::scene::validate;
 use crate::scene::{
-    Body, Bounds, Color, Endpoint, Follow, Graph, PairForces, Particle, Ramp, Scene, Series,
-    Settings, Shape, Spring, Tie, TieKind, Vector, View, World, say,
+    Body, Bounds, Color, Endpoint, Follow, Graph, Joint, JointKind, Motor, PairForces, Particle,
+    Ramp, Scene, Series, Settings, Shape, Spring, Tie, TieKind, Vector, View, World, say,
 };
 use crate::{Integrator, Quantity};
 
@@ -57,6 +57,8 @@ pub(super) const ROOT_KEYS: &[&str] = &[
     "string",
     "ramp",
     "body",
+    "pin",
+    "hinge",
     "graph",
     "series",
     "view",
@@ -277,6 +279,12 @@ impl<'t> Reader<'t> {
             let body = self.body(node, i);
             scene.bodies.push(body);
         }
+        for kind in ["pin", "hinge"] {
+            for (i, node) in self.items(&mut top, kind).iter().enumerate() {
+                let joint = self.joint(node, kind, i, scene.joints.len());
+                scene.joints.push(joint);
+            }
+        }
         for (i, node) in self.items(&mut top, "graph").iter().enumerate() {
             let graph = self.graph(node, i);
             scene.graphs.push(graph);
@@ -365,7 +373,7 @@ impl<'t> Reader<'t> {
         // Particles, springs and ramps are named by their initial (p1, s1, r1); rods and
         // strings in full (rod1, string1), which would clash with ramps and springs.
         let default_name = match kind {
-            "rod" | "string" | "body" => format!("{kind}{}", index + 1),
+            "rod" | "string" | "body" | "pin" | "hinge" => format!("{kind}{}", index + 1),
             _ => format!("{}{}", &kind[..1], index + 1),
         };
         let mut t = self.table(node, section, validate::numbered(kind, index))?;
@@ -489,6 +497,32 @@ impl<'t> Reader<'t> {
         known.extend(fields::BODY_SHAPE_KEYS.map(|(key, ..)| key));
         self.close(&t, &known);
         body
+    }
+
+    /// A pin or a hinge, the `index`-th of its kind and the `section`-th joint.
+    pub(super) fn joint(&mut self, node: &Node, kind: &str, index: usize, section: usize) -> Joint {
+        let mut joint = Joint::pin(String::new(), String::new(), Vector::ZERO);
+        let Some((mut t, name)) = self.object(node, kind, Section::Joint(section), index) else {
+            return joint;
+        };
+        joint.name = name;
+        let mut known = vec!["name", "at", "motor", "anchor", "reference_angle"];
+        if kind == "pin" {
+            joint.body = self.required(&mut t, "body", read_text, String::new());
+            known.push("body");
+        } else {
+            let a = self.required(&mut t, "a", read_text, String::new());
+            joint.body = self.required(&mut t, "b", read_text, String::new());
+            let anchor_a = self.field(&mut t, "anchor_a", read_point);
+            joint.kind = JointKind::Hinge { a, anchor_a };
+            known.extend(["a", "b", "anchor_a"]);
+        }
+        joint.at = self.required(&mut t, "at", read_vector, Vector::ZERO);
+        joint.anchor = self.field(&mut t, "anchor", read_point);
+        joint.reference_angle = self.field(&mut t, "reference_angle", read_number);
+        joint.motor = self.field(&mut t, "motor", read_motor);
+        self.close(&t, &known);
+        joint
     }
 
     pub(super) fn graph(&mut self, node: &Node, index: usize) -> Graph {
@@ -662,6 +696,14 @@ fn section_node<'n>(root: &'n Node<'n>, section: Section) -> Option<&'n Node<'n>
         Section::Spring(i) => items("spring").get(i),
         Section::Ramp(i) => items("ramp").get(i),
         Section::Body(i) => items("body").get(i),
+        // Pins first, then hinges, as the reader reads them into `Scene::joints`.
+        Section::Joint(i) => {
+            let pins = items("pin");
+            match i.checked_sub(pins.len()) {
+                None => pins.get(i),
+                Some(i) => items("hinge").get(i),
+            }
+        }
         Section::Graph(i) => items("graph").get(i),
         Section::Series(i) => items("series").get(i),
         // Rods first, then strings, as the reader reads them into `Scene::ties`.
@@ -681,6 +723,33 @@ pub(super) fn read_number(node: &Node) -> Result<f64, String> {
         Value::Number(x) => Err(say("scene-must-be-finite", &[("got", &x.to_string())])),
         Value::Beyond(ref text) => Err(say("scene-number-beyond-f64", &[("text", text)])),
         ref other => Err(say("scene-must-be-number", &[("got", &other.kind())])),
+    }
+}
+
+/// `[x, y]` in metres: a point in a body's frame.
+fn read_point(node: &Node) -> Result<glam::DVec2, String> {
+    read_vector(node).map(Vector::to_dvec2)
+}
+
+/// `{ torque = T }` or `{ spin = W, max_torque = T }`.
+fn read_motor(node: &Node) -> Result<Motor, String> {
+    let Value::Table(entries) = &node.value else {
+        return Err(say("scene-motor", &[]));
+    };
+    let number = |key: &str| match entries.iter().find(|e| e.key == key) {
+        None => Ok(None),
+        Some(entry) => read_number(&entry.node).map(Some),
+    };
+    let torque = number("torque")?;
+    let spin = number("spin")?;
+    let max_torque = number("max_torque")?;
+    let known = entries
+        .iter()
+        .all(|e| ["torque", "spin", "max_torque"].contains(&e.key.as_ref()));
+    match (torque, spin, max_torque) {
+        (Some(torque), None, None) if known => Ok(Motor::Torque(torque)),
+        (None, Some(spin), Some(max_torque)) if known => Ok(Motor::Spin { spin, max_torque }),
+        _ => Err(say("scene-motor", &[])),
     }
 }
 

@@ -4,7 +4,9 @@ use std::fmt::Write as _;
 
 use super::VERSION;
 use crate::scene::fields::{self, Field, Value as FieldValue};
-use crate::scene::{Body, Bounds, Endpoint, Scene, Shape, Vector};
+use glam::DVec2;
+
+use crate::scene::{Body, Bounds, Endpoint, Joint, JointKind, Motor, Scene, Shape, Vector};
 
 impl Scene {
     /// The scene as a TOML scene file.
@@ -129,6 +131,11 @@ impl Scene {
                 self.bodies
                     .iter()
                     .map(|b| ("body", &b.name, body_fields(b))),
+            )
+            .chain(
+                self.joints
+                    .iter()
+                    .map(|j| (j.kind_str(), &j.name, joint_fields(j))),
             );
         for (kind, name, entries) in objects {
             let mut named = vec![("name", Out::Text(name.clone()))];
@@ -275,6 +282,39 @@ fn body_fields(body: &Body) -> Vec<(&'static str, Out)> {
     entries
 }
 
+fn joint_fields(joint: &Joint) -> Vec<(&'static str, Out)> {
+    let point = |p: DVec2| Out::Vector(Vector::Cartesian(p));
+    let mut entries = Vec::new();
+    match &joint.kind {
+        JointKind::Pin => entries.push(("body", Out::Text(joint.body.clone()))),
+        JointKind::Hinge { a, anchor_a } => {
+            entries.push(("a", Out::Text(a.clone())));
+            entries.push(("b", Out::Text(joint.body.clone())));
+            if let Some(anchor) = anchor_a {
+                entries.push(("anchor_a", point(*anchor)));
+            }
+        }
+    }
+    entries.push(("at", Out::Vector(joint.at)));
+    if let Some(anchor) = joint.anchor {
+        entries.push(("anchor", point(anchor)));
+    }
+    if let Some(reference) = joint.reference_angle {
+        entries.push(("reference_angle", Out::Number(reference)));
+    }
+    match joint.motor {
+        None => {}
+        Some(Motor::Torque(torque)) => {
+            entries.push(("motor", Out::Numbers(vec![("torque", torque)])));
+        }
+        Some(Motor::Spin { spin, max_torque }) => entries.push((
+            "motor",
+            Out::Numbers(vec![("spin", spin), ("max_torque", max_torque)]),
+        )),
+    }
+    entries
+}
+
 pub(super) enum Header {
     Root,
     Table(&'static str),
@@ -301,6 +341,8 @@ pub(super) enum Out {
     Points(Vec<glam::DVec2>),
     /// A list of mixed values: an instrument's ends, each a name or a point.
     List(Vec<Out>),
+    /// An inline table of numbers: a motor, `{ spin = 2.0, max_torque = 5.0 }`.
+    Numbers(Vec<(&'static str, f64)>),
 }
 
 /// A TOML float that parses back to the same `f64`: Rust's `Debug` for `f64` is the
@@ -355,6 +397,13 @@ impl Out {
                     .collect();
                 format!("[{}]", items.join(", "))
             }
+            Self::Numbers(entries) => {
+                let items: Vec<String> = entries
+                    .iter()
+                    .map(|(key, x)| format!("{key} = {}", toml_float(*x)))
+                    .collect();
+                format!("{{ {} }}", items.join(", "))
+            }
             Self::Bounds(b) => {
                 let mut text = format!(
                     "{{ min = {}, max = {}",
@@ -386,6 +435,11 @@ impl Out {
                 .iter()
                 .map(|&p| json_vector(Vector::Cartesian(p)))
                 .collect(),
+            Self::Numbers(entries) => entries
+                .iter()
+                .map(|(key, x)| ((*key).to_owned(), serde_json::Value::from(*x)))
+                .collect::<serde_json::Map<_, _>>()
+                .into(),
             Self::Bounds(b) => {
                 let mut bounds =
                     serde_json::json!({ "min": json_vector(b.min), "max": json_vector(b.max) });

@@ -78,7 +78,16 @@ impl Checker<'_> {
         let outlines: Vec<Option<Vec<DVec2>>> = bodies
             .iter()
             .zip(whole)
-            .map(|(body, &whole)| whole.then(|| body.world_outline()))
+            .map(|(body, &whole)| {
+                // A jointed body meets nothing yet (docs/physics.md): a wheel may sit on
+                // its axle inside the cart.
+                let jointed = self
+                    .scene
+                    .joints
+                    .iter()
+                    .any(|j| j.body == body.name || j.other() == Some(body.name.as_str()));
+                (whole && !jointed).then(|| body.world_outline())
+            })
             .collect();
         let boxes: Vec<Option<(DVec2, DVec2)>> = outlines
             .iter()

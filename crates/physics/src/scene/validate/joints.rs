@@ -1,0 +1,127 @@
+//! The rules of `[[pin]]` and `[[hinge]]`: each holds bodies of the scene that can move, a
+//! hinge two different ones, at a point that is where its anchors say, with a motor whose
+//! torque is finite.
+
+use super::{Checker, Rule};
+use crate::scene::error::Section;
+use crate::scene::{Joint, JointKind, Motor, in_frame, say};
+
+/// How far a joint's anchor may lie from its point `at` at the start, metres: a saved
+/// state's rounding (the joint is held to 1e-12 m), never a joint a person placed apart.
+const ANCHOR_SLACK: f64 = 1e-6;
+
+impl Checker<'_> {
+    pub(super) fn is_joint(&self, name: &str) -> bool {
+        self.scene.joints.iter().any(|j| j.name == name)
+    }
+
+    pub(super) fn joints(&mut self) {
+        for (i, joint) in self.scene.joints.iter().enumerate() {
+            let s = Section::Joint(i);
+            let b = self.joined(s, joint, joint.body.as_str(), field_b(joint));
+            let a = match &joint.kind {
+                JointKind::Pin => None,
+                JointKind::Hinge { a, .. } => {
+                    let found = self.joined(s, joint, a, "a");
+                    if a == &joint.body {
+                        self.report(s, "b", &say("scene-hinge-itself", &[("body", a)]));
+                    }
+                    found
+                }
+            };
+            if let Some(reason) = self.scene.joints[..i]
+                .iter()
+                .find(|other| same_joint(other, joint))
+                .map(|other| say("scene-joint-twice", &[("other", &other.name)]))
+            {
+                self.report(s, field_b(joint), &reason);
+            }
+            let fixed = |k: Option<usize>| k.is_none_or(|k| self.scene.bodies[k].fixed);
+            if b.is_some() && fixed(b) && fixed(a) {
+                self.report(s, field_b(joint), &say("scene-joint-fixed", &[]));
+            }
+            self.vector(s, "at", joint.at);
+            self.anchor(s, "anchor", joint, b, joint.anchor);
+            if let JointKind::Hinge { anchor_a, .. } = &joint.kind {
+                self.anchor(s, "anchor_a", joint, a, *anchor_a);
+            }
+            if let Some(reference) = joint.reference_angle {
+                self.number(s, "reference_angle", Rule::Finite, reference);
+            }
+            match joint.motor {
+                None => {}
+                Some(Motor::Torque(torque)) => self.number(s, "motor", Rule::Finite, torque),
+                Some(Motor::Spin { spin, max_torque }) => {
+                    self.number(s, "motor", Rule::Finite, spin);
+                    self.number(s, "motor", Rule::Positive, max_torque);
+                }
+            }
+        }
+    }
+
+    /// The index of the body `name` a joint holds; reported when there is none (a
+    /// particle, or nothing of that name).
+    fn joined(
+        &mut self,
+        s: Section,
+        joint: &Joint,
+        name: &str,
+        field: &'static str,
+    ) -> Option<usize> {
+        let found = self.scene.bodies.iter().position(|b| b.name == name);
+        if found.is_none() {
+            let id = if self.particle_index(name).is_some() {
+                "scene-joint-particle"
+            } else {
+                "scene-joint-no-body"
+            };
+            let kind = joint.kind_str();
+            self.report(s, field, &say(id, &[("name", name), ("kind", kind)]));
+        }
+        found
+    }
+
+    /// An anchor given in the file must lie at the joint's point.
+    fn anchor(
+        &mut self,
+        s: Section,
+        field: &'static str,
+        joint: &Joint,
+        body: Option<usize>,
+        anchor: Option<glam::DVec2>,
+    ) {
+        let (Some(anchor), Some(body)) = (anchor, body) else {
+            return;
+        };
+        let body = &self.scene.bodies[body];
+        let at = joint.at.to_dvec2();
+        let there = in_frame(at, body.position.to_dvec2(), body.angle);
+        if !anchor.is_finite() || !at.is_finite() {
+            self.report(
+                s,
+                field,
+                &say("scene-vector-not-finite", &[("field", field)]),
+            );
+        } else if there.distance(anchor) > ANCHOR_SLACK {
+            self.report(s, field, &say("scene-joint-anchor", &[("field", field)]));
+        }
+    }
+}
+
+/// The key naming the body a joint holds: a pin's `body`, a hinge's `b`.
+fn field_b(joint: &Joint) -> &'static str {
+    match joint.kind {
+        JointKind::Pin => "body",
+        JointKind::Hinge { .. } => "b",
+    }
+}
+
+/// Two joints holding the same bodies (in either order) at the same point.
+fn same_joint(one: &Joint, other: &Joint) -> bool {
+    fn bodies(j: &Joint) -> [Option<&str>; 2] {
+        let mut pair = [Some(j.body.as_str()), j.other()];
+        pair.sort_unstable();
+        pair
+    }
+    bodies(one) == bodies(other) && one.at == other.at
+}

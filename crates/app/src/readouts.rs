@@ -87,6 +87,9 @@ pub(crate) fn ui(ui: &mut Ui, runner: &Runner) {
             if ledger.drag != 0.0 {
                 rows.push((tr("readout-drag"), format::number(ledger.drag)));
             }
+            if ledger.motors != 0.0 {
+                rows.push((tr("readout-motors"), format::number(ledger.motors)));
+            }
             if runner
                 .simulation()
                 .is_some_and(|s| !s.tie_names().is_empty())
@@ -136,6 +139,9 @@ fn books(
     if ledger.drag != 0.0 {
         bars.push((tr("bar-drag"), ledger.drag, DISSIPATED));
     }
+    if ledger.motors != 0.0 {
+        bars.push((tr("bar-motors"), ledger.motors, GIVEN));
+    }
     bars.extend([
         (tr("readout-error"), residual, ERROR_BAR),
         (tr("bar-total-at-play"), start, TOTAL),
@@ -146,6 +152,8 @@ fn books(
 const KINETIC: egui::Color32 = egui::Color32::from_rgb(60, 140, 70);
 const POTENTIAL: egui::Color32 = egui::Color32::from_rgb(60, 100, 190);
 const DISSIPATED: egui::Color32 = egui::Color32::from_rgb(200, 110, 40);
+/// What motors gave: energy coming in, beside the energy at Play.
+const GIVEN: egui::Color32 = egui::Color32::from_rgb(130, 80, 170);
 const ERROR_BAR: egui::Color32 = egui::Color32::from_rgb(190, 50, 50);
 const TOTAL: egui::Color32 = egui::Color32::from_rgb(90, 90, 90);
 

@@ -233,7 +233,8 @@ fn the_reaction_at_the_bottom_is_weight_plus_centripetal() {
     assert!(joint.force.x.abs() < 1e-9, "{}", joint.force.x);
 }
 
-/// A state saved mid-swing, and while a motor spins up towards its target, continues the
+/// A state saved mid-swing, while a motor spins up towards its target, and while a
+/// seesaw tilts towards its limit (which it meets after the save), continues the
 /// straight run bit for bit under every fixed-step method.
 #[test]
 fn joints_continue_from_a_saved_state_bit_for_bit() {
@@ -243,7 +244,12 @@ fn joints_continue_from_a_saved_state_bit_for_bit() {
         }
         let mut scene = Scene::from_toml(TOML).expect("valid");
         scene.simulation.integrator = integrator;
-        for scene in [scene, ruler(120.0, integrator)] {
+        let mut seesaw = physics::example("seesaw")
+            .expect("an example")
+            .scene()
+            .expect("valid");
+        seesaw.simulation.integrator = integrator;
+        for scene in [scene, ruler(120.0, integrator), seesaw] {
             let mut straight = Simulation::new(&scene).expect("valid");
             straight.step_to(0.37).expect("runs");
             let saved = Scene::from_toml(&straight.saved_state(&scene).to_toml()).expect("reads");
@@ -280,4 +286,60 @@ fn a_hinge_holds_while_a_motor_turns_its_board() {
     );
     assert!((weight.position - hook).length() - 0.3 < 1e-12);
     assert!((board.spin - 1.5).abs() < 1e-12, "held at {}", board.spin);
+}
+
+/// A limit stops a swing dead where the joint's angle reaches it, the stop located in the
+/// step (the ruler from 90° onto a limit at the bottom arrives at a quarter of the
+/// elliptic period), the ledger booking the kinetic energy it took (the energy fallen,
+/// m g d, to rk4's error over the fall) with the books closing, and the ruler resting on it
+/// after; limits that are no range, or that do not hold the start, are refused.
+#[test]
+fn a_limit_stops_the_joint_dead_and_books_the_energy() {
+    for integrator in [Integrator::Rk4, Integrator::Verlet, Integrator::Dopri5] {
+        let mut scene = ruler(90.0, integrator);
+        scene.joints[0] = scene.joints[0].clone().limits(-90.0, 0.0);
+        let text = scene.to_toml();
+        assert!(text.contains("limits = [-90.0, 0.0]"), "{text}");
+        assert_eq!(Scene::from_toml(&text).expect("reads back"), scene);
+        let mut simulation = Simulation::new(&scene).expect("valid");
+        simulation.keep_ledger();
+        let start = simulation.diagnostics().energy.total();
+        simulation.step_to(2.0).expect("runs");
+        let joint = simulation.joint(0);
+        assert!(
+            (joint.angle + 90.0).abs() < 1e-9,
+            "{integrator}: {}",
+            joint.angle
+        );
+        assert!(simulation.body(0).spin.abs() < 1e-12, "{integrator}");
+        assert!((joint.force.y - 0.5 * G).abs() < 1e-9, "{integrator}");
+        let ledger = simulation.ledger().expect("kept");
+        let fallen = 0.5 * G * 0.5;
+        // Verlet's energy error at 1 ms is of order (ω h)², some 3e-5.
+        let tolerance = if integrator == Integrator::Verlet {
+            1e-4
+        } else {
+            1e-9
+        };
+        assert!(
+            (ledger.impacts - fallen).abs() < tolerance * fallen,
+            "{integrator}: {} against {fallen}",
+            ledger.impacts
+        );
+        let residual = simulation.diagnostics().energy.total() + ledger.total() - start;
+        assert!(
+            residual.abs() < tolerance * fallen,
+            "{integrator}: residual {residual}"
+        );
+    }
+    for (limits, words) in [
+        ("limits = [10.0, -10.0]", "lower below the upper"),
+        ("limits = [5.0, 10.0]", "outside its limits"),
+        ("limits = [1.0]", "[lower, upper]"),
+    ] {
+        let text = TOML.replacen("at = [0.0, 1.0]", &format!("at = [0.0, 1.0]\n{limits}"), 1);
+        let error = Scene::from_toml(&text).expect_err(limits);
+        assert!(error.to_string().contains(words), "{limits}: {error}");
+        assert!(error.problems[0].line.is_some(), "{limits}: {error}");
+    }
 }

@@ -167,6 +167,22 @@ impl Canvas {
                 ));
             }
         }
+        // A joint off a body it holds (a hook above a hanging block, a lever arm) is tied
+        // to the body's centroid by a thin line, drawn under the bodies.
+        for (joint, &at) in scene.joints.iter().zip(&frame.joints) {
+            for name in std::iter::once(joint.body.as_str()).chain(joint.other()) {
+                let Some(i) = scene.bodies.iter().position(|b| b.name == name) else {
+                    continue;
+                };
+                let Some(outline) = frame.outlines.get(i) else {
+                    continue;
+                };
+                if !inside_outline(outline, at) {
+                    let centre = screen(outline_centroid(outline));
+                    painter.line_segment([screen(at), centre], Stroke::new(1.2 * w, p.ink));
+                }
+            }
+        }
         for (i, (body, outline)) in scene.bodies.iter().zip(&frame.outlines).enumerate() {
             let points: Vec<Pos2> = outline.iter().map(|&v| screen(v)).collect();
             let colour = body_colour(scene, i);
@@ -685,6 +701,14 @@ fn body_colour(scene: &Scene, i: usize) -> Color32 {
 }
 
 /// The centroid of a convex outline, metres.
+/// Whether `point` lies inside a counter-clockwise convex `outline` (or on it).
+fn inside_outline(outline: &[DVec2], point: DVec2) -> bool {
+    outline
+        .iter()
+        .zip(outline.iter().cycle().skip(1))
+        .all(|(&a, &b)| (b - a).perp_dot(point - a) >= -1e-9 * (b - a).length())
+}
+
 fn outline_centroid(outline: &[DVec2]) -> DVec2 {
     physics::moments(outline).centroid
 }

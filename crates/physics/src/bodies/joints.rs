@@ -34,6 +34,10 @@ const PROJECTION_ITERATIONS: usize = 8;
 const EVENT_WIDTH: f64 = 1e-12;
 /// Falsi trials at most to find a motor's reach of its target spin.
 const MOST_TRIALS: usize = 100;
+/// A joint within this of a limit (radians) is at it.
+const AT_LIMIT: f64 = 1e-9;
+/// A joint turning away from a limit slower than this (rad/s) is resting against it.
+const AT_REST: f64 = 1e-9;
 /// A pivot of the joint system smaller than this fraction of its diagonal belongs to a
 /// constraint that others imply (two pins on one body): it takes no force of its own.
 const DEPENDENT: f64 = 1e-12;
@@ -52,6 +56,9 @@ pub(crate) struct Held {
     pub motor: Option<Motor>,
     /// b's angle less a's at which the joint's angle reads 0, degrees.
     pub reference: f64,
+    /// The least and the most of b's angle less a's, radians (the file's limits from the
+    /// reference).
+    pub limits: Option<(f64, f64)>,
 }
 
 /// How a target-spin motor acts through a stretch of time.
@@ -63,6 +70,30 @@ enum Drive {
     Hold(f64),
 }
 
+/// Which of its limits a joint rests against.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Side {
+    Lower,
+    Upper,
+}
+
+/// How each joint acts through a stretch of time: its motor's drive and the limit it
+/// rests against, if any.
+#[derive(Clone, Debug, PartialEq)]
+struct Modes {
+    drives: Vec<Option<Drive>>,
+    stops: Vec<Option<Side>>,
+}
+
+/// Something that changes a joint's mode inside a step.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Event {
+    /// Joint k's motor reaches its target spin.
+    Reach(usize),
+    /// Joint k reaches one of its limits.
+    Limit(usize, Side),
+}
+
 /// The bodies' masses and inertias, and the joints among them.
 pub(crate) struct Mechanism<'a> {
     pub joints: &'a [Held],
@@ -70,6 +101,15 @@ pub(crate) struct Mechanism<'a> {
     pub inverse: Vec<DVec3>,
     /// Each body's weight and no torque, N.
     pub weight: Vec<DVec3>,
+}
+
+/// What a stretch of motion gave and took, J.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Books {
+    /// The motors' work.
+    pub work: f64,
+    /// The kinetic energy the limits' stops took.
+    pub stopped: f64,
 }
 
 /// A constraint row: its coefficients on b and on a (if a moves), and J̇ u.
@@ -93,14 +133,32 @@ fn points(joint: &Held, q: &[DVec3]) -> (DVec2, DVec2, DVec2, DVec2) {
     }
 }
 
-/// Relative spin, b's less a's.
+/// Relative spin, b's less a's, rad/s.
 fn relative_spin(joint: &Held, u: &[DVec3]) -> f64 {
     u[joint.b].z - joint.a.map_or(0.0, |a| u[a].z)
 }
 
+/// Relative angle, b's less a's, radians.
+fn relative_angle(joint: &Held, q: &[DVec3]) -> f64 {
+    q[joint.b].z - joint.a.map_or(0.0, |a| q[a].z)
+}
+
+/// How far joint `joint` is inside its limit `side` (radians; negative beyond it).
+fn inside(joint: &Held, side: Side, q: &[DVec3]) -> f64 {
+    let Some((lower, upper)) = joint.limits else {
+        return f64::INFINITY;
+    };
+    let angle = relative_angle(joint, q);
+    match side {
+        Side::Lower => angle - lower,
+        Side::Upper => upper - angle,
+    }
+}
+
 impl Mechanism<'_> {
-    /// The rows of the joints' points, then one per holding motor, at positions `q`.
-    fn rows(&self, q: &[DVec3], u: &[DVec3], drives: &[Option<Drive>]) -> Vec<Row> {
+    /// The rows of the joints' points, then one per holding motor, then one per limit
+    /// rested against, at (`q`, `u`).
+    fn rows(&self, q: &[DVec3], u: &[DVec3], modes: &Modes) -> Vec<Row> {
         let mut rows = Vec::with_capacity(2 * self.joints.len());
         for joint in self.joints {
             let (_, _, r_b, r_a) = points(joint, q);
@@ -117,13 +175,19 @@ impl Mechanism<'_> {
                 bias: bias.y,
             });
         }
-        for (joint, drive) in self.joints.iter().zip(drives) {
+        let turning_row = |joint: &Held| Row {
+            b: (joint.b, DVec3::Z),
+            a: joint.a.map(|a| (a, -DVec3::Z)),
+            bias: 0.0,
+        };
+        for (joint, drive) in self.joints.iter().zip(&modes.drives) {
             if let Some(Drive::Hold(_)) = drive {
-                rows.push(Row {
-                    b: (joint.b, DVec3::Z),
-                    a: joint.a.map(|a| (a, -DVec3::Z)),
-                    bias: 0.0,
-                });
+                rows.push(turning_row(joint));
+            }
+        }
+        for (joint, stop) in self.joints.iter().zip(&modes.stops) {
+            if stop.is_some() {
+                rows.push(turning_row(joint));
             }
         }
         rows
@@ -173,10 +237,10 @@ impl Mechanism<'_> {
             .collect()
     }
 
-    /// The applied forces: weights and the motors' torques under `drives`.
-    fn applied(&self, drives: &[Option<Drive>]) -> Vec<DVec3> {
+    /// The applied forces: weights and the motors' torques under `modes`.
+    fn applied(&self, modes: &Modes) -> Vec<DVec3> {
         let mut force = self.weight.clone();
-        for (joint, drive) in self.joints.iter().zip(drives) {
+        for (joint, drive) in self.joints.iter().zip(&modes.drives) {
             if let Some(Drive::Torque(torque)) = drive {
                 force[joint.b].z += torque;
                 if let Some(a) = joint.a {
@@ -188,20 +252,15 @@ impl Mechanism<'_> {
     }
 
     /// The accelerations at (`q`, `u`) and the multipliers: each joint's reaction on b
-    /// (x, y), then each holding motor's torque.
-    fn accelerations(
-        &self,
-        q: &[DVec3],
-        u: &[DVec3],
-        drives: &[Option<Drive>],
-    ) -> (Vec<DVec3>, Vec<f64>) {
-        let force = self.applied(drives);
+    /// (x, y), then each holding motor's torque, then each limit's.
+    fn accelerations(&self, q: &[DVec3], u: &[DVec3], modes: &Modes) -> (Vec<DVec3>, Vec<f64>) {
+        let force = self.applied(modes);
         let free: Vec<DVec3> = force
             .iter()
             .zip(&self.inverse)
             .map(|(&f, &w)| f * w)
             .collect();
-        let rows = self.rows(q, u, drives);
+        let rows = self.rows(q, u, modes);
         let rhs: Vec<f64> = Self::times(&rows, &free)
             .iter()
             .zip(&rows)
@@ -213,11 +272,12 @@ impl Mechanism<'_> {
         (a, lambda)
     }
 
-    /// Each motor's drive at (`q`, `u`): a constant torque; a target spin held when it is
-    /// reached and the torque holding it is within the largest, else the largest torque
-    /// towards it.
-    fn drives(&self, q: &[DVec3], u: &[DVec3]) -> Vec<Option<Drive>> {
-        let mut drives: Vec<Option<Drive>> = self
+    /// Each joint's mode at (`q`, `u`). A motor of constant torque gives it; a motor
+    /// towards a spin holds it when reached and the torque holding it is within the
+    /// largest, else turns at the largest towards it. A joint at a limit and not leaving
+    /// it rests against it while the limit pushes (never pulls).
+    fn modes(&self, q: &[DVec3], u: &[DVec3]) -> Modes {
+        let drives = self
             .joints
             .iter()
             .map(|joint| match joint.motor? {
@@ -232,55 +292,112 @@ impl Mechanism<'_> {
                 }
             })
             .collect();
-        if drives.iter().any(|d| matches!(d, Some(Drive::Hold(_)))) {
-            let (_, lambda) = self.accelerations(q, u, &drives);
-            let mut k = 2 * self.joints.len();
-            for (joint, drive) in self.joints.iter().zip(&mut drives) {
-                if let (Some(Drive::Hold(_)), Some(Motor::Spin { max_torque, .. })) =
-                    (*drive, joint.motor)
-                {
-                    if lambda[k].abs() > max_torque {
-                        *drive = Some(Drive::Torque(max_torque.copysign(lambda[k])));
-                    }
-                    k += 1;
+        let stops = self
+            .joints
+            .iter()
+            .map(|joint| {
+                let spin = relative_spin(joint, u);
+                [Side::Lower, Side::Upper].into_iter().find(|&side| {
+                    let leaving = match side {
+                        Side::Lower => spin > AT_REST,
+                        Side::Upper => spin < -AT_REST,
+                    };
+                    inside(joint, side, q) <= AT_LIMIT && !leaving
+                })
+            })
+            .collect();
+        let mut modes = Modes { drives, stops };
+        let holds = modes
+            .drives
+            .iter()
+            .filter(|d| matches!(d, Some(Drive::Hold(_))))
+            .count();
+        if holds == 0 && modes.stops.iter().all(Option::is_none) {
+            return modes;
+        }
+        let (_, lambda) = self.accelerations(q, u, &modes);
+        let mut k = 2 * self.joints.len();
+        for (joint, drive) in self.joints.iter().zip(&mut modes.drives) {
+            if let (Some(Drive::Hold(_)), Some(Motor::Spin { max_torque, .. })) =
+                (*drive, joint.motor)
+            {
+                if lambda[k].abs() > max_torque {
+                    *drive = Some(Drive::Torque(max_torque.copysign(lambda[k])));
                 }
+                k += 1;
             }
         }
-        drives
+        let mut k = 2 * self.joints.len() + holds;
+        for stop in &mut modes.stops {
+            if let Some(side) = *stop {
+                let pulls = match side {
+                    Side::Lower => lambda[k] < 0.0,
+                    Side::Upper => lambda[k] > 0.0,
+                };
+                if pulls {
+                    *stop = None;
+                }
+                k += 1;
+            }
+        }
+        modes
     }
 
-    /// Puts the joined points together and the velocities onto the joints (and the held
-    /// spins onto their targets).
-    fn project(&self, q: &mut [DVec3], u: &mut [DVec3], drives: &[Option<Drive>], size: f64) {
+    /// Puts the joined points together (and the joints at a limit onto it) and the
+    /// velocities onto the joints (the held spins onto their targets, the joints at a
+    /// limit to rest against it).
+    fn project(&self, q: &mut [DVec3], u: &mut [DVec3], modes: &Modes, size: f64) {
+        let at_limits = Modes {
+            drives: vec![None; self.joints.len()],
+            stops: modes.stops.clone(),
+        };
         for _ in 0..PROJECTION_ITERATIONS {
-            let gaps: Vec<DVec2> = self
+            let gaps: Vec<f64> = self
                 .joints
                 .iter()
-                .map(|joint| {
+                .flat_map(|joint| {
                     let (p_b, p_a, _, _) = points(joint, q);
-                    p_b - p_a
+                    let gap = p_b - p_a;
+                    [gap.x, gap.y]
                 })
+                .chain(
+                    self.joints
+                        .iter()
+                        .zip(&modes.stops)
+                        .filter_map(|(joint, stop)| {
+                            // The constraint's value, the angle less the limit (its row's J is
+                            // +1 on b's angle).
+                            stop.map(|side| match side {
+                                Side::Lower => inside(joint, side, q),
+                                Side::Upper => -inside(joint, side, q),
+                            })
+                        }),
+                )
                 .collect();
-            let worst = gaps
+            let points_off = gaps[..2 * self.joints.len()]
                 .iter()
-                .fold(0.0, |w: f64, g| w.max(g.abs().max_element()));
-            if worst <= POSITION_TOLERANCE * size {
+                .fold(0.0, |w: f64, g| w.max(g.abs()));
+            let angles_off = gaps[2 * self.joints.len()..]
+                .iter()
+                .fold(0.0, |w: f64, g| w.max(g.abs()));
+            if points_off <= POSITION_TOLERANCE * size && angles_off <= POSITION_TOLERANCE {
                 break;
             }
-            let rows = self.rows(q, u, &vec![None; drives.len()]);
-            let rhs: Vec<f64> = gaps.iter().flat_map(|g| [-g.x, -g.y]).collect();
+            let rows = self.rows(q, u, &at_limits);
+            let rhs: Vec<f64> = gaps.iter().map(|g| -g).collect();
             let delta = solve(self.matrix(&rows), rhs);
             self.apply(&rows, &delta, q);
         }
-        let rows = self.rows(q, u, drives);
+        let rows = self.rows(q, u, modes);
         let targets = self
             .joints
             .iter()
             .flat_map(|_| [0.0, 0.0])
-            .chain(drives.iter().filter_map(|d| match d {
+            .chain(modes.drives.iter().filter_map(|d| match d {
                 Some(Drive::Hold(spin)) => Some(*spin),
                 _ => None,
-            }));
+            }))
+            .chain(modes.stops.iter().flatten().map(|_| 0.0));
         let rhs: Vec<f64> = Self::times(&rows, u)
             .iter()
             .zip(targets)
@@ -290,24 +407,30 @@ impl Mechanism<'_> {
         self.apply(&rows, &mu, u);
     }
 
-    /// The work the motors do while the bodies go from `q0` to `q1` under `drives` over
-    /// `h` seconds, J: a constant torque's τ Δθ; a held spin's torque (at the two ends,
-    /// averaged) times the angle turned.
+    /// The kinetic energy of velocities `u`, J.
+    fn kinetic(&self, u: &[DVec3]) -> f64 {
+        u.iter()
+            .zip(&self.inverse)
+            .filter(|(_, w)| w.x > 0.0)
+            .map(|(v, w)| 0.5 * (v.x * v.x / w.x + v.y * v.y / w.y + v.z * v.z / w.z))
+            .sum()
+    }
+
+    /// The work the motors do while the bodies go from `q0` to `q1` under `modes`, J: a
+    /// constant torque's τ Δθ; a held spin's torque (at the two ends, averaged) times
+    /// the angle turned.
     fn work(
         &self,
         (q0, u0): (&[DVec3], &[DVec3]),
         (q1, u1): (&[DVec3], &[DVec3]),
-        drives: &[Option<Drive>],
+        modes: &Modes,
     ) -> f64 {
-        let turned = |joint: &Held| {
-            let angle = |q: &[DVec3]| q[joint.b].z - joint.a.map_or(0.0, |a| q[a].z);
-            angle(q1) - angle(q0)
-        };
-        let held = |q, u| self.accelerations(q, u, drives).1;
+        let turned = |joint: &Held| relative_angle(joint, q1) - relative_angle(joint, q0);
+        let held = |q, u| self.accelerations(q, u, modes).1;
         let mut holding = None;
         let mut k = 2 * self.joints.len();
         let mut work = 0.0;
-        for (joint, drive) in self.joints.iter().zip(drives) {
+        for (joint, drive) in self.joints.iter().zip(&modes.drives) {
             match drive {
                 Some(Drive::Torque(torque)) => work += torque * turned(joint),
                 Some(Drive::Hold(_)) => {
@@ -321,85 +444,133 @@ impl Mechanism<'_> {
         work
     }
 
-    /// Moves the bodies through `h` seconds with `method`: the motors' drives judged at
-    /// the start, and again wherever a motor reaches its target spin inside the step.
-    /// Returns the motors' work.
+    /// Moves the bodies through `h` seconds with `method`: the joints' modes judged at
+    /// the start, and again wherever a motor reaches its target spin or a joint its
+    /// limit inside the step (a limit stops the joint dead: the stop takes the kinetic
+    /// energy of the approach, as a seesaw's board landing).
     pub fn advance(
         &self,
         method: Integrator,
         (q, u): (&mut [DVec3], &mut [DVec3]),
         h: f64,
         size: f64,
-    ) -> f64 {
+    ) -> Books {
         let mut left = h;
-        let mut work = 0.0;
-        // Each pass either finishes the step or reaches one more target: a motor's
-        // reach is counted once per joint and step at most.
-        for pass in 0..=self.joints.len() {
-            let drives = self.drives(q, u);
+        let mut books = Books::default();
+        // Each pass finishes the step or changes one joint's mode; the last takes what
+        // is left of the step whatever happens in it.
+        let passes = 2 * self.joints.len() + 1;
+        for pass in 0..passes {
+            let modes = self.modes(q, u);
             let (q0, u0) = (q.to_vec(), u.to_vec());
             let moved = |dt: f64| {
                 let (mut q, mut u) = (q0.clone(), u0.clone());
-                let slope: &Slope = &|q, u| self.accelerations(q, u, &drives).0;
+                let slope: &Slope = &|q, u| self.accelerations(q, u, &modes).0;
                 stepping::step(method, &mut q, &mut u, dt, slope);
                 (q, u)
             };
             let (mut q1, mut u1) = moved(left);
-            // The last pass takes what is left of the step whatever happens in it.
-            let reach = (pass < self.joints.len())
-                .then(|| self.first_reach(&drives, &u0, &u1))
-                .flatten();
+            let events = if pass + 1 < passes {
+                self.events(&modes, (&q0, &u0), (&q1, &u1))
+            } else {
+                Vec::new()
+            };
             let mut dt = left;
-            if let Some(k) = reach {
-                dt = self.locate(k, left, &moved);
+            let mut first = None;
+            for event in events {
+                let at = self.locate(event, left, &moved);
+                if at < dt || first.is_none() {
+                    (dt, first) = (at, Some(event));
+                }
+            }
+            if first.is_some() {
                 (q1, u1) = moved(dt);
             }
-            let mut after = drives.clone();
-            if let (Some(k), Some(Motor::Spin { spin, .. })) =
-                (reach, reach.and_then(|k| self.joints[k].motor))
-            {
-                after[k] = Some(Drive::Hold(spin));
+            let mut after = modes.clone();
+            match first {
+                Some(Event::Reach(k)) => {
+                    if let Some(Motor::Spin { spin, .. }) = self.joints[k].motor {
+                        after.drives[k] = Some(Drive::Hold(spin));
+                    }
+                }
+                Some(Event::Limit(k, side)) => after.stops[k] = Some(side),
+                None => {}
             }
+            let before = self.kinetic(&u1);
             self.project(&mut q1, &mut u1, &after, size);
-            work += self.work((&q0, &u0), (&q1, &u1), &drives);
+            if matches!(first, Some(Event::Limit(..))) {
+                books.stopped += before - self.kinetic(&u1);
+            }
+            books.work += self.work((&q0, &u0), (&q1, &u1), &modes);
             q.copy_from_slice(&q1);
             u.copy_from_slice(&u1);
             left -= dt;
-            if reach.is_none() || left <= 0.0 {
+            if first.is_none() || left <= 0.0 {
                 break;
             }
         }
-        work
+        books
     }
 
-    /// The first motor (by joint order) driven at its largest torque whose spin passed
-    /// its target between `u0` and `u1`.
-    fn first_reach(&self, drives: &[Option<Drive>], u0: &[DVec3], u1: &[DVec3]) -> Option<usize> {
-        self.joints
-            .iter()
-            .zip(drives)
-            .position(|(joint, drive)| match (drive, joint.motor) {
-                (Some(Drive::Torque(_)), Some(Motor::Spin { spin, .. })) => {
-                    let (before, after) = (
-                        relative_spin(joint, u0) - spin,
-                        relative_spin(joint, u1) - spin,
-                    );
-                    !reached(before, spin) && (reached(after, spin) || before * after < 0.0)
+    /// The events between (`q0`, `u0`) and (`q1`, `u1`) under `modes`: motors driven at
+    /// their largest torque whose spin passed the target, and joints free of a limit
+    /// that went past it.
+    fn events(
+        &self,
+        modes: &Modes,
+        (q0, u0): (&[DVec3], &[DVec3]),
+        (q1, u1): (&[DVec3], &[DVec3]),
+    ) -> Vec<Event> {
+        let mut events = Vec::new();
+        for (k, joint) in self.joints.iter().enumerate() {
+            if let (Some(Drive::Torque(_)), Some(Motor::Spin { spin, .. })) =
+                (modes.drives[k], joint.motor)
+            {
+                let (before, after) = (
+                    relative_spin(joint, u0) - spin,
+                    relative_spin(joint, u1) - spin,
+                );
+                if !reached(before, spin) && (reached(after, spin) || before * after < 0.0) {
+                    events.push(Event::Reach(k));
                 }
-                _ => false,
-            })
+            }
+            if modes.stops[k].is_none() {
+                for side in [Side::Lower, Side::Upper] {
+                    if inside(joint, side, q0) > 0.0 && inside(joint, side, q1) < 0.0 {
+                        events.push(Event::Limit(k, side));
+                    }
+                }
+            }
+        }
+        events
     }
 
-    /// The time into a stretch of `left` seconds at which joint `k`'s motor reaches its
-    /// target spin (regula falsi, Illinois): the first trial found at or past it.
-    fn locate(&self, k: usize, left: f64, moved: &dyn Fn(f64) -> (Vec<DVec3>, Vec<DVec3>)) -> f64 {
-        let joint = &self.joints[k];
-        let Some(Motor::Spin { spin, .. }) = joint.motor else {
-            return left;
+    /// The time into a stretch of `left` seconds at which `event` happens (regula falsi,
+    /// Illinois): the first trial found at or past it.
+    fn locate(
+        &self,
+        event: Event,
+        left: f64,
+        moved: &dyn Fn(f64) -> (Vec<DVec3>, Vec<DVec3>),
+    ) -> f64 {
+        let value = |dt: f64| {
+            let (q, u) = moved(dt);
+            match event {
+                Event::Reach(k) => {
+                    let joint = &self.joints[k];
+                    let spin = match joint.motor {
+                        Some(Motor::Spin { spin, .. }) => spin,
+                        _ => 0.0,
+                    };
+                    let off = relative_spin(joint, &u) - spin;
+                    // Reached counts as crossed: the search stops there.
+                    if reached(off, spin) { 0.0 } else { off }
+                }
+                Event::Limit(k, side) => inside(&self.joints[k], side, &q),
+            }
         };
-        let off = |dt: f64| relative_spin(joint, &moved(dt).1) - spin;
         let (mut lo, mut hi) = (0.0, left);
-        let (mut f_lo, mut f_hi) = (off(lo), off(hi));
+        let (mut f_lo, mut f_hi) = (value(lo), value(hi));
         let mut side = 0;
         for _ in 0..MOST_TRIALS {
             if hi - lo <= EVENT_WIDTH {
@@ -409,8 +580,8 @@ impl Mechanism<'_> {
             if !(t > lo && t < hi) {
                 t = 0.5 * (lo + hi);
             }
-            let f = off(t);
-            if reached(f, spin) {
+            let f = value(t);
+            if f == 0.0 {
                 return t;
             }
             if f * f_lo > 0.0 {
@@ -430,18 +601,17 @@ impl Mechanism<'_> {
         hi
     }
 
-    /// Each joint's reaction on b (N) and the torque its motor gives b (N·m) at (`q`,
-    /// `u`).
+    /// The accelerations at (`q`, `u`), and each joint's force on b (N) and the torque
+    /// its motor gives b (N·m).
     pub fn reactions(&self, q: &[DVec3], u: &[DVec3]) -> (Vec<DVec3>, Vec<(DVec2, f64)>) {
-        let drives = self.drives(q, u);
-        let (a, lambda) = self.accelerations(q, u, &drives);
+        let modes = self.modes(q, u);
+        let (a, lambda) = self.accelerations(q, u, &modes);
         let mut k = 2 * self.joints.len();
-        let out = self
-            .joints
+        let out = modes
+            .drives
             .iter()
-            .zip(&drives)
             .enumerate()
-            .map(|(j, (_, drive))| {
+            .map(|(j, drive)| {
                 let force = DVec2::new(lambda[2 * j], lambda[2 * j + 1]);
                 let torque = match drive {
                     Some(Drive::Torque(t)) => *t,

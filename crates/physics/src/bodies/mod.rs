@@ -134,13 +134,20 @@ fn held(scene: &Scene, jointed: &[usize]) -> Vec<Held> {
                     (Some(a), anchor, angle_a)
                 }
             };
+            let reference = joint.reference_angle.unwrap_or(angle_b - angle_a);
             Some(Held {
                 b,
                 a,
                 anchor_b,
                 anchor_a,
                 motor: joint.motor,
-                reference: joint.reference_angle.unwrap_or(angle_b - angle_a),
+                reference,
+                limits: joint.limits.map(|(lower, upper)| {
+                    (
+                        (reference + lower).to_radians(),
+                        (reference + upper).to_radians(),
+                    )
+                }),
             })
         })
         .collect()
@@ -395,13 +402,13 @@ impl Bodies {
     }
 
     /// Moves the jointed bodies through `h` seconds with `method`; returns the motors'
-    /// work.
-    fn advance_jointed(&mut self, method: Integrator, h: f64) -> f64 {
+    /// work and what the limits' stops took.
+    fn advance_jointed(&mut self, method: Integrator, h: f64) -> joints::Books {
         if self.joints.is_empty() {
-            return 0.0;
+            return joints::Books::default();
         }
         let (mechanism, mut q, mut u) = self.mechanism();
-        let work = mechanism.advance(method, (&mut q, &mut u), h, self.jointed_size);
+        let books = mechanism.advance(method, (&mut q, &mut u), h, self.jointed_size);
         for (k, &i) in self.jointed.iter().enumerate() {
             if self.fixed[i] {
                 continue;
@@ -412,7 +419,7 @@ impl Bodies {
             self.spin[i] = u[k].z;
         }
         self.read_joints();
-        work
+        books
     }
 
     /// The forces on body `i` now, each where it acts: its weight at the centroid, then
@@ -476,8 +483,10 @@ impl Bodies {
                     + self.spin[i].abs() * self.radius[i]
             })
             .fold(0.0, f64::max);
+        let jointed = self.advance_jointed(method, h);
         let mut taken = Taken {
-            motors: self.advance_jointed(method, h),
+            impacts: jointed.stopped,
+            motors: jointed.work,
             ..Taken::default()
         };
         for members in self.islands(2.0 * fastest * h) {

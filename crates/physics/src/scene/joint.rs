@@ -55,6 +55,9 @@ pub struct Joint {
     /// Degrees: the body's angle (a hinge's: b's less a's) at which the joint's `angle`
     /// reads 0; the start's when left out.
     pub reference_angle: Option<f64>,
+    /// The least and the most the joint's `angle` may be, degrees: it stops dead at
+    /// either (a seesaw's board on the ground). `None`: it turns freely.
+    pub limits: Option<(f64, f64)>,
 }
 
 impl Joint {
@@ -69,6 +72,7 @@ impl Joint {
             anchor: None,
             motor: None,
             reference_angle: None,
+            limits: None,
         }
     }
 
@@ -93,6 +97,13 @@ impl Joint {
     #[must_use]
     pub fn motor(mut self, motor: Motor) -> Self {
         self.motor = Some(motor);
+        self
+    }
+
+    /// The same joint turning only between `lower` and `upper` degrees of its angle.
+    #[must_use]
+    pub fn limits(mut self, lower: f64, upper: f64) -> Self {
+        self.limits = Some((lower, upper));
         self
     }
 

@@ -506,7 +506,7 @@ impl<'t> Reader<'t> {
             return joint;
         };
         joint.name = name;
-        let mut known = vec!["name", "at", "motor", "anchor", "reference_angle"];
+        let mut known = vec!["name", "at", "motor", "anchor", "reference_angle", "limits"];
         if kind == "pin" {
             joint.body = self.required(&mut t, "body", read_text, String::new());
             known.push("body");
@@ -521,6 +521,7 @@ impl<'t> Reader<'t> {
         joint.anchor = self.field(&mut t, "anchor", read_point);
         joint.reference_angle = self.field(&mut t, "reference_angle", read_number);
         joint.motor = self.field(&mut t, "motor", read_motor);
+        joint.limits = self.field(&mut t, "limits", read_limits);
         self.close(&t, &known);
         joint
     }
@@ -729,6 +730,16 @@ pub(super) fn read_number(node: &Node) -> Result<f64, String> {
 /// `[x, y]` in metres: a point in a body's frame.
 fn read_point(node: &Node) -> Result<glam::DVec2, String> {
     read_vector(node).map(Vector::to_dvec2)
+}
+
+/// `[lower, upper]` in degrees.
+fn read_limits(node: &Node) -> Result<(f64, f64), String> {
+    match &node.value {
+        Value::Array(items) if items.len() == 2 => {
+            Ok((read_number(&items[0])?, read_number(&items[1])?))
+        }
+        _ => Err(say("scene-limits", &[])),
+    }
 }
 
 /// `{ torque = T }` or `{ spin = W, max_torque = T }`.

@@ -302,6 +302,12 @@ fn joint_fields(joint: &Joint) -> Vec<(&'static str, Out)> {
     if let Some(reference) = joint.reference_angle {
         entries.push(("reference_angle", Out::Number(reference)));
     }
+    if let Some((lower, upper)) = joint.limits {
+        entries.push((
+            "limits",
+            Out::List(vec![Out::Number(lower), Out::Number(upper)]),
+        ));
+    }
     match joint.motor {
         None => {}
         Some(Motor::Torque(torque)) => {

@@ -48,6 +48,9 @@ impl Checker<'_> {
             if let Some(reference) = joint.reference_angle {
                 self.number(s, "reference_angle", Rule::Finite, reference);
             }
+            if let Some(limits) = joint.limits {
+                self.limits(s, joint, limits, (a, b));
+            }
             match joint.motor {
                 None => {}
                 Some(Motor::Torque(torque)) => self.number(s, "motor", Rule::Finite, torque),
@@ -79,6 +82,43 @@ impl Checker<'_> {
             self.report(s, field, &say(id, &[("name", name), ("kind", kind)]));
         }
         found
+    }
+
+    /// Limits must be finite, the lower below the upper, and hold the joint's angle at
+    /// the start.
+    fn limits(
+        &mut self,
+        s: Section,
+        joint: &Joint,
+        (lower, upper): (f64, f64),
+        (a, b): (Option<usize>, Option<usize>),
+    ) {
+        if !(lower.is_finite() && upper.is_finite() && lower < upper) {
+            let (lower, upper) = (lower.to_string(), upper.to_string());
+            let words = [("lower", lower.as_str()), ("upper", upper.as_str())];
+            self.report(s, "limits", &say("scene-limits-order", &words));
+            return;
+        }
+        let Some(b) = b else {
+            return;
+        };
+        let angle_a = match (&joint.kind, a) {
+            (JointKind::Hinge { .. }, Some(a)) => self.scene.bodies[a].angle,
+            (JointKind::Hinge { .. }, None) => return,
+            (JointKind::Pin, _) => 0.0,
+        };
+        let start = self.scene.bodies[b].angle - angle_a;
+        let angle = start - joint.reference_angle.unwrap_or(start);
+        // A saved state may stand on its limit to rounding.
+        let slack = 1e-9 * (1.0 + start.abs());
+        if angle < lower - slack || angle > upper + slack {
+            let angle = angle.to_string();
+            self.report(
+                s,
+                "limits",
+                &say("scene-limits-start", &[("angle", &angle)]),
+            );
+        }
     }
 
     /// An anchor given in the file must lie at the joint's point.

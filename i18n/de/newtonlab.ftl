@@ -413,6 +413,7 @@ scene-named = { $kind ->
         [body] Körper
         [pin] Stift
         [hinge] Scharnier
+        [pulley] Rolle
         [series] Messreihe
         [slider] Schieberegler
         [question] Frage
@@ -427,6 +428,7 @@ scene-numbered = { $kind ->
         [body] Körper
         [pin] Stift
         [hinge] Scharnier
+        [pulley] Rolle
         [series] Messreihe
         [slider] Schieberegler
         [question] Frage
@@ -478,6 +480,7 @@ scene-not-a-quantity = „{ $text }“ ist keine Größe: schreiben Sie t, NAME.
 quantity-no-particle = „{ $text }“: es gibt kein Teilchen namens „{ $name }“ (die Teilchen: { $names })
 quantity-no-link = „{ $text }“: es gibt keine Stange, keinen Faden und keine Feder namens „{ $name }“ (vorhanden: { $names })
 quantity-no-joint = „{ $text }“: es gibt keinen Stift und kein Scharnier namens „{ $name }“ (vorhanden: { $names })
+quantity-no-pulley = „{ $text }“: es gibt keine Rolle namens „{ $name }“ (vorhanden: { $names })
 quantity-spring-tension = „{ $text }“: „{ $name }“ ist eine Feder; ihr Winkel und ihre Länge lassen sich lesen, eine Spannkraft nur bei Stangen und Fäden
 event-malformed = „{ $text }“ ist kein Ereignis: schreiben Sie GRÖSSE crosses WERT, wahlweise gefolgt von up oder down (Ball.y crosses 0 down)
 event-value = „{ $text }“: „{ $value }“ ist keine endliche Zahl, die überschritten werden kann
@@ -816,6 +819,7 @@ cli-same-output = { $first } und { $second } nennen beide „{ $path }“: ihre 
 scene-inside-ramp = beginnt mit seinem Mittelpunkt in der Rampe „{ $ramp }“: außerhalb der Rampe platzieren (auf ihr bleibt es liegen)
 cli-too-much-work = --until { $until } bräuchte { $steps } Schritte von { $particles } beweglichen Teilchen, { $work } Teilchen-Schritte, mehr als { $most } (Minuten bis Stunden Arbeit); einen größeren time_step, ein kürzeres --until oder weniger Teilchen wählen oder --no-limit angeben
 run-tie-not-held = bei t = { $time } s ließ sich Stange oder Seil „{ $tie }“ nicht auf seiner Länge halten: die Kräfte darauf sind zu stark für den Zeitschritt, die Massen seiner Enden zu ungleich, oder seine Länge verträgt sich nicht mit den anderen; einen kleineren time_step wählen oder Längen und Massen prüfen
+run-pulley-reached = bei t = { $time } s hat der Körper „{ $body }“ das Rad der Rolle „{ $pulley }“ erreicht: seine Seite der Schnur ist aufgebraucht (den Lauf früher beenden oder den Körper tiefer hängen)
 run-tie-too-far = bei t = { $time } s liegt Stange oder Seil „{ $tie }“ zu weit vom Ursprung für seine Länge von { $length } m: schon das Runden der Positionen seiner Enden verhindert, dass es auf ein Milliardstel seiner Länge gehalten wird; die Szene näher an den Ursprung legen oder die Verbindung länger machen
 run-drag-too-strong = bei t = { $time } s bremst der Luftwiderstand Teilchen „{ $particle }“ alle { $decay } s um den Faktor e, schneller als ein Zeitschritt von { $step } s folgen kann (das Verfahren erzeugte Energie aus dem Nichts); einen time_step von höchstens diesem Wert wählen, oder dopri5
 run-left-bounds = bei t = { $time } s verließ Teilchen „{ $particle }“ die Weltgrenzen mit { $speed } m/s, zu schnell, als dass der Zeitschritt seine Stöße mit den Wänden auflösen könnte; einen kleineren time_step wählen
@@ -840,18 +844,21 @@ scene-body-mass-and-density = eine Masse oder eine Dichte angeben, nicht beides
 scene-body-static-friction = static_friction { $static } muss mindestens die Gleitreibung { $kinetic } sein
 scene-body-overlap = überlappt am Anfang den Körper „{ $other }“: die beiden auseinanderrücken
 scene-motor = motor muss {"{"} torque = N·m {"}"} oder {"{"} spin = rad/s, max_torque = N·m {"}"} sein
-scene-joint-no-body = es gibt keinen Körper „{ $name }“ (Stifte und Scharniere halten Körper, [[body]])
-scene-joint-particle = „{ $name }“ ist ein Teilchen: Stifte und Scharniere halten Körper ([[body]]); Teilchen verbindet eine Stange oder ein Faden
+scene-joint-no-body = es gibt keinen Körper „{ $name }“ (Stifte, Scharniere und Rollen halten Körper, [[body]])
+scene-joint-particle = „{ $name }“ ist ein Teilchen: Stifte, Scharniere und Rollen halten Körper ([[body]]), noch keine Teilchen; Teilchen verbindet eine Stange oder ein Faden
 scene-hinge-itself = ein Scharnier verbindet zwei Körper, aber a und b sind beide „{ $body }“
 scene-joint-twice = hält dieselben Körper am selben Punkt wie „{ $other }“: lass eines weg
 scene-joint-fixed = hält nichts Bewegliches: jeder verbundene Körper ist fest
 scene-joint-anchor = { $field } liegt nicht am Gelenkpunkt at: lass es weg, dann wird es aus at bestimmt
+scene-pulley-same = die Schnur einer Rolle verbindet zwei Körper, aber a und b sind beide „{ $body }“
+scene-pulley-inside = der Körper „{ $body }“ ist am Rad: er muss frei unter dem Rad der Rolle hängen
 scene-limits = limits muss [untere, obere] in Grad sein
 scene-limits-order = limits müssen endlich sein und die untere unter der oberen liegen, nicht [{ $lower }, { $upper }]
 scene-limits-start = der Winkel des Gelenks am Anfang, { $angle }°, liegt außerhalb seiner limits
 cli-check-body = Körper „{ $name }“: { $shape }, Fläche { $area } m², Masse { $mass } kg, Trägheitsmoment { $inertia } kg·m² um seinen Schwerpunkt, bei { $centroid } m im Umriss wie eingegeben
 cli-check-pin = Stift „{ $name }“: hält den Körper „{ $body }“ bei { $at } m; sein Trägheitsmoment um den Stift ist { $inertia } kg·m²
 cli-check-hinge = Scharnier „{ $name }“: verbindet den Körper „{ $b }“ mit dem Körper „{ $a }“ bei { $at } m
+cli-check-pulley = Rolle „{ $name }“: eine Schnur vom Körper „{ $a }“ über ein Rad mit Radius { $radius } m und { $mass } kg bei { $at } m zum Körper „{ $b }“
 cli-check-motor-torque = , angetrieben von einem Motor mit { $torque } N·m
 cli-check-motor-spin = , angetrieben von einem Motor auf { $spin } rad/s mit höchstens { $torque } N·m
 cli-check-bodies-free = Körper stoßen an Wände, Rampen und einander, liegen auf ihnen auf und gleiten (zwischen zwei Körpern die kleinere Stoßzahl, das geometrische Mittel der Reibungen); Körper an Stiften und Scharnieren begegnen noch nichts; Teilchen begegnen Körper noch nicht, und Federn, Stangen und Fäden greifen noch nicht an ihnen an

@@ -414,6 +414,7 @@ scene-named = { $kind ->
         [body] body
         [pin] pin
         [hinge] hinge
+        [pulley] pulley
         [series] series
         [slider] slider
         [question] question
@@ -428,6 +429,7 @@ scene-numbered = { $kind ->
         [body] body
         [pin] pin
         [hinge] hinge
+        [pulley] pulley
         [series] series
         [slider] slider
         [question] question
@@ -479,6 +481,7 @@ scene-not-a-quantity = '{ $text }' is not a quantity: write t, NAME.x (or .y, .v
 quantity-no-particle = '{ $text }': there is no particle named '{ $name }' (the particles: { $names })
 quantity-no-link = '{ $text }': there is no rod, string or spring named '{ $name }' (they are: { $names })
 quantity-no-joint = '{ $text }': there is no pin or hinge named '{ $name }' (they are: { $names })
+quantity-no-pulley = '{ $text }': there is no pulley named '{ $name }' (they are: { $names })
 quantity-spring-tension = '{ $text }': '{ $name }' is a spring; its angle and length can be read, a tension only of rods and strings
 event-malformed = '{ $text }' is not an event: write QUANTITY crosses VALUE, optionally followed by up or down (Ball.y crosses 0 down)
 event-value = '{ $text }': '{ $value }' is not a finite number to cross
@@ -817,6 +820,7 @@ cli-same-output = { $first } and { $second } both name '{ $path }': their rows w
 scene-inside-ramp = starts with its centre inside ramp '{ $ramp }': place it outside the ramp (on it, it rests there)
 cli-too-much-work = --until { $until } would take { $steps } steps of { $particles } moving particles, { $work } particle-steps, more than { $most } (minutes to hours of work); choose a larger time_step, a shorter --until or fewer particles, or give --no-limit
 run-tie-not-held = at t = { $time } s rod or string '{ $tie }' could not be held at its length: the forces on it are too strong for the time step, its ends' masses too unequal, or its length cannot hold with the others'; choose a smaller time_step or check the lengths and masses
+run-pulley-reached = at t = { $time } s body '{ $body }' reached the wheel of pulley '{ $pulley }': its side of the string has run out (stop the run before, or hang the body lower)
 run-tie-too-far = at t = { $time } s rod or string '{ $tie }' lies too far from the origin for its length of { $length } m: the rounding of its ends' positions alone keeps it from being held to a billionth of its length; place the scene nearer the origin or make the link longer
 run-drag-too-strong = at t = { $time } s the air resistance on particle '{ $particle }' slows it by e every { $decay } s, faster than a time step of { $step } s can follow (the method would make energy from nothing); choose a time_step of at most that, or dopri5
 run-left-bounds = at t = { $time } s particle '{ $particle }' left the world's bounds at { $speed } m/s, too fast for the time step to resolve its impacts with the walls; choose a smaller time_step
@@ -841,18 +845,21 @@ scene-body-mass-and-density = give a mass or a density, not both
 scene-body-static-friction = static_friction { $static } must be at least the kinetic friction { $kinetic }
 scene-body-overlap = overlaps body '{ $other }' at the start: move one of them apart
 scene-motor = motor must be {"{"} torque = N·m {"}"} or {"{"} spin = rad/s, max_torque = N·m {"}"}
-scene-joint-no-body = there is no body '{ $name }' (pins and hinges hold bodies, [[body]])
-scene-joint-particle = '{ $name }' is a particle: pins and hinges hold bodies ([[body]]); tie particles with a rod or a string
+scene-joint-no-body = there is no body '{ $name }' (pins, hinges and pulleys hold bodies, [[body]])
+scene-joint-particle = '{ $name }' is a particle: pins, hinges and pulleys hold bodies ([[body]]), not yet particles; tie particles with a rod or a string
 scene-hinge-itself = a hinge joins two bodies, and a and b are both '{ $body }'
 scene-joint-twice = holds the same bodies at the same point as '{ $other }': leave one out
 scene-joint-fixed = holds nothing that can move: every body it joins is fixed
 scene-joint-anchor = { $field } is not at the joint's point at: leave it out, and it is found from at
+scene-pulley-same = a pulley's string joins two bodies, and a and b are both '{ $body }'
+scene-pulley-inside = body '{ $body }' is at the wheel: it must hang clear of the pulley's wheel
 scene-limits = limits must be [lower, upper] in degrees
 scene-limits-order = limits must be finite with the lower below the upper, got [{ $lower }, { $upper }]
 scene-limits-start = the joint's angle at the start, { $angle }°, is outside its limits
 cli-check-body = body '{ $name }': { $shape }, area { $area } m², mass { $mass } kg, moment of inertia { $inertia } kg·m² about its centroid, at { $centroid } m in the outline as typed
 cli-check-pin = pin '{ $name }': holds body '{ $body }' at { $at } m; its moment of inertia about the pin is { $inertia } kg·m²
 cli-check-hinge = hinge '{ $name }': joins body '{ $b }' to body '{ $a }' at { $at } m
+cli-check-pulley = pulley '{ $name }': a string from body '{ $a }' over a wheel of radius { $radius } m and { $mass } kg at { $at } m to body '{ $b }'
 cli-check-motor-torque = , driven by a motor of { $torque } N·m
 cli-check-motor-spin = , driven by a motor to { $spin } rad/s with at most { $torque } N·m
 cli-check-bodies-free = bodies strike, rest on and slide on the walls, the ramps and each other (the smaller restitution, the frictions' geometric mean between two bodies); pinned and hinged bodies meet nothing yet; bodies do not yet meet particles, and springs, rods and strings do not attach to them

@@ -413,6 +413,7 @@ scene-named = { $kind ->
         [body] cuerpo
         [pin] pasador
         [hinge] bisagra
+        [pulley] polea
         [series] serie
         [slider] deslizador
         [question] pregunta
@@ -427,6 +428,7 @@ scene-numbered = { $kind ->
         [body] cuerpo
         [pin] pasador
         [hinge] bisagra
+        [pulley] polea
         [series] serie
         [slider] deslizador
         [question] pregunta
@@ -478,6 +480,7 @@ scene-not-a-quantity = «{ $text }» no es una magnitud: escriba t, NOMBRE.x (o 
 quantity-no-particle = «{ $text }»: no hay ninguna partícula llamada «{ $name }» (las partículas: { $names })
 quantity-no-link = «{ $text }»: no hay ninguna barra, cuerda ni muelle llamado «{ $name }» (los que hay: { $names })
 quantity-no-joint = «{ $text }»: no hay ningún pasador ni bisagra llamado «{ $name }» (los que hay: { $names })
+quantity-no-pulley = «{ $text }»: no hay ninguna polea llamada «{ $name }» (las que hay: { $names })
 quantity-spring-tension = «{ $text }»: «{ $name }» es un muelle; se leen su ángulo y su longitud, una tensión solo de barras y cuerdas
 event-malformed = «{ $text }» no es un evento: escriba MAGNITUD crosses VALOR, seguido opcionalmente de up o down (Ball.y crosses 0 down)
 event-value = «{ $text }»: «{ $value }» no es un número finito que cruzar
@@ -816,6 +819,7 @@ cli-same-output = { $first } y { $second } nombran ambos «{ $path }»: sus fila
 scene-inside-ramp = empieza con su centro dentro de la rampa «{ $ramp }»: colóquela fuera de la rampa (sobre ella, se queda apoyada)
 cli-too-much-work = --until { $until } llevaría { $steps } pasos de { $particles } partículas móviles, { $work } pasos-partícula, más de { $most } (de minutos a horas de trabajo); elija un time_step mayor, un --until más corto o menos partículas, o indique --no-limit
 run-tie-not-held = en t = { $time } s la varilla o cuerda «{ $tie }» no pudo mantenerse en su longitud: las fuerzas sobre ella son demasiado fuertes para el paso de tiempo, las masas de sus extremos demasiado desiguales, o su longitud no es compatible con las de las demás; elija un time_step menor o revise longitudes y masas
+run-pulley-reached = en t = { $time } s el cuerpo «{ $body }» llegó a la rueda de la polea «{ $pulley }»: su lado de la cuerda se acabó (detén la simulación antes o cuelga el cuerpo más abajo)
 run-tie-too-far = en t = { $time } s la varilla o cuerda «{ $tie }» está demasiado lejos del origen para su longitud de { $length } m: el solo redondeo de las posiciones de sus extremos impide mantenerla a una milmillonésima de su longitud; acerque la escena al origen o alargue el enlace
 run-drag-too-strong = en t = { $time } s la resistencia del aire sobre la partícula «{ $particle }» la frena en un factor e cada { $decay } s, más deprisa de lo que un paso de tiempo de { $step } s puede seguir (el método crearía energía de la nada); elija un time_step de ese valor como mucho, o dopri5
 run-left-bounds = en t = { $time } s la partícula «{ $particle }» salió de los límites del mundo a { $speed } m/s, demasiado rápido para que el paso de tiempo resuelva sus choques con las paredes; elija un time_step menor
@@ -840,18 +844,21 @@ scene-body-mass-and-density = dé una masa o una densidad, no ambas
 scene-body-static-friction = static_friction { $static } debe ser al menos el rozamiento cinético { $kinetic }
 scene-body-overlap = se solapa con el cuerpo «{ $other }» al comenzar: separe uno de ellos
 scene-motor = motor debe ser {"{"} torque = N·m {"}"} o {"{"} spin = rad/s, max_torque = N·m {"}"}
-scene-joint-no-body = no hay ningún cuerpo «{ $name }» (pasadores y bisagras sujetan cuerpos, [[body]])
-scene-joint-particle = «{ $name }» es una partícula: pasadores y bisagras sujetan cuerpos ([[body]]); une partículas con una varilla o una cuerda
+scene-joint-no-body = no hay ningún cuerpo «{ $name }» (pasadores, bisagras y poleas sujetan cuerpos, [[body]])
+scene-joint-particle = «{ $name }» es una partícula: pasadores, bisagras y poleas sujetan cuerpos ([[body]]), aún no partículas; une partículas con una varilla o una cuerda
 scene-hinge-itself = una bisagra une dos cuerpos, pero a y b son ambos «{ $body }»
 scene-joint-twice = sujeta los mismos cuerpos en el mismo punto que «{ $other }»: quita uno
 scene-joint-fixed = no sujeta nada que pueda moverse: todos sus cuerpos son fijos
 scene-joint-anchor = { $field } no está en el punto de la articulación at: omítelo y se calcula a partir de at
+scene-pulley-same = la cuerda de una polea une dos cuerpos, pero a y b son ambos «{ $body }»
+scene-pulley-inside = el cuerpo «{ $body }» está en la rueda: debe colgar separado de la rueda de la polea
 scene-limits = limits debe ser [inferior, superior] en grados
 scene-limits-order = limits deben ser finitos con el inferior por debajo del superior, no [{ $lower }, { $upper }]
 scene-limits-start = el ángulo de la articulación al comenzar, { $angle }°, está fuera de sus limits
 cli-check-body = cuerpo «{ $name }»: { $shape }, área { $area } m², masa { $mass } kg, momento de inercia { $inertia } kg·m² respecto a su centroide, en { $centroid } m del contorno tal como se escribió
 cli-check-pin = pasador «{ $name }»: sujeta el cuerpo «{ $body }» en { $at } m; su momento de inercia respecto al pasador es { $inertia } kg·m²
 cli-check-hinge = bisagra «{ $name }»: une el cuerpo «{ $b }» al cuerpo «{ $a }» en { $at } m
+cli-check-pulley = polea «{ $name }»: una cuerda del cuerpo «{ $a }» sobre una rueda de radio { $radius } m y { $mass } kg en { $at } m al cuerpo «{ $b }»
 cli-check-motor-torque = , movido por un motor de { $torque } N·m
 cli-check-motor-spin = , movido por un motor a { $spin } rad/s con { $torque } N·m como máximo
 cli-check-bodies-free = los cuerpos chocan con paredes, rampas y entre sí, se apoyan y deslizan sobre ellos (entre dos cuerpos, la menor restitución y la media geométrica de los rozamientos); los cuerpos con pasador o bisagra aún no se encuentran con nada; aún no se encuentran con partículas, y resortes, varillas y cuerdas no se les unen

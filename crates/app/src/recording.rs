@@ -28,8 +28,9 @@ const PER_TURNING: usize = 3;
 /// Numbers per rigid body per sample, after the particles' turning: every particle
 /// quantity but the speed, in [`Of::ALL`]'s order.
 const PER_BODY: usize = Of::ALL.len();
-/// Numbers per joint per sample, after the bodies': angle, force x and y, torque.
-const PER_JOINT: usize = 4;
+/// Numbers per joint per sample, after the bodies': angle, force x and y, torque, and a
+/// pulley's two tensions.
+const PER_JOINT: usize = 6;
 
 /// Where a quantity is in a sample: a number stored, the speed from the velocity's two
 /// components, or a rod's, string's or spring's angle or length from its ends.
@@ -213,8 +214,14 @@ impl Recording {
         }
         for j in 0..self.joints.len() {
             let joint = simulation.joint(j);
-            self.data
-                .extend([joint.angle, joint.force.x, joint.force.y, joint.torque]);
+            self.data.extend([
+                joint.angle,
+                joint.force.x,
+                joint.force.y,
+                joint.torque,
+                joint.tensions[0],
+                joint.tensions[1],
+            ]);
         }
         d
     }
@@ -338,6 +345,8 @@ impl Recording {
                 JointOf::ForceX,
                 JointOf::ForceY,
                 JointOf::Torque,
+                JointOf::TensionA,
+                JointOf::TensionB,
             ]
             .iter()
             .position(|&o| o == of)

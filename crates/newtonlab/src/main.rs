@@ -293,6 +293,22 @@ fn describe_joint(scene: &physics::Scene, joint: &physics::Joint) -> String {
             ],
         ),
     };
+    if let physics::JointKind::Pulley {
+        a, radius, mass, ..
+    } = &joint.kind
+    {
+        return say(
+            "cli-check-pulley",
+            &[
+                ("name", &joint.name),
+                ("a", a),
+                ("b", &joint.body),
+                ("radius", &nine_digits(*radius)),
+                ("mass", &nine_digits(*mass)),
+                ("at", &place),
+            ],
+        );
+    }
     let text = if let Some(a) = joint.other() {
         say(
             "cli-check-hinge",

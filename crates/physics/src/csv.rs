@@ -29,6 +29,10 @@ impl Simulation {
             }
         }
         for (j, name) in self.joint_names().iter().enumerate() {
+            if self.joint_is_pulley(j) {
+                columns.extend([format!("{name}.tension_a"), format!("{name}.tension_b")]);
+                continue;
+            }
             columns.push(format!("{name}.angle"));
             if self.joint_is_pin(j) {
                 columns.extend([format!("{name}.force_x"), format!("{name}.force_y")]);
@@ -93,6 +97,10 @@ impl Simulation {
         }
         for j in 0..self.joint_names().len() {
             let joint = self.joint(j);
+            if self.joint_is_pulley(j) {
+                out.extend(joint.tensions);
+                continue;
+            }
             out.push(joint.angle);
             if self.joint_is_pin(j) {
                 out.extend([joint.force.x, joint.force.y]);

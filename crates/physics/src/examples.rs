@@ -106,6 +106,7 @@ examples!(
     "physical-pendulum",
     "seesaw",
     "motor-wheel",
+    "atwood",
     "lesson-galileo-incline",
     "lesson-projectile-range",
     "lesson-spring-period",

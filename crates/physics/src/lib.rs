@@ -78,7 +78,7 @@ mod constraints;
 mod contacts;
 mod csv;
 mod cycle;
-pub use bodies::{Applied, JointReadout};
+pub use bodies::{Applied, JointReadout, pulley_path};
 pub use csv::csv_field;
 pub use cycle::{Cycle, NoCycle, cycle};
 mod diagnostics;

@@ -136,11 +136,21 @@ pub enum JointOf {
     ForceY,
     /// The motor's torque on the body, N·m.
     Torque,
+    /// A pulley's string tension on a's side, N.
+    TensionA,
+    /// A pulley's string tension on b's side, N.
+    TensionB,
 }
 
 impl JointOf {
     /// The joint quantities other than the angle (which `NAME.angle` reads), by key.
-    pub const FORCES: [Self; 3] = [Self::ForceX, Self::ForceY, Self::Torque];
+    pub const FORCES: [Self; 5] = [
+        Self::ForceX,
+        Self::ForceY,
+        Self::Torque,
+        Self::TensionA,
+        Self::TensionB,
+    ];
 
     /// The key after the dot in `pin.force_x`.
     pub fn key(self) -> &'static str {
@@ -149,6 +159,8 @@ impl JointOf {
             Self::ForceX => "force_x",
             Self::ForceY => "force_y",
             Self::Torque => "torque",
+            Self::TensionA => "tension_a",
+            Self::TensionB => "tension_b",
         }
     }
 
@@ -156,7 +168,7 @@ impl JointOf {
     pub fn unit(self) -> &'static str {
         match self {
             Self::Angle => "°",
-            Self::ForceX | Self::ForceY => "N",
+            Self::ForceX | Self::ForceY | Self::TensionA | Self::TensionB => "N",
             Self::Torque => "N·m",
         }
     }
@@ -294,6 +306,10 @@ impl Quantity {
             springs: simulation.spring_names(),
             bodies: simulation.body_names(),
             joints: simulation.joint_names(),
+            pulleys: &(0..simulation.joint_names().len())
+                .filter(|&j| simulation.joint_is_pulley(j))
+                .map(|j| simulation.joint_names()[j].clone())
+                .collect::<Vec<_>>(),
         })
     }
 
@@ -308,12 +324,21 @@ impl Quantity {
         let springs = names(scene.springs.iter().map(|s| &s.name).collect());
         let bodies = names(scene.bodies.iter().map(|b| &b.name).collect());
         let joints = names(scene.joints.iter().map(|j| &j.name).collect());
+        let pulleys = names(
+            scene
+                .joints
+                .iter()
+                .filter(|j| j.is_pulley())
+                .map(|j| &j.name)
+                .collect(),
+        );
         self.find(&Names {
             particles: &particles,
             ties: &ties,
             springs: &springs,
             bodies: &bodies,
             joints: &joints,
+            pulleys: &pulleys,
         })
         .map(|_| ())
     }
@@ -326,6 +351,7 @@ impl Quantity {
             springs,
             bodies,
             joints,
+            pulleys,
         } = *names;
         let find = |names: &[String], name: &str| names.iter().position(|n| n == name);
         match self {
@@ -345,6 +371,9 @@ impl Quantity {
                 if *of == LinkOf::Angle
                     && let Some(j) = find(joints, name)
                 {
+                    if find(pulleys, name).is_some() {
+                        return Err(unknown("quantity-no-link", self, name, ties));
+                    }
                     return Ok(Reading::Joint(j, JointOf::Angle));
                 }
                 // `NAME.angle` of a particle or a body: a turning particle's orientation,
@@ -369,6 +398,10 @@ impl Quantity {
                     }
                 }
             }
+            Self::Joint(name, of @ (JointOf::TensionA | JointOf::TensionB)) => find(joints, name)
+                .filter(|_| find(pulleys, name).is_some())
+                .map(|j| Reading::Joint(j, *of))
+                .ok_or_else(|| unknown("quantity-no-pulley", self, name, pulleys)),
             Self::Joint(name, of) => find(joints, name)
                 .map(|j| Reading::Joint(j, *of))
                 .ok_or_else(|| unknown("quantity-no-joint", self, name, joints)),
@@ -384,6 +417,7 @@ struct Names<'a> {
     springs: &'a [String],
     bodies: &'a [String],
     joints: &'a [String],
+    pulleys: &'a [String],
 }
 
 /// That `quantity` names `name`, which is not among `names`.
@@ -540,6 +574,8 @@ impl Simulation {
                     JointOf::ForceX => joint.force.x,
                     JointOf::ForceY => joint.force.y,
                     JointOf::Torque => joint.torque,
+                    JointOf::TensionA => joint.tensions[0],
+                    JointOf::TensionB => joint.tensions[1],
                 }
             }
             Reading::Link(link, of) => {

@@ -530,6 +530,13 @@ impl Simulation {
     /// that every value is finite and every particle still inside the bounds.
     fn end_step(&mut self, taken: f64) -> Result<f64, SimulationError> {
         let books = self.bodies.advance(self.integrator, taken);
+        if let Some((pulley, body)) = self.bodies.pulley_reached() {
+            return Err(SimulationError::PulleyReached {
+                pulley,
+                body,
+                time: self.state.time,
+            });
+        }
         if let Some(ledger) = &mut self.ledger {
             ledger.impacts += books.impacts;
             ledger.friction += books.friction;

@@ -154,9 +154,10 @@ pub(crate) fn joints(report: &mut Report) -> Outcome {
     );
     motors(report, &mut row)?;
     limits(report, &mut row)?;
+    pulleys(report, &mut row)?;
     report.tables.push(checks.table(
         "Joints: pins, hinges and motors",
-        "a physical pendulum's period 2π√(2L/3g) and 4√(I/mgd) K(sin(θ₀/2)); a seesaw balanced by m₁d₁ = m₂d₂, its pin bearing the whole weight, and one turning at α = τ/I; a motor's ω = τt/I and work τθ = ½Iω², a target spin reached at Iω/τ and held; a limit stopping a swing dead, taking m g d",
+        "a physical pendulum's period 2π√(2L/3g) and 4√(I/mgd) K(sin(θ₀/2)); a seesaw balanced by m₁d₁ = m₂d₂, its pin bearing the whole weight, and one turning at α = τ/I; a motor's ω = τt/I and work τθ = ½Iω², a target spin reached at Iω/τ and held; a limit stopping a swing dead, taking m g d; Atwood machines a = (m₁ − m₂)g/(m₁ + m₂ + I/r²), T = 2m₁m₂g/(m₁ + m₂) over a massless wheel",
     ));
     Ok(())
 }
@@ -267,5 +268,80 @@ fn limits(
         0.5 * G,
         1e-12,
     );
+    Ok(())
+}
+
+/// An Atwood machine: blocks of 3 and 2 kg hanging straight down from a wheel of radius
+/// 0.2 m at (0, 3) m, of `wheel` kg (a disc).
+fn atwood(wheel: f64) -> Scene {
+    Scene::new()
+        .with_world(World::gravity_only())
+        .with_integrator(Integrator::Rk4, 1e-3)
+        .with_body(Body::rectangle("heavy", 0.2, 0.3, 3.0).position([-0.2, 0.0]))
+        .with_body(Body::rectangle("light", 0.2, 0.2, 2.0).position([0.2, 0.0]))
+        .with_joint(Joint::pulley(
+            "wheel",
+            ("heavy", "light"),
+            [0.0, 3.0],
+            0.2,
+            wheel,
+        ))
+}
+
+/// The pulleys' checks of [`joints`], each after 1 s (the blocks rise 1 m of the 2.7 m
+/// they have): over a massless wheel the heavy block's velocity −(m₁ − m₂) g t/(m₁ + m₂)
+/// and the tension 2 m₁ m₂ g/(m₁ + m₂) on both sides; over a 2 kg disc (I/r² = 1 kg) the
+/// velocity −(m₁ − m₂) g t/(m₁ + m₂ + I/r²) and the two sides' tensions differing by
+/// (I/r²) a, what turns the wheel. The accelerations are constant: rk4 is exact to
+/// rounding, so 1e-12 relative.
+fn pulleys(
+    report: &mut Report,
+    row: &mut impl FnMut(&mut Report, &str, f64, f64, f64, f64),
+) -> Outcome {
+    let (m1, m2, t) = (3.0, 2.0, 1.0);
+    for (wheel, extra) in [(0.0, 0.0), (2.0, 1.0)] {
+        let mut simulation = start(&atwood(wheel))?;
+        step_to(&mut simulation, t)?;
+        let a = (m1 - m2) * G / (m1 + m2 + extra);
+        row(
+            report,
+            &format!(
+                "Atwood 3 kg and 2 kg over a {wheel} kg wheel: the heavy block's vy after 1 s (m/s)"
+            ),
+            simulation.body(0).velocity.y,
+            -a * t,
+            a * t,
+            1e-12,
+        );
+        let [tension_a, tension_b] = simulation.joint(0).tensions;
+        if wheel == 0.0 {
+            let tension = 2.0 * m1 * m2 * G / (m1 + m2);
+            row(
+                report,
+                "the string's tension (N), 2m₁m₂g/(m₁ + m₂), on the heavy side",
+                tension_a,
+                tension,
+                tension,
+                1e-12,
+            );
+            row(
+                report,
+                "and on the light side",
+                tension_b,
+                tension,
+                tension,
+                1e-12,
+            );
+        } else {
+            row(
+                report,
+                "the two sides' tensions differ by (I/r²) a (N), turning the wheel",
+                tension_a - tension_b,
+                extra * a,
+                extra * a,
+                1e-12,
+            );
+        }
+    }
     Ok(())
 }

@@ -142,7 +142,7 @@ impl Group {
                 "rigid bodies: moments of inertia from their outlines, free flight on the parabola with a steady turn, under each method"
             }
             Self::Joints => {
-                "pins, hinges and motors: a physical pendulum's period at small and large amplitude, a seesaw balanced by torques and one that turns, a motor's spin-up and its work"
+                "pins, hinges, motors and pulleys: a physical pendulum's period at small and large amplitude, a seesaw balanced by torques and one that turns, a motor's spin-up and its work, a limit's stop, Atwood machines"
             }
         }
     }

@@ -170,6 +170,10 @@ impl Canvas {
         // A joint off a body it holds (a hook above a hanging block, a lever arm) is tied
         // to the body's centroid by a thin line, drawn under the bodies.
         for (joint, &at) in scene.joints.iter().zip(&frame.joints) {
+            if let physics::JointKind::Pulley { radius, .. } = joint.kind {
+                self.draw_pulley(painter, (rect, scene, frame), (joint, at, radius));
+                continue;
+            }
             for name in std::iter::once(joint.body.as_str()).chain(joint.other()) {
                 let Some(i) = scene.bodies.iter().position(|b| b.name == name) else {
                     continue;
@@ -223,6 +227,9 @@ impl Canvas {
         // Joints as a teacher draws them: a pin a ring with a cross (a nail in the
         // world), a hinge a ring with a dot (an axle between two bodies).
         for (joint, &at) in scene.joints.iter().zip(&frame.joints) {
+            if joint.is_pulley() {
+                continue;
+            }
             let centre = screen(at);
             let radius = 5.0 * w;
             painter.circle(centre, radius, p.background, Stroke::new(1.5 * w, p.ink));
@@ -404,6 +411,48 @@ impl Canvas {
             dots.paint(painter, dots_slot);
         }
         place_labels(painter, labels, p.ink);
+    }
+
+    /// A pulley as a teacher draws it: its wheel, an axle, and the string from each body's
+    /// centroid to where it meets the wheel, over the wheel's top.
+    fn draw_pulley(
+        &self,
+        painter: &egui::Painter,
+        (rect, scene, frame): (Rect, &Scene, &Frame),
+        (joint, at, radius): (&physics::Joint, DVec2, f64),
+    ) {
+        let screen = |p: DVec2| self.view.to_screen(rect, p);
+        let p = &self.palette;
+        let w = p.width;
+        let centroid = |name: &str| {
+            let i = scene.bodies.iter().position(|b| b.name == name)?;
+            frame
+                .outlines
+                .get(i)
+                .map(|outline| outline_centroid(outline))
+        };
+        let scale = self.view.pixels_per_metre as f32;
+        let rim = (radius as f32 * scale).max(4.0 * w);
+        let centre = screen(at);
+        painter.circle(centre, rim, p.background, Stroke::new(2.0 * w, p.ink));
+        painter.circle_filled(centre, 1.8 * w, p.ink);
+        let (Some(a), Some(b)) = (joint.other().and_then(centroid), centroid(&joint.body)) else {
+            return;
+        };
+        let [touch_a, touch_b] = physics::pulley_path(at, radius, a, b);
+        let string = Stroke::new(1.4 * w, p.ink);
+        painter.line_segment([screen(a), screen(touch_a)], string);
+        painter.line_segment([screen(b), screen(touch_b)], string);
+        // The arc over the top, from a's side round to b's.
+        let (from, to) = ((touch_a - at).to_angle(), (touch_b - at).to_angle());
+        let sweep = (from - to).rem_euclid(std::f64::consts::TAU);
+        let arc: Vec<Pos2> = (0..=24)
+            .map(|k| {
+                let angle = from - sweep * f64::from(k) / 24.0;
+                screen(at + DVec2::from_angle(angle) * radius)
+            })
+            .collect();
+        painter.add(egui::Shape::line(arc, string));
     }
 
     /// The selected body's free-body diagram: each force an arrow from where it acts, its

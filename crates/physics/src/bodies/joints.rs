@@ -59,6 +59,83 @@ pub(crate) struct Held {
     /// The least and the most of b's angle less a's, radians (the file's limits from the
     /// reference).
     pub limits: Option<(f64, f64)>,
+    /// A pulley's wheel and string, from a over the wheel to b (the anchors are then the
+    /// centroids, 0).
+    pub pulley: Option<Pulley>,
+}
+
+/// An ideal string from body a over a wheel to body b, each end at a centroid.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Pulley {
+    /// The wheel's centre, m.
+    pub centre: DVec2,
+    /// m, > 0.
+    pub radius: f64,
+    /// The string's length: both straight runs and the arc over the wheel, m.
+    pub length: f64,
+    /// The wheel's coordinate in the mechanism (its spin) when it has inertia; a
+    /// massless wheel has none.
+    pub wheel: Option<usize>,
+}
+
+/// Where a string from `p` meets a wheel of `radius` at `centre`: the tangent point's
+/// angle on the wheel and the straight run's length. `side` −1 for the string's a end
+/// (the string comes up the wheel's left, seen with a on the left), +1 for its b end.
+fn tangent(centre: DVec2, radius: f64, p: DVec2, side: f64) -> (f64, f64) {
+    let d = p - centre;
+    let distance = d.length();
+    let run = (distance * distance - radius * radius).max(0.0).sqrt();
+    let beta = (radius / distance).min(1.0).acos();
+    (d.y.atan2(d.x) + side * beta, run)
+}
+
+/// The string's geometry with its ends at `a` and `b`: its whole length, and for each end
+/// the unit vector along the straight run towards the end and the run's length.
+fn string(pulley: &Pulley, a: DVec2, b: DVec2) -> (f64, [(DVec2, f64); 2]) {
+    let (c, r) = (pulley.centre, pulley.radius);
+    let (angle_a, run_a) = tangent(c, r, a, -1.0);
+    let (angle_b, run_b) = tangent(c, r, b, 1.0);
+    let wrap = (angle_a - angle_b).rem_euclid(std::f64::consts::TAU);
+    let along = |angle: f64, p: DVec2, run: f64| {
+        let touch = c + DVec2::from_angle(angle) * r;
+        ((p - touch) / run.max(f64::MIN_POSITIVE), run)
+    };
+    (
+        run_a + run_b + r * wrap,
+        [along(angle_a, a, run_a), along(angle_b, b, run_b)],
+    )
+}
+
+/// The string's whole length with its ends at `a` and `b` over a wheel of `radius` at
+/// `centre`, m: what a pulley holds.
+pub(crate) fn string_length(centre: DVec2, radius: f64, a: DVec2, b: DVec2) -> f64 {
+    let pulley = Pulley {
+        centre,
+        radius,
+        length: 0.0,
+        wheel: None,
+    };
+    string(&pulley, a, b).0
+}
+
+/// The points where a string from `a` over a wheel of `radius` at `centre` to `b` leaves
+/// the wheel towards each end (the app draws the string through them).
+pub fn pulley_path(centre: DVec2, radius: f64, a: DVec2, b: DVec2) -> [DVec2; 2] {
+    let touch = |p, side| centre + DVec2::from_angle(tangent(centre, radius, p, side).0) * radius;
+    [touch(a, -1.0), touch(b, 1.0)]
+}
+
+/// What a joint's constraints do to its bodies at one instant.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub(crate) struct Reaction {
+    /// The force on b, N (a pulley's: its string's pull on b).
+    pub on_b: DVec2,
+    /// The force on a, N.
+    pub on_a: DVec2,
+    /// The motor's torque on b, N·m.
+    pub torque: f64,
+    /// A pulley's string tension on a's side and on b's, N.
+    pub tensions: [f64; 2],
 }
 
 /// How a target-spin motor acts through a stretch of time.
@@ -156,11 +233,74 @@ fn inside(joint: &Held, side: Side, q: &[DVec3]) -> f64 {
 }
 
 impl Mechanism<'_> {
-    /// The rows of the joints' points, then one per holding motor, then one per limit
-    /// rested against, at (`q`, `u`).
+    /// How many rows joint `joint` has in the motion (`moving`) or in the projection of
+    /// positions: a point two; a pulley one (the string's length), or two in the motion
+    /// when its wheel has inertia (a string's run on each side).
+    fn count(joint: &Held, moving: bool) -> usize {
+        match joint.pulley {
+            None => 2,
+            Some(pulley) if moving && pulley.wheel.is_some() => 2,
+            Some(_) => 1,
+        }
+    }
+
+    /// How many multipliers the joints' own rows take in the motion: the holding motors'
+    /// and the limits' follow them.
+    fn joint_count(&self) -> usize {
+        self.joints.iter().map(|j| Self::count(j, true)).sum()
+    }
+
+    /// A pulley's rows: the string's length (one row), or in the motion with a wheel of
+    /// inertia one per run, each turning the wheel.
+    fn pulley_rows(joint: &Held, (q, u): (&[DVec3], &[DVec3]), moving: bool, rows: &mut Vec<Row>) {
+        let (Some(pulley), Some(a)) = (joint.pulley, joint.a) else {
+            return;
+        };
+        let b = joint.b;
+        let (_, [(along_a, run_a), (along_b, run_b)]) =
+            string(&pulley, q[a].truncate(), q[b].truncate());
+        // Each run turns at v⊥/run: its length's second derivative gains v⊥²/run.
+        let turning = |v: DVec3, along: DVec2, run: f64| {
+            let across = v.truncate().perp_dot(along);
+            across * across / run.max(f64::MIN_POSITIVE)
+        };
+        let (bias_a, bias_b) = (turning(u[a], along_a, run_a), turning(u[b], along_b, run_b));
+        match pulley.wheel {
+            Some(w) if moving => {
+                let rim = DVec3::Z * pulley.radius;
+                rows.push(Row {
+                    b: (a, along_a.extend(0.0)),
+                    a: Some((w, -rim)),
+                    bias: bias_a,
+                });
+                rows.push(Row {
+                    b: (b, along_b.extend(0.0)),
+                    a: Some((w, rim)),
+                    bias: bias_b,
+                });
+            }
+            _ => rows.push(Row {
+                b: (b, along_b.extend(0.0)),
+                a: Some((a, along_a.extend(0.0))),
+                bias: bias_a + bias_b,
+            }),
+        }
+    }
+
+    /// The rows of the joints, then one per holding motor, then one per limit rested
+    /// against, at (`q`, `u`).
     fn rows(&self, q: &[DVec3], u: &[DVec3], modes: &Modes) -> Vec<Row> {
+        self.rows_for(q, u, modes, true)
+    }
+
+    /// [`Self::rows`] in the motion, or (`moving` false) for the projection of positions.
+    fn rows_for(&self, q: &[DVec3], u: &[DVec3], modes: &Modes, moving: bool) -> Vec<Row> {
         let mut rows = Vec::with_capacity(2 * self.joints.len());
         for joint in self.joints {
+            if joint.pulley.is_some() {
+                Self::pulley_rows(joint, (q, u), moving, &mut rows);
+                continue;
+            }
             let (_, _, r_b, r_a) = points(joint, q);
             let turning = |i: usize, r: DVec2| -u[i].z * u[i].z * r;
             let bias = turning(joint.b, r_b) - joint.a.map_or(DVec2::ZERO, |a| turning(a, r_a));
@@ -316,7 +456,7 @@ impl Mechanism<'_> {
             return modes;
         }
         let (_, lambda) = self.accelerations(q, u, &modes);
-        let mut k = 2 * self.joints.len();
+        let mut k = self.joint_count();
         for (joint, drive) in self.joints.iter().zip(&mut modes.drives) {
             if let (Some(Drive::Hold(_)), Some(Motor::Spin { max_torque, .. })) =
                 (*drive, joint.motor)
@@ -327,7 +467,7 @@ impl Mechanism<'_> {
                 k += 1;
             }
         }
-        let mut k = 2 * self.joints.len() + holds;
+        let mut k = self.joint_count() + holds;
         for stop in &mut modes.stops {
             if let Some(side) = *stop {
                 let pulls = match side {
@@ -356,9 +496,13 @@ impl Mechanism<'_> {
                 .joints
                 .iter()
                 .flat_map(|joint| {
+                    if let (Some(pulley), Some(a)) = (joint.pulley, joint.a) {
+                        let (length, _) = string(&pulley, q[a].truncate(), q[joint.b].truncate());
+                        return vec![length - pulley.length];
+                    }
                     let (p_b, p_a, _, _) = points(joint, q);
                     let gap = p_b - p_a;
-                    [gap.x, gap.y]
+                    vec![gap.x, gap.y]
                 })
                 .chain(
                     self.joints
@@ -374,25 +518,19 @@ impl Mechanism<'_> {
                         }),
                 )
                 .collect();
-            let points_off = gaps[..2 * self.joints.len()]
-                .iter()
-                .fold(0.0, |w: f64, g| w.max(g.abs()));
-            let angles_off = gaps[2 * self.joints.len()..]
-                .iter()
-                .fold(0.0, |w: f64, g| w.max(g.abs()));
+            let own: usize = self.joints.iter().map(|j| Self::count(j, false)).sum();
+            let points_off = gaps[..own].iter().fold(0.0, |w: f64, g| w.max(g.abs()));
+            let angles_off = gaps[own..].iter().fold(0.0, |w: f64, g| w.max(g.abs()));
             if points_off <= POSITION_TOLERANCE * size && angles_off <= POSITION_TOLERANCE {
                 break;
             }
-            let rows = self.rows(q, u, &at_limits);
+            let rows = self.rows_for(q, u, &at_limits, false);
             let rhs: Vec<f64> = gaps.iter().map(|g| -g).collect();
             let delta = solve(self.matrix(&rows), rhs);
             self.apply(&rows, &delta, q);
         }
         let rows = self.rows(q, u, modes);
-        let targets = self
-            .joints
-            .iter()
-            .flat_map(|_| [0.0, 0.0])
+        let targets = std::iter::repeat_n(0.0, self.joint_count())
             .chain(modes.drives.iter().filter_map(|d| match d {
                 Some(Drive::Hold(spin)) => Some(*spin),
                 _ => None,
@@ -409,10 +547,10 @@ impl Mechanism<'_> {
 
     /// The kinetic energy of velocities `u`, J.
     fn kinetic(&self, u: &[DVec3]) -> f64 {
+        let term = |v: f64, w: f64| if w > 0.0 { 0.5 * v * v / w } else { 0.0 };
         u.iter()
             .zip(&self.inverse)
-            .filter(|(_, w)| w.x > 0.0)
-            .map(|(v, w)| 0.5 * (v.x * v.x / w.x + v.y * v.y / w.y + v.z * v.z / w.z))
+            .map(|(v, w)| term(v.x, w.x) + term(v.y, w.y) + term(v.z, w.z))
             .sum()
     }
 
@@ -428,7 +566,7 @@ impl Mechanism<'_> {
         let turned = |joint: &Held| relative_angle(joint, q1) - relative_angle(joint, q0);
         let held = |q, u| self.accelerations(q, u, modes).1;
         let mut holding = None;
-        let mut k = 2 * self.joints.len();
+        let mut k = self.joint_count();
         let mut work = 0.0;
         for (joint, drive) in self.joints.iter().zip(&modes.drives) {
             match drive {
@@ -601,18 +739,43 @@ impl Mechanism<'_> {
         hi
     }
 
-    /// The accelerations at (`q`, `u`), and each joint's force on b (N) and the torque
-    /// its motor gives b (N·m).
-    pub fn reactions(&self, q: &[DVec3], u: &[DVec3]) -> (Vec<DVec3>, Vec<(DVec2, f64)>) {
+    /// The accelerations at (`q`, `u`), and what each joint does to its bodies.
+    pub fn reactions(&self, q: &[DVec3], u: &[DVec3]) -> (Vec<DVec3>, Vec<Reaction>) {
         let modes = self.modes(q, u);
         let (a, lambda) = self.accelerations(q, u, &modes);
-        let mut k = 2 * self.joints.len();
-        let out = modes
-            .drives
+        let plain = Modes {
+            drives: vec![None; self.joints.len()],
+            stops: vec![None; self.joints.len()],
+        };
+        let rows = self.rows(q, u, &plain);
+        let mut k = self.joint_count();
+        let mut first = 0;
+        let out = self
+            .joints
             .iter()
-            .enumerate()
-            .map(|(j, drive)| {
-                let force = DVec2::new(lambda[2 * j], lambda[2 * j + 1]);
+            .zip(&modes.drives)
+            .map(|(joint, drive)| {
+                let ours = first..first + Self::count(joint, true);
+                first = ours.end;
+                // A row pulls a body by its multiplier times its coefficients there.
+                let (rows, lambda) = (&rows, &lambda);
+                let on = |body: usize| -> DVec2 {
+                    let mut sum = DVec2::ZERO;
+                    for r in ours.clone() {
+                        for (i, j) in [Some(rows[r].b), rows[r].a].into_iter().flatten() {
+                            if i == body {
+                                sum += j.truncate() * lambda[r];
+                            }
+                        }
+                    }
+                    sum
+                };
+                let on_b = on(joint.b);
+                let on_a = joint.a.map_or(-on_b, &on);
+                let tensions = match joint.pulley {
+                    None => [0.0; 2],
+                    Some(_) => [-lambda[ours.start], -lambda[ours.end - 1]],
+                };
                 let torque = match drive {
                     Some(Drive::Torque(t)) => *t,
                     Some(Drive::Hold(_)) => {
@@ -621,7 +784,12 @@ impl Mechanism<'_> {
                     }
                     None => 0.0,
                 };
-                (force, torque)
+                Reaction {
+                    on_b,
+                    on_a,
+                    torque,
+                    tensions,
+                }
             })
             .collect();
         (a, out)

@@ -24,7 +24,8 @@ use glam::{DVec2, DVec3};
 pub use contact::Applied;
 use contact::{Pose, Rigid};
 use island::Island;
-use joints::{Held, Mechanism};
+pub use joints::pulley_path;
+use joints::{Held, Mechanism, Reaction};
 
 use crate::contacts::obstacles::{self, Obstacle};
 use crate::diagnostics::{Diagnostics, ParticleReadout};
@@ -41,9 +42,13 @@ pub(crate) struct Taken {
     pub motors: f64,
 }
 
-/// A pin's or a hinge's state now.
+/// A pin's, a hinge's or a pulley's state now.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct JointReadout {
+    /// A pulley's string tension on a's side and on b's, N (equal for a massless wheel).
+    pub tensions: [f64; 2],
+    /// A pulley's wheel spin, rad/s.
+    pub wheel_spin: f64,
     /// b's angle less a's (a pin's: the body's) from the joint's reference, degrees,
     /// counter-clockwise, unwrapped.
     pub angle: f64,
@@ -83,8 +88,12 @@ pub(crate) struct Bodies {
     /// The mechanism's size, m: the widest jointed body's reach or the farthest pin from
     /// the origin, what the joints are held to a fraction of.
     jointed_size: f64,
-    /// Each joint's force on b and motor torque at the last step's end (or the start).
-    reactions: Vec<(DVec2, f64)>,
+    /// What each joint did to its bodies at the last step's end (or the start).
+    reactions: Vec<Reaction>,
+    /// Each pulley wheel with inertia: its I (kg·m²), and its spin (rad/s), in joint
+    /// order; the mechanism's coordinates after the jointed bodies'.
+    wheels: Arc<[f64]>,
+    wheel_spin: Vec<f64>,
     /// The uniform field, m/s².
     gravity: DVec2,
     /// Each body's acceleration through the last step (or at the start): the field's
@@ -110,11 +119,48 @@ fn held(scene: &Scene, jointed: &[usize]) -> Vec<Held> {
         let body = scene.bodies.iter().position(|b| b.name == name)?;
         jointed.binary_search(&body).ok().map(|k| (body, k))
     };
+    let mut wheel = jointed.len();
     scene
         .joints
         .iter()
         .filter_map(|joint| {
             let (body_b, b) = index(&joint.body)?;
+            if let JointKind::Pulley {
+                a,
+                radius,
+                mass,
+                inertia,
+                length,
+                ..
+            } = &joint.kind
+            {
+                let (body_a, a) = index(a)?;
+                let centre = joint.at.to_dvec2();
+                let ends = |i: usize| scene.bodies[i].position.to_dvec2();
+                let length = length.unwrap_or_else(|| {
+                    joints::string_length(centre, *radius, ends(body_a), ends(body_b))
+                });
+                let spins = *mass * inertia * radius * radius > 0.0;
+                let pulley = joints::Pulley {
+                    centre,
+                    radius: *radius,
+                    length,
+                    wheel: spins.then(|| {
+                        wheel += 1;
+                        wheel - 1
+                    }),
+                };
+                return Some(Held {
+                    b,
+                    a: Some(a),
+                    anchor_b: DVec2::ZERO,
+                    anchor_a: DVec2::ZERO,
+                    motor: None,
+                    reference: 0.0,
+                    limits: None,
+                    pulley: Some(pulley),
+                });
+            }
             let frame = |i: usize| {
                 let body = &scene.bodies[i];
                 (body.position.to_dvec2(), body.angle)
@@ -125,7 +171,7 @@ fn held(scene: &Scene, jointed: &[usize]) -> Vec<Held> {
                 .anchor
                 .unwrap_or_else(|| crate::scene::in_frame(at, position_b, angle_b));
             let (a, anchor_a, angle_a) = match &joint.kind {
-                JointKind::Pin => (None, at, 0.0),
+                JointKind::Pin | JointKind::Pulley { .. } => (None, at, 0.0),
                 JointKind::Hinge { a, anchor_a } => {
                     let (body_a, a) = index(a)?;
                     let (position_a, angle_a) = frame(body_a);
@@ -148,7 +194,28 @@ fn held(scene: &Scene, jointed: &[usize]) -> Vec<Held> {
                         (reference + upper).to_radians(),
                     )
                 }),
+                pulley: None,
             })
+        })
+        .collect()
+}
+
+/// Each pulley wheel with inertia, in joint order: its I (kg·m²) and its spin (rad/s).
+fn wheels(scene: &Scene) -> Vec<(f64, f64)> {
+    scene
+        .joints
+        .iter()
+        .filter_map(|joint| match joint.kind {
+            JointKind::Pulley {
+                radius,
+                mass,
+                inertia,
+                spin,
+                ..
+            } if mass * inertia * radius * radius > 0.0 => {
+                Some((mass * inertia * radius * radius, spin))
+            }
+            _ => None,
         })
         .collect()
 }
@@ -206,6 +273,8 @@ impl Bodies {
             jointed: jointed.into(),
             jointed_size: 0.0,
             reactions: Vec::new(),
+            wheels: wheels(scene).iter().map(|&(inertia, _)| inertia).collect(),
+            wheel_spin: wheels(scene).iter().map(|&(_, spin)| spin).collect(),
             gravity: scene.world.gravity.to_dvec2(),
             acceleration: Vec::new(),
             time_step: scene.simulation.time_step,
@@ -344,6 +413,12 @@ impl Bodies {
                     .filter(|j| j.a.is_none())
                     .map(|j| j.anchor_a.abs().max_element()),
             )
+            .chain(
+                self.joints
+                    .iter()
+                    .filter_map(|j| j.pulley)
+                    .map(|p| p.centre.abs().max_element() + p.radius),
+            )
             .fold(0.0, f64::max)
             .max(f64::MIN_POSITIVE);
         self.read_joints();
@@ -365,22 +440,27 @@ impl Bodies {
                         DVec3::new(w, w, 1.0 / self.inertia[i])
                     }
                 })
+                .chain(self.wheels.iter().map(|&inertia| DVec3::Z / inertia))
                 .collect(),
             weight: self
                 .jointed
                 .iter()
                 .map(|&i| (self.gravity * self.mass[i]).extend(0.0))
+                .chain(self.wheels.iter().map(|_| DVec3::ZERO))
                 .collect(),
         };
+        // A wheel's angle plays no part: only its spin is kept.
         let q = self
             .jointed
             .iter()
             .map(|&i| self.position[i].extend(self.angle[i].to_radians()))
+            .chain(self.wheels.iter().map(|_| DVec3::ZERO))
             .collect();
         let u = self
             .jointed
             .iter()
             .map(|&i| self.velocity[i].extend(self.spin[i]))
+            .chain(self.wheel_spin.iter().map(|&spin| DVec3::Z * spin))
             .collect();
         (mechanism, q, u)
     }
@@ -418,6 +498,9 @@ impl Bodies {
             self.velocity[i] = u[k].truncate();
             self.spin[i] = u[k].z;
         }
+        for (k, spin) in self.wheel_spin.iter_mut().enumerate() {
+            *spin = u[self.jointed.len() + k].z;
+        }
         self.read_joints();
         books
     }
@@ -435,19 +518,19 @@ impl Bodies {
             return forces;
         }
         if let Ok(k) = self.jointed.binary_search(&i) {
-            for (joint, &(force, _)) in self.joints.iter().zip(&self.reactions) {
+            for (joint, reaction) in self.joints.iter().zip(&self.reactions) {
                 let turn =
                     |anchor: DVec2| DVec2::from_angle(self.angle[i].to_radians()).rotate(anchor);
                 if joint.b == k {
                     forces.push(Applied {
                         arm: turn(joint.anchor_b),
-                        force,
+                        force: reaction.on_b,
                         friction: false,
                     });
                 } else if joint.a == Some(k) {
                     forces.push(Applied {
                         arm: turn(joint.anchor_a),
-                        force: -force,
+                        force: reaction.on_a,
                         friction: false,
                     });
                 }
@@ -559,6 +642,12 @@ impl Bodies {
             diagnostics.momentum += readout.momentum;
             diagnostics.angular_momentum += readout.angular_momentum;
         }
+        // A pulley's wheel turns about its fixed axle: kinetic energy and spin, no
+        // momentum.
+        for (&inertia, &spin) in self.wheels.iter().zip(&self.wheel_spin) {
+            diagnostics.energy.kinetic += 0.5 * inertia * spin * spin;
+            diagnostics.angular_momentum += inertia * spin;
+        }
     }
 
     /// Writes the state reached into `scene`'s bodies and joints (each joint's anchors and
@@ -566,13 +655,21 @@ impl Bodies {
     pub fn save_into(&self, scene: &mut Scene) {
         if scene.joints.len() == self.joints.len() {
             for (j, (saved, joint)) in scene.joints.iter_mut().zip(self.joints.iter()).enumerate() {
+                match &mut saved.kind {
+                    JointKind::Pulley { spin, length, .. } => {
+                        *spin = self.joint(j).wheel_spin;
+                        *length = joint.pulley.map(|p| p.length);
+                        continue;
+                    }
+                    JointKind::Hinge { anchor_a, .. } => {
+                        *anchor_a = Some(joint.anchor_a);
+                        let at = self.joint(j).at;
+                        saved.at = Vector::cartesian(at.x, at.y);
+                    }
+                    JointKind::Pin => {}
+                }
                 saved.anchor = Some(joint.anchor_b);
                 saved.reference_angle = Some(joint.reference);
-                if let JointKind::Hinge { anchor_a, .. } = &mut saved.kind {
-                    *anchor_a = Some(joint.anchor_a);
-                    let at = self.joint(j).at;
-                    saved.at = Vector::cartesian(at.x, at.y);
-                }
             }
         }
         for (i, body) in scene.bodies.iter_mut().enumerate() {
@@ -603,16 +700,53 @@ impl Bodies {
         self.joints[j].a.is_none()
     }
 
+    /// The first pulley (and the body) that a body on its string has been pulled up to:
+    /// their bounding circles meet, and the string's run on that side is about to end.
+    pub fn pulley_reached(&self) -> Option<(String, String)> {
+        self.joints.iter().enumerate().find_map(|(j, joint)| {
+            let pulley = joint.pulley?;
+            [Some(joint.b), joint.a]
+                .into_iter()
+                .flatten()
+                .find_map(|k| {
+                    let i = self.jointed[k];
+                    (self.position[i].distance(pulley.centre) <= pulley.radius + self.radius[i])
+                        .then(|| (self.joint_names[j].clone(), self.names[i].clone()))
+                })
+        })
+    }
+
+    pub fn is_pulley(&self, j: usize) -> bool {
+        self.joints[j].pulley.is_some()
+    }
+
     /// Joint `j`'s angle, reaction and motor torque now, and where it is.
     pub fn joint(&self, j: usize) -> JointReadout {
         let joint = &self.joints[j];
         let b = self.jointed[joint.b];
         let angle_a = joint.a.map_or(0.0, |a| self.angle[self.jointed[a]]);
-        let (force, torque) = self.reactions.get(j).copied().unwrap_or_default();
+        let reaction = self.reactions.get(j).copied().unwrap_or_default();
+        if let Some(pulley) = joint.pulley {
+            let wheel_spin = match pulley.wheel {
+                Some(w) => self.wheel_spin[w - self.jointed.len()],
+                // A massless wheel turns with the string (no slip): b's run shortens.
+                None => 0.0,
+            };
+            return JointReadout {
+                tensions: reaction.tensions,
+                wheel_spin,
+                angle: 0.0,
+                force: reaction.on_b,
+                torque: 0.0,
+                at: pulley.centre,
+            };
+        }
         JointReadout {
+            tensions: [0.0; 2],
+            wheel_spin: 0.0,
             angle: self.angle[b] - angle_a - joint.reference,
-            force,
-            torque,
+            force: reaction.on_b,
+            torque: reaction.torque,
             at: self.position[b]
                 + DVec2::from_angle(self.angle[b].to_radians()).rotate(joint.anchor_b),
         }
@@ -671,7 +805,12 @@ impl Simulation {
 
     /// Whether joint `j` is a pin (not a hinge): its rows carry its force.
     pub fn joint_is_pin(&self, j: usize) -> bool {
-        self.bodies.is_pin(j)
+        self.bodies.is_pin(j) && !self.bodies.is_pulley(j)
+    }
+
+    /// Whether joint `j` is a pulley: its rows carry its tensions.
+    pub fn joint_is_pulley(&self, j: usize) -> bool {
+        self.bodies.is_pulley(j)
     }
 
     /// Whether a joint has a motor: the ledger then books its work

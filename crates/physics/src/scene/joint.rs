@@ -34,6 +34,22 @@ pub enum JointKind {
         /// left out (a saved state writes it, so that continuing is exact).
         anchor_a: Option<DVec2>,
     },
+    /// `[[pulley]]`: an ideal string from `a` over a wheel centred at [`Joint::at`] (the
+    /// file's `position`) to [`Joint::body`] (the file's `b`), each end at a centroid.
+    Pulley {
+        /// The body on the string's other end (the file's `a`).
+        a: String,
+        /// The wheel's radius, m, > 0.
+        radius: f64,
+        /// The wheel's mass, kg, ≥ 0: 0 is a massless, frictionless wheel.
+        mass: f64,
+        /// The wheel's I/(m r²): 0.5 for a disc.
+        inertia: f64,
+        /// The wheel's spin, rad/s counter-clockwise (what a saved state continues from).
+        spin: f64,
+        /// The string's length, m; the start's when left out.
+        length: Option<f64>,
+    },
 }
 
 /// A pin or a hinge.
@@ -107,20 +123,49 @@ impl Joint {
         self
     }
 
-    /// `pin` or `hinge`, as a scene file writes the table.
+    /// A pulley: a string from `a` over a wheel of `radius` m at `position` to `b`, the
+    /// wheel of `mass` kg a disc (I = m r²/2).
+    #[must_use]
+    pub fn pulley(
+        name: impl Into<String>,
+        (a, b): (impl Into<String>, impl Into<String>),
+        position: impl Into<Vector>,
+        radius: f64,
+        mass: f64,
+    ) -> Self {
+        Self {
+            kind: JointKind::Pulley {
+                a: a.into(),
+                radius,
+                mass,
+                inertia: 0.5,
+                spin: 0.0,
+                length: None,
+            },
+            ..Self::pin(name, b, position)
+        }
+    }
+
+    /// `pin`, `hinge` or `pulley`, as a scene file writes the table.
     pub const fn kind_str(&self) -> &'static str {
         match self.kind {
             JointKind::Pin => "pin",
             JointKind::Hinge { .. } => "hinge",
+            JointKind::Pulley { .. } => "pulley",
         }
     }
 
-    /// The other body of a hinge; `None` for a pin.
+    /// The other body of a hinge or a pulley (its `a`); `None` for a pin.
     pub fn other(&self) -> Option<&str> {
         match &self.kind {
             JointKind::Pin => None,
-            JointKind::Hinge { a, .. } => Some(a),
+            JointKind::Hinge { a, .. } | JointKind::Pulley { a, .. } => Some(a),
         }
+    }
+
+    /// Whether it is a pulley.
+    pub const fn is_pulley(&self) -> bool {
+        matches!(self.kind, JointKind::Pulley { .. })
     }
 }
 

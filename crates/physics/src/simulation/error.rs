@@ -88,6 +88,17 @@ pub enum SimulationError {
         /// Seconds.
         time: f64,
     },
+    /// A body on a pulley's string was pulled up to the wheel: the string has no run left
+    /// on its side.
+    #[error("{}", crate::scene::say("run-pulley-reached", &[("time", &time.to_string()), ("pulley", pulley), ("body", body)]))]
+    PulleyReached {
+        /// The pulley's name.
+        pulley: String,
+        /// The body's name.
+        body: String,
+        /// Seconds.
+        time: f64,
+    },
     /// A rod or a string so far from the origin for its length that f64's rounding of its
     /// ends' positions alone keeps it from being held to a billionth of its length.
     #[error("{}", crate::scene::say("run-tie-too-far", &[("time", &time.to_string()), ("tie", tie), ("length", &length.to_string())]))]

@@ -59,6 +59,7 @@ pub(super) const ROOT_KEYS: &[&str] = &[
     "body",
     "pin",
     "hinge",
+    "pulley",
     "graph",
     "series",
     "view",
@@ -279,7 +280,7 @@ impl<'t> Reader<'t> {
             let body = self.body(node, i);
             scene.bodies.push(body);
         }
-        for kind in ["pin", "hinge"] {
+        for kind in ["pin", "hinge", "pulley"] {
             for (i, node) in self.items(&mut top, kind).iter().enumerate() {
                 let joint = self.joint(node, kind, i, scene.joints.len());
                 scene.joints.push(joint);
@@ -373,7 +374,9 @@ impl<'t> Reader<'t> {
         // Particles, springs and ramps are named by their initial (p1, s1, r1); rods and
         // strings in full (rod1, string1), which would clash with ramps and springs.
         let default_name = match kind {
-            "rod" | "string" | "body" | "pin" | "hinge" => format!("{kind}{}", index + 1),
+            "rod" | "string" | "body" | "pin" | "hinge" | "pulley" => {
+                format!("{kind}{}", index + 1)
+            }
             _ => format!("{}{}", &kind[..1], index + 1),
         };
         let mut t = self.table(node, section, validate::numbered(kind, index))?;
@@ -506,6 +509,29 @@ impl<'t> Reader<'t> {
             return joint;
         };
         joint.name = name;
+        if kind == "pulley" {
+            let a = self.required(&mut t, "a", read_text, String::new());
+            joint.body = self.required(&mut t, "b", read_text, String::new());
+            joint.at = self.required(&mut t, "position", read_vector, Vector::ZERO);
+            let radius = self.required(&mut t, "radius", read_number, 0.0);
+            let mass = self.field(&mut t, "mass", read_number).unwrap_or(0.0);
+            let inertia = self.field(&mut t, "inertia", read_number).unwrap_or(0.5);
+            let spin = self.field(&mut t, "spin", read_number).unwrap_or(0.0);
+            let length = self.field(&mut t, "length", read_number);
+            joint.kind = JointKind::Pulley {
+                a,
+                radius,
+                mass,
+                inertia,
+                spin,
+                length,
+            };
+            let known = [
+                "name", "a", "b", "position", "radius", "mass", "inertia", "spin", "length",
+            ];
+            self.close(&t, &known);
+            return joint;
+        }
         let mut known = vec!["name", "at", "motor", "anchor", "reference_angle", "limits"];
         if kind == "pin" {
             joint.body = self.required(&mut t, "body", read_text, String::new());
@@ -697,12 +723,17 @@ fn section_node<'n>(root: &'n Node<'n>, section: Section) -> Option<&'n Node<'n>
         Section::Spring(i) => items("spring").get(i),
         Section::Ramp(i) => items("ramp").get(i),
         Section::Body(i) => items("body").get(i),
-        // Pins first, then hinges, as the reader reads them into `Scene::joints`.
+        // Pins first, then hinges, then pulleys, as the reader reads them into
+        // `Scene::joints`.
         Section::Joint(i) => {
-            let pins = items("pin");
-            match i.checked_sub(pins.len()) {
-                None => pins.get(i),
-                Some(i) => items("hinge").get(i),
+            let (pins, hinges) = (items("pin"), items("hinge"));
+            match (
+                i.checked_sub(pins.len()),
+                i.checked_sub(pins.len() + hinges.len()),
+            ) {
+                (None, _) => pins.get(i),
+                (Some(i), None) => hinges.get(i),
+                (_, Some(i)) => items("pulley").get(i),
             }
         }
         Section::Graph(i) => items("graph").get(i),

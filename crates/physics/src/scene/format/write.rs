@@ -285,8 +285,32 @@ fn body_fields(body: &Body) -> Vec<(&'static str, Out)> {
 fn joint_fields(joint: &Joint) -> Vec<(&'static str, Out)> {
     let point = |p: DVec2| Out::Vector(Vector::Cartesian(p));
     let mut entries = Vec::new();
+    if let JointKind::Pulley {
+        a,
+        radius,
+        mass,
+        inertia,
+        spin,
+        length,
+    } = &joint.kind
+    {
+        entries.push(("a", Out::Text(a.clone())));
+        entries.push(("b", Out::Text(joint.body.clone())));
+        entries.push(("position", Out::Vector(joint.at)));
+        entries.push(("radius", Out::Number(*radius)));
+        entries.push(("mass", Out::Number(*mass)));
+        entries.push(("inertia", Out::Number(*inertia)));
+        if *spin != 0.0 {
+            entries.push(("spin", Out::Number(*spin)));
+        }
+        if let Some(length) = length {
+            entries.push(("length", Out::Number(*length)));
+        }
+        return entries;
+    }
     match &joint.kind {
         JointKind::Pin => entries.push(("body", Out::Text(joint.body.clone()))),
+        JointKind::Pulley { .. } => {}
         JointKind::Hinge { a, anchor_a } => {
             entries.push(("a", Out::Text(a.clone())));
             entries.push(("b", Out::Text(joint.body.clone())));

@@ -18,9 +18,13 @@ impl Checker<'_> {
     pub(super) fn joints(&mut self) {
         for (i, joint) in self.scene.joints.iter().enumerate() {
             let s = Section::Joint(i);
+            if joint.is_pulley() {
+                self.pulley(s, joint);
+                continue;
+            }
             let b = self.joined(s, joint, joint.body.as_str(), field_b(joint));
             let a = match &joint.kind {
-                JointKind::Pin => None,
+                JointKind::Pin | JointKind::Pulley { .. } => None,
                 JointKind::Hinge { a, .. } => {
                     let found = self.joined(s, joint, a, "a");
                     if a == &joint.body {
@@ -84,6 +88,54 @@ impl Checker<'_> {
         found
     }
 
+    /// A pulley hangs two different bodies, at least one free to move, from a wheel of
+    /// positive radius and no negative mass, each end outside the wheel.
+    fn pulley(&mut self, s: Section, joint: &Joint) {
+        let JointKind::Pulley {
+            a,
+            radius,
+            mass,
+            inertia,
+            spin,
+            length,
+        } = &joint.kind
+        else {
+            return;
+        };
+        let found_b = self.joined(s, joint, &joint.body, "b");
+        let found_a = self.joined(s, joint, a, "a");
+        if a == &joint.body {
+            self.report(s, "b", &say("scene-pulley-same", &[("body", a)]));
+        }
+        self.vector(s, "position", joint.at);
+        self.number(s, "radius", Rule::Positive, *radius);
+        self.number(s, "mass", Rule::NonNegative, *mass);
+        self.number(s, "inertia", Rule::NonNegative, *inertia);
+        self.number(s, "spin", Rule::Finite, *spin);
+        if let Some(length) = length {
+            self.number(s, "length", Rule::Positive, *length);
+        }
+        let (Some(b), Some(a)) = (found_b, found_a) else {
+            return;
+        };
+        let bodies = &self.scene.bodies;
+        if bodies[a].fixed && bodies[b].fixed {
+            self.report(s, "b", &say("scene-joint-fixed", &[]));
+        }
+        let centre = joint.at.to_dvec2();
+        for (field, body) in [("a", a), ("b", b)] {
+            let distance = bodies[body].position.to_dvec2().distance(centre);
+            let reach = bodies[body]
+                .local_outline()
+                .iter()
+                .fold(0.0, |r: f64, v| r.max(v.length()));
+            if distance.is_finite() && radius.is_finite() && distance <= *radius + reach {
+                let name = bodies[body].name.as_str();
+                self.report(s, field, &say("scene-pulley-inside", &[("body", name)]));
+            }
+        }
+    }
+
     /// Limits must be finite, the lower below the upper, and hold the joint's angle at
     /// the start.
     fn limits(
@@ -105,7 +157,7 @@ impl Checker<'_> {
         let angle_a = match (&joint.kind, a) {
             (JointKind::Hinge { .. }, Some(a)) => self.scene.bodies[a].angle,
             (JointKind::Hinge { .. }, None) => return,
-            (JointKind::Pin, _) => 0.0,
+            (JointKind::Pin | JointKind::Pulley { .. }, _) => 0.0,
         };
         let start = self.scene.bodies[b].angle - angle_a;
         let angle = start - joint.reference_angle.unwrap_or(start);
@@ -152,7 +204,7 @@ impl Checker<'_> {
 fn field_b(joint: &Joint) -> &'static str {
     match joint.kind {
         JointKind::Pin => "body",
-        JointKind::Hinge { .. } => "b",
+        JointKind::Hinge { .. } | JointKind::Pulley { .. } => "b",
     }
 }
 

@@ -291,8 +291,9 @@ fn atwood(wheel: f64) -> Scene {
 /// The pulleys' checks of [`joints`], each after 1 s (the blocks rise 1 m of the 2.7 m
 /// they have): over a massless wheel the heavy block's velocity −(m₁ − m₂) g t/(m₁ + m₂)
 /// and the tension 2 m₁ m₂ g/(m₁ + m₂) on both sides; over a 2 kg disc (I/r² = 1 kg) the
-/// velocity −(m₁ − m₂) g t/(m₁ + m₂ + I/r²) and the two sides' tensions differing by
-/// (I/r²) a, what turns the wheel. The accelerations are constant: rk4 is exact to
+/// velocity −(m₁ − m₂) g t/(m₁ + m₂ + I/r²), the wheel turning with the string (a t/r,
+/// counter-clockwise as the heavy side, on the left, falls) and the two sides' tensions
+/// differing by (I/r²) a, what turns the wheel. The accelerations are constant: rk4 is exact to
 /// rounding, so 1e-12 relative.
 fn pulleys(
     report: &mut Report,
@@ -333,6 +334,14 @@ fn pulleys(
                 1e-12,
             );
         } else {
+            row(
+                report,
+                "the wheel's spin (rad/s), a t / r, counter-clockwise as the heavy side falls",
+                simulation.joint(0).wheel_spin,
+                a * t / 0.2,
+                a * t / 0.2,
+                1e-12,
+            );
             row(
                 report,
                 "the two sides' tensions differ by (I/r²) a (N), turning the wheel",

@@ -859,6 +859,7 @@ cli-check-body = Körper „{ $name }“: { $shape }, Fläche { $area } m², Mas
 cli-check-pin = Stift „{ $name }“: hält den Körper „{ $body }“ bei { $at } m; sein Trägheitsmoment um den Stift ist { $inertia } kg·m²
 cli-check-hinge = Scharnier „{ $name }“: verbindet den Körper „{ $b }“ mit dem Körper „{ $a }“ bei { $at } m
 cli-check-pulley = Rolle „{ $name }“: eine Schnur vom Körper „{ $a }“ über ein Rad mit Radius { $radius } m und { $mass } kg bei { $at } m zum Körper „{ $b }“
+cli-check-joints-start = die Geschwindigkeiten der Körper am Anfang reißen ihre Gelenke auseinander: der Lauf beginnt mit den nächsten Geschwindigkeiten, die die Gelenke erlauben, { $lost } J kinetische Energie weniger
 cli-check-motor-torque = , angetrieben von einem Motor mit { $torque } N·m
 cli-check-motor-spin = , angetrieben von einem Motor auf { $spin } rad/s mit höchstens { $torque } N·m
 cli-check-bodies-free = Körper stoßen an Wände, Rampen und einander, liegen auf ihnen auf und gleiten (zwischen zwei Körpern die kleinere Stoßzahl, das geometrische Mittel der Reibungen); Körper an Stiften und Scharnieren begegnen noch nichts; Teilchen begegnen Körper noch nicht, und Federn, Stangen und Fäden greifen noch nicht an ihnen an

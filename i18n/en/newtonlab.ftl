@@ -860,6 +860,7 @@ cli-check-body = body '{ $name }': { $shape }, area { $area } m², mass { $mass 
 cli-check-pin = pin '{ $name }': holds body '{ $body }' at { $at } m; its moment of inertia about the pin is { $inertia } kg·m²
 cli-check-hinge = hinge '{ $name }': joins body '{ $b }' to body '{ $a }' at { $at } m
 cli-check-pulley = pulley '{ $name }': a string from body '{ $a }' over a wheel of radius { $radius } m and { $mass } kg at { $at } m to body '{ $b }'
+cli-check-joints-start = the bodies' velocities at the start move their joints apart: the run starts from the nearest velocities the joints allow, { $lost } J of kinetic energy less (give a hinged body its partner's velocity at the hinge)
 cli-check-motor-torque = , driven by a motor of { $torque } N·m
 cli-check-motor-spin = , driven by a motor to { $spin } rad/s with at most { $torque } N·m
 cli-check-bodies-free = bodies strike, rest on and slide on the walls, the ramps and each other (the smaller restitution, the frictions' geometric mean between two bodies); pinned and hinged bodies meet nothing yet; bodies do not yet meet particles, and springs, rods and strings do not attach to them

@@ -859,6 +859,7 @@ cli-check-body = cuerpo «{ $name }»: { $shape }, área { $area } m², masa { $
 cli-check-pin = pasador «{ $name }»: sujeta el cuerpo «{ $body }» en { $at } m; su momento de inercia respecto al pasador es { $inertia } kg·m²
 cli-check-hinge = bisagra «{ $name }»: une el cuerpo «{ $b }» al cuerpo «{ $a }» en { $at } m
 cli-check-pulley = polea «{ $name }»: una cuerda del cuerpo «{ $a }» sobre una rueda de radio { $radius } m y { $mass } kg en { $at } m al cuerpo «{ $b }»
+cli-check-joints-start = las velocidades de los cuerpos al comenzar separan sus articulaciones: la simulación empieza con las velocidades más cercanas que las articulaciones permiten, { $lost } J menos de energía cinética
 cli-check-motor-torque = , movido por un motor de { $torque } N·m
 cli-check-motor-spin = , movido por un motor a { $spin } rad/s con { $torque } N·m como máximo
 cli-check-bodies-free = los cuerpos chocan con paredes, rampas y entre sí, se apoyan y deslizan sobre ellos (entre dos cuerpos, la menor restitución y la media geométrica de los rozamientos); los cuerpos con pasador o bisagra aún no se encuentran con nada; aún no se encuentran con partículas, y resortes, varillas y cuerdas no se les unen

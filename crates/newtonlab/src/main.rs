@@ -240,6 +240,15 @@ fn check(source: &str) -> Result<(), Failure> {
         for joint in &scene.joints {
             out!("{}", describe_joint(&scene, joint));
         }
+        if let Some(lost) = physics::Simulation::new(&scene)
+            .ok()
+            .and_then(|s| s.joints_start_loss())
+        {
+            out!(
+                "{}",
+                say("cli-check-joints-start", &[("lost", &nine_digits(lost))])
+            );
+        }
         if let Some(lesson) = &scene.lesson {
             let words = [
                 ("title", lesson.title.as_str()),

@@ -545,6 +545,32 @@ impl Mechanism<'_> {
         self.apply(&rows, &mu, u);
     }
 
+    /// Velocities at the start that move a joint apart (a hinge's two points, a pulley's
+    /// string stretching): projected onto the joints, as after a step — the plastic
+    /// impulse that makes them consistent. Returns the kinetic energy that took, or `None`
+    /// where they were consistent already (to 1e-9 of the fastest speed: a saved state's
+    /// rounding, which must not be touched for its run to continue bit for bit).
+    pub fn start(&self, q: &mut [DVec3], u: &mut [DVec3], size: f64) -> Option<f64> {
+        let modes = self.modes(q, u);
+        let plain = Modes {
+            drives: vec![None; self.joints.len()],
+            stops: modes.stops.clone(),
+        };
+        let rows = self.rows(q, u, &plain);
+        let fastest = u.iter().fold(0.0, |f: f64, v| {
+            f.max(v.truncate().length()).max(v.z.abs() * size)
+        });
+        let apart = Self::times(&rows, u)
+            .iter()
+            .fold(0.0, |w: f64, x| w.max(x.abs()));
+        if apart <= 1e-9 * fastest.max(f64::MIN_POSITIVE) {
+            return None;
+        }
+        let before = self.kinetic(u);
+        self.project(q, u, &plain, size);
+        Some(before - self.kinetic(u))
+    }
+
     /// The kinetic energy of velocities `u`, J.
     fn kinetic(&self, u: &[DVec3]) -> f64 {
         let term = |v: f64, w: f64| if w > 0.0 { 0.5 * v * v / w } else { 0.0 };

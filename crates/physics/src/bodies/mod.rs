@@ -94,6 +94,9 @@ pub(crate) struct Bodies {
     /// order; the mechanism's coordinates after the jointed bodies'.
     wheels: Arc<[f64]>,
     wheel_spin: Vec<f64>,
+    /// The kinetic energy the joints took at the start (velocities that moved them
+    /// apart, made consistent), J.
+    start_loss: Option<f64>,
     /// The uniform field, m/s².
     gravity: DVec2,
     /// Each body's acceleration through the last step (or at the start): the field's
@@ -275,6 +278,7 @@ impl Bodies {
             reactions: Vec::new(),
             wheels: wheels(scene).iter().map(|&(inertia, _)| inertia).collect(),
             wheel_spin: wheels(scene).iter().map(|&(_, spin)| spin).collect(),
+            start_loss: None,
             gravity: scene.world.gravity.to_dvec2(),
             acceleration: Vec::new(),
             time_step: scene.simulation.time_step,
@@ -421,7 +425,37 @@ impl Bodies {
             )
             .fold(0.0, f64::max)
             .max(f64::MIN_POSITIVE);
+        if !self.joints.is_empty() {
+            let (mechanism, mut q, mut u) = self.mechanism();
+            self.start_loss = mechanism.start(&mut q, &mut u, self.jointed_size);
+            if self.start_loss.is_some() {
+                self.take_jointed(&q, &u);
+            }
+        }
         self.read_joints();
+    }
+
+    /// Writes the mechanism's positions and velocities back into the jointed bodies
+    /// and the wheels.
+    fn take_jointed(&mut self, q: &[DVec3], u: &[DVec3]) {
+        for (k, &i) in self.jointed.iter().enumerate() {
+            if self.fixed[i] {
+                continue;
+            }
+            self.position[i] = q[k].truncate();
+            self.angle[i] = q[k].z.to_degrees();
+            self.velocity[i] = u[k].truncate();
+            self.spin[i] = u[k].z;
+        }
+        for (k, spin) in self.wheel_spin.iter_mut().enumerate() {
+            *spin = u[self.jointed.len() + k].z;
+        }
+    }
+
+    /// The kinetic energy the joints took at the start from velocities that moved them
+    /// apart, J; `None` where the velocities were consistent with them.
+    pub fn start_loss(&self) -> Option<f64> {
+        self.start_loss
     }
 
     /// The mechanism of the jointed bodies, and their positions (x, y, angle in radians)
@@ -489,18 +523,7 @@ impl Bodies {
         }
         let (mechanism, mut q, mut u) = self.mechanism();
         let books = mechanism.advance(method, (&mut q, &mut u), h, self.jointed_size);
-        for (k, &i) in self.jointed.iter().enumerate() {
-            if self.fixed[i] {
-                continue;
-            }
-            self.position[i] = q[k].truncate();
-            self.angle[i] = q[k].z.to_degrees();
-            self.velocity[i] = u[k].truncate();
-            self.spin[i] = u[k].z;
-        }
-        for (k, spin) in self.wheel_spin.iter_mut().enumerate() {
-            *spin = u[self.jointed.len() + k].z;
-        }
+        self.take_jointed(&q, &u);
         self.read_joints();
         books
     }
@@ -801,6 +824,14 @@ impl Simulation {
     /// The pins' and hinges' names, in scene order (the pins, then the hinges).
     pub fn joint_names(&self) -> &[String] {
         self.bodies.joint_names()
+    }
+
+    /// The kinetic energy the joints took at the start from velocities typed in the
+    /// scene that moved them apart (a hinge's two points, a pulley's string stretching),
+    /// J; `None` where the velocities were consistent with them. The run starts from the
+    /// nearest consistent velocities (the plastic impulse), which `check` says.
+    pub fn joints_start_loss(&self) -> Option<f64> {
+        self.bodies.start_loss()
     }
 
     /// Whether joint `j` is a pin (not a hinge): its rows carry its force.

@@ -1,22 +1,25 @@
-//! Pins and hinges: bodies held to the world or to each other at a point, moved together
-//! as one mechanism.
+//! Pins, hinges and pulleys: bodies held to the world or to each other, moved together as
+//! one mechanism.
 //!
-//! Each joint is two constraints, the x and y of its point on body b less its point on a
-//! (a pin's a is the world: its point never moves). The forces that keep them are the
-//! Lagrange multipliers λ making the points' relative acceleration zero under every other
-//! force, J W Jᵀ λ = −(J W F + J̇ u), with J the constraints' rows over the bodies' (x, y,
-//! angle), W each body's (1/m, 1/m, 1/I) and J̇ u the points' turning term −ω² r. The
-//! joint's reaction on b is (λx, λy) at its point. The integration method steps this
-//! motion as it steps the particles' (`stepping.rs`); after each step the points are put
-//! back together by a mass-weighted Gauss–Newton projection (to 1e-12 m) and the
-//! velocities projected onto the constraints, as rods are (`crate::constraints`).
+//! A pin or a hinge is two constraints, the x and y of its point on body b less its point
+//! on a (a pin's a is the world: its point never moves); a pulley is one, its string's
+//! length (two with a wheel of inertia, one per run). The forces that keep them are the
+//! Lagrange multipliers λ making the constraints' second derivatives zero under every
+//! other force, J W Jᵀ λ = −(J W F + J̇ u), with J the constraints' rows over the bodies'
+//! (x, y, angle), W each body's (1/m, 1/m, 1/I) and J̇ u the turning terms (−ω² r of a
+//! point, v⊥²/run of a string's run). The integration method steps this motion as it
+//! steps the particles' (`stepping.rs`); after each step the constraints are put back by
+//! a mass-weighted Gauss–Newton projection (to 1e-13 of the mechanism's size) and the
+//! velocities projected onto them, as rods are (`crate::constraints`).
 //!
 //! A motor drives b's spin relative to a's: with a constant torque, or towards a target
 //! spin with at most a largest torque. Away from the target it turns at that largest
 //! torque; the instant it reaches the target is located inside the step (regula falsi on
 //! the integration from the step's start), and from there it holds the spin with one
 //! more constraint, whose multiplier is the torque it takes — as long as that stays
-//! within the largest torque, judged at each step's start.
+//! within the largest torque, judged at each step's start. A joint's limits are located
+//! the same way; at one the joint stops dead (a velocity projection: the plastic impulse)
+//! and rests against it while the limit pushes.
 //!
 //! Jointed bodies do not yet meet walls, ramps or other bodies (docs/physics.md).
 
@@ -30,9 +33,10 @@ use crate::scene::Motor;
 const POSITION_TOLERANCE: f64 = 1e-13;
 /// Gauss–Newton iterations at most: from the drift of one step, two suffice.
 const PROJECTION_ITERATIONS: usize = 8;
-/// The located reach of a target spin, seconds: the bracket's width at most.
+/// How narrowly an event (a target spin reached, a limit met) is located, seconds: the
+/// bracket's width at most.
 const EVENT_WIDTH: f64 = 1e-12;
-/// Falsi trials at most to find a motor's reach of its target spin.
+/// Falsi trials at most to find a motor's reach of its target spin or a limit.
 const MOST_TRIALS: usize = 100;
 /// A joint within this of a limit (radians) is at it.
 const AT_LIMIT: f64 = 1e-9;

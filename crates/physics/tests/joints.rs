@@ -471,6 +471,11 @@ fn bad_pulleys_are_refused_and_the_wheel_stops_a_run() {
         assert!(error.to_string().contains(said), "{words}: {error}");
         assert!(error.problems[0].line.is_some(), "{words}: {error}");
     }
+    for graph in ["wheel.angle", "wheel.tension"] {
+        let text = format!("{ATWOOD}\n[[graph]]\nx = \"t\"\ny = [\"{graph}\"]\n");
+        let error = Scene::from_toml(&text).expect_err(graph);
+        assert!(error.to_string().contains("'wheel'"), "{graph}: {error}");
+    }
     let simulation = Simulation::new(&Scene::from_toml(ATWOOD).expect("valid")).expect("valid");
     for bad in ["wheel.angle", "wheel.tension"] {
         let quantity = physics::Quantity::parse(bad).expect("parses");

@@ -79,7 +79,7 @@ pub(crate) struct Bodies {
     collide: bool,
     /// The walls and ramps.
     solids: Arc<[Obstacle]>,
-    /// The pins and hinges, in scene order.
+    /// The pins, hinges and pulleys, in scene order.
     joints: Arc<[Held]>,
     joint_names: Arc<[String]>,
     /// The bodies the joints hold (fixed ones too), in scene order: they move together,
@@ -129,12 +129,7 @@ fn held(scene: &Scene, jointed: &[usize]) -> Vec<Held> {
         .filter_map(|joint| {
             let (body_b, b) = index(&joint.body)?;
             if let JointKind::Pulley {
-                a,
-                radius,
-                mass,
-                inertia,
-                length,
-                ..
+                a, radius, length, ..
             } = &joint.kind
             {
                 let (body_a, a) = index(a)?;
@@ -143,7 +138,7 @@ fn held(scene: &Scene, jointed: &[usize]) -> Vec<Held> {
                 let length = length.unwrap_or_else(|| {
                     joints::string_length(centre, *radius, ends(body_a), ends(body_b))
                 });
-                let spins = *mass * inertia * radius * radius > 0.0;
+                let spins = joint.wheel_inertia() > 0.0;
                 let pulley = joints::Pulley {
                     centre,
                     radius: *radius,
@@ -204,23 +199,17 @@ fn held(scene: &Scene, jointed: &[usize]) -> Vec<Held> {
 }
 
 /// Each pulley wheel with inertia, in joint order: its I (kg·m²) and its spin (rad/s).
-fn wheels(scene: &Scene) -> Vec<(f64, f64)> {
+fn wheels(scene: &Scene) -> (Vec<f64>, Vec<f64>) {
     scene
         .joints
         .iter()
         .filter_map(|joint| match joint.kind {
-            JointKind::Pulley {
-                radius,
-                mass,
-                inertia,
-                spin,
-                ..
-            } if mass * inertia * radius * radius > 0.0 => {
-                Some((mass * inertia * radius * radius, spin))
+            JointKind::Pulley { spin, .. } if joint.wheel_inertia() > 0.0 => {
+                Some((joint.wheel_inertia(), spin))
             }
             _ => None,
         })
-        .collect()
+        .unzip()
 }
 
 /// The root of `i`'s group in a union–find forest, halving the path on the way.
@@ -244,6 +233,7 @@ impl Bodies {
                     .any(|j| j.body == name || j.other() == Some(name))
             })
             .collect();
+        let (wheel_inertia, wheel_spin) = wheels(scene);
         let moving = |b: &crate::Body, v: Vector, spin: f64| {
             if b.fixed {
                 (DVec2::ZERO, 0.0)
@@ -276,8 +266,8 @@ impl Bodies {
             jointed: jointed.into(),
             jointed_size: 0.0,
             reactions: Vec::new(),
-            wheels: wheels(scene).iter().map(|&(inertia, _)| inertia).collect(),
-            wheel_spin: wheels(scene).iter().map(|&(_, spin)| spin).collect(),
+            wheels: wheel_inertia.into(),
+            wheel_spin,
             start_loss: None,
             gravity: scene.world.gravity.to_dvec2(),
             acceleration: Vec::new(),
@@ -352,7 +342,7 @@ impl Bodies {
         };
         let mut root: Vec<usize> = (0..n).collect();
         let moving: Vec<usize> = (0..n)
-            .filter(|&i| !self.fixed[i] && !self.jointed.contains(&i))
+            .filter(|&i| !self.fixed[i] && self.jointed.binary_search(&i).is_err())
             .collect();
         for (a, &i) in moving.iter().enumerate() {
             for &j in &moving[a + 1..] {
@@ -836,7 +826,7 @@ impl Simulation {
 
     /// Whether joint `j` is a pin (not a hinge): its rows carry its force.
     pub fn joint_is_pin(&self, j: usize) -> bool {
-        self.bodies.is_pin(j) && !self.bodies.is_pulley(j)
+        self.bodies.is_pin(j)
     }
 
     /// Whether joint `j` is a pulley: its rows carry its tensions.

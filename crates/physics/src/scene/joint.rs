@@ -163,6 +163,20 @@ impl Joint {
         }
     }
 
+    /// A pulley wheel's moment of inertia about its axle, kg·m² (m · inertia · r²); 0 for
+    /// a massless wheel and for a pin or a hinge.
+    pub fn wheel_inertia(&self) -> f64 {
+        match self.kind {
+            JointKind::Pulley {
+                radius,
+                mass,
+                inertia,
+                ..
+            } => mass * inertia * radius * radius,
+            _ => 0.0,
+        }
+    }
+
     /// Whether it is a pulley.
     pub const fn is_pulley(&self) -> bool {
         matches!(self.kind, JointKind::Pulley { .. })

@@ -584,7 +584,14 @@ impl Checker<'_> {
                             ),
                         );
                     }
-                    Quantity::Joint(ref name, _) if !self.is_joint(name) => {
+                    // A joint's quantities, and an angle named after a joint, are the
+                    // quantities' own to judge (a pulley has tensions, no angle).
+                    Quantity::Joint(..) => {
+                        if let Err(reason) = quantity.check_in(self.scene) {
+                            self.report(s, field, &format!("{field}: {reason}"));
+                        }
+                    }
+                    Quantity::Link(ref name, LinkOf::Angle) if self.is_joint(name) => {
                         if let Err(reason) = quantity.check_in(self.scene) {
                             self.report(s, field, &format!("{field}: {reason}"));
                         }

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # NewtonLab in Python, as its users get it: a wheel built by maturin and installed into a
 # fresh virtual environment, its pytest suite (which compares with the command line at
-# target/release/newtonlab, built by `cargo test --release`), the notebook executed
+# target/release/newtonlab, built by `cargo test --release`), the notebooks executed
 # headless, and the README's one command, `pip install ./crates/python`, in a fresh
 # environment of its own. Needs python3 with venv, and the package registry (PyPI).
 set -euo pipefail
@@ -25,15 +25,17 @@ wheel=$(ls target/wheels/newtonlab-*.whl)
 echo "== pytest crates/python/tests"
 NEWTONLAB_BIN="$PWD/target/release/newtonlab" "$venv/bin/python" -m pytest -q crates/python/tests
 
-echo "== the notebook, executed (examples/notebooks/range-vs-angle.ipynb)"
+echo "== the notebooks, executed (examples/notebooks/*.ipynb)"
 "$venv/bin/python" - <<'PY'
+import pathlib
+
 import nbclient
 import nbformat
 
-path = "examples/notebooks/range-vs-angle.ipynb"
-notebook = nbformat.read(path, as_version=4)
-nbclient.NotebookClient(notebook, timeout=600, kernel_name="python3").execute()
-print(f"{path}: {sum(c.cell_type == 'code' for c in notebook.cells)} code cells ran")
+for path in sorted(pathlib.Path("examples/notebooks").glob("*.ipynb")):
+    notebook = nbformat.read(path, as_version=4)
+    nbclient.NotebookClient(notebook, timeout=600, kernel_name="python3").execute()
+    print(f"{path}: {sum(c.cell_type == 'code' for c in notebook.cells)} code cells ran")
 PY
 
 echo "== the README's command in a fresh environment: pip install ./crates/python"

@@ -176,6 +176,7 @@ readout-potential-field = potentiell: Höhe, m g h (J)
 readout-potential-springs = potentiell: Federn (J)
 readout-potential-gravitation = potentiell: Gravitation (J)
 readout-potential-electrostatic = potentiell: elektrostatisch (J)
+readout-potential-own = potentiell: eigene Kräfte (J)
 readout-press-play = Start drücken, um Energien und Impuls zu sehen.
 readout-kinetic = kinetisch (J)
 readout-total = gesamt (J)
@@ -414,6 +415,7 @@ scene-named = { $kind ->
         [pin] Stift
         [hinge] Scharnier
         [pulley] Rolle
+        [force] Kraft
         [series] Messreihe
         [slider] Schieberegler
         [question] Frage
@@ -429,6 +431,7 @@ scene-numbered = { $kind ->
         [pin] Stift
         [hinge] Scharnier
         [pulley] Rolle
+        [force] Kraft
         [series] Messreihe
         [slider] Schieberegler
         [question] Frage
@@ -445,6 +448,7 @@ scene-bounds-order = bounds: min muss links unterhalb von max liegen, nicht min 
 scene-name-empty = name darf nicht leer sein
 scene-name-taken = der Name '{ $name }' ist schon vergeben an { $earlier }; Namen müssen eindeutig sein
 scene-drag-too-strong = lineare Reibung { $a } kg/s bei { $b } kg bremst das Teilchen alle { $c } s um den Faktor e, schneller als ein Zeitschritt von { $d } s folgen kann (das Verfahren erzeugte Energie aus dem Nichts): einen Zeitschritt von höchstens { $c } s wählen, oder dopri5
+scene-drag-twice = sowohl ein quadratischer Luftwiderstand c ({ $a } kg/m) als auch ein Widerstandsbeiwert ({ $b }): eines von beiden angeben (der Beiwert ergibt c = ½ ρ C_d π r²)
 scene-outside-bounds = position [{ $a }, { $b }] setzt das Teilchen (Radius { $c }) außerhalb der Weltgrenzen
 scene-ends-fixed = { $kind ->
         [spring] eine Feder
@@ -585,6 +589,10 @@ field-world-coulomb-constant = k
 field-world-coulomb-constant-help = Die Coulomb-Konstante
 field-world-softening = Glättung
 field-world-softening-help = Plummer-Glättungslänge ε von Gravitation und Coulomb-Kraft: Kraft ∝ r/(r² + ε²)^(3/2), endlich bei nahen Begegnungen
+field-world-air-density = Luftdichte
+field-world-air-density-help = ρ, gegen die der Widerstandsbeiwert eines Teilchens drückt: ½ ρ C_d π r² v² (Luft bei 20 °C: 1,2)
+field-world-magnetic-field = Magnetfeld
+field-world-magnetic-field-help = B_z, aus dem Bildschirm heraus positiv: eine Kraft q v × B auf jedes bewegte geladene Teilchen
 field-world-collisions = Stöße zwischen Teilchen
 field-world-collisions-help = Teilchen stoßen und liegen aufeinander; false: sie durchdringen einander (Rampen und Grenzen halten sie weiter auf)
 field-world-restitution = Stoßzahl
@@ -625,6 +633,8 @@ field-particle-linear-drag = Luftwiderstand, linear
 field-particle-linear-drag-help = Luftwiderstand b: eine Kraft b v entgegen der Bewegung (langsame Bewegung in einer zähen Flüssigkeit)
 field-particle-quadratic-drag = Luftwiderstand, quadratisch
 field-particle-quadratic-drag-help = Luftwiderstand c: eine Kraft c v² entgegen der Bewegung (ein Ball in Luft: c = ½ ρ C_d A)
+field-particle-drag-coefficient = Widerstandsbeiwert
+field-particle-drag-coefficient-help = C_d: Luftwiderstand ½ ρ C_d π r² v² aus der Luftdichte der Welt und dem Radius (ein Ball: 0,47); statt des quadratischen c
 field-particle-inertia = Trägheitsmoment
 field-particle-inertia-help = I/(m r²): 0 ein Punkt, der sich nie dreht, 0,5 eine Vollscheibe, 1 ein dünner Ring
 field-particle-spin = Drehung
@@ -852,6 +862,14 @@ scene-joint-fixed = hält nichts Bewegliches: jeder verbundene Körper ist fest
 scene-joint-anchor = { $field } liegt nicht am Gelenkpunkt at: lass es weg, dann wird es aus at bestimmt
 scene-pulley-same = die Schnur einer Rolle verbindet zwei Körper, aber a und b sind beide „{ $body }“
 scene-pulley-inside = der Körper „{ $body }“ ist am Rad: er muss frei unter dem Rad der Rolle hängen
+scene-force-unreadable = '{ $text }' ist kein Ausdruck: aus x, y, vx, vy, t, m, q mit Zahlen, + − * / ^, sqrt, sin, cos, exp, … bilden (zum Beispiel -2*x - 0.5*x^3)
+scene-force-unknown-name = nennt '{ $name }': eine Kraft darf { $names } nennen
+scene-force-potential-name = nennt '{ $name }': eine potentielle Energie hängt nur vom Ort ab und darf { $names } nennen
+scene-force-on-body = '{ $name }' ist ein Körper: eigene Kräfte wirken auf Teilchen
+scene-force-on-nothing = es gibt kein Teilchen '{ $name }'
+scene-force-not-finite = auf Teilchen '{ $particle }' ist die Kraft am Start ({ $x }, { $y }) N, keine endliche Kraft
+scene-force-potential-of-motion = eine potentielle Energie gehört zu einer Kraft, die nur vom Ort abhängt, und diese Kraft nennt die Geschwindigkeit oder die Zeit: das Potential weglassen
+scene-force-potential-mismatch = am Start von Teilchen '{ $particle }' ist −∇U des Potentials ({ $ux }, { $uy }) N, die Kraft aber ({ $fx }, { $fy }) N: die Energiebilanz ginge nicht auf; das Potential dieser Kraft angeben, oder keines
 scene-limits = limits muss [untere, obere] in Grad sein
 scene-limits-order = limits müssen endlich sein und die untere unter der oberen liegen, nicht [{ $lower }, { $upper }]
 scene-limits-start = der Winkel des Gelenks am Anfang, { $angle }°, liegt außerhalb seiner limits
@@ -859,6 +877,10 @@ cli-check-body = Körper „{ $name }“: { $shape }, Fläche { $area } m², Mas
 cli-check-pin = Stift „{ $name }“: hält den Körper „{ $body }“ bei { $at } m; sein Trägheitsmoment um den Stift ist { $inertia } kg·m²
 cli-check-hinge = Scharnier „{ $name }“: verbindet den Körper „{ $b }“ mit dem Körper „{ $a }“ bei { $at } m
 cli-check-pulley = Rolle „{ $name }“: eine Schnur vom Körper „{ $a }“ über ein Rad mit Radius { $radius } m und { $mass } kg bei { $at } m zum Körper „{ $b }“
+cli-check-force = Kraft '{ $name }': ({ $fx }, { $fy }) N auf { $on }; ohne Potential, der Rest der Energiebilanz enthält ihre Arbeit
+cli-check-force-potential = Kraft '{ $name }': ({ $fx }, { $fy }) N auf { $on }, mit ihrer potentiellen Energie
+cli-check-force-everything = jedes Teilchen
+cli-check-magnetic = Magnetfeld B_z = { $field } T auf { $charged } geladene Teilchen (q v × B: es lenkt sie ab und verrichtet keine Arbeit)
 cli-check-joints-start = die Geschwindigkeiten der Körper am Anfang reißen ihre Gelenke auseinander: der Lauf beginnt mit den nächsten Geschwindigkeiten, die die Gelenke erlauben, { $lost } J kinetische Energie weniger
 cli-check-motor-torque = , angetrieben von einem Motor mit { $torque } N·m
 cli-check-motor-spin = , angetrieben von einem Motor auf { $spin } rad/s mit höchstens { $torque } N·m
@@ -942,5 +964,6 @@ menu-answer-key = Arbeitsblatt mit Lösungen exportieren…
 menu-answer-key-hint = Das Arbeitsblatt, danach der Wert der Simulation für jede Frage auf einer eigenen Seite (PDF)
 file-title-pdf = Arbeitsblatt exportieren (PDF)
 notice-worksheet-saved = Arbeitsblatt gespeichert: { $path }
+menu-fields = Felder und Kräfte
 menu-bodies = Starre Körper
 menu-lessons = Lektionen

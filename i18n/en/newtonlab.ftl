@@ -177,6 +177,7 @@ readout-potential-field = potential: height, m g h (J)
 readout-potential-springs = potential: springs (J)
 readout-potential-gravitation = potential: gravitation (J)
 readout-potential-electrostatic = potential: electrostatic (J)
+readout-potential-own = potential: your forces (J)
 readout-press-play = Press Play to see the energies and momentum.
 readout-kinetic = kinetic (J)
 readout-total = total (J)
@@ -415,6 +416,7 @@ scene-named = { $kind ->
         [pin] pin
         [hinge] hinge
         [pulley] pulley
+        [force] force
         [series] series
         [slider] slider
         [question] question
@@ -430,6 +432,7 @@ scene-numbered = { $kind ->
         [pin] pin
         [hinge] hinge
         [pulley] pulley
+        [force] force
         [series] series
         [slider] slider
         [question] question
@@ -446,6 +449,7 @@ scene-bounds-order = bounds: min must be below and left of max, got min [{ $a },
 scene-name-empty = name must not be empty
 scene-name-taken = the name '{ $name }' is already used by { $earlier }; names must be unique
 scene-drag-too-strong = linear drag { $a } kg/s on { $b } kg slows the particle by e every { $c } s, faster than a time step of { $d } s can follow (the method would make energy from nothing): take a time step of at most { $c } s, or dopri5
+scene-drag-twice = both a quadratic air resistance c ({ $a } kg/m) and a drag coefficient ({ $b }): give one of the two (the coefficient gives c = ½ ρ C_d π r²)
 scene-outside-bounds = position [{ $a }, { $b }] puts the particle (radius { $c }) outside the world bounds
 scene-ends-fixed = { $kind ->
         [spring] a spring
@@ -586,6 +590,10 @@ field-world-coulomb-constant = k
 field-world-coulomb-constant-help = The Coulomb constant
 field-world-softening = softening
 field-world-softening-help = Plummer softening ε of gravitation and Coulomb: force ∝ r/(r² + ε²)^(3/2), finite in close passes
+field-world-air-density = air density
+field-world-air-density-help = ρ, what a particle's drag coefficient pushes against: ½ ρ C_d π r² v² (air at 20 °C: 1.2)
+field-world-magnetic-field = magnetic field
+field-world-magnetic-field-help = B_z, out of the screen positive: a force q v × B on every moving charged particle
 field-world-collisions = collisions between particles
 field-world-collisions-help = Particles strike and rest on each other; false: they pass through each other (ramps and bounds still stop them)
 field-world-restitution = restitution
@@ -626,6 +634,8 @@ field-particle-linear-drag = air resistance, linear
 field-particle-linear-drag-help = Air resistance b: a force of b v against the motion (slow motion in a thick fluid)
 field-particle-quadratic-drag = air resistance, quadratic
 field-particle-quadratic-drag-help = Air resistance c: a force of c v² against the motion (a ball through air: c = ½ ρ C_d A)
+field-particle-drag-coefficient = drag coefficient
+field-particle-drag-coefficient-help = C_d: air resistance ½ ρ C_d π r² v² from the world's air density and the radius (a ball: 0.47); instead of the quadratic c
 field-particle-inertia = moment of inertia
 field-particle-inertia-help = I/(m r²): 0 a point that never turns, 0.5 a solid disc, 1 a thin ring
 field-particle-spin = spin
@@ -853,6 +863,14 @@ scene-joint-fixed = holds nothing that can move: every body it joins is fixed
 scene-joint-anchor = { $field } is not at the joint's point at: leave it out, and it is found from at
 scene-pulley-same = a pulley's string joins two bodies, and a and b are both '{ $body }'
 scene-pulley-inside = body '{ $body }' is at the wheel: it must hang clear of the pulley's wheel
+scene-force-unreadable = '{ $text }' is no expression: write one of x, y, vx, vy, t, m, q with numbers, + − * / ^, sqrt, sin, cos, exp, … (for example -2*x - 0.5*x^3)
+scene-force-unknown-name = names '{ $name }': a force may name { $names }
+scene-force-potential-name = names '{ $name }': a potential energy is of the position alone and may name { $names }
+scene-force-on-body = '{ $name }' is a body: forces of one's own act on particles
+scene-force-on-nothing = there is no particle '{ $name }'
+scene-force-not-finite = on particle '{ $particle }' where it starts the force is ({ $x }, { $y }) N, not a finite force
+scene-force-potential-of-motion = a potential energy belongs to a force of the position alone, and this force names the velocity or the time: leave the potential out
+scene-force-potential-mismatch = at particle '{ $particle }''s start the potential's −∇U is ({ $ux }, { $uy }) N but the force is ({ $fx }, { $fy }) N: the energy books would not close; give the potential of this force, or none
 scene-limits = limits must be [lower, upper] in degrees
 scene-limits-order = limits must be finite with the lower below the upper, got [{ $lower }, { $upper }]
 scene-limits-start = the joint's angle at the start, { $angle }°, is outside its limits
@@ -860,6 +878,10 @@ cli-check-body = body '{ $name }': { $shape }, area { $area } m², mass { $mass 
 cli-check-pin = pin '{ $name }': holds body '{ $body }' at { $at } m; its moment of inertia about the pin is { $inertia } kg·m²
 cli-check-hinge = hinge '{ $name }': joins body '{ $b }' to body '{ $a }' at { $at } m
 cli-check-pulley = pulley '{ $name }': a string from body '{ $a }' over a wheel of radius { $radius } m and { $mass } kg at { $at } m to body '{ $b }'
+cli-check-force = force '{ $name }': ({ $fx }, { $fy }) N on { $on }; no potential, so the ledger's residual holds its work
+cli-check-force-potential = force '{ $name }': ({ $fx }, { $fy }) N on { $on }, with its potential energy
+cli-check-force-everything = every particle
+cli-check-magnetic = magnetic field B_z = { $field } T on { $charged } charged particles (q v × B: it turns them and does no work)
 cli-check-joints-start = the bodies' velocities at the start move their joints apart: the run starts from the nearest velocities the joints allow, { $lost } J of kinetic energy less (give a hinged body its partner's velocity at the hinge)
 cli-check-motor-torque = , driven by a motor of { $torque } N·m
 cli-check-motor-spin = , driven by a motor to { $spin } rad/s with at most { $torque } N·m
@@ -943,5 +965,6 @@ menu-answer-key = Export worksheet with answer key…
 menu-answer-key-hint = The worksheet, then the simulation's value of every question on a page of its own (PDF)
 file-title-pdf = Export the worksheet (PDF)
 notice-worksheet-saved = Worksheet written to { $path }
+menu-fields = Fields and forces
 menu-bodies = Rigid bodies
 menu-lessons = Lessons

@@ -176,6 +176,7 @@ readout-potential-field = potencial: altura, m g h (J)
 readout-potential-springs = potencial: resortes (J)
 readout-potential-gravitation = potencial: gravitación (J)
 readout-potential-electrostatic = potencial: electrostática (J)
+readout-potential-own = potencial: fuerzas propias (J)
 readout-press-play = Pulse Reproducir para ver las energías y el momento.
 readout-kinetic = cinética (J)
 readout-total = total (J)
@@ -414,6 +415,7 @@ scene-named = { $kind ->
         [pin] pasador
         [hinge] bisagra
         [pulley] polea
+        [force] fuerza
         [series] serie
         [slider] deslizador
         [question] pregunta
@@ -429,6 +431,7 @@ scene-numbered = { $kind ->
         [pin] pasador
         [hinge] bisagra
         [pulley] polea
+        [force] fuerza
         [series] serie
         [slider] deslizador
         [question] pregunta
@@ -445,6 +448,7 @@ scene-bounds-order = bounds: min debe estar abajo a la izquierda de max, no min 
 scene-name-empty = name no debe estar vacío
 scene-name-taken = el nombre '{ $name }' ya lo usa { $earlier }; los nombres deben ser únicos
 scene-drag-too-strong = un rozamiento lineal de { $a } kg/s sobre { $b } kg frena la partícula en un factor e cada { $c } s, más deprisa de lo que un paso de tiempo de { $d } s puede seguir (el método crearía energía de la nada): tome un paso de tiempo de { $c } s como mucho, o dopri5
+scene-drag-twice = a la vez una resistencia del aire cuadrática c ({ $a } kg/m) y un coeficiente de arrastre ({ $b }): indique uno de los dos (el coeficiente da c = ½ ρ C_d π r²)
 scene-outside-bounds = position [{ $a }, { $b }] deja la partícula (radio { $c }) fuera de los límites del mundo
 scene-ends-fixed = { $kind ->
         [spring] un resorte
@@ -585,6 +589,10 @@ field-world-coulomb-constant = k
 field-world-coulomb-constant-help = La constante de Coulomb
 field-world-softening = suavizado
 field-world-softening-help = Longitud de suavizado de Plummer ε de la gravitación y de Coulomb: fuerza ∝ r/(r² + ε²)^(3/2), finita en pasos cercanos
+field-world-air-density = densidad del aire
+field-world-air-density-help = ρ, contra la que empuja el coeficiente de arrastre de una partícula: ½ ρ C_d π r² v² (aire a 20 °C: 1,2)
+field-world-magnetic-field = campo magnético
+field-world-magnetic-field-help = B_z, saliendo de la pantalla positivo: una fuerza q v × B sobre cada partícula cargada en movimiento
 field-world-collisions = choques entre partículas
 field-world-collisions-help = Las partículas chocan y se apoyan unas en otras; false: se atraviesan (las rampas y los límites las siguen deteniendo)
 field-world-restitution = restitución
@@ -625,6 +633,8 @@ field-particle-linear-drag = resistencia del aire, lineal
 field-particle-linear-drag-help = Resistencia del aire b: una fuerza b v contra el movimiento (movimiento lento en un fluido espeso)
 field-particle-quadratic-drag = resistencia del aire, cuadrática
 field-particle-quadratic-drag-help = Resistencia del aire c: una fuerza c v² contra el movimiento (una pelota en el aire: c = ½ ρ C_d A)
+field-particle-drag-coefficient = coeficiente de arrastre
+field-particle-drag-coefficient-help = C_d: resistencia del aire ½ ρ C_d π r² v² a partir de la densidad del aire del mundo y del radio (una pelota: 0,47); en lugar de la c cuadrática
 field-particle-inertia = momento de inercia
 field-particle-inertia-help = I/(m r²): 0 un punto que nunca gira, 0,5 un disco macizo, 1 un anillo fino
 field-particle-spin = giro
@@ -852,6 +862,14 @@ scene-joint-fixed = no sujeta nada que pueda moverse: todos sus cuerpos son fijo
 scene-joint-anchor = { $field } no está en el punto de la articulación at: omítelo y se calcula a partir de at
 scene-pulley-same = la cuerda de una polea une dos cuerpos, pero a y b son ambos «{ $body }»
 scene-pulley-inside = el cuerpo «{ $body }» está en la rueda: debe colgar separado de la rueda de la polea
+scene-force-unreadable = '{ $text }' no es una expresión: escriba una de x, y, vx, vy, t, m, q con números, + − * / ^, sqrt, sin, cos, exp, … (por ejemplo -2*x - 0.5*x^3)
+scene-force-unknown-name = nombra '{ $name }': una fuerza puede nombrar { $names }
+scene-force-potential-name = nombra '{ $name }': una energía potencial depende solo de la posición y puede nombrar { $names }
+scene-force-on-body = '{ $name }' es un cuerpo: las fuerzas propias actúan sobre partículas
+scene-force-on-nothing = no hay ninguna partícula '{ $name }'
+scene-force-not-finite = sobre la partícula '{ $particle }' la fuerza donde empieza es ({ $x }, { $y }) N, no una fuerza finita
+scene-force-potential-of-motion = una energía potencial corresponde a una fuerza que depende solo de la posición, y esta fuerza nombra la velocidad o el tiempo: omita el potencial
+scene-force-potential-mismatch = donde empieza la partícula '{ $particle }' el −∇U del potencial es ({ $ux }, { $uy }) N pero la fuerza es ({ $fx }, { $fy }) N: el balance de energía no cerraría; dé el potencial de esta fuerza, o ninguno
 scene-limits = limits debe ser [inferior, superior] en grados
 scene-limits-order = limits deben ser finitos con el inferior por debajo del superior, no [{ $lower }, { $upper }]
 scene-limits-start = el ángulo de la articulación al comenzar, { $angle }°, está fuera de sus limits
@@ -859,6 +877,10 @@ cli-check-body = cuerpo «{ $name }»: { $shape }, área { $area } m², masa { $
 cli-check-pin = pasador «{ $name }»: sujeta el cuerpo «{ $body }» en { $at } m; su momento de inercia respecto al pasador es { $inertia } kg·m²
 cli-check-hinge = bisagra «{ $name }»: une el cuerpo «{ $b }» al cuerpo «{ $a }» en { $at } m
 cli-check-pulley = polea «{ $name }»: una cuerda del cuerpo «{ $a }» sobre una rueda de radio { $radius } m y { $mass } kg en { $at } m al cuerpo «{ $b }»
+cli-check-force = fuerza '{ $name }': ({ $fx }, { $fy }) N sobre { $on }; sin potencial, el residuo del balance contiene su trabajo
+cli-check-force-potential = fuerza '{ $name }': ({ $fx }, { $fy }) N sobre { $on }, con su energía potencial
+cli-check-force-everything = cada partícula
+cli-check-magnetic = campo magnético B_z = { $field } T sobre { $charged } partículas cargadas (q v × B: las desvía y no realiza trabajo)
 cli-check-joints-start = las velocidades de los cuerpos al comenzar separan sus articulaciones: la simulación empieza con las velocidades más cercanas que las articulaciones permiten, { $lost } J menos de energía cinética
 cli-check-motor-torque = , movido por un motor de { $torque } N·m
 cli-check-motor-spin = , movido por un motor a { $spin } rad/s con { $torque } N·m como máximo
@@ -942,5 +964,6 @@ menu-answer-key = Exportar hoja de trabajo con soluciones…
 menu-answer-key-hint = La hoja de trabajo y, en una página aparte, el valor de la simulación para cada pregunta (PDF)
 file-title-pdf = Exportar la hoja de trabajo (PDF)
 notice-worksheet-saved = Hoja de trabajo guardada en { $path }
+menu-fields = Campos y fuerzas
 menu-bodies = Cuerpos rígidos
 menu-lessons = Lecciones

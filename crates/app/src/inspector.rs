@@ -837,6 +837,7 @@ fn section_kind(scene: &Scene, section: Section) -> &'static str {
         Section::Ramp(_) => "ramp",
         Section::Body(_) => "body",
         Section::Joint(i) => scene.joints.get(i).map_or("pin", |j| j.kind_str()),
+        Section::Force(_) => "force",
         Section::Graph(_) => "graph",
         Section::Series(_) => "series",
         Section::Root | Section::View | Section::Instruments | Section::Stopwatch => "scene",

@@ -155,7 +155,7 @@ impl App {
             .response
             .on_hover_text(tr("menu-edit-hint"));
             ui.menu_button(tr("menu-examples"), |ui| {
-                // The rigid bodies and the lessons in menus of their own: one list of
+                // Fields and forces, the rigid bodies and the lessons in menus of their own: one list of
                 // every scene would run past a laptop's screen.
                 let mut list = |ui: &mut Ui, kind: Kind| {
                     for (name, title, _) in example_titles().iter().filter(|e| e.2 == kind) {
@@ -164,6 +164,7 @@ impl App {
                     }
                 };
                 list(ui, Kind::Particles);
+                ui.menu_button(tr("menu-fields"), |ui| list(ui, Kind::Fields));
                 ui.menu_button(tr("menu-bodies"), |ui| list(ui, Kind::Bodies));
                 ui.menu_button(tr("menu-lessons"), |ui| list(ui, Kind::Lesson));
             })
@@ -372,6 +373,7 @@ type Listed = (&'static str, String, Kind);
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Kind {
     Particles,
+    Fields,
     Bodies,
     Lesson,
 }
@@ -388,6 +390,9 @@ fn example_titles() -> &'static [Listed] {
                 let kind = match &scene {
                     Some(s) if s.lesson.is_some() => Kind::Lesson,
                     Some(s) if !s.bodies.is_empty() => Kind::Bodies,
+                    Some(s) if s.world.magnetic_field != 0.0 || !s.forces.is_empty() => {
+                        Kind::Fields
+                    }
                     _ => Kind::Particles,
                 };
                 let title = scene.and_then(|s| s.name);

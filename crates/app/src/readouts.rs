@@ -31,17 +31,24 @@ pub(crate) fn ui(ui: &mut Ui, runner: &Runner) {
         }
         (Some(_), _, _) => {
             let d = runner.diagnostics().unwrap_or_default();
+            let mut potential = vec![
+                (tr("readout-potential-field"), d.energy.uniform),
+                (tr("readout-potential-springs"), d.energy.spring),
+                (tr("readout-potential-gravitation"), d.energy.gravitation),
+                (
+                    tr("readout-potential-electrostatic"),
+                    d.energy.electrostatic,
+                ),
+            ];
+            if runner
+                .simulation()
+                .is_some_and(physics::Simulation::has_own_potential)
+            {
+                potential.push((tr("readout-potential-own"), d.energy.own));
+            }
             Energies {
                 kinetic: d.energy.kinetic,
-                potential: vec![
-                    (tr("readout-potential-field"), d.energy.uniform),
-                    (tr("readout-potential-springs"), d.energy.spring),
-                    (tr("readout-potential-gravitation"), d.energy.gravitation),
-                    (
-                        tr("readout-potential-electrostatic"),
-                        d.energy.electrostatic,
-                    ),
-                ],
+                potential,
                 total: d.energy.total(),
                 momentum: [d.momentum.x, d.momentum.y],
             }

@@ -240,6 +240,31 @@ fn check(source: &str) -> Result<(), Failure> {
         for joint in &scene.joints {
             out!("{}", describe_joint(&scene, joint));
         }
+        for force in &scene.forces {
+            let on = if force.on.is_empty() {
+                say("cli-check-force-everything", &[])
+            } else {
+                force.on.join(", ")
+            };
+            let words = [
+                ("name", force.name.as_str()),
+                ("fx", &force.fx),
+                ("fy", &force.fy),
+                ("on", &on),
+            ];
+            let id = if force.potential.is_some() {
+                "cli-check-force-potential"
+            } else {
+                "cli-check-force"
+            };
+            out!("{}", say(id, &words));
+        }
+        if scene.world.magnetic_field != 0.0 {
+            let charged = scene.particles.iter().filter(|p| p.charge != 0.0).count();
+            let (field, charged) = (nine_digits(scene.world.magnetic_field), charged.to_string());
+            let words = [("field", field.as_str()), ("charged", charged.as_str())];
+            out!("{}", say("cli-check-magnetic", &words));
+        }
         if let Some(lost) = physics::Simulation::new(&scene)
             .ok()
             .and_then(|s| s.joints_start_loss())

@@ -24,12 +24,14 @@ pub struct Energy {
     pub gravitation: f64,
     /// Electrostatic potential of the pairs.
     pub electrostatic: f64,
+    /// Potential of the forces of one's own that have one (`[[force]]`'s `potential`).
+    pub own: f64,
 }
 
 impl Energy {
     /// All potential energy, joules.
     pub fn potential(&self) -> f64 {
-        self.uniform + self.spring + self.gravitation + self.electrostatic
+        self.uniform + self.spring + self.gravitation + self.electrostatic + self.own
     }
 
     /// Kinetic plus potential, joules.
@@ -95,6 +97,11 @@ pub(crate) fn measure(forces: &ForceModel, state: &State) -> Diagnostics {
         .springs
         .iter()
         .map(|s| s.potential(&state.position))
+        .fold(0.0, |sum, e| sum + e);
+    energy.own = forces
+        .own
+        .iter()
+        .map(|f| f.potential(&state.position, forces))
         .fold(0.0, |sum, e| sum + e);
     let g = forces.gravitational_constant.unwrap_or(0.0);
     let k = forces.coulomb_constant.unwrap_or(0.0);
@@ -203,6 +210,9 @@ pub(crate) fn potential_change(forces: &ForceModel, before: &[DVec2], after: &[D
     }
     for spring in &forces.springs {
         change += spring.potential(after) - spring.potential(before);
+    }
+    for own in &forces.own {
+        change += own.potential(after, forces) - own.potential(before, forces);
     }
     let g = forces.gravitational_constant.unwrap_or(0.0);
     let k = forces.coulomb_constant.unwrap_or(0.0);

@@ -95,6 +95,8 @@ examples!(
     "double-pendulum",
     "string-circle",
     "terminal-speed",
+    "cyclotron",
+    "anharmonic-oscillator",
     "galileo-incline",
     "bowling",
     "spin-bounce",

@@ -115,10 +115,10 @@ pub use scene::error::{LoadError, Problem};
 pub use scene::fields;
 pub use scene::format::{SceneFormat, closest as closest_key};
 pub use scene::{
-    Body, Bounds, Color, Endpoint, FieldRef, Follow, Graph, Instruments, Joint, JointKind, Lesson,
-    Moments, Motor, PairForces, Particle, Protractor, Question, Ramp, Rule, Scene, Section, Series,
-    Settings, Shape, Slider, Spring, Stopwatch, Tie, TieKind, Trigger, Vector, Verdict, View,
-    World, check_value, lesson, moments,
+    Body, Bounds, Color, Endpoint, FieldRef, Follow, Force, Graph, Instruments, Joint, JointKind,
+    Lesson, Moments, Motor, PairForces, Particle, Protractor, Question, Ramp, Rule, Scene, Section,
+    Series, Settings, Shape, Slider, Spring, Stopwatch, Tie, TieKind, Trigger, Vector, Verdict,
+    View, World, check_value, lesson, moments,
 };
 pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};
 pub use trajectory::{

@@ -9,6 +9,7 @@ mod body;
 mod edit;
 pub mod error;
 pub mod fields;
+pub(crate) mod force;
 pub mod format;
 pub mod instruments;
 mod joint;
@@ -23,6 +24,7 @@ pub(crate) use newtonlab_i18n::tr_text as say;
 
 pub use body::{Body, Moments, Shape, moments};
 pub use error::{FieldRef, Section};
+pub use force::Force;
 pub use instruments::{Instruments, Protractor, Stopwatch, Trigger};
 pub(crate) use joint::in_frame;
 pub use joint::{Joint, JointKind, Motor};
@@ -158,6 +160,10 @@ pub struct Particle {
     pub linear_drag: f64,
     /// Quadratic air resistance c, kg/m: a force −c |v| v. Default 0.
     pub quadratic_drag: f64,
+    /// The drag coefficient `C_d`, ≥ 0: quadratic air resistance ½ ρ `C_d` π r² |v| v from
+    /// the world's air density and the particle's cross-section (instead of
+    /// `quadratic_drag`, not both). Default 0.
+    pub drag_coefficient: f64,
     /// The moment of inertia as a multiple of m r², ≥ 0: 0 (the default) is the paper's
     /// point particle, which never turns and feels no friction at impacts; 0.5 a solid
     /// disc, 1 a thin ring.
@@ -185,9 +191,24 @@ impl Particle {
             color: None,
             linear_drag: 0.0,
             quadratic_drag: 0.0,
+            drag_coefficient: 0.0,
             inertia: 0.0,
             spin: 0.0,
             angle: 0.0,
+        }
+    }
+
+    /// The quadratic air resistance c it feels, kg/m, in air of density `air_density`
+    /// (kg/m³): its own c, or ½ ρ `C_d` π r² from its drag coefficient.
+    pub fn quadratic_drag_in(&self, air_density: f64) -> f64 {
+        if self.drag_coefficient > 0.0 {
+            0.5 * air_density
+                * self.drag_coefficient
+                * std::f64::consts::PI
+                * self.radius
+                * self.radius
+        } else {
+            self.quadratic_drag
         }
     }
 
@@ -551,6 +572,13 @@ pub struct World {
     /// smeared-out bodies, so that close passes of point stars stay finite. Default 0
     /// (the exact inverse-square laws).
     pub softening: f64,
+    /// The density of the air, kg/m³, ≥ 0: what a particle's `drag_coefficient` pushes
+    /// against. Default 1.2 (air at 20 °C at sea level).
+    pub air_density: f64,
+    /// A uniform magnetic field `B_z`, tesla (out of the screen positive): a force
+    /// q v × B on every moving charged particle, which turns it without working on it.
+    /// Default 0.
+    pub magnetic_field: f64,
     /// Whether particles strike and rest on each other. Default true; false lets them
     /// pass through each other (a star cluster's softened points), while ramps and the
     /// bounds still stop them.
@@ -570,6 +598,8 @@ impl World {
     pub const DEFAULT_GRAVITATIONAL_CONSTANT: f64 = 6.6742e-11;
     /// The paper's Coulomb constant, N·m²/C².
     pub const DEFAULT_COULOMB_CONSTANT: f64 = 8.988e9;
+    /// Air at 20 °C and sea level, kg/m³.
+    pub const DEFAULT_AIR_DENSITY: f64 = 1.2;
 
     /// A world with no uniform field and everything else at its default.
     #[must_use]
@@ -611,6 +641,8 @@ impl Default for World {
             electrostatics: true,
             coulomb_constant: Self::DEFAULT_COULOMB_CONSTANT,
             softening: 0.0,
+            air_density: Self::DEFAULT_AIR_DENSITY,
+            magnetic_field: 0.0,
             collisions: true,
             restitution: 1.0,
             friction: 0.0,
@@ -704,6 +736,8 @@ pub struct Scene {
     /// Pins and hinges: the pins in file order, then the hinges in file order; CSV
     /// columns follow the bodies' in this order.
     pub joints: Vec<Joint>,
+    /// Forces of one's own (`[[force]]`), in file order.
+    pub forces: Vec<Force>,
     /// The app's graphs when the scene opens (`[[graph]]`), in file order.
     pub graphs: Vec<Graph>,
     /// The app's experiment series (`[[series]]`), in file order.
@@ -777,6 +811,13 @@ impl Scene {
     #[must_use]
     pub fn with_body(mut self, body: Body) -> Self {
         self.bodies.push(body);
+        self
+    }
+
+    /// Adds a force of one's own.
+    #[must_use]
+    pub fn with_force(mut self, force: Force) -> Self {
+        self.forces.push(force);
         self
     }
 

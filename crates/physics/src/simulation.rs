@@ -495,6 +495,7 @@ impl Simulation {
         let before_settling = self.ledger.map(|_| {
             let end = power_at_end.unwrap_or_else(|| self.power_over_step(taken));
             let supported = self.forces.surface_normal_work(
+                self.state.time,
                 &self.start.position,
                 &self.state.position,
                 &self.state.velocity,
@@ -601,7 +602,7 @@ impl Simulation {
             let (x, v) = (&self.state.position, &self.state.velocity);
             let lifted = diagnostics::potential_change(&self.forces, &position, x);
             let caught = kinetic - self.kinetic_energy() - lifted;
-            (caught, self.forces.dissipation(x, v))
+            (caught, self.forces.dissipation(self.state.time, x, v))
         })
     }
 
@@ -675,8 +676,9 @@ impl Simulation {
             v.push((x1 - x0) * (1.5 / h) - (v0 + v1) * 0.25);
         }
         (
-            self.forces.dissipation(&x, &v),
-            self.forces.dissipation(&end.position, &end.velocity),
+            self.forces.dissipation(start.time + 0.5 * h, &x, &v),
+            self.forces
+                .dissipation(end.time, &end.position, &end.velocity),
         )
     }
 
@@ -864,9 +866,21 @@ impl Simulation {
             return kept.clone();
         }
         let mut a = vec![DVec2::ZERO; self.len()];
-        self.forces
-            .accelerations(&self.state.position, &self.state.velocity, &mut a);
+        self.forces.accelerations(
+            self.state.time,
+            &self.state.position,
+            &self.state.velocity,
+            &mut a,
+        );
         a
+    }
+
+    /// Whether a force of the scene's own has a potential energy ([`crate::Energy::own`]).
+    pub fn has_own_potential(&self) -> bool {
+        self.forces
+            .own
+            .iter()
+            .any(crate::forces::own::OwnForce::has_potential)
     }
 
     /// Energies by kind and total momentum at this instant.

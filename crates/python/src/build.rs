@@ -156,11 +156,15 @@ fn all_names(scene: &physics::Scene) -> impl Iterator<Item = String> + '_ {
     let ties = scene.ties.iter().map(|t| &t.name);
     let ramps = scene.ramps.iter().map(|r| &r.name);
     let bodies = scene.bodies.iter().map(|b| &b.name);
+    let joints = scene.joints.iter().map(|j| &j.name);
+    let forces = scene.forces.iter().map(|f| &f.name);
     particles
         .chain(springs)
         .chain(ties)
         .chain(ramps)
         .chain(bodies)
+        .chain(joints)
+        .chain(forces)
         .cloned()
 }
 
@@ -239,6 +243,37 @@ pub(crate) fn add(
     };
     scene.borrow_mut().inner = checked(changed)?;
     SceneObject::of(scene.clone(), what)
+}
+
+/// Adds a force of one's own to `scene`; returns its name (`force1`, … where free).
+pub(crate) fn add_force(
+    scene: &Bound<'_, Scene>,
+    name: Option<String>,
+    (fx, fy): (String, String),
+    on: Option<&Bound<'_, PyAny>>,
+    potential: Option<String>,
+) -> PyResult<String> {
+    let mut changed = scene.borrow().inner.clone();
+    // One of the next (names + 1) numbers is free when that many names are taken.
+    let name = name.unwrap_or_else(|| {
+        let from = changed.forces.len() + 1;
+        (from..=from + all_names(&changed).count())
+            .map(|n| format!("force{n}"))
+            .find(|n| !taken(&changed, n))
+            .unwrap_or_default()
+    });
+    let on = match on {
+        None => Vec::new(),
+        Some(one) if one.is_instance_of::<pyo3::types::PyString>() => vec![one.extract()?],
+        Some(many) => many.extract::<Vec<String>>().map_err(|_| {
+            PyTypeError::new_err("add_force(): on must be a particle's name or a list of names")
+        })?,
+    };
+    let mut force = physics::Force::new(name.clone(), fx, fy).on(on);
+    force.potential = potential;
+    changed.forces.push(force);
+    scene.borrow_mut().inner = checked(changed)?;
+    Ok(name)
 }
 
 /// A column of `n` numbers: one number for all, or an array of `n`.

@@ -49,6 +49,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(scene::examples, m)?)?;
     m.add_function(wrap_pyfunction!(run::run, m)?)?;
     m.add_function(wrap_pyfunction!(run::sweep, m)?)?;
+    m.add_function(wrap_pyfunction!(run::sweep_values, m)?)?;
     m.add_function(wrap_pyfunction!(run::validate, m)?)?;
     Ok(())
 }

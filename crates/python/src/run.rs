@@ -255,6 +255,23 @@ pub fn sweep(
     )
 }
 
+/// The values each field of `vary` takes in a sweep of `scene`, as `sweep` reads them
+/// (`"FROM:TO:STEP"` expanded): `[(field, values)]`, the first outermost. What a sweep
+/// split among workers hands each its part of.
+#[pyfunction]
+pub fn sweep_values(
+    scene: &Bound<'_, PyAny>,
+    vary: &Bound<'_, PyDict>,
+) -> PyResult<Vec<(String, Vec<f64>)>> {
+    let scene = scene_of(scene)?;
+    let (fields, varies) = varies(vary, &scene)?;
+    Ok(fields
+        .into_iter()
+        .zip(varies)
+        .map(|(field, vary)| (field, vary.values))
+        .collect())
+}
+
 /// `vary`'s fields as typed, and what each varies over.
 fn varies(vary: &Bound<'_, PyDict>, scene: &physics::Scene) -> PyResult<(Vec<String>, Vec<Vary>)> {
     let mut fields = Vec::new();

@@ -622,6 +622,28 @@ impl Scene {
         crate::build::add(&slf, crate::build::New::Ramp, name, fields.as_ref())
     }
 
+    /// Adds a force of one's own (`[[force]]`) and returns its name: `fx` and `fy`
+    /// expressions (N) of x, y, vx, vy, t, m, q; `on` a particle's name or a list of
+    /// them (every particle when left out); `potential` (J, of x, y, m, q), booked as
+    /// potential energy. Checked as a file's: a `SceneError` says what is wrong.
+    #[pyo3(signature = (name=None, *, fx="0".to_owned(), fy="0".to_owned(), on=None, potential=None))]
+    fn add_force(
+        slf: Bound<'_, Self>,
+        name: Option<String>,
+        fx: String,
+        fy: String,
+        on: Option<Bound<'_, PyAny>>,
+        potential: Option<String>,
+    ) -> PyResult<String> {
+        crate::build::add_force(&slf, name, (fx, fy), on.as_ref(), potential)
+    }
+
+    /// The forces of its own' names (`[[force]]`).
+    #[getter]
+    fn forces(&self) -> Vec<String> {
+        self.inner.forces.iter().map(|f| f.name.clone()).collect()
+    }
+
     /// Adds `n` particles from arrays (positions and velocities of shape (n, 2), masses
     /// and radii of n or one number for all); returns their names.
     #[pyo3(signature = (positions, masses, velocities=None, radii=None))]

@@ -6,6 +6,9 @@ use pyo3::exceptions::{PyImportError, PyKeyError};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 
+/// A table's names and columns, as it pickles.
+type Columns = (Vec<String>, Vec<Py<PyAny>>);
+
 /// A column's values.
 #[derive(Clone, Debug)]
 pub(crate) enum Column {
@@ -100,6 +103,75 @@ impl Table {
             return Ok(frame.call_method1("set_index", ("t",))?.unbind());
         }
         Ok(frame.unbind())
+    }
+
+    /// A table of `names` and `columns` (each numbers or a list of words): what a
+    /// pickled table is made again from.
+    #[staticmethod]
+    fn _from_columns(names: Vec<String>, columns: Vec<Bound<'_, PyAny>>) -> PyResult<Table> {
+        let columns = columns
+            .iter()
+            .map(|c| {
+                c.extract::<Vec<f64>>()
+                    .map(Column::Numbers)
+                    .or_else(|_| c.extract::<Vec<String>>().map(Column::Words))
+            })
+            .collect::<PyResult<Vec<_>>>()?;
+        if names.len() != columns.len() {
+            return Err(crate::scene_error("a table needs one name per column"));
+        }
+        Ok(Table { names, columns })
+    }
+
+    /// Pickles as its columns (a `Table` goes to another process, a Dask worker's
+    /// result, whole); a `Trajectory`'s impacts and note would be lost, so it refuses.
+    fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<(Bound<'py, PyAny>, Columns)> {
+        let py = slf.py();
+        if !slf.get_type().is(py.get_type::<Table>()) {
+            return Err(pyo3::exceptions::PyTypeError::new_err(
+                "a Trajectory does not pickle (its impacts and note would be lost): pickle traj.to_dict()",
+            ));
+        }
+        let table = slf.get();
+        let columns = (0..table.names.len())
+            .map(|k| table.column(py, k))
+            .collect::<PyResult<Vec<_>>>()?;
+        Ok((
+            slf.get_type().getattr("_from_columns")?,
+            (table.names.clone(), columns),
+        ))
+    }
+
+    /// The rows of `tables`, one after another: tables of the same columns (the parts of
+    /// one sweep run apart, as `sweep(..., client=...)` joins them).
+    #[staticmethod]
+    fn concat(tables: Vec<PyRef<'_, Table>>) -> PyResult<Table> {
+        let Some(first) = tables.first() else {
+            return Err(crate::scene_error("Table.concat needs at least one table"));
+        };
+        let names = first.names.clone();
+        let mut columns = first.columns.clone();
+        for table in &tables[1..] {
+            if table.names != names {
+                return Err(crate::scene_error(format!(
+                    "Table.concat: the tables' columns differ ({} against {})",
+                    table.names.join(", "),
+                    names.join(", ")
+                )));
+            }
+            for (mine, theirs) in columns.iter_mut().zip(&table.columns) {
+                match (mine, theirs) {
+                    (Column::Numbers(a), Column::Numbers(b)) => a.extend_from_slice(b),
+                    (Column::Words(a), Column::Words(b)) => a.extend_from_slice(b),
+                    _ => {
+                        return Err(crate::scene_error(
+                            "Table.concat: a column holds numbers in one table, words in another",
+                        ));
+                    }
+                }
+            }
+        }
+        Ok(Table { names, columns })
     }
 
     fn __repr__(slf: &Bound<'_, Self>) -> PyResult<String> {

@@ -2,7 +2,8 @@
 //! Python's `newtonlab.validate()` returns. `paper` is the paper's section 4 (its tables,
 //! with simulation, theory and error columns); the other groups hold what `NewtonLab`
 //! added since (rods, strings, the integrators' orders, the tree, softening, the energy
-//! ledger, friction, saved states, events, drag, series, turning, rigid bodies) to
+//! ledger, friction, saved states, events, drag, series, turning, rigid bodies, joints,
+//! forces) to
 //! closed forms or to computations written here apart from the simulation's code, each
 //! check to a tolerance stated beside it.
 
@@ -12,6 +13,7 @@ mod drag;
 mod events;
 mod experiments;
 pub mod figures;
+mod forces;
 mod joints;
 mod methods;
 mod paper_method;
@@ -55,11 +57,12 @@ pub enum Group {
     Turning,
     Bodies,
     Joints,
+    Forces,
 }
 
 impl Group {
     /// Every group, in the report's order.
-    pub const ALL: [Self; 15] = [
+    pub const ALL: [Self; 16] = [
         Self::Paper,
         Self::Rods,
         Self::Strings,
@@ -75,6 +78,7 @@ impl Group {
         Self::Turning,
         Self::Bodies,
         Self::Joints,
+        Self::Forces,
     ];
 
     /// Its name, as `--only` takes it.
@@ -95,6 +99,7 @@ impl Group {
             Self::Turning => "turning",
             Self::Bodies => "bodies",
             Self::Joints => "joints",
+            Self::Forces => "forces",
         }
     }
 
@@ -140,6 +145,9 @@ impl Group {
             }
             Self::Bodies => {
                 "rigid bodies: moments of inertia from their outlines, free flight on the parabola with a steady turn, under each method"
+            }
+            Self::Forces => {
+                "forces from what a student knows: drag from C_d and ρ, the magnetic field's cyclotron orbit, forces written as expressions (in time under every method; an anharmonic period and its books)"
             }
             Self::Joints => {
                 "pins, hinges, motors and pulleys: a physical pendulum's period at small and large amplitude, a seesaw balanced by torques and one that turns, a motor's spin-up and its work, a limit's stop, Atwood machines"
@@ -208,6 +216,7 @@ pub fn validate(
             Group::Turning => turning::turning(report)?,
             Group::Bodies => bodies::bodies(report)?,
             Group::Joints => joints::joints(report)?,
+            Group::Forces => forces::forces(report)?,
         }
     }
     Ok((report, figures))

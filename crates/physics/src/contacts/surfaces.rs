@@ -75,7 +75,7 @@ impl Contacts {
         let mut free = Vec::new();
         if frictional {
             free.resize(state.len(), DVec2::ZERO);
-            forces.accelerations(&state.position, &state.velocity, &mut free);
+            forces.accelerations(state.time, &state.position, &state.velocity, &mut free);
         }
         if let Some(turning) = &mut self.turning {
             turning.mode.fill(Mode::Free);

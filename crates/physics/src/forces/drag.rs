@@ -1,5 +1,5 @@
 //! Air resistance on a particle: linear, F = −b v, and quadratic, F = −c |v| v, against
-//! the velocity. Both take energy out of the motion at the rate b |v|² + c |v|³, which
+//! the velocity (c given, or ½ ρ `C_d` π r² from a drag coefficient). Both take energy out of the motion at the rate b |v|² + c |v|³, which
 //! the energy ledger books as `dissipated_drag`.
 
 use glam::DVec2;
@@ -18,18 +18,18 @@ pub(crate) struct Drag {
 }
 
 impl Drag {
-    /// Each moving particle's of `particles` that has air resistance, in order (a fixed
-    /// particle never moves, so feels none).
-    pub fn of(particles: &[Particle]) -> Vec<Self> {
+    /// Each moving particle's of `particles` that has air resistance in air of density
+    /// `air_density` (kg/m³), in order (a fixed particle never moves, so feels none).
+    pub fn of(particles: &[Particle], air_density: f64) -> Vec<Self> {
         particles
             .iter()
             .enumerate()
-            .filter(|(_, p)| !p.fixed && (p.linear_drag > 0.0 || p.quadratic_drag > 0.0))
             .map(|(particle, p)| Self {
                 particle,
                 linear: p.linear_drag,
-                quadratic: p.quadratic_drag,
+                quadratic: p.quadratic_drag_in(air_density),
             })
+            .filter(|d| !particles[d.particle].fixed && (d.linear > 0.0 || d.quadratic > 0.0))
             .collect()
     }
 

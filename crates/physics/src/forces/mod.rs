@@ -5,7 +5,9 @@
 
 pub(crate) mod direct;
 pub(crate) mod drag;
+pub(crate) mod magnetic;
 pub(crate) mod normal;
+pub(crate) mod own;
 pub(crate) mod pair;
 mod response;
 pub(crate) mod spring;
@@ -67,6 +69,10 @@ pub(crate) struct ForceModel {
     pub surface_contacts: Vec<SurfaceContact>,
     /// The moving particles with air resistance, ascending.
     pub drag: Vec<drag::Drag>,
+    /// The moving charged particles in the magnetic field, ascending, each with q `B_z`.
+    pub magnetic: Vec<(usize, f64)>,
+    /// The scene's forces of its own (`[[force]]`).
+    pub own: Vec<own::OwnForce>,
 }
 
 impl ForceModel {
@@ -130,7 +136,9 @@ impl ForceModel {
             springs,
             surface_contacts: Vec::new(),
             workers: crate::parallel::Workers::default(),
-            drag: drag::Drag::of(particles),
+            drag: drag::Drag::of(particles, scene.world.air_density),
+            magnetic: magnetic::of(particles, scene.world.magnetic_field),
+            own: own::OwnForce::of(scene),
         }
     }
 
@@ -144,13 +152,14 @@ impl ForceModel {
         self.inverse_mass[i] == 0.0
     }
 
-    /// Accelerations (m/s²) of every particle at positions `x` and velocities `v`.
+    /// Accelerations (m/s²) of every particle at time `t` (seconds), positions `x` and
+    /// velocities `v`.
     ///
     /// Pairwise and spring forces are summed as forces first, each applied equal and
     /// opposite, so the total internal force is zero up to rounding and momentum is
     /// conserved; then divided by mass.
-    pub fn accelerations(&self, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
-        self.accelerations_off_surfaces(x, v, out);
+    pub fn accelerations(&self, t: f64, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
+        self.accelerations_off_surfaces(t, x, v, out);
         // Last: a surface answers the sum of all the other forces.
         for contact in &self.surface_contacts {
             contact.apply(&mut out[contact.particle]);
@@ -170,8 +179,8 @@ impl ForceModel {
     }
 
     /// The accelerations of every force but the surfaces'.
-    fn accelerations_off_surfaces(&self, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
-        self.free_accelerations(x, v, out);
+    fn accelerations_off_surfaces(&self, t: f64, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
+        self.free_accelerations(t, x, v, out);
         if !self.constraints.is_empty() {
             self.constraints.add_forces(x, v, &self.inverse_mass, out);
         }
@@ -184,12 +193,18 @@ impl ForceModel {
         self.interacting.is_empty()
             && self.springs.is_empty()
             && self.constraints.is_empty()
-            && self.drag.is_empty()
+            && !self.has_own_varying_forces()
+    }
+
+    /// Whether a force varies through a step on a particle alone: air resistance, the
+    /// magnetic field (both change with its velocity), a force of one's own.
+    pub fn has_own_varying_forces(&self) -> bool {
+        !self.drag.is_empty() || !self.magnetic.is_empty() || !self.own.is_empty()
     }
 
     /// The accelerations of the fields, pairwise forces and springs: everything the
     /// rods, strings and surfaces answer.
-    pub fn free_accelerations(&self, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
+    pub fn free_accelerations(&self, t: f64, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
         out.fill(DVec2::ZERO);
         self.pairwise(x, out);
         for link in &self.springs {
@@ -197,6 +212,10 @@ impl ForceModel {
         }
         for drag in &self.drag {
             drag.add_force(v, out);
+        }
+        magnetic::add_forces(&self.magnetic, v, out);
+        for own in &self.own {
+            own.add_forces(t, (x, v), self, out);
         }
         for ((a, &field), &w) in out
             .iter_mut()
@@ -209,19 +228,19 @@ impl ForceModel {
 
     /// Each rod's and string's tension at positions `x` and velocities `v`, N (pulling
     /// positive; 0 for a slack string), in the scene's order of ties.
-    pub fn tensions(&self, x: &[DVec2], v: &[DVec2]) -> Vec<f64> {
+    pub fn tensions(&self, t: f64, x: &[DVec2], v: &[DVec2]) -> Vec<f64> {
         if self.constraints.is_empty() {
             return Vec::new();
         }
         let mut a = vec![DVec2::ZERO; x.len()];
-        self.free_accelerations(x, v, &mut a);
+        self.free_accelerations(t, x, v, &mut a);
         self.constraints.tensions(x, v, &self.inverse_mass, &a)
     }
 
     /// The power the dissipative forces take out of the motion at positions `x` and
     /// velocities `v`, watts, by kind. Friction is the part of a surface's force along
     /// the surface; its power is −F·v.
-    pub fn dissipation(&self, x: &[DVec2], v: &[DVec2]) -> Power {
+    pub fn dissipation(&self, t: f64, x: &[DVec2], v: &[DVec2]) -> Power {
         if !self.dissipates() {
             return Power::default();
         }
@@ -230,7 +249,7 @@ impl ForceModel {
         let mut friction = 0.0;
         if self.surface_contacts.iter().any(|c| c.friction > 0.0) {
             let mut a = vec![DVec2::ZERO; x.len()];
-            self.accelerations_off_surfaces(x, v, &mut a);
+            self.accelerations_off_surfaces(t, x, v, &mut a);
             // A turning particle's friction also works on its spin, which is not here:
             // the step's end books it (`Simulation::book_turning`).
             for contact in self.surface_contacts.iter().filter(|c| c.turning.is_none()) {
@@ -261,6 +280,7 @@ impl ForceModel {
     /// evaluated only when one moved along its normal.
     pub fn surface_normal_work(
         &self,
+        t: f64,
         start: &[DVec2],
         end: &[DVec2],
         v: &[DVec2],
@@ -275,7 +295,7 @@ impl ForceModel {
             return 0.0;
         }
         let mut a = vec![DVec2::ZERO; end.len()];
-        self.accelerations_off_surfaces(end, v, &mut a);
+        self.accelerations_off_surfaces(t, end, v, &mut a);
         let mut work = 0.0;
         for contact in &self.surface_contacts {
             let p = contact.particle;
@@ -305,9 +325,10 @@ impl ForceModel {
     }
 
     /// Whether an acceleration may change with the velocities at fixed positions: a damped
-    /// spring or friction, or a rod or string (whose pull holds the centripetal v²/L).
+    /// spring or friction, a rod or string (whose pull holds the centripetal v²/L), or
+    /// the magnetic field.
     pub fn depends_on_velocity(&self) -> bool {
-        self.dissipates() || !self.constraints.is_empty()
+        self.dissipates() || !self.constraints.is_empty() || self.has_own_varying_forces()
     }
 
     /// Σ ½ m v² over the moving particles, joules.

@@ -231,6 +231,8 @@ mod tests {
             workers: crate::parallel::Workers::default(),
             surface_contacts: Vec::new(),
             drag: Vec::new(),
+            magnetic: Vec::new(),
+            own: Vec::new(),
         };
         (model, x)
     }
@@ -238,7 +240,7 @@ mod tests {
     /// The accelerations of `model`'s fields, pair laws and springs at positions `x`, at rest.
     fn free_accelerations(model: &ForceModel, x: &[DVec2]) -> Vec<DVec2> {
         let mut a = vec![DVec2::ZERO; x.len()];
-        model.free_accelerations(x, &vec![DVec2::ZERO; x.len()], &mut a);
+        model.free_accelerations(0.0, x, &vec![DVec2::ZERO; x.len()], &mut a);
         a
     }
 
@@ -296,7 +298,7 @@ mod tests {
         let (model, x) = model(n, &mut uniform);
         let v: Vec<DVec2> = (0..n).map(|_| DVec2::new(uniform(), uniform())).collect();
         let mut a = vec![DVec2::ZERO; n];
-        model.accelerations(&x, &v, &mut a);
+        model.accelerations(0.0, &x, &v, &mut a);
         let scale = a.iter().map(|a| a.length()).fold(1.0, f64::max);
         for (k, expected) in a.iter().enumerate() {
             let one = model.acceleration_of(&x, &v, k);

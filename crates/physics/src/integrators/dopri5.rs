@@ -126,7 +126,12 @@ pub(crate) fn step(
 pub(crate) fn step_exactly(forces: &ForceModel, state: &mut State, h: f64, work: &mut Workspace) {
     let n = state.len();
     work.prepare(7, n);
-    forces.accelerations(&state.position, &state.velocity, &mut work.accelerations[0]);
+    forces.accelerations(
+        state.time,
+        &state.position,
+        &state.velocity,
+        &mut work.accelerations[0],
+    );
     work.velocities[0].copy_from_slice(&state.velocity);
     attempt(forces, state, h, 1.0, work);
     std::mem::swap(&mut state.position, &mut work.stage.position);
@@ -162,7 +167,12 @@ fn attempt(
         }
         debug_assert!(C[s] <= 1.0, "stages lie within the step");
         kv[s].copy_from_slice(&stage.velocity);
-        forces.accelerations(&stage.position, &stage.velocity, &mut ka[s]);
+        forces.accelerations(
+            state.time + C[s] * h,
+            &stage.position,
+            &stage.velocity,
+            &mut ka[s],
+        );
     }
     // The seventh stage was evaluated at the fifth-order solution itself (A[6] are its
     // weights), which is what `stage` holds now.

@@ -151,7 +151,7 @@ impl Workspace {
     pub fn take_start_acceleration(&mut self, forces: &ForceModel, state: &State) -> Vec<DVec2> {
         self.start_acceleration.take().unwrap_or_else(|| {
             let mut a = vec![DVec2::ZERO; state.len()];
-            forces.accelerations(&state.position, &state.velocity, &mut a);
+            forces.accelerations(state.time, &state.position, &state.velocity, &mut a);
             a
         })
     }
@@ -201,7 +201,12 @@ impl KnownStart {
         if !self.known {
             self.acceleration.clear();
             self.acceleration.resize(state.len(), DVec2::ZERO);
-            forces.accelerations(&state.position, &state.velocity, &mut self.acceleration);
+            forces.accelerations(
+                state.time,
+                &state.position,
+                &state.velocity,
+                &mut self.acceleration,
+            );
             self.known = true;
         }
         &self.acceleration
@@ -284,7 +289,7 @@ pub(crate) fn from_accelerations(
 ) {
     work.prepare(1, state.len());
     let a = &mut work.accelerations[0];
-    forces.accelerations(&state.position, &state.velocity, a);
+    forces.accelerations(state.time, &state.position, &state.velocity, a);
     for ((x, v), a) in state
         .position
         .iter_mut()

@@ -43,16 +43,19 @@ pub(crate) fn step(forces: &ForceModel, state: &mut State, h: f64, work: &mut Wo
         0.5 * (1.0 - 2.0 * LAMBDA),
     ];
     let velocity_dependent = forces.depends_on_velocity();
+    // Time drifts with the positions: a kick acts at the instant its drifts reached.
+    let mut now = state.time;
     for (k, drift) in drifts.iter().enumerate() {
         for (x, v) in state.position.iter_mut().zip(&state.velocity) {
             *x += *v * (drift * h);
         }
+        now += drift * h;
         if let Some(kick) = kicks.get(k) {
             if velocity_dependent {
-                kick_in_stages(forces, state, kick * h, work);
+                kick_in_stages(forces, state, (now, kick * h), work);
             } else {
                 let a = &mut work.accelerations[0];
-                forces.accelerations(&state.position, &state.velocity, a);
+                forces.accelerations(now, &state.position, &state.velocity, a);
                 for (v, a) in state.velocity.iter_mut().zip(a.iter()) {
                     *v += *a * (kick * h);
                 }
@@ -61,9 +64,14 @@ pub(crate) fn step(forces: &ForceModel, state: &mut State, h: f64, work: &mut Wo
     }
 }
 
-/// v' = a(x, v) over `duration` at the state's fixed positions, by one classical
-/// Runge–Kutta step: v += (k₁ + 2k₂ + 2k₃ + k₄) duration/6.
-fn kick_in_stages(forces: &ForceModel, state: &mut State, duration: f64, work: &mut Workspace) {
+/// v' = a(t, x, v) over `duration` at the state's fixed positions and the instant `t`,
+/// by one classical Runge–Kutta step: v += (k₁ + 2k₂ + 2k₃ + k₄) duration/6.
+fn kick_in_stages(
+    forces: &ForceModel,
+    state: &mut State,
+    (t, duration): (f64, f64),
+    work: &mut Workspace,
+) {
     let n = state.len();
     work.prepare(4, n);
     let Workspace {
@@ -85,7 +93,7 @@ fn kick_in_stages(forces: &ForceModel, state: &mut State, duration: f64, work: &
                 *staged = *v + *a * lead;
             }
         }
-        forces.accelerations(&state.position, &stage.velocity, &mut accelerations[s]);
+        forces.accelerations(t, &state.position, &stage.velocity, &mut accelerations[s]);
     }
     let sixth = duration / 6.0;
     let [k1, k2, k3, k4, ..] = &accelerations[..] else {

@@ -48,7 +48,12 @@ pub(crate) fn step_knowing(
         kv[s].copy_from_slice(&stage.velocity);
         match start {
             Some(known) if s == 0 => ka[0].copy_from_slice(known),
-            _ => forces.accelerations(&stage.position, &stage.velocity, &mut ka[s]),
+            _ => forces.accelerations(
+                state.time + c * h,
+                &stage.position,
+                &stage.velocity,
+                &mut ka[s],
+            ),
         }
     }
     let sixth = h / 6.0;

@@ -26,7 +26,7 @@ pub(crate) fn step(forces: &ForceModel, state: &mut State, h: f64, work: &mut Wo
         state.position[i] += state.velocity[i] * h;
     }
     let end = &mut work.accelerations[0];
-    forces.accelerations(&state.position, predicted, end);
+    forces.accelerations(state.time + h, &state.position, predicted, end);
     for (v, a) in state.velocity.iter_mut().zip(end.iter()) {
         *v += *a * (0.5 * h);
     }

@@ -1,6 +1,6 @@
 //! Edits that are rules of the scene rather than of any one screen: a renamed particle's
-//! springs, rods, strings, graphs and camera follow it; a deleted particle takes its
-//! springs, rods, strings and graph series with it. The app's inspector, canvas and keyboard all edit through these.
+//! springs, rods, strings, forces, graphs and camera follow it; a deleted particle takes its
+//! springs, rods, strings, the forces on it alone and graph series with it. The app's inspector, canvas and keyboard all edit through these.
 
 use super::{Endpoint, Scene, Section};
 
@@ -32,6 +32,11 @@ impl Scene {
                 for end in ends.chain(tie_ends).flatten() {
                     if matches!(end, Endpoint::Particle(name) if *name == old) {
                         *end = Endpoint::Particle(new.to_owned());
+                    }
+                }
+                for on in self.forces.iter_mut().flat_map(|f| f.on.iter_mut()) {
+                    if *on == old {
+                        new.clone_into(on);
                     }
                 }
                 self.rename_in_presentation(&old, new);
@@ -94,6 +99,13 @@ impl Scene {
                 self.springs
                     .retain(|s| !attached(&s.from) && !attached(&s.to));
                 self.ties.retain(|t| !attached(&t.from) && !attached(&t.to));
+                // A force on it alone goes with it (an empty list would mean every
+                // particle).
+                self.forces.retain_mut(|f| {
+                    let named = !f.on.is_empty();
+                    f.on.retain(|n| *n != name);
+                    !named || !f.on.is_empty()
+                });
                 self.forget_in_presentation(&name);
             }
             Section::Spring(i) if i < self.springs.len() => {

@@ -26,6 +26,8 @@ pub enum Section {
     Body(usize),
     /// The pin or hinge at this index of [`Scene::joints`](super::Scene::joints).
     Joint(usize),
+    /// The force of one's own at this index (`[[force]]`).
+    Force(usize),
     /// The graph at this index (`[[graph]]`).
     Graph(usize),
     /// The series at this index (`[[series]]`).

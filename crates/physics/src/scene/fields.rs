@@ -230,6 +230,24 @@ pub const WORLD: &[Field<World>] = &[
         Some("0.0"),
         "Plummer softening ε of gravitation and Coulomb: force ∝ r/(r² + ε²)^(3/2), finite in close passes"
     ),
+    number!(
+        "air_density",
+        "air density",
+        air_density,
+        Rule::NonNegative,
+        "kg/m³",
+        Some("1.2"),
+        "ρ, what a particle's drag coefficient pushes against: ½ ρ C_d π r² v² (air at 20 °C: 1.2)"
+    ),
+    number!(
+        "magnetic_field",
+        "magnetic field",
+        magnetic_field,
+        Rule::Finite,
+        "T",
+        Some("0.0"),
+        "B_z, out of the screen positive: a force q v × B on every moving charged particle"
+    ),
     boolean!(
         "collisions",
         "collisions between particles",
@@ -424,6 +442,15 @@ pub const PARTICLE: &[Field<Particle>] = &[
         "kg/m",
         Some("0.0"),
         "Air resistance c: a force of c v² against the motion (a ball through air: c = ½ ρ C_d A)"
+    ),
+    number!(
+        "drag_coefficient",
+        "drag coefficient",
+        drag_coefficient,
+        Rule::NonNegative,
+        "",
+        Some("0.0"),
+        "C_d: air resistance ½ ρ C_d π r² v² from the world's air density and the radius (a ball: 0.47); instead of the quadratic c"
     ),
     number!(
         "inertia",

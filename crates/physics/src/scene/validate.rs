@@ -11,6 +11,7 @@ use super::{Color, Endpoint, Follow, Scene, Vector, say, say_numbers};
 use crate::quantity::{LinkOf, Quantity};
 
 mod bodies;
+mod forces;
 mod joints;
 
 /// How far into a wall of the bounds a particle may start, as a fraction of its radius.
@@ -33,6 +34,7 @@ impl Scene {
         check.ramps();
         check.bodies();
         check.joints();
+        check.forces();
         check.graphs();
         check.series();
         check.coincident();
@@ -72,6 +74,7 @@ impl Scene {
                 Some(joint) => named(joint.kind_str(), Some(&joint.name), i),
                 None => named("pin", None, i),
             },
+            Section::Force(i) => named("force", self.forces.get(i).map(|f| f.name.as_str()), i),
             Section::Graph(i) => named(
                 "graph",
                 self.graphs.get(i).and_then(|g| g.title.as_deref()),
@@ -344,6 +347,9 @@ impl Checker<'_> {
             )
             .chain(
                 (0..scene.joints.len()).map(|i| (Section::Joint(i), scene.joints[i].name.as_str())),
+            )
+            .chain(
+                (0..scene.forces.len()).map(|i| (Section::Force(i), scene.forces[i].name.as_str())),
             );
         let mut first_use: HashMap<&str, Section> = HashMap::new();
         for (section, name) in sections {
@@ -404,6 +410,16 @@ impl Checker<'_> {
                 );
             }
             self.rules(s, fields::PARTICLE, particle);
+            if particle.quadratic_drag > 0.0 && particle.drag_coefficient > 0.0 {
+                let words = say(
+                    "scene-drag-twice",
+                    &[
+                        ("a", &particle.quadratic_drag.to_string()),
+                        ("b", &particle.drag_coefficient.to_string()),
+                    ],
+                );
+                self.report(s, "drag_coefficient", &words);
+            }
             // Linear drag decays the velocity at b/m whatever the speed: a fixed-step
             // method that cannot follow it would make energy from nothing from the start.
             let settings = &self.scene.simulation;

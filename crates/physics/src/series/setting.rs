@@ -323,7 +323,7 @@ impl Setting {
                     ("v0", p.velocity.to_dvec2().length()),
                     ("h", p.position.to_dvec2().y),
                     ("b", p.linear_drag),
-                    ("c", p.quadratic_drag),
+                    ("c", p.quadratic_drag_in(scene.world.air_density)),
                 ]);
                 // The length of the first rod or string that holds it.
                 let holds = |end: &crate::scene::Endpoint| matches!(end, crate::scene::Endpoint::Particle(n) if *n == p.name);

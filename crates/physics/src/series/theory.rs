@@ -8,7 +8,7 @@ use crate::scene::{Scene, say};
 /// `a`; an angle in radians, the file's degrees converted) and of the scene's constants:
 /// `g`, the field's strength (m/s²); of the varied particle, `m` (kg), `r` (m), `v0`
 /// (its speed at the start, m/s), `h` (its height at the start, m), `b` and `c` (its
-/// air resistance) and `L` (the length of the first rod or string holding it); of a
+/// air resistance; c from the drag coefficient when it has one) and `L` (the length of the first rod or string holding it); of a
 /// varied rod or string `L` (m), of a varied spring `k` (N/m) and `L` (its natural
 /// length). `v0^2*sin(2*a)/g` is the range of a projectile launched
 /// from the ground at the angle varied. Arithmetic as the app's fields: + − × ÷ ^, sqrt,

@@ -24,7 +24,8 @@
 //! reuses the first's first stage ([`KnownStart`]), one evaluation of four, same bits.
 //!
 //! Not used (each coupled impact still ends the step) with rods or strings, whose events
-//! and projections are the whole step's, and while anything dissipates smoothly (a damped
+//! and projections are the whole step's, with forces on a particle alone that the
+//! members' single accelerations leave out (the magnetic field, forces of one's own), and while anything dissipates smoothly (a damped
 //! spring, friction under a particle): the energy ledger integrates that power over the
 //! step from its two ends, which an impulse inside it would break.
 
@@ -87,7 +88,10 @@ impl CoupledSystem {
     /// The coupled system of a simulation's particles, or `None` when there is none or
     /// impacts must end the step (rods or strings; see the module doc).
     pub fn new(forces: &ForceModel, coupled: &[bool]) -> Option<Self> {
-        if !forces.constraints.is_empty() || !coupled.contains(&true) {
+        if !forces.constraints.is_empty()
+            || forces.has_own_varying_forces()
+            || !coupled.contains(&true)
+        {
             return None;
         }
         let pulls = |i: usize| {
@@ -274,6 +278,13 @@ fn restricted(forces: &ForceModel, members: &[usize], local: &[Option<u32>]) -> 
                 })
             })
             .collect(),
+        magnetic: forces
+            .magnetic
+            .iter()
+            .filter_map(|&(i, qb)| Some((pick(&i)?, qb)))
+            .collect(),
+        // Never built with forces of one's own (`CoupledSystem::new`).
+        own: Vec::new(),
     }
 }
 
@@ -286,8 +297,9 @@ impl Simulation {
     /// first stage, kept in `self.work`), then three of the coupled particles' alone,
     /// instead of four of everything's: the mixed scene of 1,000 balls integrates its
     /// 200 coupled ones and 800 others. Returns false, doing nothing, where it does not
-    /// apply (another method, no coupled system, every particle coupled, or air
-    /// resistance, under which no particle's acceleration is constant).
+    /// apply (another method, no coupled system, every particle coupled, or a force that
+    /// varies on a particle alone — air resistance, the magnetic field — under which no
+    /// particle's acceleration can be taken as constant).
     pub(super) fn split_trial_step(&mut self, h: f64) -> bool {
         let Some(system) = self.coupled.as_mut() else {
             return false;
@@ -295,7 +307,7 @@ impl Simulation {
         let n = self.state.len();
         if self.integrator != Integrator::Rk4
             || system.members.len() == n
-            || !self.forces.drag.is_empty()
+            || self.forces.has_own_varying_forces()
         {
             return false;
         }

@@ -59,7 +59,8 @@ impl Simulation {
             }
         }
         let mut a = vec![DVec2::ZERO; x.len()];
-        self.forces.free_accelerations(x, v, &mut a);
+        self.forces
+            .free_accelerations(self.state.time, x, v, &mut a);
         let constraints = &mut self.forces.constraints;
         constraints.choose_taut(x, v, w, &a, h) || changed
     }
@@ -75,7 +76,7 @@ impl Simulation {
             .any(|k| constraints.taut[k] && constraints.links[k].is_string());
         let tensions = if taut_strings {
             self.forces
-                .tensions(&self.state.position, &self.state.velocity)
+                .tensions(self.state.time, &self.state.position, &self.state.velocity)
         } else {
             Vec::new()
         };
@@ -220,6 +221,6 @@ impl Simulation {
     /// in the order of [`crate::Scene::ties`].
     pub fn tensions(&self) -> Vec<f64> {
         self.forces
-            .tensions(&self.state.position, &self.state.velocity)
+            .tensions(self.state.time, &self.state.position, &self.state.velocity)
     }
 }

@@ -82,6 +82,20 @@ class Scene:
         """Adds a string: ``from_`` and ``to``; ``length`` defaults to the ends' distance."""
     def add_ramp(self, name: Optional[str] = None, **fields: Any) -> SceneObject:
         """Adds a ramp: ``from_`` and ``to`` (points), ``friction``, ``static_friction``, …"""
+    def add_force(
+        self,
+        name: Optional[str] = None,
+        *,
+        fx: str = "0",
+        fy: str = "0",
+        on: Union[None, str, Sequence[str]] = None,
+        potential: Optional[str] = None,
+    ) -> str:
+        """Adds a force of one's own (``[[force]]``): expressions of x, y, vx, vy, t, m, q;
+        returns its name."""
+    @property
+    def forces(self) -> List[str]:
+        """The forces of its own' names."""
     def add_particles(
         self,
         positions: npt.ArrayLike,
@@ -129,6 +143,11 @@ class Table:
         """The number of rows."""
     def keys(self) -> List[str]: ...
     def to_dict(self) -> Dict[str, Union[npt.NDArray[np.float64], List[str]]]: ...
+    @staticmethod
+    def concat(tables: Sequence["Table"]) -> "Table":
+        """The rows of ``tables`` (of the same columns), one after another."""
+    @staticmethod
+    def _from_columns(names: Sequence[str], columns: Sequence[Any]) -> "Table": ...
     def to_pandas(self) -> Any:
         """A pandas DataFrame of the columns, in order, indexed by ``t`` where the table
         has it (needs pandas)."""
@@ -213,6 +232,11 @@ def sweep(
 ) -> Table:
     """``newtonlab sweep``: a run per combination of the varied values (in parallel), one row
     of measures each; NaN (and a warning) where a run had no such number."""
+
+def sweep_values(
+    scene: SceneLike, vary: Mapping[str, Union[Sequence[float], npt.ArrayLike, str]]
+) -> List[Tuple[str, List[float]]]:
+    """The values each field of ``vary`` takes in a sweep, the first outermost."""
 
 def validate(
     groups: Union[None, str, Iterable[str]] = None, tolerance: float = 1e-6, threads: Optional[int] = None

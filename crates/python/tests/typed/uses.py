@@ -16,4 +16,6 @@ times = traj["t"] * 1000.0
 events: list[str] = newtonlab.run(scene, until=1.0, events="Ball.vy crosses 0")["event"]
 frame = traj.to_pandas()
 table = newtonlab.sweep(scene, vary={"Ball.mass": [1.0, 2.0]}, until=1.0, measure="max Ball.y")
-print(highest, times.shape, events, len(names), frame.shape, len(table), ball.mass)
+force: str = scene.add_force(on="Ball", fx="-0.1*vx", fy="0.2*sin(t)")
+joined = newtonlab.Table.concat([table, table])
+print(highest, times.shape, events, len(names), frame.shape, len(table), ball.mass, force, len(joined))

@@ -9,8 +9,8 @@ use crate::scene::error::{FieldRef, LoadError, Problem, Section};
 use crate::scene::fields::{self, Field, Kind, Value as FieldValue};
 use crate::scene::validate;
 use crate::scene::{
-    Body, Bounds, Color, Endpoint, Follow, Graph, Joint, JointKind, Motor, PairForces, Particle,
-    Ramp, Scene, Series, Settings, Shape, Spring, Tie, TieKind, Vector, View, World, say,
+    Body, Bounds, Color, Endpoint, Follow, Force, Graph, Joint, JointKind, Motor, PairForces,
+    Particle, Ramp, Scene, Series, Settings, Shape, Spring, Tie, TieKind, Vector, View, World, say,
 };
 use crate::{Integrator, Quantity};
 
@@ -286,6 +286,10 @@ impl<'t> Reader<'t> {
                 scene.joints.push(joint);
             }
         }
+        for (i, node) in self.items(&mut top, "force").iter().enumerate() {
+            let force = self.force(node, i);
+            scene.forces.push(force);
+        }
         for (i, node) in self.items(&mut top, "graph").iter().enumerate() {
             let graph = self.graph(node, i);
             scene.graphs.push(graph);
@@ -374,7 +378,7 @@ impl<'t> Reader<'t> {
         // Particles, springs and ramps are named by their initial (p1, s1, r1); rods and
         // strings in full (rod1, string1), which would clash with ramps and springs.
         let default_name = match kind {
-            "rod" | "string" | "body" | "pin" | "hinge" | "pulley" => {
+            "rod" | "string" | "body" | "pin" | "hinge" | "pulley" | "force" => {
                 format!("{kind}{}", index + 1)
             }
             _ => format!("{}{}", &kind[..1], index + 1),
@@ -500,6 +504,25 @@ impl<'t> Reader<'t> {
         known.extend(fields::BODY_SHAPE_KEYS.map(|(key, ..)| key));
         self.close(&t, &known);
         body
+    }
+
+    /// A force of one's own, the `index`-th.
+    pub(super) fn force(&mut self, node: &Node, index: usize) -> Force {
+        let mut force = Force::new(String::new(), "0", "0");
+        let Some((mut t, name)) = self.object(node, "force", Section::Force(index), index) else {
+            return force;
+        };
+        force.name = name;
+        force.on = self.field(&mut t, "on", read_text_list).unwrap_or_default();
+        force.fx = self
+            .field(&mut t, "fx", read_text)
+            .unwrap_or_else(|| "0".to_owned());
+        force.fy = self
+            .field(&mut t, "fy", read_text)
+            .unwrap_or_else(|| "0".to_owned());
+        force.potential = self.field(&mut t, "potential", read_text);
+        self.close(&t, &["name", "on", "fx", "fy", "potential"]);
+        force
     }
 
     /// A pin or a hinge, the `index`-th of its kind and the `section`-th joint.
@@ -736,6 +759,7 @@ fn section_node<'n>(root: &'n Node<'n>, section: Section) -> Option<&'n Node<'n>
                 (_, Some(i)) => items("pulley").get(i),
             }
         }
+        Section::Force(i) => items("force").get(i),
         Section::Graph(i) => items("graph").get(i),
         Section::Series(i) => items("series").get(i),
         // Rods first, then strings, as the reader reads them into `Scene::ties`.

@@ -6,7 +6,7 @@ use super::VERSION;
 use crate::scene::fields::{self, Field, Value as FieldValue};
 use glam::DVec2;
 
-use crate::scene::{Body, Bounds, Endpoint, Joint, JointKind, Motor, Scene, Shape, Vector};
+use crate::scene::{Body, Bounds, Endpoint, Force, Joint, JointKind, Motor, Scene, Shape, Vector};
 
 impl Scene {
     /// The scene as a TOML scene file.
@@ -136,6 +136,11 @@ impl Scene {
                 self.joints
                     .iter()
                     .map(|j| (j.kind_str(), &j.name, joint_fields(j))),
+            )
+            .chain(
+                self.forces
+                    .iter()
+                    .map(|f| ("force", &f.name, force_fields(f))),
             );
         for (kind, name, entries) in objects {
             let mut named = vec![("name", Out::Text(name.clone()))];
@@ -232,6 +237,9 @@ pub(super) const WRITTEN_WHEN_USED: &[&str] = &[
     "collisions between particles",
     "air resistance, linear",
     "air resistance, quadratic",
+    "air density",
+    "magnetic field",
+    "drag coefficient",
     "friction between particles",
     "moment of inertia",
     "spin",
@@ -278,6 +286,19 @@ fn body_fields(body: &Body) -> Vec<(&'static str, Out)> {
         {
             entries.push(("static_friction", Out::Number(s)));
         }
+    }
+    entries
+}
+
+fn force_fields(force: &Force) -> Vec<(&'static str, Out)> {
+    let mut entries = Vec::new();
+    if !force.on.is_empty() {
+        entries.push(("on", Out::TextList(force.on.clone())));
+    }
+    entries.push(("fx", Out::Text(force.fx.clone())));
+    entries.push(("fy", Out::Text(force.fy.clone())));
+    if let Some(potential) = &force.potential {
+        entries.push(("potential", Out::Text(potential.clone())));
     }
     entries
 }

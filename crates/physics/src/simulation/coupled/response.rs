@@ -218,7 +218,12 @@ impl Motion {
     /// evaluation.
     fn measure_every_end_acceleration(&mut self, forces: &ForceModel) {
         let mut a = vec![DVec2::ZERO; self.end.len()];
-        forces.accelerations(&self.end.position, &self.end.velocity, &mut a);
+        forces.accelerations(
+            self.end.time,
+            &self.end.position,
+            &self.end.velocity,
+            &mut a,
+        );
         for (known, a) in self.end_acceleration.iter_mut().zip(a) {
             known.get_or_insert(a);
         }
@@ -405,7 +410,7 @@ impl Motion {
                 for (x, v) in moved.position.iter_mut().zip(&state.velocity) {
                     *x += *v * (sign * epsilon);
                 }
-                forces.accelerations(&moved.position, &moved.velocity, side);
+                forces.accelerations(moved.time, &moved.position, &moved.velocity, side);
             }
             for ((r, plus), minus) in rate.iter_mut().zip(&a[0]).zip(&a[1]) {
                 *r = (*plus - *minus) / (2.0 * epsilon);
@@ -773,7 +778,7 @@ fn start_acceleration<'a>(
         Some(a) if a.len() == start.len() => Cow::Borrowed(a.as_slice()),
         _ => {
             let mut a = vec![DVec2::ZERO; start.len()];
-            forces.accelerations(&start.position, &start.velocity, &mut a);
+            forces.accelerations(start.time, &start.position, &start.velocity, &mut a);
             Cow::Owned(a)
         }
     }

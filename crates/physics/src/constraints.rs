@@ -233,6 +233,78 @@ impl Constraints {
         worst
     }
 
+    /// Answers an impact through the links: after the impact's own impulse on the
+    /// particles of `row` (each with its part of the contact's normal: the contact's
+    /// separation speed is Σ gₚ·vₚ), the impulses along the holding links of their
+    /// islands and a further impulse along the contact that keep that separation speed
+    /// and leave every link's rate at zero, solved together (J W Jᵀ Λ = −J v, the
+    /// contact's row last so that a contact the links already decide gets none). A ball
+    /// on a rod to a heavy partner that strikes a wall stops the partner through the rod
+    /// instead of bouncing alone and being pulled back through the wall. Returns the
+    /// contact's further impulse (N·s, pushing positive), or `None` when no holding link
+    /// touches the particles.
+    pub fn answer_impact(
+        &self,
+        x: &[DVec2],
+        v: &mut [DVec2],
+        w: &[f64],
+        row: &[(usize, DVec2)],
+    ) -> Option<f64> {
+        let touched = |island: &&Vec<usize>| {
+            island
+                .iter()
+                .any(|&k| self.taut[k] && row.iter().any(|&(p, _)| self.links[k].touches(p)))
+        };
+        let mut rows: Vec<Vec<(usize, DVec2)>> = self
+            .islands
+            .iter()
+            .filter(touched)
+            .flatten()
+            .filter(|&&k| self.taut[k])
+            .map(|&k| {
+                let (link, d) = (&self.links[k], self.links[k].d(x));
+                let mut entries = Vec::with_capacity(2);
+                if let End::Particle(p) = link.to {
+                    entries.push((p, d));
+                }
+                if let End::Particle(p) = link.from {
+                    entries.push((p, -d));
+                }
+                entries
+            })
+            .collect();
+        if rows.is_empty() {
+            return None;
+        }
+        rows.push(row.to_vec());
+        let m = rows.len();
+        let mut matrix = vec![0.0; m * m];
+        for (r, a) in rows.iter().enumerate() {
+            for (s, b) in rows.iter().enumerate() {
+                matrix[r * m + s] = a
+                    .iter()
+                    .flat_map(|&(p, g)| {
+                        b.iter()
+                            .filter(move |&&(q, _)| q == p)
+                            .map(move |&(_, h)| w[p] * g.dot(h))
+                    })
+                    .sum();
+            }
+        }
+        let mut lambda: Vec<f64> = rows
+            .iter()
+            .map(|entries| -entries.iter().map(|&(p, g)| g.dot(v[p])).sum::<f64>())
+            .collect();
+        lambda[m - 1] = 0.0;
+        solve(m, &mut matrix, &mut lambda);
+        for (entries, l) in rows.iter().zip(&lambda) {
+            for &(p, g) in entries {
+                v[p] += g * (w[p] * l);
+            }
+        }
+        Some(lambda[m - 1])
+    }
+
     /// Whether every link already holds at `x` and `v` to rounding: each rod (and each
     /// string at its full length) at its length to [`PROJECTION_TOLERANCE`], with its ends
     /// neither closing nor separating by more than 1e-13 of their relative speed (a

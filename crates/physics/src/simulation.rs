@@ -487,6 +487,7 @@ impl Simulation {
             }
             self.contacts
                 .apply(impact, &mut self.state, &self.forces, taken);
+            self.answer_through_ties(impact);
             self.work.start_acceleration = None;
             struck = Some(impact);
             self.profiler.lap(Stage::CoupledImpacts);
@@ -633,6 +634,42 @@ impl Simulation {
     }
 
     /// Adds the impacts applied in this step to the log, if one is kept.
+    /// An impact just applied to particles tied by rods or strings, answered through
+    /// them ([`crate::constraints::Constraints::answer_impact`]): the contact's impulse
+    /// becomes the tied system's, and its record the effective mass that took it.
+    fn answer_through_ties(&mut self, impact: Impact) {
+        if self.forces.constraints.is_empty() {
+            return;
+        }
+        let (_, normal, _) = self.contacts.measure(impact, &self.state);
+        let row = match impact {
+            Impact::Obstacle(p, _) => vec![(p, normal)],
+            Impact::Pair(i, j) => vec![(i, -normal), (j, normal)],
+        };
+        let before = self.state.velocity.clone();
+        let Some(further) = self.forces.constraints.answer_impact(
+            &self.state.position,
+            &mut self.state.velocity,
+            &self.forces.inverse_mass,
+            &row,
+        ) else {
+            return;
+        };
+        let w = &self.forces.inverse_mass;
+        let Some(applied) = self.contacts.applied.last_mut() else {
+            return;
+        };
+        let change = applied.approach * (1.0 + applied.restitution);
+        let impulse = effective_mass(applied, w) * change + further;
+        if impulse < 0.0 || change <= 0.0 {
+            // The links would have the contact pull: the impact stands alone, and the
+            // step's projection answers it as before.
+            self.state.velocity = before;
+            return;
+        }
+        applied.tied = Some(impulse / change);
+    }
+
     fn log_impacts(&mut self) {
         if let Some(log) = &mut self.impact_log {
             let w = &self.forces.inverse_mass;

@@ -426,6 +426,7 @@ impl Contacts {
             restitution,
             grip: Grip::default(),
             kick: (DVec2::ZERO, DVec2::ZERO),
+            tied: None,
         };
         let (first, second) = particles_of(impact);
         if self.turning.is_some() {
@@ -883,6 +884,7 @@ impl Contacts {
             restitution,
             grip: Grip::default(),
             kick: (DVec2::ZERO, DVec2::ZERO),
+            tied: None,
         };
         self.strike(applied, normal, state, forces);
     }

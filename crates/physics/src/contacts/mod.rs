@@ -159,6 +159,9 @@ pub(crate) struct Applied {
     pub grip: Grip,
     /// The whole velocity changes of the first and the second particle, m/s.
     pub kick: (DVec2, DVec2),
+    /// The contact's effective mass, kg, when rods or strings answered the impact with
+    /// it (the struck particle carries what it is tied to); `None`: the particles' own.
+    pub tied: Option<f64>,
 }
 
 impl Contacts {

@@ -359,6 +359,7 @@ impl Contacts {
             restitution: self.restitution_now(impact, approach, resting_speed, inelastic),
             grip: crate::turning::Grip::default(),
             kick: (DVec2::ZERO, DVec2::ZERO),
+            tied: None,
         }
     }
 }

@@ -58,6 +58,9 @@ impl Ledger {
 /// The effective mass of an impact, kg: 1/(1/mᵢ + 1/mⱼ) for a pair, m against a
 /// surface (0 when nothing can move). `w` is each particle's 1/m.
 pub(super) fn effective_mass(applied: &Applied, w: &[f64]) -> f64 {
+    if let Some(tied) = applied.tied {
+        return tied;
+    }
     let inverse = match applied.impact {
         Impact::Pair(i, j) => w[i] + w[j],
         Impact::Obstacle(p, _) => w[p],

@@ -619,3 +619,45 @@ fn a_tied_ball_does_not_pass_through_a_ramp() {
     let last = rows.last().expect("rows");
     assert!((last[vx] - 2.2).abs() < 1e-6, "A.vx {}", last[vx]);
 }
+
+/// A ball on a rod that a sideways field presses against a wall (restitution 0,
+/// friction 0.3) rests there, and its rows say so: velocity 0, the books closed. Its rows
+/// used to report a velocity while it sat still, its friction making energy.
+#[test]
+fn a_tied_ball_resting_on_a_wall_reports_rest() {
+    let (_dir, scene) = scene_file(
+        "pressed.toml",
+        "version = 1\n[world]\ngravity = [9.81, 0.0]\ngravitation = false\nelectrostatics = false\n\
+         [[particle]]\nname = \"ball\"\nmass = 0.25\nradius = 0.1\nposition = [3.0, -1.5]\n\
+         [[rod]]\nfrom = [3.0, 0.0]\nto = \"ball\"\n\
+         [[ramp]]\nfrom = [4.0, -3.0]\nto = [4.0, 3.0]\nrestitution = 0.0\nfriction = 0.3\n",
+    );
+    let output = common::newtonlab(&["run", &scene, "--until", "3", "--every", "0.5", "--ledger"]);
+    assert!(output.status.success(), "{}", stderr(&output));
+    let text = common::stdout(&output);
+    let mut lines = text.lines();
+    let header: Vec<&str> = lines.next().expect("a header").split(',').collect();
+    let column = |name: &str| header.iter().position(|h| *h == name).expect(name);
+    let (vx, vy, residual, friction) = (
+        column("ball.vx"),
+        column("ball.vy"),
+        column("energy_residual"),
+        column("dissipated_friction"),
+    );
+    for line in lines.skip(1) {
+        let row: Vec<f64> = line
+            .split(',')
+            .map(|v| v.parse().expect("a number"))
+            .collect();
+        assert!(
+            row[vx].hypot(row[vy]) < 1e-12,
+            "moving at t {}: {line}",
+            row[0]
+        );
+        assert!(
+            row[residual].abs() < 1e-9 && row[friction].abs() < 1e-12,
+            "t {}: {line}",
+            row[0]
+        );
+    }
+}

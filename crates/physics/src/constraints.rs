@@ -80,6 +80,18 @@ impl Link {
         }
     }
 
+    /// Its row of J for the vector `d` from `from` to `to`: Ċ = d·(`v_to` − `v_from`).
+    fn rows(&self, d: DVec2) -> Vec<(usize, DVec2)> {
+        let mut entries = Vec::with_capacity(2);
+        if let End::Particle(p) = self.to {
+            entries.push((p, d));
+        }
+        if let End::Particle(p) = self.from {
+            entries.push((p, -d));
+        }
+        entries
+    }
+
     /// Whether particle `i` is at one of its ends.
     pub fn touches(&self, i: usize) -> bool {
         matches!(self.from, End::Particle(p) if p == i)
@@ -173,6 +185,73 @@ impl Constraints {
         }
     }
 
+    /// [`Self::add_forces`] where particles rest on surfaces (`contacts`: each resting
+    /// particle with the surface's unit normal towards it): in an island that holds one
+    /// of them, the links and those surfaces answer the other forces together (J W Jᵀ Λ
+    /// = −(J a + |`v_rel`|²) over the links' rows and the surfaces' n·a = 0, a surface that
+    /// would pull left out and the rest solved again), so a pendulum pressed against a
+    /// wall rests there: the wall takes what the rod does not. Returns, for each contact,
+    /// how hard its surface presses (m/s², the normal force over the mass) when it was
+    /// answered so, `None` when no link holds its particle (the surface answers alone,
+    /// after the links, as before).
+    pub fn add_forces_with_surfaces(
+        &self,
+        x: &[DVec2],
+        v: &[DVec2],
+        w: &[f64],
+        a: &mut [DVec2],
+        contacts: &[(usize, DVec2)],
+    ) -> Vec<Option<f64>> {
+        let mut pressed = vec![None; contacts.len()];
+        for active in self.holding(x) {
+            let resting: Vec<usize> = (0..contacts.len())
+                .filter(|&c| {
+                    active
+                        .iter()
+                        .any(|&(k, _)| self.links[k].touches(contacts[c].0))
+                })
+                .collect();
+            if resting.is_empty() {
+                let lambda = self.multipliers(&active, v, w, a);
+                for (&(k, d), l) in active.iter().zip(lambda) {
+                    self.links[k].shift(d, l, w, a);
+                }
+                continue;
+            }
+            let mut rows: Vec<(Vec<(usize, DVec2)>, f64)> = active
+                .iter()
+                .map(|&(k, d)| {
+                    let link = &self.links[k];
+                    (link.rows(d), link.relative_velocity(v).length_squared())
+                })
+                .collect();
+            let links = rows.len();
+            rows.extend(resting.iter().map(|&c| (vec![contacts[c]], 0.0)));
+            let mut included = vec![true; rows.len()];
+            let lambda = loop {
+                let lambda = solve_rows(&rows, &included, w, a);
+                let pulling = (links..rows.len())
+                    .filter(|&r| included[r] && lambda[r] < 0.0)
+                    .min_by(|&r, &s| lambda[r].total_cmp(&lambda[s]));
+                match pulling {
+                    Some(r) => included[r] = false,
+                    None => break lambda,
+                }
+            };
+            for ((entries, _), l) in rows.iter().zip(&lambda) {
+                for &(p, g) in entries {
+                    a[p] += g * (w[p] * l);
+                }
+            }
+            for (r, &c) in (links..rows.len()).zip(&resting) {
+                if included[r] {
+                    pressed[c] = Some(lambda[r] * w[contacts[c].0]);
+                }
+            }
+        }
+        pressed
+    }
+
     /// λ of the holding links `active` of one island, given the accelerations `a` of
     /// every other force.
     fn multipliers(
@@ -261,17 +340,7 @@ impl Constraints {
             .filter(touched)
             .flatten()
             .filter(|&&k| self.taut[k])
-            .map(|&k| {
-                let (link, d) = (&self.links[k], self.links[k].d(x));
-                let mut entries = Vec::with_capacity(2);
-                if let End::Particle(p) = link.to {
-                    entries.push((p, d));
-                }
-                if let End::Particle(p) = link.from {
-                    entries.push((p, -d));
-                }
-                entries
-            })
+            .map(|&k| self.links[k].rows(self.links[k].d(x)))
             .collect();
         if rows.is_empty() {
             return None;
@@ -279,16 +348,9 @@ impl Constraints {
         rows.push(row.to_vec());
         let m = rows.len();
         let mut matrix = vec![0.0; m * m];
-        for (r, a) in rows.iter().enumerate() {
-            for (s, b) in rows.iter().enumerate() {
-                matrix[r * m + s] = a
-                    .iter()
-                    .flat_map(|&(p, g)| {
-                        b.iter()
-                            .filter(move |&&(q, _)| q == p)
-                            .map(move |&(_, h)| w[p] * g.dot(h))
-                    })
-                    .sum();
+        for (r, first) in rows.iter().enumerate() {
+            for (s, second) in rows.iter().enumerate() {
+                matrix[r * m + s] = weighted_dot(first, second, w);
             }
         }
         let mut lambda: Vec<f64> = rows
@@ -523,6 +585,48 @@ fn islands(links: &[Link], w: &[f64]) -> Vec<Vec<usize>> {
         groups[g].push(k);
     }
     groups
+}
+
+/// Λ for the rows (J's entries by particle, and the rate each adds: J a + c = 0 is
+/// wanted) that are `included` (the others get 0): J W Jᵀ Λ = −(J a + c).
+fn solve_rows(
+    rows: &[(Vec<(usize, DVec2)>, f64)],
+    included: &[bool],
+    w: &[f64],
+    a: &[DVec2],
+) -> Vec<f64> {
+    let m = rows.len();
+    let mut matrix = vec![0.0; m * m];
+    let mut b = vec![0.0; m];
+    for (r, (first, c)) in rows.iter().enumerate() {
+        if !included[r] {
+            // A row of its own: Λ = 0.
+            matrix[r * m + r] = 1.0;
+            continue;
+        }
+        b[r] = -(first.iter().map(|&(p, g)| g.dot(a[p])).sum::<f64>() + c);
+        for (s, (second, _)) in rows.iter().enumerate() {
+            if included[s] {
+                matrix[r * m + s] = weighted_dot(first, second, w);
+            }
+        }
+    }
+    solve(m, &mut matrix, &mut b);
+    b
+}
+
+/// Σ wₚ g·h over the particles two rows of J share.
+fn weighted_dot(first: &[(usize, DVec2)], second: &[(usize, DVec2)], w: &[f64]) -> f64 {
+    first
+        .iter()
+        .map(|&(p, g)| {
+            second
+                .iter()
+                .filter(|&&(q, _)| q == p)
+                .map(|&(_, h)| w[p] * g.dot(h))
+                .sum::<f64>()
+        })
+        .sum()
 }
 
 /// Solves M x = b in place (`b` becomes x) for a symmetric positive semi-definite M of

@@ -133,6 +133,7 @@ impl Contacts {
                 turning: grip,
             });
         }
+        changed |= decide_tied_friction(state, forces, h);
         profiler.lap(Stage::StartContacts);
         changed || had_surface_contacts || !forces.surface_contacts.is_empty()
     }
@@ -418,4 +419,45 @@ fn roll_or_slip(
 pub(super) struct Normals {
     pairs: Vec<(u32, u32, DVec2)>,
     surfaces: Vec<(u32, u32, DVec2)>,
+}
+
+/// Friction on particles that rods or strings hold against a surface, decided again on
+/// what the links and the surfaces leave of the pull together: the links alone leave a
+/// pull along the surface that the surface's normal force, answering with them, takes
+/// (a pendulum pressed against a wall would slide in its friction's books while it
+/// rests). Returns whether a velocity changed.
+fn decide_tied_friction(state: &mut State, forces: &mut ForceModel, h: f64) -> bool {
+    let frictional = |c: &SurfaceContact| c.friction > 0.0 && c.turning.is_none();
+    if forces.constraints.is_empty() || !forces.surface_contacts.iter().any(frictional) {
+        return false;
+    }
+    let kept = forces.surface_contacts.clone();
+    for contact in &mut forces.surface_contacts {
+        contact.friction = 0.0;
+    }
+    let mut held = vec![DVec2::ZERO; state.len()];
+    let pressed =
+        forces.accelerations_off_surfaces(state.time, &state.position, &state.velocity, &mut held);
+    forces.surface_contacts = kept;
+    let mut changed = false;
+    for (k, contact) in forces.surface_contacts.iter_mut().enumerate() {
+        let Some(pressing) = pressed.get(k).copied().flatten() else {
+            continue; // no link holds it: decided as any particle's
+        };
+        if !frictional(contact) {
+            continue;
+        }
+        let (p, normal) = (contact.particle, contact.normal);
+        let tangential = state.velocity[p] - normal * state.velocity[p].dot(normal);
+        let pull = held[p] - normal * held[p].dot(normal);
+        let limit = contact.friction * pressing.max(0.0);
+        contact.sliding = if tangential.length() <= limit * h && pull.length() <= limit {
+            state.velocity[p] -= tangential;
+            changed |= tangential != DVec2::ZERO;
+            None
+        } else {
+            tangential.try_normalize().or_else(|| pull.try_normalize())
+        };
+    }
+    changed
 }

@@ -159,10 +159,14 @@ impl ForceModel {
     /// opposite, so the total internal force is zero up to rounding and momentum is
     /// conserved; then divided by mass.
     pub fn accelerations(&self, t: f64, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
-        self.accelerations_off_surfaces(t, x, v, out);
-        // Last: a surface answers the sum of all the other forces.
-        for contact in &self.surface_contacts {
-            contact.apply(&mut out[contact.particle]);
+        let pressed = self.accelerations_off_surfaces(t, x, v, out);
+        // Last: a surface answers the sum of all the other forces (with the rods, where
+        // they hold the particle: then only its friction is left).
+        for (k, contact) in self.surface_contacts.iter().enumerate() {
+            contact.apply_pressed(
+                &mut out[contact.particle],
+                pressed.get(k).copied().flatten(),
+            );
         }
     }
 
@@ -178,12 +182,33 @@ impl ForceModel {
         }
     }
 
-    /// The accelerations of every force but the surfaces'.
-    fn accelerations_off_surfaces(&self, t: f64, x: &[DVec2], v: &[DVec2], out: &mut [DVec2]) {
+    /// The accelerations of every force but the surfaces' — but for the normal force of
+    /// a surface that a particle held by a rod or string rests on, which the links
+    /// answer with: for each surface contact, how hard it presses so (m/s²), or `None`
+    /// (empty when no link holds a resting particle).
+    pub(crate) fn accelerations_off_surfaces(
+        &self,
+        t: f64,
+        x: &[DVec2],
+        v: &[DVec2],
+        out: &mut [DVec2],
+    ) -> Vec<Option<f64>> {
         self.free_accelerations(t, x, v, out);
-        if !self.constraints.is_empty() {
-            self.constraints.add_forces(x, v, &self.inverse_mass, out);
+        if self.constraints.is_empty() {
+            return Vec::new();
         }
+        let w = &self.inverse_mass;
+        if self.surface_contacts.is_empty() {
+            self.constraints.add_forces(x, v, w, out);
+            return Vec::new();
+        }
+        let resting: Vec<(usize, DVec2)> = self
+            .surface_contacts
+            .iter()
+            .map(|c| (c.particle, c.normal))
+            .collect();
+        self.constraints
+            .add_forces_with_surfaces(x, v, w, out, &resting)
     }
 
     /// Whether every particle's acceleration is constant through a step: no pairwise
@@ -249,13 +274,16 @@ impl ForceModel {
         let mut friction = 0.0;
         if self.surface_contacts.iter().any(|c| c.friction > 0.0) {
             let mut a = vec![DVec2::ZERO; x.len()];
-            self.accelerations_off_surfaces(t, x, v, &mut a);
+            let pressed = self.accelerations_off_surfaces(t, x, v, &mut a);
             // A turning particle's friction also works on its spin, which is not here:
             // the step's end books it (`Simulation::book_turning`).
-            for contact in self.surface_contacts.iter().filter(|c| c.turning.is_none()) {
+            for (k, contact) in self.surface_contacts.iter().enumerate() {
+                if contact.turning.is_some() {
+                    continue;
+                }
                 let p = contact.particle;
                 let before = a[p];
-                contact.apply(&mut a[p]);
+                contact.apply_pressed(&mut a[p], pressed.get(k).copied().flatten());
                 let change = a[p] - before;
                 let along = change - contact.normal * change.dot(contact.normal);
                 friction -= self.mass[p] * along.dot(v[p]);
@@ -295,13 +323,14 @@ impl ForceModel {
             return 0.0;
         }
         let mut a = vec![DVec2::ZERO; end.len()];
-        self.accelerations_off_surfaces(t, end, v, &mut a);
+        let pressed = self.accelerations_off_surfaces(t, end, v, &mut a);
         let mut work = 0.0;
-        for contact in &self.surface_contacts {
+        for (k, contact) in self.surface_contacts.iter().enumerate() {
             let p = contact.particle;
             let before = a[p];
-            contact.apply(&mut a[p]);
-            let pressing = (a[p] - before).dot(contact.normal);
+            let held = pressed.get(k).copied().flatten();
+            contact.apply_pressed(&mut a[p], held);
+            let pressing = held.unwrap_or_else(|| (a[p] - before).dot(contact.normal));
             work += self.mass[p] * pressing * depth(contact);
         }
         work

@@ -40,12 +40,24 @@ impl SurfaceContact {
     /// Adds the surface's normal and friction accelerations to `a`, the particle's
     /// acceleration from every other force.
     pub fn apply(&self, a: &mut DVec2) {
-        let pressing = -a.dot(self.normal);
-        if pressing <= 0.0 {
-            return; // pulled away from the surface: it exerts nothing
-        }
-        *a += self.normal * pressing;
-        if self.friction == 0.0 {
+        self.apply_pressed(a, None);
+    }
+
+    /// [`Self::apply`], or, with `pressed`, friction alone for a surface whose normal
+    /// force (`pressed`, m/s²) is in `a` already: the rods holding the particle and the
+    /// surface answered the other forces together.
+    pub fn apply_pressed(&self, a: &mut DVec2, pressed: Option<f64>) {
+        let pressing = if let Some(pressing) = pressed {
+            pressing
+        } else {
+            let pressing = -a.dot(self.normal);
+            if pressing <= 0.0 {
+                return; // pulled away from the surface: it exerts nothing
+            }
+            *a += self.normal * pressing;
+            pressing
+        };
+        if self.friction == 0.0 || pressing <= 0.0 {
             return;
         }
         let limit = self.friction * pressing;

@@ -7,7 +7,7 @@
 
 use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use physics::fields::{self, Field};
-use physics::{Endpoint, Particle, Ramp, Spring, Tie, TieKind, Vector};
+use physics::{Body, Endpoint, Joint, Motor, Particle, Ramp, Shape, Spring, Tie, TieKind, Vector};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -23,6 +23,7 @@ pub(crate) enum New {
     Rod,
     String,
     Ramp,
+    Body,
 }
 
 impl New {
@@ -33,6 +34,7 @@ impl New {
             Self::Rod => "add_rod",
             Self::String => "add_string",
             Self::Ramp => "add_ramp",
+            Self::Body => "add_body",
         }
     }
 
@@ -44,6 +46,7 @@ impl New {
             Self::Rod => format!("rod{n}"),
             Self::String => format!("string{n}"),
             Self::Ramp => format!("r{n}"),
+            Self::Body => format!("body{n}"),
         }
     }
 }
@@ -126,6 +129,7 @@ fn free_name(scene: &physics::Scene, new: New) -> String {
             .filter(|t| t.kind == TieKind::String)
             .count(),
         New::Ramp => scene.ramps.len(),
+        New::Body => scene.bodies.len(),
     };
     let names = all_names(scene).count();
     first_free(new, count + 1, names, |name| taken(scene, name)).1
@@ -240,9 +244,139 @@ pub(crate) fn add(
             changed.ramps.push(ramp);
             What::Ramp(name)
         }
+        New::Body => {
+            changed
+                .bodies
+                .push(body_from(method, name.clone(), &given)?);
+            What::Body(name)
+        }
     };
     scene.borrow_mut().inner = checked(changed)?;
     SceneObject::of(scene.clone(), what)
+}
+
+/// A body from `add_body`'s keywords: the file's keys, its `shape` (`"box"`, or
+/// `"polygon"`; left out, a polygon when `vertices` are given) and `vertices` as pairs.
+fn body_from(method: &str, name: String, given: &[(String, Bound<'_, PyAny>)]) -> PyResult<Body> {
+    let find = |key: &str| given.iter().find(|(k, _)| k == key).map(|(_, v)| v);
+    let vertices = find("vertices")
+        .map(|v| {
+            v.extract::<Vec<[f64; 2]>>().map_err(|_| {
+                PyTypeError::new_err(format!(
+                    "{method}(): vertices must be a list of (x, y) pairs, or an (n, 2) array"
+                ))
+            })
+        })
+        .transpose()?;
+    let shape = match find("shape") {
+        Some(shape) => shape.extract::<String>().map_err(|_| {
+            PyTypeError::new_err(format!("{method}(): shape must be \"box\" or \"polygon\""))
+        })?,
+        None if vertices.is_some() => "polygon".to_owned(),
+        None => "box".to_owned(),
+    };
+    let mut body = Body::rectangle(name, 0.0, 0.0, 0.0);
+    match shape.as_str() {
+        "box" if vertices.is_some() => {
+            return Err(crate::scene_error(format!(
+                "{method}(): a box has width and height, not vertices (shape=\"polygon\")"
+            )));
+        }
+        "box" => {}
+        "polygon" => {
+            let corners = vertices.ok_or_else(|| {
+                PyTypeError::new_err(format!(
+                    "{method}() missing required keyword argument: 'vertices'"
+                ))
+            })?;
+            body.shape = Shape::Polygon(corners.into_iter().map(physics::DVec2::from).collect());
+        }
+        other => {
+            return Err(crate::scene_error(format!(
+                "{method}(): shape must be \"box\" or \"polygon\", got \"{other}\""
+            )));
+        }
+    }
+    if find("mass").is_some() && find("density").is_some() {
+        return Err(crate::scene_error(format!(
+            "{method}(): give a mass or a density, not both"
+        )));
+    }
+    fill(
+        method,
+        fields::BODY,
+        &["shape", "vertices", "static_friction"],
+        &mut body,
+        given,
+    )?;
+    if let Some(value) = find("static_friction") {
+        body.static_friction = Some(number(value, &format!("{method}(): static_friction"))?);
+    }
+    Ok(body)
+}
+
+/// The joint's motor from `{"torque": τ}` or `{"spin": ω, "max_torque": τ}`.
+fn motor(method: &str, value: &Bound<'_, PyAny>) -> PyResult<Motor> {
+    let wrong = || {
+        PyTypeError::new_err(format!(
+            "{method}(): motor must be {{\"torque\": N·m}} or {{\"spin\": rad/s, \"max_torque\": N·m}}"
+        ))
+    };
+    let table = value.cast::<PyDict>().map_err(|_| wrong())?;
+    let get = |key: &str| -> PyResult<Option<f64>> {
+        table
+            .get_item(key)?
+            .map(|v| number(&v, &format!("{method}(): motor's {key}")))
+            .transpose()
+    };
+    match (
+        get("torque")?,
+        get("spin")?,
+        get("max_torque")?,
+        table.len(),
+    ) {
+        (Some(torque), None, None, 1) => Ok(Motor::Torque(torque)),
+        (None, Some(spin), Some(max_torque), 2) => Ok(Motor::Spin { spin, max_torque }),
+        _ => Err(wrong()),
+    }
+}
+
+/// Adds a pin, a hinge or a pulley to `scene` (its place among the joints the one a file
+/// reads it into: pins, then hinges, then pulleys); returns its name.
+pub(crate) fn add_joint(
+    scene: &Bound<'_, Scene>,
+    method: &str,
+    mut joint: Joint,
+    (motor_value, limits): (Option<&Bound<'_, PyAny>>, Option<(f64, f64)>),
+) -> PyResult<String> {
+    let mut changed = scene.borrow().inner.clone();
+    if joint.name.is_empty() {
+        let kind = joint.kind_str();
+        let from = changed
+            .joints
+            .iter()
+            .filter(|j| j.kind_str() == kind)
+            .count()
+            + 1;
+        joint.name = (from..=from + all_names(&changed).count())
+            .map(|n| format!("{kind}{n}"))
+            .find(|n| !taken(&changed, n))
+            .unwrap_or_default();
+    }
+    if let Some(value) = motor_value {
+        joint.motor = Some(motor(method, value)?);
+    }
+    joint.limits = limits;
+    let rank = |j: &Joint| match j.kind_str() {
+        "pin" => 0,
+        "hinge" => 1,
+        _ => 2,
+    };
+    let at = changed.joints.partition_point(|j| rank(j) <= rank(&joint));
+    let name = joint.name.clone();
+    changed.joints.insert(at, joint);
+    scene.borrow_mut().inner = checked(changed)?;
+    Ok(name)
 }
 
 /// Adds a force of one's own to `scene`; returns its name (`force1`, … where free).

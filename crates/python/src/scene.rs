@@ -622,6 +622,88 @@ impl Scene {
         crate::build::add(&slf, crate::build::New::Ramp, name, fields.as_ref())
     }
 
+    /// Adds a rigid body and returns it: `shape="box"` with `width` and `height`, or a
+    /// polygon's `vertices` (counter-clockwise pairs, in its own frame), `mass` or
+    /// `density`, `position` of the centroid, and the file's other keys (`angle`,
+    /// `velocity`, `spin`, `restitution`, `friction`, `static_friction`, `fixed`).
+    #[pyo3(signature = (name=None, **fields))]
+    fn add_body(
+        slf: Bound<'_, Self>,
+        name: Option<String>,
+        fields: Option<Bound<'_, PyDict>>,
+    ) -> PyResult<SceneObject> {
+        crate::build::add(&slf, crate::build::New::Body, name, fields.as_ref())
+    }
+
+    /// Adds a pin holding `body` to the world at the point `at` (on or off the body);
+    /// `motor` `{"torque": N·m}` or `{"spin": rad/s, "max_torque": N·m}`, `limits`
+    /// (lower, upper) in degrees. Returns its name.
+    #[pyo3(signature = (name=None, *, body, at, motor=None, limits=None))]
+    fn add_pin(
+        slf: Bound<'_, Self>,
+        name: Option<String>,
+        body: String,
+        at: (f64, f64),
+        motor: Option<Bound<'_, PyAny>>,
+        limits: Option<(f64, f64)>,
+    ) -> PyResult<String> {
+        let joint = physics::Joint::pin(name.unwrap_or_default(), body, [at.0, at.1]);
+        crate::build::add_joint(&slf, "add_pin", joint, (motor.as_ref(), limits))
+    }
+
+    /// Adds a hinge: bodies `a` and `b` share the point `at`; `motor` drives b against a,
+    /// `limits` bound b's turn against a's (degrees). Returns its name.
+    #[pyo3(signature = (name=None, *, a, b, at, motor=None, limits=None))]
+    fn add_hinge(
+        slf: Bound<'_, Self>,
+        name: Option<String>,
+        a: String,
+        b: String,
+        at: (f64, f64),
+        motor: Option<Bound<'_, PyAny>>,
+        limits: Option<(f64, f64)>,
+    ) -> PyResult<String> {
+        let joint = physics::Joint::hinge(name.unwrap_or_default(), a, b, [at.0, at.1]);
+        crate::build::add_joint(&slf, "add_hinge", joint, (motor.as_ref(), limits))
+    }
+
+    /// Adds a pulley: an ideal string from body `a` over a wheel of `radius` m at
+    /// `position` to body `b`; the wheel's `mass` (kg, 0: massless) and `inertia`
+    /// (I/(m r²), 0.5 a disc). Returns its name.
+    #[pyo3(signature = (name=None, *, a, b, position, radius, mass=0.0, inertia=0.5))]
+    #[expect(
+        clippy::too_many_arguments,
+        reason = "the scene file's keys, as keywords"
+    )]
+    fn add_pulley(
+        slf: Bound<'_, Self>,
+        name: Option<String>,
+        a: String,
+        b: String,
+        position: (f64, f64),
+        radius: f64,
+        mass: f64,
+        inertia: f64,
+    ) -> PyResult<String> {
+        let mut joint = physics::Joint::pulley(
+            name.unwrap_or_default(),
+            (a, b),
+            [position.0, position.1],
+            radius,
+            mass,
+        );
+        if let physics::JointKind::Pulley { inertia: i, .. } = &mut joint.kind {
+            *i = inertia;
+        }
+        crate::build::add_joint(&slf, "add_pulley", joint, (None, None))
+    }
+
+    /// The pins', hinges' and pulleys' names, in the order a file reads them.
+    #[getter]
+    fn joints(&self) -> Vec<String> {
+        self.inner.joints.iter().map(|j| j.name.clone()).collect()
+    }
+
     /// Adds a force of one's own (`[[force]]`) and returns its name: `fx` and `fy`
     /// expressions (N) of x, y, vx, vy, t, m, q; `on` a particle's name or a list of
     /// them (every particle when left out); `potential` (J, of x, y, m, q), booked as

@@ -82,6 +82,45 @@ class Scene:
         """Adds a string: ``from_`` and ``to``; ``length`` defaults to the ends' distance."""
     def add_ramp(self, name: Optional[str] = None, **fields: Any) -> SceneObject:
         """Adds a ramp: ``from_`` and ``to`` (points), ``friction``, ``static_friction``, …"""
+    def add_body(self, name: Optional[str] = None, **fields: Any) -> SceneObject:
+        """Adds a rigid body (``shape="box"`` with ``width``, ``height``, or ``vertices``;
+        ``mass`` or ``density``; ``position``; the file's other keys) and returns it."""
+    def add_pin(
+        self,
+        name: Optional[str] = None,
+        *,
+        body: str,
+        at: Tuple[float, float],
+        motor: Optional[Mapping[str, float]] = None,
+        limits: Optional[Tuple[float, float]] = None,
+    ) -> str:
+        """Adds a pin holding ``body`` to the world at ``at``; returns its name."""
+    def add_hinge(
+        self,
+        name: Optional[str] = None,
+        *,
+        a: str,
+        b: str,
+        at: Tuple[float, float],
+        motor: Optional[Mapping[str, float]] = None,
+        limits: Optional[Tuple[float, float]] = None,
+    ) -> str:
+        """Adds a hinge: bodies ``a`` and ``b`` share the point ``at``; returns its name."""
+    def add_pulley(
+        self,
+        name: Optional[str] = None,
+        *,
+        a: str,
+        b: str,
+        position: Tuple[float, float],
+        radius: float,
+        mass: float = 0.0,
+        inertia: float = 0.5,
+    ) -> str:
+        """Adds a pulley: a string from ``a`` over a wheel at ``position`` to ``b``."""
+    @property
+    def joints(self) -> List[str]:
+        """The pins', hinges' and pulleys' names."""
     def add_force(
         self,
         name: Optional[str] = None,

@@ -18,4 +18,7 @@ frame = traj.to_pandas()
 table = newtonlab.sweep(scene, vary={"Ball.mass": [1.0, 2.0]}, until=1.0, measure="max Ball.y")
 force: str = scene.add_force(on="Ball", fx="-0.1*vx", fy="0.2*sin(t)")
 joined = newtonlab.Table.concat([table, table])
-print(highest, times.shape, events, len(names), frame.shape, len(table), ball.mass, force, len(joined))
+board = scene.add_body(name="board", width=1.0, height=0.1, mass=2.0, position=(3.0, 1.0))
+nail: str = scene.add_pin(body="board", at=(2.5, 1.0), motor={"torque": 0.5})
+print(highest, times.shape, events, len(names), frame.shape, len(table), ball.mass, force, len(joined),
+      board.mass, nail, scene.joints)

@@ -90,7 +90,7 @@ fn bad_forces_are_refused_in_words() {
         ),
         (
             "fx = \"-x\"\npotential = \"x^2\"",
-            "−∇U is (-2.000000, -0.000000) N but the force is (-1.000000, 0.000000) N",
+            "−∇U is (-2.000000, 0.000000) N but the force is (-1.000000, 0.000000) N",
         ),
         (
             "fx = \"-x\"\npotential = \"vx\"",

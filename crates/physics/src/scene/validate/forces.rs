@@ -78,10 +78,10 @@ impl Checker<'_> {
                         "scene-force-potential-mismatch",
                         &[
                             ("particle", &particle.name),
-                            ("ux", &format!("{:.6}", slope.x)),
-                            ("uy", &format!("{:.6}", slope.y)),
-                            ("fx", &format!("{:.6}", f.x)),
-                            ("fy", &format!("{:.6}", f.y)),
+                            ("ux", &six_places(slope.x)),
+                            ("uy", &six_places(slope.y)),
+                            ("fx", &six_places(f.x)),
+                            ("fy", &six_places(f.y)),
                         ],
                     );
                     self.report(s, "potential", &words);
@@ -134,4 +134,19 @@ fn minus_gradient(potential: &Law, at: At) -> DVec2 {
     let dx = (u(DVec2::new(h, 0.0)) - u(DVec2::new(-h, 0.0))) / (2.0 * h);
     let dy = (u(DVec2::new(0.0, h)) - u(DVec2::new(0.0, -h))) / (2.0 * h);
     -DVec2::new(dx, dy)
+}
+
+/// `x` to six decimal places, a value that rounds to zero written without a sign (not
+/// "-0.000000").
+fn six_places(x: f64) -> String {
+    let text = format!("{x:.6}");
+    if text
+        .trim_start_matches('-')
+        .bytes()
+        .all(|b| b == b'0' || b == b'.')
+    {
+        "0.000000".to_owned()
+    } else {
+        text
+    }
 }

@@ -238,11 +238,7 @@ impl Constraints {
                     None => break lambda,
                 }
             };
-            for ((entries, _), l) in rows.iter().zip(&lambda) {
-                for &(p, g) in entries {
-                    a[p] += g * (w[p] * l);
-                }
-            }
+            apply_rows(&rows, &lambda, w, a);
             for (r, &c) in (links..rows.len()).zip(&resting) {
                 if included[r] {
                     pressed[c] = Some(lambda[r] * w[contacts[c].0]);
@@ -334,37 +330,23 @@ impl Constraints {
                 .iter()
                 .any(|&k| self.taut[k] && row.iter().any(|&(p, _)| self.links[k].touches(p)))
         };
-        let mut rows: Vec<Vec<(usize, DVec2)>> = self
+        let mut rows: Vec<(Vec<(usize, DVec2)>, f64)> = self
             .islands
             .iter()
             .filter(touched)
             .flatten()
             .filter(|&&k| self.taut[k])
-            .map(|&k| self.links[k].rows(self.links[k].d(x)))
+            .map(|&k| (self.links[k].rows(self.links[k].d(x)), 0.0))
             .collect();
         if rows.is_empty() {
             return None;
         }
-        rows.push(row.to_vec());
-        let m = rows.len();
-        let mut matrix = vec![0.0; m * m];
-        for (r, first) in rows.iter().enumerate() {
-            for (s, second) in rows.iter().enumerate() {
-                matrix[r * m + s] = weighted_dot(first, second, w);
-            }
-        }
-        let mut lambda: Vec<f64> = rows
-            .iter()
-            .map(|entries| -entries.iter().map(|&(p, g)| g.dot(v[p])).sum::<f64>())
-            .collect();
-        lambda[m - 1] = 0.0;
-        solve(m, &mut matrix, &mut lambda);
-        for (entries, l) in rows.iter().zip(&lambda) {
-            for &(p, g) in entries {
-                v[p] += g * (w[p] * l);
-            }
-        }
-        Some(lambda[m - 1])
+        // The contact's rate is kept as it is: its offset cancels it exactly.
+        let separation: f64 = row.iter().map(|&(p, g)| g.dot(v[p])).sum();
+        rows.push((row.to_vec(), -separation));
+        let lambda = solve_rows(&rows, &vec![true; rows.len()], w, v);
+        apply_rows(&rows, &lambda, w, v);
+        lambda.last().copied()
     }
 
     /// Whether every link already holds at `x` and `v` to rounding: each rod (and each
@@ -613,6 +595,15 @@ fn solve_rows(
     }
     solve(m, &mut matrix, &mut b);
     b
+}
+
+/// Adds W Jᵀ Λ to `out` (velocities or accelerations): each row's Λ along its entries.
+fn apply_rows(rows: &[(Vec<(usize, DVec2)>, f64)], lambda: &[f64], w: &[f64], out: &mut [DVec2]) {
+    for ((entries, _), l) in rows.iter().zip(lambda) {
+        for &(p, g) in entries {
+            out[p] += g * (w[p] * l);
+        }
+    }
 }
 
 /// Σ wₚ g·h over the particles two rows of J share.

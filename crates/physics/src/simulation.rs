@@ -646,6 +646,10 @@ impl Simulation {
             Impact::Obstacle(p, _) => vec![(p, normal)],
             Impact::Pair(i, j) => vec![(i, -normal), (j, normal)],
         };
+        let constraints = &self.forces.constraints;
+        if !row.iter().any(|&(p, _)| constraints.touches(p)) {
+            return; // nothing it struck is tied
+        }
         let before = self.state.velocity.clone();
         let Some(further) = self.forces.constraints.answer_impact(
             &self.state.position,

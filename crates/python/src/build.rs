@@ -132,21 +132,40 @@ fn free_name(scene: &physics::Scene, new: New) -> String {
         New::Body => scene.bodies.len(),
     };
     let names = all_names(scene).count();
-    first_free(new, count + 1, names, |name| taken(scene, name)).1
+    first_free(
+        |n| new.default_name(n),
+        count + 1,
+        names,
+        |name| taken(scene, name),
+    )
+    .1
 }
 
-/// The first name of kind `new` from the `from`-th on that is not `taken`, with its
+/// The first of `prefix`1, `prefix`2, … from the `from`-th on that no object of `scene`
+/// has: a joint's or a force's name, as a file would give it.
+fn free_named(scene: &physics::Scene, prefix: &str, from: usize) -> String {
+    let names = all_names(scene).count();
+    first_free(
+        |n| format!("{prefix}{n}"),
+        from,
+        names,
+        |name| taken(scene, name),
+    )
+    .1
+}
+
+/// The first name `name(n)` from the `from`-th on that is not `taken`, with its
 /// number: one of the next `names + 1` is free when `names` names are taken.
 fn first_free(
-    new: New,
+    name: impl Fn(usize) -> String,
     from: usize,
     names: usize,
     taken: impl Fn(&str) -> bool,
 ) -> (usize, String) {
     (from..=from + names)
-        .map(|n| (n, new.default_name(n)))
+        .map(|n| (n, name(n)))
         .find(|(_, name)| !taken(name))
-        .unwrap_or_else(|| (from, new.default_name(from)))
+        .unwrap_or_else(|| (from, name(from)))
 }
 
 fn taken(scene: &physics::Scene, name: &str) -> bool {
@@ -358,10 +377,7 @@ pub(crate) fn add_joint(
             .filter(|j| j.kind_str() == kind)
             .count()
             + 1;
-        joint.name = (from..=from + all_names(&changed).count())
-            .map(|n| format!("{kind}{n}"))
-            .find(|n| !taken(&changed, n))
-            .unwrap_or_default();
+        joint.name = free_named(&changed, kind, from);
     }
     if let Some(value) = motor_value {
         joint.motor = Some(motor(method, value)?);
@@ -388,14 +404,7 @@ pub(crate) fn add_force(
     potential: Option<String>,
 ) -> PyResult<String> {
     let mut changed = scene.borrow().inner.clone();
-    // One of the next (names + 1) numbers is free when that many names are taken.
-    let name = name.unwrap_or_else(|| {
-        let from = changed.forces.len() + 1;
-        (from..=from + all_names(&changed).count())
-            .map(|n| format!("force{n}"))
-            .find(|n| !taken(&changed, n))
-            .unwrap_or_default()
-    });
+    let name = name.unwrap_or_else(|| free_named(&changed, "force", changed.forces.len() + 1));
     let on = match on {
         None => Vec::new(),
         Some(one) if one.is_instance_of::<pyo3::types::PyString>() => vec![one.extract()?],
@@ -479,9 +488,12 @@ pub(crate) fn add_particles(
     let mut next = changed.particles.len() + 1;
     let mut names = Vec::with_capacity(n);
     for (i, position) in positions.into_iter().enumerate() {
-        let (number, name) = first_free(New::Particle, next, taken.len(), |name| {
-            taken.contains(name)
-        });
+        let (number, name) = first_free(
+            |n| New::Particle.default_name(n),
+            next,
+            taken.len(),
+            |name| taken.contains(name),
+        );
         next = number + 1;
         taken.insert(name.clone());
         let mut particle = Particle::new(name.clone(), masses[i]);

@@ -146,12 +146,19 @@ impl Edit {
     pub fn words(self) -> String {
         match self {
             Self::Set { kind, key } => {
-                let field = tr(&crate::inspector::field_message(kind, key));
+                let field = tr(&field_message(kind, key));
                 tr_with("edit-set", &[("what", Arg::Text(&field))])
             }
             other => tr(other.message()),
         }
     }
+}
+
+/// The message of a field's label in the inspector (`field-particle-mass`); its help is
+/// the same with `-help`. English says what the field table says (a test holds them
+/// equal), German and Spanish translate it; the scene file's key stays the same.
+pub fn field_message(section: &str, key: &str) -> String {
+    format!("field-{section}-{}", key.replace('_', "-"))
 }
 
 #[cfg(test)]
@@ -170,9 +177,6 @@ mod tests {
             kind: "particle",
             key: "mass",
         };
-        assert!(
-            i18n::has(&crate::inspector::field_message("particle", "mass")),
-            "{set:?}"
-        );
+        assert!(i18n::has(&field_message("particle", "mass")), "{set:?}");
     }
 }

@@ -14,7 +14,7 @@ use physics::{Endpoint, FieldRef, Rule, Scene, Section, Vector, check_value};
 use crate::action::Action;
 use crate::canvas::Selection;
 use crate::document::Document;
-use crate::edit::Edit;
+use crate::edit::{Edit, field_message};
 use crate::format;
 use crate::i18n::{Arg, tr, tr_with};
 use crate::run_loop::Runner;
@@ -817,13 +817,6 @@ fn table<T: Clone + 'static>(
         }
     }
     problem
-}
-
-/// The message of a field's label in the inspector (`field-particle-mass`); its help is
-/// the same with `-help`. English says what the field table says (a test holds them
-/// equal), German and Spanish translate it; the scene file's key stays the same.
-pub fn field_message(section: &str, key: &str) -> String {
-    format!("field-{section}-{}", key.replace('_', "-"))
 }
 
 /// The scene file's name of a section's kind: `world`, `particle`, `rod`, …

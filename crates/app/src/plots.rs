@@ -663,7 +663,7 @@ impl Read {
 }
 
 /// The particle-steps a graph may spend locating its marks in the run, at most (a
-/// particle-step costs some 0.1–0.3 µs, so a fraction of a second once a run stops): a
+/// fraction of a second once a run stops): a
 /// pendulum's marks are all located, a large scene's are read off the samples past it.
 const LOCATING_BUDGET: f64 = 2e6;
 

@@ -107,8 +107,8 @@ pub struct Runner {
     /// The run's keyframes, to go back to any step of it.
     pub timeline: Option<Timeline>,
     /// The readouts' energies and momentum, and the step and time they are of: summing
-    /// a large gravitating scene's potential energy costs a tree walk (10 ms for 20,000
-    /// stars), so a step's is computed once, by the recording when it samples that step,
+    /// a large gravitating scene's potential energy costs a tree walk (longer than a frame
+    /// for a star cluster), so a step's is computed once, by the recording when it samples that step,
     /// and not again at every frame that shows it.
     readout: RefCell<Option<(u64, f64, Diagnostics)>>,
     /// Whether the physics steps on while the app draws (desktop only: see

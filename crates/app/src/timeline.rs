@@ -14,9 +14,9 @@
 use physics::Simulation;
 
 /// What all keyframes together may take, bytes; a browser tab gets less. Chosen so that a
-/// ten-minute recording of the 1,000-ball pit (83 kB a keyframe) keeps a keyframe every
-/// 100 steps, and going back anywhere in it replays at most 99 steps (`newtonlab bench
-/// --scene scrub --seconds 600`); at 256 MiB it was every 200 steps, 123 ms at worst.
+/// ten-minute recording of the 1,000-ball pit keeps a keyframe every 100 steps, and going
+/// back anywhere in it replays at most 99 steps (`newtonlab bench --scene scrub --seconds
+/// 600`; docs/performance.md has the figures).
 #[cfg(not(target_arch = "wasm32"))]
 const BUDGET_BYTES: usize = 512 << 20;
 #[cfg(target_arch = "wasm32")]

@@ -39,7 +39,7 @@ fn message<'a>(source: &'a str, id: &str) -> Option<&'a str> {
 fn every_field_has_its_words_in_every_language() {
     let mut words = Vec::new();
     for (section, key, label, help) in every_field() {
-        let id = newtonlab_app::inspector::field_message(section, key);
+        let id = newtonlab_app::edit::field_message(section, key);
         words.push((id.clone(), label));
         words.push((format!("{id}-help"), help));
     }

@@ -96,7 +96,7 @@ fn check_args(args: &BenchArgs) -> Result<(), Failure> {
             args.seconds
         )));
     }
-    // Threads beyond a few per core only cost their start (10,000 took 5.8 s).
+    // Threads beyond a few per core only cost their start, seconds for thousands.
     if let Some(threads) = args.threads
         && !(1..=MOST_THREADS).contains(&threads)
     {

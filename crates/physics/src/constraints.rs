@@ -30,9 +30,57 @@
 
 use glam::DVec2;
 
-use crate::forces::spring::End;
-use crate::scene::{Scene, Section, TieKind};
 use crate::tuning::{FULL_LENGTH, PROJECTION_ITERATIONS, PROJECTION_TOLERANCE};
+
+/// What a [`crate::Tie`] holds its ends to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum TieKind {
+    /// `[[rod]]`: exactly its length, pushing or pulling.
+    Rod,
+    /// `[[string]]`: at most its length, only pulling; slack when shorter.
+    String,
+}
+
+impl TieKind {
+    /// The scene-file name: `rod` or `string`.
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Self::Rod => "rod",
+            Self::String => "string",
+        }
+    }
+}
+
+/// One end of a rod, string or spring in runtime form.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum End {
+    /// The particle at this index.
+    Particle(usize),
+    /// A fixed point, metres.
+    Point(DVec2),
+}
+
+impl End {
+    pub fn position(self, x: &[DVec2]) -> DVec2 {
+        match self {
+            Self::Particle(i) => x[i],
+            Self::Point(p) => p,
+        }
+    }
+
+    pub fn velocity(self, v: &[DVec2]) -> DVec2 {
+        match self {
+            Self::Particle(i) => v[i],
+            Self::Point(_) => DVec2::ZERO,
+        }
+    }
+
+    pub fn add_force(self, force: &mut [DVec2], f: DVec2) {
+        if let Self::Particle(i) = self {
+            force[i] += f;
+        }
+    }
+}
 
 /// A link in runtime form.
 #[derive(Clone, Copy, Debug)]
@@ -47,7 +95,7 @@ pub(crate) struct Link {
 }
 
 impl Link {
-    fn d(&self, x: &[DVec2]) -> DVec2 {
+    pub fn d(&self, x: &[DVec2]) -> DVec2 {
         self.to.position(x) - self.from.position(x)
     }
 
@@ -115,20 +163,8 @@ pub(crate) struct Constraints {
 }
 
 impl Constraints {
-    /// The links of a valid scene, with `w` each particle's 1/m.
-    pub fn new(scene: &Scene, w: &[f64]) -> Self {
-        let end = |end| End::of(scene, end);
-        let links: Vec<Link> = scene
-            .ties
-            .iter()
-            .map(|t| Link {
-                from: end(&t.from),
-                to: end(&t.to),
-                length: t.length,
-                kind: t.kind,
-                restitution: t.restitution,
-            })
-            .collect();
+    /// The constraints of these links, with `w` each particle's 1/m.
+    pub fn new(links: Vec<Link>, w: &[f64]) -> Self {
         let taut = links.iter().map(|l| !l.is_string()).collect();
         let islands = islands(&links, w);
         Self {
@@ -671,57 +707,6 @@ fn solve(m: usize, matrix: &mut [f64], b: &mut [f64]) {
         }
         b[i] = s / matrix[i * m + i];
     }
-}
-
-/// Whether the rods and strings of a scene (otherwise valid) can all have their lengths
-/// at its start: the positions are projected onto them, and a set that still misses is
-/// reported on the link that misses most, with the reason.
-pub(crate) fn unsatisfiable(scene: &Scene) -> Option<(Section, String)> {
-    if scene.ties.is_empty() {
-        return None;
-    }
-    let w: Vec<f64> = scene
-        .particles
-        .iter()
-        .map(|p| if p.fixed { 0.0 } else { 1.0 / p.mass })
-        .collect();
-    let constraints = Constraints::new(scene, &w);
-    let mut x: Vec<DVec2> = scene
-        .particles
-        .iter()
-        .map(|p| p.position.to_dvec2())
-        .collect();
-    let mut v = vec![DVec2::ZERO; x.len()];
-    let worst = constraints.project(&mut x, &mut v, &w);
-    if worst <= 1e-9 && x.iter().all(|p| p.is_finite()) {
-        return None;
-    }
-    let miss = |k: usize| {
-        let link = &constraints.links[k];
-        let length = link.d(&x).length();
-        let over = if link.is_string() {
-            (length - link.length).max(0.0)
-        } else {
-            (length - link.length).abs()
-        };
-        if over.is_finite() {
-            over / link.length
-        } else {
-            f64::INFINITY
-        }
-    };
-    let k = (0..constraints.links.len()).max_by(|&i, &j| miss(i).total_cmp(&miss(j)))?;
-    let tie = &scene.ties[k];
-    Some((
-        Section::Tie(k),
-        crate::scene::say(
-            "scene-unsatisfiable",
-            &[
-                ("length", &tie.length.to_string()),
-                ("miss", &format!("{:.3e}", miss(k) * tie.length)),
-            ],
-        ),
-    ))
 }
 
 #[cfg(test)]

@@ -87,7 +87,9 @@ mod examples;
 mod field;
 mod forces;
 pub mod generated;
+mod impact;
 mod integrators;
+mod method;
 mod parallel;
 mod profile;
 mod quantity;
@@ -103,25 +105,29 @@ mod turning;
 pub mod units;
 
 pub use diagnostics::{Diagnostics, Energy, ParticleReadout};
-pub use events::{Direction, Event, Located, Turn, Watch};
+pub use events::{Located, Watch};
 pub use examples::{EXAMPLES, Example, example};
 pub use field::{FieldReadout, field_at};
 pub use glam::DVec2;
-pub use integrators::{Integrator, UnknownIntegrator};
+pub use impact::{ImpactRecord, ImpactTarget};
+pub use method::{Integrator, UnknownIntegrator};
 pub use parallel::every_core;
 pub use profile::{Clock, Profile, Stage};
-pub use quantity::{Anchor, JointOf, Link, LinkOf, Of, Quantity, Reading, Total, angle_from_down};
+pub use quantity::{
+    Anchor, Direction, Event, JointOf, Link, LinkOf, Of, Quantity, Reading, Total, Turn,
+    angle_from_down,
+};
 pub use scene::error::{LoadError, Problem};
 pub use scene::fields;
 pub use scene::format::{SceneFormat, closest as closest_key};
+pub use scene::series::{MAX_STEPS, MAX_WORK};
 pub use scene::{
     Body, Bounds, Color, Endpoint, FieldRef, Follow, Force, Graph, Instruments, Joint, JointKind,
     Lesson, Moments, Motor, PairForces, Particle, Protractor, Question, Ramp, Rule, Scene, Section,
     Series, Settings, Shape, Slider, Spring, Stopwatch, Tie, TieKind, Trigger, Vector, Verdict,
     View, World, check_value, lesson, moments,
 };
-pub use simulation::{ImpactRecord, ImpactTarget, Ledger, Simulation, SimulationError};
+pub use simulation::{Ledger, Simulation, SimulationError};
 pub use trajectory::{
-    IMPACT_COLUMNS, LEDGER_COLUMNS, MAX_NUMBERS, MAX_STEPS, MAX_WORK, MOTOR_WORK_COLUMN, Plan, Row,
-    Trajectory,
+    IMPACT_COLUMNS, LEDGER_COLUMNS, MAX_NUMBERS, MOTOR_WORK_COLUMN, Plan, Row, Trajectory,
 };

@@ -1,13 +1,15 @@
 //! The quantities a run can be asked for, by the names of `run`'s CSV columns: what
 //! graphs plot, events watch and measures read (`docs/cli.md`, "Quantities"). A
 //! [`Quantity`] names its object; [`Quantity::reading`] finds the object in a simulation
-//! once, and [`Simulation::read`] then reads the value at any state.
+//! once, and [`crate::Simulation::read`] then reads the value at any state.
+
+mod event;
 
 use std::fmt;
 
 use glam::DVec2;
 
-use crate::Simulation;
+pub use event::{Direction, Event, Turn};
 
 /// A quantity of one particle.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -267,13 +269,13 @@ impl Quantity {
             }
             return match Of::ALL.into_iter().find(|of| of.key() == key) {
                 Some(of) => Ok(Self::Particle(name.to_owned(), of)),
-                None => Err(crate::scene::say(
+                None => Err(newtonlab_i18n::tr_text(
                     "scene-quantity-of-particle",
                     &[("text", text), ("keys", &Of::ALL.map(Of::key).join(", "))],
                 )),
             };
         }
-        Err(crate::scene::say(
+        Err(newtonlab_i18n::tr_text(
             "scene-not-a-quantity",
             &[
                 ("text", text),
@@ -293,58 +295,8 @@ impl Quantity {
         }
     }
 
-    /// The quantity in `simulation`, its object found by name, to read at any state with
-    /// [`Simulation::read`].
-    ///
-    /// # Errors
-    /// The object it names is not there (with the names there are), or a tension is asked
-    /// of a spring.
-    pub fn reading(&self, simulation: &Simulation) -> Result<Reading, String> {
-        self.find(&Names {
-            particles: simulation.names(),
-            ties: simulation.tie_names(),
-            springs: simulation.spring_names(),
-            bodies: simulation.body_names(),
-            joints: simulation.joint_names(),
-            pulleys: &(0..simulation.joint_names().len())
-                .filter(|&j| simulation.joint_is_pulley(j))
-                .map(|j| simulation.joint_names()[j].clone())
-                .collect::<Vec<_>>(),
-        })
-    }
-
-    /// Whether `scene` has the object the quantity names.
-    ///
-    /// # Errors
-    /// As [`Self::reading`].
-    pub fn check_in(&self, scene: &crate::Scene) -> Result<(), String> {
-        let names = |names: Vec<&String>| names.into_iter().cloned().collect::<Vec<String>>();
-        let particles = names(scene.particles.iter().map(|p| &p.name).collect());
-        let ties = names(scene.ties.iter().map(|t| &t.name).collect());
-        let springs = names(scene.springs.iter().map(|s| &s.name).collect());
-        let bodies = names(scene.bodies.iter().map(|b| &b.name).collect());
-        let joints = names(scene.joints.iter().map(|j| &j.name).collect());
-        let pulleys = names(
-            scene
-                .joints
-                .iter()
-                .filter(|j| j.is_pulley())
-                .map(|j| &j.name)
-                .collect(),
-        );
-        self.find(&Names {
-            particles: &particles,
-            ties: &ties,
-            springs: &springs,
-            bodies: &bodies,
-            joints: &joints,
-            pulleys: &pulleys,
-        })
-        .map(|_| ())
-    }
-
     /// [`Self::reading`] among the objects of these names, in the simulation's order.
-    fn find(&self, names: &Names<'_>) -> Result<Reading, String> {
+    pub(crate) fn find(&self, names: &Names<'_>) -> Result<Reading, String> {
         let Names {
             particles,
             ties,
@@ -387,7 +339,7 @@ impl Quantity {
                     }
                 }
                 match (find(springs, name), of) {
-                    (Some(_), LinkOf::Tension) => Err(crate::scene::say(
+                    (Some(_), LinkOf::Tension) => Err(newtonlab_i18n::tr_text(
                         "quantity-spring-tension",
                         &[("text", &self.to_string()), ("name", name)],
                     )),
@@ -411,13 +363,13 @@ impl Quantity {
 
 /// The objects' names of a scene or a simulation, by kind, in scene order.
 #[derive(Clone, Copy)]
-struct Names<'a> {
-    particles: &'a [String],
-    ties: &'a [String],
-    springs: &'a [String],
-    bodies: &'a [String],
-    joints: &'a [String],
-    pulleys: &'a [String],
+pub(crate) struct Names<'a> {
+    pub particles: &'a [String],
+    pub ties: &'a [String],
+    pub springs: &'a [String],
+    pub bodies: &'a [String],
+    pub joints: &'a [String],
+    pub pulleys: &'a [String],
 }
 
 /// That `quantity` names `name`, which is not among `names`.
@@ -427,7 +379,7 @@ fn unknown(message: &str, quantity: &Quantity, name: &str, names: &[String]) -> 
     } else {
         names.join(", ")
     };
-    crate::scene::say(
+    newtonlab_i18n::tr_text(
         message,
         &[
             ("text", &quantity.to_string()),
@@ -506,89 +458,16 @@ pub enum Reading {
     },
 }
 
-impl Simulation {
-    /// The value of `reading` in this state, in SI units (degrees for an angle).
-    /// Accelerations are the smooth forces' ([`Self::accelerations`]).
-    pub fn read(&self, reading: Reading) -> f64 {
-        match reading {
-            Reading::Time => self.time(),
-            Reading::Particle(i, of) => {
-                let (x, v) = (self.positions()[i], self.velocities()[i]);
-                match of {
-                    Of::X => x.x,
-                    Of::Y => x.y,
-                    Of::Vx => v.x,
-                    Of::Vy => v.y,
-                    Of::Speed => v.length(),
-                    Of::Ax | Of::Ay => {
-                        let a = self.particle(i, &self.accelerations()).acceleration;
-                        if of == Of::Ax { a.x } else { a.y }
-                    }
-                    Of::KineticEnergy | Of::Angle | Of::Spin | Of::AngularMomentum => {
-                        let p = self.particle(i, &[]);
-                        match of {
-                            Of::Angle => p.angle,
-                            Of::Spin => p.spin,
-                            Of::AngularMomentum => p.angular_momentum,
-                            _ => p.kinetic_energy,
-                        }
-                    }
-                }
-            }
-            Reading::Body(i, of) => {
-                let b = self.body(i);
-                match of {
-                    Of::X => b.position.x,
-                    Of::Y => b.position.y,
-                    Of::Vx => b.velocity.x,
-                    Of::Vy => b.velocity.y,
-                    Of::Speed => b.speed,
-                    Of::Ax => b.acceleration.x,
-                    Of::Ay => b.acceleration.y,
-                    Of::KineticEnergy => b.kinetic_energy,
-                    Of::Angle => b.angle,
-                    Of::Spin => b.spin,
-                    Of::AngularMomentum => b.angular_momentum,
-                }
-            }
-            Reading::Total(total) => {
-                let d = self.diagnostics();
-                match total {
-                    Total::KineticEnergy => d.energy.kinetic,
-                    Total::PotentialEnergy => d.energy.potential(),
-                    Total::TotalEnergy => d.energy.total(),
-                    Total::MomentumX => d.momentum.x,
-                    Total::MomentumY => d.momentum.y,
-                    Total::AngularMomentum => d.angular_momentum,
-                }
-            }
-            Reading::Side {
-                particle,
-                point,
-                normal,
-            } => (self.positions()[particle] - point).dot(normal),
-            Reading::Joint(j, of) => {
-                let joint = self.joint(j);
-                match of {
-                    JointOf::Angle => joint.angle,
-                    JointOf::ForceX => joint.force.x,
-                    JointOf::ForceY => joint.force.y,
-                    JointOf::Torque => joint.torque,
-                    JointOf::TensionA => joint.tensions[0],
-                    JointOf::TensionB => joint.tensions[1],
-                }
-            }
-            Reading::Link(link, of) => {
-                let (from, to) = self.link_ends(link);
-                let d = to - from;
-                match (of, link) {
-                    (LinkOf::Angle, _) => angle_from_down(d),
-                    (LinkOf::Length, _) => d.length(),
-                    (LinkOf::Tension, Link::Tie(k)) => self.tensions()[k],
-                    // Refused by `reading`: a spring's pull is not a tension here.
-                    (LinkOf::Tension, Link::Spring(_)) => f64::NAN,
-                }
-            }
+impl Reading {
+    /// The reading whose value is this one's rate of change, where the simulation has one
+    /// that is exactly that: a position's velocity. (An acceleration read by
+    /// [`crate::Simulation::read`] is the smooth forces' and leaves out a rod's pull, so a
+    /// velocity has none here.)
+    pub fn rate(self) -> Option<Self> {
+        match self {
+            Self::Particle(i, Of::X) => Some(Self::Particle(i, Of::Vx)),
+            Self::Particle(i, Of::Y) => Some(Self::Particle(i, Of::Vy)),
+            _ => None,
         }
     }
 }

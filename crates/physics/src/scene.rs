@@ -14,7 +14,9 @@ pub mod format;
 pub mod instruments;
 mod joint;
 pub mod lesson;
+mod links;
 mod presentation;
+pub mod series;
 mod validate;
 
 use glam::DVec2;
@@ -22,6 +24,7 @@ use glam::DVec2;
 /// numbers are written by the caller as files write them.
 pub(crate) use newtonlab_i18n::tr_text as say;
 
+pub use crate::constraints::TieKind;
 pub use body::{Body, Moments, Shape, moments};
 pub use error::{FieldRef, Section};
 pub use force::Force;
@@ -350,25 +353,6 @@ impl Spring {
     pub fn damping(mut self, damping: f64) -> Self {
         self.damping = damping;
         self
-    }
-}
-
-/// What a [`Tie`] holds its ends to.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum TieKind {
-    /// `[[rod]]`: exactly its length, pushing or pulling.
-    Rod,
-    /// `[[string]]`: at most its length, only pulling; slack when shorter.
-    String,
-}
-
-impl TieKind {
-    /// The scene-file name: `rod` or `string`.
-    pub const fn as_str(self) -> &'static str {
-        match self {
-            Self::Rod => "rod",
-            Self::String => "string",
-        }
     }
 }
 

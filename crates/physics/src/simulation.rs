@@ -25,18 +25,21 @@
 mod books;
 mod coupled;
 mod error;
+mod read;
 mod ties;
 
-pub use books::{ImpactRecord, ImpactTarget, Ledger};
+use crate::impact::{ImpactRecord, ImpactTarget};
+pub use books::Ledger;
 use books::{effective_mass, impact_energy_lost};
 pub use error::SimulationError;
 
 use glam::DVec2;
 
 use crate::contacts::{Contacts, Impact};
-use crate::diagnostics::{self, Diagnostics, ParticleReadout};
+use crate::diagnostics;
 use crate::forces::{ForceModel, Power};
-use crate::integrators::{self, Integrator, Workspace};
+use crate::integrators::{self, Workspace};
+use crate::method::Integrator;
 use crate::profile::{Clock, Profile, Profiler, Stage};
 use crate::scene::error::LoadError;
 use crate::scene::{Particle, Scene, Vector};
@@ -270,83 +273,6 @@ impl Simulation {
             + self.bodies.state_bytes()
     }
 
-    /// Particle names, in scene order.
-    pub fn names(&self) -> &[String] {
-        &self.names
-    }
-
-    /// Positions, metres.
-    pub fn positions(&self) -> &[DVec2] {
-        &self.state.position
-    }
-
-    /// Velocities, metres per second.
-    pub fn velocities(&self) -> &[DVec2] {
-        &self.state.velocity
-    }
-
-    /// The rods' and strings' names, in scene order (as [`Self::tensions`] lists them).
-    pub fn tie_names(&self) -> &[String] {
-        &self.tie_names
-    }
-
-    /// The springs' names, in scene order.
-    pub fn spring_names(&self) -> &[String] {
-        &self.spring_names
-    }
-
-    /// A rod's, string's or spring's `from` and `to` ends.
-    pub fn link_anchors(&self, link: crate::quantity::Link) -> [crate::quantity::Anchor; 2] {
-        let (from, to) = match link {
-            crate::quantity::Link::Tie(k) => {
-                let tie = &self.forces.constraints.links[k];
-                (tie.from, tie.to)
-            }
-            crate::quantity::Link::Spring(k) => {
-                let spring = &self.forces.springs[k];
-                (spring.from, spring.to)
-            }
-        };
-        [from, to].map(|end| match end {
-            crate::forces::spring::End::Particle(i) => crate::quantity::Anchor::Particle(i),
-            crate::forces::spring::End::Point(p) => crate::quantity::Anchor::Point(p),
-        })
-    }
-
-    /// Where a rod's, string's or spring's `from` and `to` ends are now, metres.
-    pub fn link_ends(&self, link: crate::quantity::Link) -> (DVec2, DVec2) {
-        let [from, to] = self.link_anchors(link);
-        (
-            from.position(&self.state.position),
-            to.position(&self.state.position),
-        )
-    }
-
-    /// Radii, metres.
-    pub fn radii(&self) -> &[f64] {
-        &self.radius
-    }
-
-    /// Whether particle `i` is fixed.
-    pub fn is_fixed(&self, i: usize) -> bool {
-        self.forces.is_fixed(i)
-    }
-
-    /// The integration method.
-    pub fn integrator(&self) -> Integrator {
-        self.integrator
-    }
-
-    /// The time step (for `dopri5` the largest step), seconds.
-    pub fn time_step(&self) -> f64 {
-        self.time_step
-    }
-
-    /// Integration steps taken so far (accepted steps for `dopri5`).
-    pub fn steps_taken(&self) -> u64 {
-        self.steps
-    }
-
     /// Advances by one time step.
     ///
     /// # Errors
@@ -373,8 +299,8 @@ impl Simulation {
         observe: Option<&mut Observer<'_>>,
     ) -> Result<(), SimulationError> {
         // Run on a thread of the pool when a step has work to share out: see
-        // `Workers::inside` (entering the pool costs about 30 µs, which a small scene's
-        // step does not win back).
+        // `Workers::inside` (entering the pool costs more than a small scene's step
+        // wins back).
         let shares = self.forces.shares_pairs() || self.state.len() >= crate::tuning::STRIPS_FROM;
         if shares && self.contacts.workers.threads() > 1 {
             let workers = self.contacts.workers.clone();
@@ -888,114 +814,6 @@ impl Simulation {
             time,
             &mut self.work,
         );
-    }
-
-    /// The acceleration of every particle from the smooth forces at this instant, m/s².
-    pub fn accelerations(&self) -> Vec<DVec2> {
-        // Verlet and dopri5 keep the acceleration at the end of a step for the next one.
-        // Dopri5's is at the end state; Verlet's at the end positions and a predicted
-        // velocity, the same when no force depends on velocity (no damping, no friction,
-        // no rods or strings, whose tension holds a centripetal term). A tree evaluation
-        // of 10,000 bodies is saved at every sample the app records.
-        let velocity_free = !self.forces.dissipates() && self.forces.constraints.is_empty();
-        let kept_is_exact = match self.integrator {
-            Integrator::Dopri5 => true,
-            Integrator::Verlet => velocity_free,
-            _ => false,
-        };
-        if kept_is_exact && let Some(kept) = &self.work.start_acceleration {
-            return kept.clone();
-        }
-        let mut a = vec![DVec2::ZERO; self.len()];
-        self.forces.accelerations(
-            self.state.time,
-            &self.state.position,
-            &self.state.velocity,
-            &mut a,
-        );
-        a
-    }
-
-    /// Whether a force of the scene's own has a potential energy ([`crate::Energy::own`]).
-    pub fn has_own_potential(&self) -> bool {
-        self.forces
-            .own
-            .iter()
-            .any(crate::forces::own::OwnForce::has_potential)
-    }
-
-    /// Energies by kind and total momentum at this instant.
-    pub fn diagnostics(&self) -> Diagnostics {
-        let mut diagnostics = diagnostics::measure(&self.forces, &self.state);
-        if let Some(turning) = &self.contacts.turning {
-            let (m, w, r) = (&self.forces.mass, &self.forces.inverse_mass, &self.radius);
-            diagnostics.energy.kinetic += turning.kinetic_energy(m, w, r);
-            diagnostics.angular_momentum += turning.angular_momentum(m, w, r);
-        }
-        if !self.bodies.is_empty() {
-            self.bodies.add_to(&mut diagnostics);
-        }
-        diagnostics
-    }
-
-    /// Everything about particle `i` at this instant; `accelerations` from
-    /// [`Self::accelerations`].
-    pub fn particle(&self, i: usize, accelerations: &[DVec2]) -> ParticleReadout {
-        let mut readout = diagnostics::particle(&self.forces, &self.state, accelerations, i);
-        if let Some(turning) = &self.contacts.turning {
-            let spin = turning.spin[i];
-            readout.spin = spin;
-            readout.angle = turning.angle[i];
-            // A fixed particle, of infinite inertia, has no energy or momentum to count.
-            if !self.forces.is_fixed(i) {
-                let moment = turning.moment(i, &self.forces.mass, &self.radius);
-                readout.rotational_energy = 0.5 * moment * spin * spin;
-                readout.kinetic_energy += readout.rotational_energy;
-                readout.angular_momentum += moment * spin;
-            }
-        }
-        readout
-    }
-
-    /// Whether any particle turns (has a moment of inertia).
-    pub fn turns(&self) -> bool {
-        self.contacts.turning.is_some()
-    }
-
-    /// Whether particle `i` turns.
-    pub fn particle_turns(&self, i: usize) -> bool {
-        self.contacts
-            .turning
-            .as_ref()
-            .is_some_and(|turning| turning.inertia[i] > 0.0)
-    }
-
-    /// Spins, radians per second counter-clockwise (all 0 when nothing turns).
-    pub fn spins(&self) -> Vec<f64> {
-        self.contacts
-            .turning
-            .as_ref()
-            .map_or_else(|| vec![0.0; self.len()], |turning| turning.spin.clone())
-    }
-
-    /// Orientations, degrees counter-clockwise, unwrapped (all 0 when nothing turns).
-    pub fn angles(&self) -> Vec<f64> {
-        self.contacts
-            .turning
-            .as_ref()
-            .map_or_else(|| vec![0.0; self.len()], |turning| turning.angle.clone())
-    }
-
-    /// Total kinetic energy, translational and rotational, joules.
-    fn kinetic_energy(&self) -> f64 {
-        let translational = self.forces.kinetic_energy(&self.state.velocity);
-        self.contacts
-            .turning
-            .as_ref()
-            .map_or(translational, |turning| {
-                let (m, w, r) = (&self.forces.mass, &self.forces.inverse_mass, &self.radius);
-                translational + turning.kinetic_energy(m, w, r)
-            })
     }
 }
 

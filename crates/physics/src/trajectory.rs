@@ -11,9 +11,12 @@
 //! a saved state samples the instants a run from 0 would.
 
 use crate::Integrator;
-use crate::events::{Event, Watch};
+use crate::events::Watch;
+use crate::impact::{ImpactRecord, ImpactTarget};
+use crate::quantity::Event;
+use crate::scene::series::{MAX_STEPS, MAX_WORK, run_size};
 use crate::scene::{Scene, Settings, say};
-use crate::simulation::{ImpactRecord, ImpactTarget, Simulation, SimulationError};
+use crate::simulation::{Simulation, SimulationError};
 
 /// The largest index k of a row's instant k·DT: 2⁵², below which consecutive products
 /// are distinct f64s.
@@ -21,15 +24,6 @@ const MAX_GRID_INDEX: f64 = 4_503_599_627_370_496.0;
 /// The most numbers one run's rows may hold without [`Plan::no_limit`]: 10⁸, some 2 GB of
 /// CSV; beyond this a typo in the interval is likelier than intent.
 pub const MAX_NUMBERS: f64 = 1e8;
-/// The most time steps one run may take without [`Plan::no_limit`]: 10⁸ steps of the
-/// lightest scene take a minute or two here; more is a time step or an end mistyped, and
-/// would look like a hang.
-pub const MAX_STEPS: f64 = 1e8;
-/// The most particle-steps (particles × steps) one run may take without
-/// [`Plan::no_limit`]: 10⁹, a few minutes of the 1,000-ball pit (99 charged particles at
-/// a time step of 1e-9 s for half a second would be 5·10¹⁰, hours).
-pub const MAX_WORK: f64 = 1e9;
-
 /// The ledger's columns, in the order the rows give them. Drag's comes last, after the
 /// residual: it was added after files were read by column position.
 pub const LEDGER_COLUMNS: [&str; 5] = [
@@ -432,15 +426,6 @@ pub fn run_work(scene: &Scene, until: f64) -> Result<f64, String> {
         ));
     }
     Ok(work)
-}
-
-/// A run of `scene` to `until`: its steps, and its particle-steps (the steps times the
-/// moving particles, at least one).
-pub fn run_size(scene: &Scene, until: f64) -> (f64, f64) {
-    let settings = &scene.simulation;
-    let steps = (until - settings.start_time) / settings.time_step;
-    let particles = scene.particles.iter().filter(|p| !p.fixed).count().max(1);
-    (steps, steps * particles as f64)
 }
 
 /// A fixed-step method lands exactly on every sample, so when the interval is not a

@@ -204,8 +204,8 @@ pub(crate) const LEAF: usize = 32;
 pub(crate) const TREE_DEPTH: u32 = 48;
 
 /// Leaves from which a tree's sums are shared out among threads: each leaf's walk and
-/// sums are dear (some 30 µs in the 20,000-star cluster), so even a small tree pays for
-/// the pool, unlike the cheap items of [`MIN_ITEMS`].
+/// sums cost as much as waking a thread, so even a small tree pays for the pool, unlike
+/// the cheap items of [`MIN_ITEMS`] (docs/performance.md, "Threads").
 pub(crate) const SPLIT_LEAVES: usize = 32;
 
 /// Pieces of shared-out work per thread, so that a thread that finishes early takes
@@ -214,9 +214,9 @@ pub(crate) const SPLIT_LEAVES: usize = 32;
 pub(crate) const PIECES_PER_THREAD: usize = 4;
 
 /// Fewer items than this run on the calling thread when it is outside the pool: waking
-/// a thread costs some 30 µs on shared cores. Split from 4,096, the 10,000-ball pit ran
-/// 10 % slower on two threads than on one, and the 1,000-ball pit 25 % slower; from
-/// 16,384 as fast.
+/// a thread costs more than sharing out fewer cheap items wins (the pits measured split
+/// from smaller counts ran slower on two threads than on one: docs/performance.md,
+/// "Threads").
 pub(crate) const MIN_ITEMS: usize = 16_384;
 
 /// [`MIN_ITEMS`] for a step running on a thread of the pool (one of [`STRIPS_FROM`]

@@ -26,8 +26,8 @@ fn projectile(integrator: Integrator, mass: f64, b: f64, c: f64, v0: [f64; 2]) -
 
 /// A 2.5 kg ball thrown at (12, 9) m/s with b = 0.8 kg/s: x(t) = (m v0x/b)(1 − e^(−bt/m)),
 /// y(t) = y0 + (m/b)(v0y + m g/b)(1 − e^(−bt/m)) − (m g/b) t. At t = 0.5, 1, …, 3 s under
-/// rk4 and dopri5 at 1 ms, x and y to 1e-10 relative and the velocity to 1e-9 (the
-/// issue's bar is 1e-8: rk4's error here is some 1e-13); under pefrl to 1e-8 and verlet
+/// rk4 and dopri5 at 1 ms, x and y to 1e-10 relative and the velocity to 1e-9
+/// (rk4's error here is some 1e-13); under pefrl to 1e-8 and verlet
 /// to 1e-5 (second order: (b/m · dt)² over the run).
 #[test]
 fn a_projectile_under_linear_drag_follows_the_exponential() {
@@ -66,7 +66,7 @@ fn a_projectile_under_linear_drag_follows_the_exponential() {
 /// A 0.7 kg ball dropped from rest with c = 0.02 kg/m falls towards its terminal speed
 /// vₜ = √(m g / c) = 18.53 m/s: v(t) = −vₜ tanh(g t / vₜ) and
 /// y(t) = y0 − (vₜ²/g) ln cosh(g t / vₜ); under rk4 at 1 ms, at 1, 2, 3, 4 s, both to
-/// 1e-9 relative (the bar is 1e-8). The ledger books what drag took,
+/// 1e-9 relative. The ledger books what drag took,
 /// m g (y0 − y) − ½ m v², to 1e-9 of the energy at the start, and the residual is
 /// below 1e-9 of it.
 #[test]

@@ -89,7 +89,7 @@ fn pendulum() -> (Scene, f64) {
 /// A bob on a 1 m rod released at rest 60° from the vertical turns at every half period
 /// T/2 = 2 √(L/g) K(sin 30°) and passes the vertical at T/4 + k T/2; rk4 at 1 ms finds
 /// the first eight of each to 1e-8 s (its error over a period is some 1e-12 s: the
-/// tolerance is the for a 1 ms step). The release itself, at rest, is not a
+/// tolerance is what a located event promises at a 1 ms step). The release itself, at rest, is not a
 /// turning point (a start on the value is not a crossing). The rod's angle crosses 0
 /// going counter-clockwise (up) and clockwise (down) by turns, starting down.
 #[test]

@@ -19,6 +19,7 @@ mod draw;
 mod instruments;
 mod keyboard;
 mod palette;
+mod shapes;
 mod tools;
 mod view;
 

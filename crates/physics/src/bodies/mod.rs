@@ -31,7 +31,7 @@ use crate::contacts::obstacles::{self, Obstacle};
 use crate::diagnostics::{Diagnostics, ParticleReadout};
 use crate::forces::uniform;
 use crate::scene::Vector;
-use crate::{Integrator, JointKind, Scene, Simulation};
+use crate::{Integrator, JointKind, Scene};
 
 /// What the surfaces took from the bodies' energy in a step, joules.
 #[derive(Clone, Copy, Debug, Default)]
@@ -782,7 +782,7 @@ impl Bodies {
 
 impl Scene {
     /// The forces on body `i` at the scene's start, each where it acts: its free-body
-    /// diagram before Play ([`Simulation::body_forces`] while it runs).
+    /// diagram before Play ([`crate::Simulation::body_forces`] while it runs).
     /// A scene being edited may not be valid yet: forces that are not finite (a body of
     /// no mass or no area) are left out rather than drawn.
     pub fn body_forces(&self, i: usize) -> Vec<Applied> {
@@ -796,64 +796,5 @@ impl Scene {
             .into_iter()
             .filter(|f| f.force.is_finite() && f.arm.is_finite())
             .collect()
-    }
-}
-
-impl Simulation {
-    /// The rigid bodies' names, in scene order.
-    pub fn body_names(&self) -> &[String] {
-        self.bodies.names()
-    }
-
-    /// Everything about body `i` now: its centroid's position, velocity and acceleration,
-    /// its angle (degrees, unwrapped) and spin, its energy and momenta.
-    pub fn body(&self, i: usize) -> ParticleReadout {
-        self.bodies.readout(i)
-    }
-
-    /// The pins' and hinges' names, in scene order (the pins, then the hinges).
-    pub fn joint_names(&self) -> &[String] {
-        self.bodies.joint_names()
-    }
-
-    /// The kinetic energy the joints took at the start from velocities typed in the
-    /// scene that moved them apart (a hinge's two points, a pulley's string stretching),
-    /// J; `None` where the velocities were consistent with them. The run starts from the
-    /// nearest consistent velocities (the plastic impulse), which `check` says.
-    pub fn joints_start_loss(&self) -> Option<f64> {
-        self.bodies.start_loss()
-    }
-
-    /// Whether joint `j` is a pin (not a hinge): its rows carry its force.
-    pub fn joint_is_pin(&self, j: usize) -> bool {
-        self.bodies.is_pin(j)
-    }
-
-    /// Whether joint `j` is a pulley: its rows carry its tensions.
-    pub fn joint_is_pulley(&self, j: usize) -> bool {
-        self.bodies.is_pulley(j)
-    }
-
-    /// Whether a joint has a motor: the ledger then books its work
-    /// ([`crate::MOTOR_WORK_COLUMN`]).
-    pub fn has_motors(&self) -> bool {
-        self.bodies.has_motors()
-    }
-
-    /// Joint `j` now: its angle, its force on the body it holds (a hinge's b), its
-    /// motor's torque, and its point.
-    pub fn joint(&self, j: usize) -> JointReadout {
-        self.bodies.joint(j)
-    }
-
-    /// Body `i`'s outline in the world now, counter-clockwise, metres.
-    pub fn body_outline(&self, i: usize) -> Vec<DVec2> {
-        self.bodies.world_outline(i)
-    }
-
-    /// The forces on body `i` now, each where it acts (`arm` from its centroid): its
-    /// weight, then each surface's normal force and friction — its free-body diagram.
-    pub fn body_forces(&self, i: usize) -> Vec<Applied> {
-        self.bodies.forces(i)
     }
 }

@@ -18,8 +18,7 @@
 //! Box2D and Rapier keep a dynamic tree (or sweep-and-prune lists) of fat boxes from
 //! step to step; here the fat boxes are carried the same way, over a grid instead of a
 //! tree, which for balls of similar size is simpler and as fast. (Rebuilding the grid
-//! every step, as NewtonLab first did, cost 22 % of a step in the settling
-//! 1,000-ball pit.)
+//! every step costs a large share of a settling pile's step: docs/performance.md.)
 
 #![expect(
     clippy::cast_possible_truncation,

@@ -67,9 +67,9 @@ use self::resting::{RestingSolver, Touching};
 use self::strips::Strips;
 use self::surfaces::StartContacts;
 use crate::forces::ForceModel;
+use crate::impact::ImpactTarget;
 use crate::parallel::Workers;
 use crate::scene::Scene;
-use crate::simulation::ImpactTarget;
 use crate::state::State;
 use crate::tuning::{FAT_RADII, FAT_STEPS, FAT_TRAVEL_RADII, TOUCHING};
 use crate::turning::{Body, Grip, Turning};
@@ -454,8 +454,8 @@ impl Contacts {
 
 /// The larger of `a` and `b` by a comparison, `b` when `a` is NaN (as `f64::max`
 /// gives it). `f64::max` has no WebAssembly instruction with its rule for NaN and is a
-/// call to `fmax` there: the browser's pit spent 2.2 % of its time in `fmin` and `fmax`
-/// (`benches/wasm`, V8's profile), most of it from the loops that use these.
+/// call to `fmax` there, which V8's profile of the browser's pit (`benches/wasm`) found in
+/// the loops that use these.
 #[inline]
 pub(crate) fn larger(a: f64, b: f64) -> f64 {
     if a > b { a } else { b }

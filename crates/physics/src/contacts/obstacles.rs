@@ -3,8 +3,8 @@
 
 use glam::DVec2;
 
+use crate::impact::ImpactTarget;
 use crate::scene::Scene;
-use crate::simulation::ImpactTarget;
 
 /// The solid's geometry.
 #[derive(Clone, Copy, Debug)]

@@ -173,8 +173,8 @@ impl Contacts {
         self.workers
             .collect_into(candidates.len(), normals, |range, normals| {
                 // A plain loop: as an iterator's filter the test was a call through a
-                // reference to the closure in WebAssembly (6 % of the pit's time in V8,
-                // `benches/wasm`).
+                // reference to the closure in WebAssembly, seen in V8's profile of the pit
+                // (`benches/wasm`).
                 for &(i, j) in &candidates[range] {
                     let (a, b) = (i as usize, j as usize);
                     let reach = radius[a] + radius[b];
@@ -219,8 +219,8 @@ impl Contacts {
     fn impacts_now(&mut self, state: &mut State, forces: &ForceModel, resting_speed: f64) -> bool {
         // Only velocities change here, so each contact's normal is found once (a pair's
         // when it was found touching). Each pass sweeps the pairs, then the surfaces,
-        // each in a tight loop of its own (in the browser the sweep over one list of both
-        // kinds was 26 % of the time).
+        // each in a tight loop of its own (one list of both kinds is slower to sweep in
+        // the browser).
         let mut normals = std::mem::take(&mut self.touching.normals);
         normals.surfaces.clear();
         if let Some(turning) = &mut self.turning {

@@ -14,7 +14,7 @@
 //! from summing one pair at a time only by rounding (tested to 1e-12 relative per
 //! force). A row's last partners, fewer than two groups, are two groups padded with
 //! bodies that every pair masks out (a lone pair would cost a square root and a
-//! division that no lane shares: 1.2–1.9× the pairs per second at 100 bodies on AVX2).
+//! division that no lane shares; docs/performance.md has the gain).
 //! Scenes of up to 16 bodies are summed one pair at a time, so they get exactly the
 //! plain loop's numbers.
 //!
@@ -126,7 +126,7 @@ pub(crate) fn add_forces(
         if !is_blocked(n) {
             // One block, on this thread, into buffers kept from call to call: the
             // coupled group of a mixed scene (some hundred bodies) is summed tens of times
-            // a step, and allocating the columns and buffers each time was 5 % of it.
+            // a step, and allocating the columns and buffers each time shows in a profile.
             for buffer in [&mut *fx, &mut *fy] {
                 buffer.clear();
                 buffer.resize(padded, 0.0);

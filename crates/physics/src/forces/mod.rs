@@ -94,7 +94,7 @@ impl ForceModel {
             .copied()
             .filter(|&i| particles[i].charge != 0.0)
             .collect();
-        let index = |end| spring::End::of(scene, end);
+        let index = |end| scene.end(end);
         let springs: Vec<SpringLink> = scene
             .springs
             .iter()
@@ -112,7 +112,7 @@ impl ForceModel {
             .collect();
         Self {
             mass: particles.iter().map(|p| p.mass).collect(),
-            constraints: Constraints::new(scene, &inverse_mass),
+            constraints: Constraints::new(scene.links(), &inverse_mass),
             inverse_mass: inverse_mass.into(),
             charge: particles.iter().map(|p| p.charge).collect(),
             uniform: particles

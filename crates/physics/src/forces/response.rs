@@ -15,8 +15,8 @@
 use glam::DVec2;
 
 use super::pair;
-use super::spring::End;
 use super::{ForceModel, SpringLink};
+use crate::constraints::End;
 
 impl ForceModel {
     /// Particle `k`'s partners under the pair laws, each with the law's strength c

@@ -4,45 +4,7 @@
 
 use glam::DVec2;
 
-/// One end of a spring in runtime form.
-#[derive(Clone, Copy, Debug)]
-pub(crate) enum End {
-    Particle(usize),
-    /// A fixed point, metres.
-    Point(DVec2),
-}
-
-impl End {
-    /// The runtime form of an end of a valid scene.
-    pub fn of(scene: &crate::scene::Scene, end: &crate::scene::Endpoint) -> Self {
-        match end {
-            crate::scene::Endpoint::Particle(name) => {
-                Self::Particle(scene.particle_index(name).unwrap_or(0))
-            }
-            crate::scene::Endpoint::Point(point) => Self::Point(point.to_dvec2()),
-        }
-    }
-
-    pub fn position(self, x: &[DVec2]) -> DVec2 {
-        match self {
-            Self::Particle(i) => x[i],
-            Self::Point(p) => p,
-        }
-    }
-
-    pub fn velocity(self, v: &[DVec2]) -> DVec2 {
-        match self {
-            Self::Particle(i) => v[i],
-            Self::Point(_) => DVec2::ZERO,
-        }
-    }
-
-    pub fn add_force(self, force: &mut [DVec2], f: DVec2) {
-        if let Self::Particle(i) = self {
-            force[i] += f;
-        }
-    }
-}
+pub(crate) use crate::constraints::End;
 
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct SpringLink {

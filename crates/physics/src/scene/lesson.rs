@@ -5,8 +5,8 @@
 //! student's answer, typed with units, is compared with what the scene as the student set
 //! it up measures.
 
+use super::series::{Measure, Setting, Sweep};
 use super::{Scene, Section, say};
-use crate::series::{Measure, Setting, Sweep};
 
 /// How long a lesson's run lasts when `[lesson]` names no `until`, seconds after the
 /// scene's start: long enough for a few swings, falls and bounces of a classroom scene,
@@ -172,27 +172,6 @@ impl Lesson {
     /// The question called `id`.
     pub fn question(&self, id: &str) -> Option<&Question> {
         self.questions.iter().find(|q| q.id == id)
-    }
-
-    /// What `scene` (as the student set it up) measures for each question, in the
-    /// question's unit: one run to [`Self::until`], every measure read off it.
-    ///
-    /// # Errors
-    /// A measure that does not read, or a scene that does not run (in words); a measure
-    /// the run does not reach (an event that never happens) is that question's error.
-    pub fn answers(&self, scene: &Scene) -> Result<Vec<Result<f64, String>>, String> {
-        let measures = self
-            .questions
-            .iter()
-            .map(Question::parsed)
-            .collect::<Result<Vec<_>, _>>()?;
-        let until = self.until(scene);
-        let measured = crate::series::measure(scene, until, &measures)?;
-        Ok(measured
-            .into_iter()
-            .zip(&self.questions)
-            .map(|(value, question)| value.map(|si| question.in_unit(si)))
-            .collect())
     }
 
     /// Every problem with the lesson on `scene`, each with its section and key: text that

@@ -61,7 +61,7 @@ pub struct Series {
     /// What each run is measured for, as `sweep --measure` writes it.
     pub measure: Vec<String>,
     /// The law expected of the first measure, an expression of the varied value
-    /// ([`crate::series::Theory`]).
+    /// ([`super::series::Theory`]).
     pub theory: Option<String>,
 }
 
@@ -72,14 +72,14 @@ impl Series {
     /// ([`Scene::validate`] lists these at their lines; the app shows them beside the
     /// series without checking the whole scene each frame.)
     pub fn problems(&self, scene: &Scene) -> Vec<(&'static str, String)> {
-        use crate::series::{Measure, Setting, Theory, range_values};
+        use super::series::{Measure, Setting, Theory, range_values};
         let mut problems = Vec::new();
         if let Err(why) = Setting::parse(&self.vary, scene) {
             problems.push(("vary", why));
         }
         if range_values(self.from, self.to, self.step).is_none() {
             let text = format!("{}:{}:{}", self.from, self.to, self.step);
-            let why = crate::series::range_problem(&text, self.from, self.to, self.step);
+            let why = super::series::range_problem(&text, self.from, self.to, self.step);
             problems.push(("step", why));
         }
         if !(self.until.is_finite() && self.until > scene.simulation.start_time) {
@@ -106,19 +106,19 @@ impl Series {
         problems
     }
 
-    /// The series as a [`crate::series::Sweep`] on `scene`.
+    /// The series as a [`super::series::Sweep`] on `scene`.
     ///
     /// # Errors
     /// A setting, range or measure that does not read (in words).
-    pub fn sweep(&self, scene: &Scene) -> Result<crate::series::Sweep, String> {
+    pub fn sweep(&self, scene: &Scene) -> Result<super::series::Sweep, String> {
         let text = format!("{}={}:{}:{}", self.vary, self.from, self.to, self.step);
-        Ok(crate::series::Sweep {
-            varies: vec![crate::series::Vary::parse(&text, scene)?],
+        Ok(super::series::Sweep {
+            varies: vec![super::series::Vary::parse(&text, scene)?],
             until: self.until,
             measures: self
                 .measure
                 .iter()
-                .map(|m| crate::series::Measure::parse(m))
+                .map(|m| super::series::Measure::parse(m))
                 .collect::<Result<_, _>>()?,
             trace: false,
         })
@@ -197,7 +197,7 @@ impl Scene {
                 series.vary = format!("{new}{rest}");
             }
             for text in &mut series.measure {
-                if let Ok(mut measure) = crate::series::Measure::parse(text) {
+                if let Ok(mut measure) = super::series::Measure::parse(text) {
                     measure.quantities_mut().into_iter().for_each(rename);
                     *text = measure.to_string();
                 }
@@ -231,7 +231,7 @@ impl Scene {
                 .strip_prefix(name)
                 .is_some_and(|rest| rest.starts_with('.'));
             let measures = series.measure.iter().any(|text| {
-                crate::series::Measure::parse(text)
+                super::series::Measure::parse(text)
                     .is_ok_and(|mut m| m.quantities_mut().into_iter().any(|q| names(q)))
             });
             !(varies || measures)

@@ -478,7 +478,7 @@ impl Checker<'_> {
             }
         }
         if self.problems.is_empty()
-            && let Some((section, message)) = crate::constraints::unsatisfiable(self.scene)
+            && let Some((section, message)) = super::links::unsatisfiable(self.scene)
         {
             self.report(section, "length", &message);
         }
@@ -694,5 +694,38 @@ impl Color {
             [0x7a, 0x7a, 0x7a],
         ];
         Self(PALETTE[index % PALETTE.len()])
+    }
+}
+
+impl Quantity {
+    /// Whether `scene` has the object the quantity names.
+    ///
+    /// # Errors
+    /// The object it names is not there (with the names there are), or a tension is asked
+    /// of a spring.
+    pub fn check_in(&self, scene: &Scene) -> Result<(), String> {
+        let names = |names: Vec<&String>| names.into_iter().cloned().collect::<Vec<String>>();
+        let particles = names(scene.particles.iter().map(|p| &p.name).collect());
+        let ties = names(scene.ties.iter().map(|t| &t.name).collect());
+        let springs = names(scene.springs.iter().map(|s| &s.name).collect());
+        let bodies = names(scene.bodies.iter().map(|b| &b.name).collect());
+        let joints = names(scene.joints.iter().map(|j| &j.name).collect());
+        let pulleys = names(
+            scene
+                .joints
+                .iter()
+                .filter(|j| j.is_pulley())
+                .map(|j| &j.name)
+                .collect(),
+        );
+        self.find(&crate::quantity::Names {
+            particles: &particles,
+            ties: &ties,
+            springs: &springs,
+            bodies: &bodies,
+            joints: &joints,
+            pulleys: &pulleys,
+        })
+        .map(|_| ())
     }
 }

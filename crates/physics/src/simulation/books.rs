@@ -1,27 +1,7 @@
-//! What a run records of its impacts and its energy: the impact log's rows, the ledger
-//! of what the dissipative parts of the physics took, and the energy an impact takes.
+//! What a run records of its energy: the ledger of what the dissipative parts of the
+//! physics took, and the energy an impact takes.
 
 use crate::contacts::{Applied, Impact};
-
-/// An impact that happened: when, and between what.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ImpactRecord {
-    /// Seconds, located to the instant of contact.
-    pub time: f64,
-    /// The particle (the first of a pair, in scene order).
-    pub particle: usize,
-    /// What it hit.
-    pub other: ImpactTarget,
-    /// The impulse along the contact normal, N·s.
-    pub impulse: f64,
-    /// The approach speed along the normal just before, m/s.
-    pub normal_speed_before: f64,
-    /// The separation speed along the normal just after, m/s: the restitution times the
-    /// approach.
-    pub normal_speed_after: f64,
-    /// The kinetic energy the impact took, J: ½ μ (1 − e²) u² with μ the effective mass.
-    pub kinetic_energy_lost: f64,
-}
 
 /// The energy the dissipative parts of the physics took out of the motion since the
 /// ledger was started, joules. With the kinetic and potential energy it closes: kinetic +
@@ -73,15 +53,4 @@ pub(super) fn effective_mass(applied: &Applied, w: &[f64]) -> f64 {
 pub(super) fn impact_energy_lost(applied: &Applied, w: &[f64]) -> f64 {
     let (u, e) = (applied.approach, applied.restitution);
     0.5 * effective_mass(applied, w) * (1.0 - e * e) * u * u
-}
-
-/// What a particle hit.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum ImpactTarget {
-    /// Another particle, by index.
-    Particle(usize),
-    /// A ramp, by index in the scene's ramps.
-    Ramp(usize),
-    /// A wall of the world's bounds.
-    Wall,
 }

@@ -34,9 +34,11 @@ mod response;
 use std::sync::Arc;
 
 use crate::constraints::Constraints;
+use crate::constraints::End;
 use crate::contacts::{Impact, Members};
-use crate::forces::{ForceModel, SpringLink, SurfaceContact, spring::End};
-use crate::integrators::{self, Integrator, KnownStart, Workspace};
+use crate::forces::{ForceModel, SpringLink, SurfaceContact};
+use crate::integrators::{self, KnownStart, Workspace};
+use crate::method::Integrator;
 use crate::profile::Stage;
 use crate::state::State;
 

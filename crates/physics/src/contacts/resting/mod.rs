@@ -189,8 +189,8 @@ fn sweep<R: Row>(rows: &mut [R], velocity: &mut [DVec2]) -> Option<f64> {
         let solved = *row.solved();
         let approach = row.approach(velocity);
         // Comparisons, not `f64::max`: WebAssembly has no instruction with its rule for
-        // NaN, so there it is a call to `fmax`. Profiled in V8 (`benches/wasm`), the pit
-        // spent 2.5 % of its time in `fmax`, most of it from here; 1.0 % after.
+        // NaN, so there it is a call to `fmax`, which a V8 profile of the pit
+        // (`benches/wasm`) found mostly called from here.
         let accumulated = solved.impulse + approach * solved.mass;
         let accumulated = if accumulated > 0.0 { accumulated } else { 0.0 };
         let change = accumulated - solved.impulse;

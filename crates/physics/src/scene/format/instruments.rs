@@ -1,7 +1,8 @@
 //! Reading and writing `[instruments]` and `[instruments.stopwatch]`.
 
-use super::read::{Reader, read_bool, read_endpoint, read_number, read_text, read_vector};
+use super::read::Reader;
 use super::tree::{Node, Value};
+use super::values::{read_bool, read_endpoint, read_number, read_text, read_vector};
 use super::write::{Header, Out, OutSection};
 use crate::scene::error::Section;
 use crate::scene::instruments::{Instruments, Protractor, Stopwatch, Trigger};

@@ -1,7 +1,8 @@
 //! Reading and writing `[lesson]` with its `[[lesson.slider]]` and `[[lesson.question]]`.
 
-use super::read::{Reader, array_items, read_bool, read_number, read_text};
+use super::read::{Reader, array_items};
 use super::tree::{Node, Value};
+use super::values::{read_bool, read_number, read_text};
 use super::write::{Header, Out, OutSection};
 use crate::scene::error::Section;
 use crate::scene::validate;

@@ -18,11 +18,12 @@ mod lesson;
 mod read;
 mod slices;
 mod tree;
+mod values;
 mod write;
 
 use self::read::Reader;
-pub use self::read::closest;
 use self::tree::{parse_json, parse_toml};
+pub use self::values::closest;
 use super::Scene;
 use super::error::LoadError;
 

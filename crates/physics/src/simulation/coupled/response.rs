@@ -17,10 +17,8 @@
 //! the struck particle and those it shares a spring with (the largest answers: a pair
 //! law's partner at a distance answers by far less, and its own answer less again). What
 //! is left out is of order s⁶ in the position and s⁵ in the velocity (J² Δv s⁵ for the
-//! particles γ leaves out): with a blow of 79 m/s where the pull's length scale is 6 m
-//! (the paper's 4.7 with rk4, `collisions.rs`), the body returns from its bounce 3.7e-10 m
-//! off its start (integrating again: 2.7e-11 m; with β fitted at the end alone and no c,
-//! 9.3e-8 m).
+//! particles γ leaves out). docs/physics.md ("Coupled impacts by the motion's response")
+//! gives what each term was measured to be worth.
 //!
 //! What an impact is measured and applied on must be as exact as the integrator: each
 //! involved particle's acceleration is taken as the cubic through its values and rates
@@ -29,32 +27,20 @@
 //! the step's end is computed when first needed, one pass over its partners). The cubic
 //! through the ends' positions and velocities serves what only reads where a particle is
 //! (the Jacobian, the impact search's paths); measured on it, an impact's speed would be
-//! off by order h³ (1.8e-6 of it on the stiff spring of `restitution_paths.rs`), and on the
-//! quintic through the ends' accelerations too, by rk4's error in the end position
-//! divided by h (2.2e-7). Newton's method finds the instant on the motion's own curve, so
-//! the gap closes there exactly; the step still ends at the integrator's state
+//! off by order h³, and on the quintic through the ends' accelerations too, by rk4's error
+//! in the end position divided by h. Newton's method finds the instant on the motion's own
+//! curve, so the gap closes there exactly; the step still ends at the integrator's state
 //! plus the departures.
 //!
 //! So an impact of a coupled particle costs a few passes over what it pulls instead of
 //! integrating every coupled particle again, twice (to the impact and on to the step's
-//! end: 7.5 evaluations of all their forces an impact in the processing-time scene).
-//! Measured against closed forms (a ball on a spring
-//! rattling between walls, up to four impacts a step: instants and speeds to 1e-13; a
-//! stiff spring's impact at ωh = 0.1 as near the truth as integrating to the instant) and
-//! by the energy ledger of a pile of charged and sprung balls (the residual the
-//! integrator's own: 1.9e-9, 5.5e-10, 6.0e-11, 1.3e-11 of E₀ at 2, 1, 0.5 and 0.25 ms steps). Without γ
-//! the rattling ball's speeds were off by 2e-9 (its test fails, and the spring-pulled
-//! ball's); without β the pile's residual was 4.7 times larger (2.6e-9: its test fails);
-//! without α, 1,400 times.
+//! end).
 //!
 //! A surface that holds a particle (its support pressing at the step's start) answers
 //! any small change of the others' pull along its normal, either way: that part of an
 //! answer, and of a rate of acceleration, is taken away, as the integration's own
-//! support takes it (one step from the same state against integrating again, over 2,000
-//! steps of the mixed pile of 150: the largest difference 1.8e-12 m, against 6.5e-9 m
-//! with the normal part left in). A step that ends at a coupled impact
-//! ([`super::catch_on_surfaces`]) puts every member where the motion has it then, with
-//! every rate measured in bulk.
+//! support takes it. A step that ends at a coupled impact ([`super::catch_on_surfaces`])
+//! puts every member where the motion has it then, with every rate measured in bulk.
 //!
 //! A blow that drives a ball into the surface it rests on (a floor under a pile) bounces
 //! it off there and then, and whatever it then closes on at that instant is struck too,
@@ -62,24 +48,17 @@
 //! (it was leaving it more slowly than a resting contact's speed) meets it a moment later,
 //! an impact queued for the search ([`Contacts::closing_on_rests`]). A ball sent off the
 //! surface that held it loses the surface's support for the rest of the step
-//! ([`Motion::release`]): without that it would float, some 1e-6 m high after the step
-//! (`a_coupled_ball_sent_off_its_floor_by_a_blow_flies_as_thrown_up`, exact to 1e-20 m
-//! with it). Ending the step at such a blow instead, for the next step's start to pass
-//! it on, would cost a whole pass through the pipeline each (in the mixed scene of 1,000
-//! balls, one pass in six).
+//! ([`Motion::release`]): without that it would float above its floor after the step
+//! (`a_coupled_ball_sent_off_its_floor_by_a_blow_flies_as_thrown_up`). Ending the step at
+//! such a blow instead, for the next step's start to pass it on, would cost a whole pass
+//! through the pipeline each.
 //!
 //! Where the series is no description of the motion, the answer is not used. A step
 //! whose springs turn their ends by (ω h)² > 1e-2 integrates its coupled impacts again
-//! ([`crate::forces::ForceModel::has_stiff_springs`]): on a 753 N/m spring to a 17 g ball
-//! (ω h = 0.21) answering let the energy ledger reach 0.55 of E₀, integrating again
-//! 5.8e-4 (`ledger.rs`); over 300 random coupled scenes (up to 30 balls, springs to 1e4
-//! N/m, charges to 50 µC) answering was more than ten times further off than integrating
-//! again in 34 (three of them by factors of 1e4 to 1e7), with this rule in 4, and better in
-//! 3. An impact whose first answer turns anything by (ω S)² > 1e-2 over the rest of the
-//! step ([`STIFF`]), or whose fifth-order term is above 1e-6 of the kick's displacement
-//! ([`TRUSTED`]: the paper's 4.7 with rk4, 3.7e-10 m answered, 1.9e-11 m this way), ends
-//! the step, every member where the motion has it; the next step integrates on. In the
-//! processing-time scene neither happens.
+//! ([`crate::forces::ForceModel::has_stiff_springs`]). An impact whose first answer turns
+//! anything by (ω S)² > 1e-2 over the rest of the step ([`STIFF`]), or whose fifth-order
+//! term is above 1e-6 of the kick's displacement ([`TRUSTED`]), ends the step, every
+//! member where the motion has it; the next step integrates on.
 //!
 //! Only rk4 uses it: a lower-order method's motion between the ends is its own steps',
 //! which the curve would make more exact than the method itself; those integrate again
@@ -90,9 +69,9 @@ use std::sync::Arc;
 
 use glam::DVec2;
 
+use crate::constraints::End;
 use crate::contacts::{Contacts, Impact, Members, hermite, hermite_position};
 use crate::forces::ForceModel;
-use crate::forces::spring::End;
 use crate::integrators::Workspace;
 use crate::profile::Stage;
 use crate::state::State;

@@ -26,6 +26,7 @@ mod books;
 mod coupled;
 mod error;
 mod read;
+mod step;
 mod ties;
 
 use crate::impact::{ImpactRecord, ImpactTarget};
@@ -37,13 +38,14 @@ use glam::DVec2;
 
 use crate::contacts::{Contacts, Impact};
 use crate::diagnostics;
-use crate::forces::{ForceModel, Power};
+use crate::forces::ForceModel;
 use crate::integrators::{self, Workspace};
 use crate::method::Integrator;
-use crate::profile::{Clock, Profile, Profiler, Stage};
+use crate::profile::{Clock, Profile, Profiler};
 use crate::scene::error::LoadError;
 use crate::scene::{Particle, Scene, Vector};
 use crate::state::State;
+use crate::turning::{Kick, Sizes};
 
 /// What [`Simulation::step_to_observed`] calls after each step: the state before it and
 /// after.
@@ -356,135 +358,6 @@ impl Simulation {
         Ok(())
     }
 
-    /// One step of at most `max_step` seconds: the whole pipeline. Returns the step
-    /// taken.
-    fn advance(&mut self, max_step: f64) -> Result<f64, SimulationError> {
-        self.profiler.start();
-        let begun_with = self.begin(max_step);
-        let begun = self.contacts.applied.len();
-        self.start.clone_from(&self.state);
-        if let Some(turning) = &mut self.contacts.turning {
-            turning.begin_step();
-        }
-        let mut taken = if self.split_trial_step(max_step) {
-            max_step
-        } else {
-            integrators::advance(
-                self.integrator,
-                &self.forces,
-                &mut self.state,
-                max_step,
-                self.tolerance,
-                &mut self.work,
-            )
-            .map_err(|_| SimulationError::StepTooSmall {
-                time: self.state.time,
-                tolerance: self.tolerance,
-            })?
-        };
-        // A blown-up trial step stops here: the searches below assume a sane state.
-        self.check_finite()?;
-        let mut tie_event;
-        (tie_event, taken) = self.shorten_trial_step(taken);
-        self.profiler.lap(Stage::Integration);
-        let interruption = self.contacts.resolve_impacts(
-            &self.start,
-            &mut self.state,
-            taken,
-            &self.forces,
-            &mut self.profiler,
-        );
-        if self.contacts.changed_paths() {
-            self.work.start_acceleration = None;
-        }
-        let mut struck = None;
-        let mut power_at_end = None;
-        if let Some(first) = interruption.filter(|_| self.coupled_in_step()) {
-            taken = self.coupled_impacts_in_step(first, taken);
-            self.profiler.lap(Stage::CoupledImpacts);
-        } else if let Some((time, impact)) = interruption {
-            // The impact comes first; a string's event, if still due, is found again.
-            tie_event = None;
-            let step = taken;
-            taken = self.integrate_to_impact(time, step, impact);
-            self.contacts.patch(&mut self.state, taken, step);
-            if self.ledger.is_some() {
-                power_at_end = Some(self.power_over_step(taken));
-            }
-            self.contacts
-                .apply(impact, &mut self.state, &self.forces, taken);
-            self.answer_through_ties(impact);
-            self.work.start_acceleration = None;
-            struck = Some(impact);
-            self.profiler.lap(Stage::CoupledImpacts);
-        }
-        self.log_impacts();
-        let before_settling = self.ledger.map(|_| {
-            let end = power_at_end.unwrap_or_else(|| self.power_over_step(taken));
-            let supported = self.forces.surface_normal_work(
-                self.state.time,
-                &self.start.position,
-                &self.state.position,
-                &self.state.velocity,
-                &self.radius,
-            ) + self.contacts.released_in_step;
-            (
-                end,
-                self.forces.kinetic_energy(&self.state.velocity),
-                supported,
-            )
-        });
-        if let Some((k, _)) = tie_event {
-            self.apply_tie_event(k);
-            self.work.start_acceleration = None;
-        }
-        let lifted = self.settle(taken, struck);
-        let slipped = self.end_turning(taken, begun);
-        if let (Some(start), Some((power, kinetic, supported))) = (begun_with, before_settling) {
-            self.book(start, (power, kinetic), begun, taken, supported + lifted);
-            self.book_friction(begun, slipped);
-        }
-        self.profiler.lap(Stage::RestingSolver);
-        if !self.forces.constraints.is_empty() {
-            self.work.start_acceleration = None;
-            // A value gone non-finite is the first thing wrong, and says so.
-            self.project_onto_ties()
-                .or_else(|tie| self.check_finite().and(Err(tie)))?;
-        }
-        self.end_step(taken)
-    }
-
-    /// The step's last stages: the bodies moved through it, the count, and the checks
-    /// that every value is finite and every particle still inside the bounds.
-    fn end_step(&mut self, taken: f64) -> Result<f64, SimulationError> {
-        let books = self.bodies.advance(self.integrator, taken);
-        if let Some((pulley, body)) = self.bodies.pulley_reached() {
-            return Err(SimulationError::PulleyReached {
-                pulley,
-                body,
-                time: self.state.time,
-            });
-        }
-        if let Some(ledger) = &mut self.ledger {
-            ledger.impacts += books.impacts;
-            ledger.friction += books.friction;
-            ledger.motors += books.motors;
-        }
-        self.steps += 1;
-        self.check_finite()?;
-        if let Some(i) = self
-            .contacts
-            .escaped(&self.state.position, |i| !self.forces.is_fixed(i))
-        {
-            return Err(SimulationError::LeftBounds {
-                particle: self.names[i].clone(),
-                time: self.state.time,
-                speed: self.state.velocity[i].length(),
-            });
-        }
-        Ok(taken)
-    }
-
     /// Whether a fixed-step method can follow every particle's air resistance over a
     /// step of `h` ([`crate::tuning::DRAG_STEP`]); dopri5 shrinks its steps to it.
     fn check_drag(&self, h: f64) -> Result<(), SimulationError> {
@@ -504,49 +377,6 @@ impl Simulation {
             }
         }
         Ok(())
-    }
-
-    /// The step's start: impacts due now, strings snapping taut, surfaces catching
-    /// particles. With a ledger, returns the energy they took (the kinetic energy, less
-    /// the potential energy a catch's lift onto its surface gave) and the dissipated power
-    /// then.
-    fn begin(&mut self, max_step: f64) -> Option<(f64, Power)> {
-        let before = self
-            .ledger
-            .map(|_| (self.kinetic_energy(), self.state.position.clone()));
-        if self.contacts.begin_step(
-            &mut self.state,
-            &mut self.forces,
-            max_step,
-            &mut self.profiler,
-        ) {
-            self.work.start_acceleration = None;
-        }
-        if self.begin_ties(max_step) {
-            self.work.start_acceleration = None;
-        }
-        before.map(|(kinetic, position)| {
-            let (x, v) = (&self.state.position, &self.state.velocity);
-            let lifted = diagnostics::potential_change(&self.forces, &position, x);
-            let caught = kinetic - self.kinetic_energy() - lifted;
-            (caught, self.forces.dissipation(self.state.time, x, v))
-        })
-    }
-
-    /// Resting contact after a step of `taken` ([`Contacts::settle`]). With a ledger,
-    /// returns the potential energy its position correction gave (a pile at rest sinks
-    /// ½ g h² a step under gravity, and the correction lifts it back), or 0.
-    fn settle(&mut self, taken: f64, struck: Option<Impact>) -> f64 {
-        let before = self.ledger.map(|_| self.state.position.clone());
-        if self
-            .contacts
-            .settle(&mut self.state, &self.forces, taken, struck)
-        {
-            self.work.start_acceleration = None;
-        }
-        before.map_or(0.0, |position| {
-            diagnostics::potential_change(&self.forces, &position, &self.state.position)
-        })
     }
 
     fn check_finite(&self) -> Result<(), SimulationError> {
@@ -622,83 +452,6 @@ impl Simulation {
         }
     }
 
-    /// The dissipated power (damping, friction) half way through the step just taken
-    /// (`taken` seconds from `self.start` to `self.state`), on the cubic through both
-    /// ends' positions and velocities, and at its end.
-    fn power_over_step(&self, taken: f64) -> (Power, Power) {
-        if !self.forces.dissipates() {
-            return (Power::default(), Power::default());
-        }
-        let (start, end) = (&self.start, &self.state);
-        let h = taken;
-        let (mut x, mut v) = (Vec::with_capacity(end.len()), Vec::with_capacity(end.len()));
-        for i in 0..end.len() {
-            let (x0, v0, x1, v1) = (
-                start.position[i],
-                start.velocity[i],
-                end.position[i],
-                end.velocity[i],
-            );
-            x.push((x0 + x1) * 0.5 + (v0 - v1) * (h / 8.0));
-            v.push((x1 - x0) * (1.5 / h) - (v0 + v1) * 0.25);
-        }
-        (
-            self.forces.dissipation(start.time + 0.5 * h, &x, &v),
-            self.forces
-                .dissipation(end.time, &end.position, &end.velocity),
-        )
-    }
-
-    /// Adds a step of `taken` seconds to the ledger: `start` is what the step's start
-    /// took impulsively and the dissipated power there; `end`, the power at its end and
-    /// the kinetic energy before the resting solver; impacts inside the step are those
-    /// applied from `begun` on; `moved` is the energy the contacts gave the motion
-    /// otherwise: the potential energy of particles they moved (a correction lifting a
-    /// sunken pile) and the work of surfaces' normal forces on particles moving along
-    /// their normals.
-    fn book(
-        &mut self,
-        start: (f64, Power),
-        end: ((Power, Power), f64),
-        begun: usize,
-        taken: f64,
-        moved: f64,
-    ) {
-        let Some(ledger) = &mut self.ledger else {
-            return;
-        };
-        let ((caught, p0), ((pm, p1), kinetic)) = (start, end);
-        // Simpson's rule over the step.
-        let simpson = |of: fn(&Power) -> f64| (of(&p0) + 4.0 * of(&pm) + of(&p1)) * taken / 6.0;
-        ledger.damping += simpson(|p| p.damping);
-        ledger.friction += simpson(|p| p.friction);
-        ledger.drag += simpson(|p| p.drag);
-        let w = &self.forces.inverse_mass;
-        let in_step: f64 = self.contacts.applied[begun..]
-            .iter()
-            .map(|applied| impact_energy_lost(applied, w))
-            .sum();
-        let settled = kinetic - self.forces.kinetic_energy(&self.state.velocity);
-        ledger.impacts += caught + in_step + self.contacts.caught_in_step + settled - moved;
-    }
-
-    /// The trial step of `taken` seconds just integrated, shortened to the first event
-    /// inside it: a string snapping taut or going slack (returned, to apply at the step's
-    /// end), or a turning particle starting to roll. Returns the event and the step.
-    fn shorten_trial_step(&mut self, mut taken: f64) -> (Option<(usize, f64)>, f64) {
-        let mut tie_event = self.find_tie_event(taken);
-        if let Some((_, time)) = tie_event {
-            taken = time;
-        }
-        if let Some(time) = self.find_rolling_start(taken) {
-            // Slipping stops first: the step ends there, and a string's event, if still
-            // due, is found again.
-            tie_event = None;
-            taken = time;
-        }
-        (tie_event, taken)
-    }
-
     /// The instant, seconds into the trial step of `taken` just integrated, at which the
     /// first turning particle that slips on its surface stops slipping, if one does:
     /// where the slip of its contact point, v·t − ω r, reaches zero. Its spin changes at
@@ -763,18 +516,26 @@ impl Simulation {
                 Impact::Pair(i, j) => (i, Some(j)),
                 Impact::Obstacle(p, _) => (p, None),
             };
-            kicks.push((applied.time, first, applied.kick.0, applied.grip.spin.0));
+            kicks.push(Kick {
+                time: applied.time,
+                particle: first,
+                velocity: applied.kick.0,
+                spin: applied.grip.spin.0,
+            });
             if let Some(j) = second {
-                kicks.push((applied.time, j, applied.kick.1, applied.grip.spin.1));
+                kicks.push(Kick {
+                    time: applied.time,
+                    particle: j,
+                    velocity: applied.kick.1,
+                    spin: applied.grip.spin.1,
+                });
             }
         }
-        turning.end_step(
-            taken,
-            (&self.start.position, &self.start.velocity),
-            (&self.state.position, &self.state.velocity),
-            (&self.forces.mass, &self.radius),
-            &kicks,
-        )
+        let sizes = Sizes {
+            mass: &self.forces.mass,
+            radius: &self.radius,
+        };
+        turning.end_step(taken, &self.start, &self.state, sizes, &kicks)
     }
 
     /// Adds friction's share of the step to the ledger: at impacts between turning
@@ -797,7 +558,7 @@ impl Simulation {
     /// the time integrated.
     fn integrate_to_impact(&mut self, estimate: f64, limit: f64, impact: Impact) -> f64 {
         let reach = self.contacts.reach(impact);
-        refine_instant(estimate, (0.0, limit), reach, |time| {
+        refine_instant(estimate, Bracket { after: 0.0, limit }, reach, |time| {
             self.integrate_from_start(time);
             let (gap, _, approach) = self.contacts.measure(impact, &self.state);
             (gap, approach)
@@ -817,6 +578,20 @@ impl Simulation {
     }
 }
 
+/// Where an instant may lie, seconds into a step: after `after`, at `limit` at most.
+#[derive(Clone, Copy, Debug)]
+struct Bracket {
+    after: f64,
+    limit: f64,
+}
+
+impl Bracket {
+    /// After `after`, at `limit` at most.
+    const fn new(after: f64, limit: f64) -> Self {
+        Self { after, limit }
+    }
+}
+
 /// The instant of an impact by Newton's method on its gap: `gap_at(t)` brings the state
 /// to `t` seconds into the step (integrating it) and returns the gap and the approach
 /// speed there. Starts at `estimate`, stays inside (`after`, `limit`], and stops within
@@ -824,7 +599,7 @@ impl Simulation {
 /// tries; the state is then the one at the instant returned.
 fn refine_instant(
     estimate: f64,
-    (after, limit): (f64, f64),
+    Bracket { after, limit }: Bracket,
     reach: f64,
     mut gap_at: impl FnMut(f64) -> (f64, f64),
 ) -> f64 {

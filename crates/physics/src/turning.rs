@@ -24,6 +24,26 @@ use std::sync::Arc;
 use glam::DVec2;
 
 use crate::scene::Scene;
+use crate::state::State;
+
+/// An impact applied to a particle inside a step, as its turning sees it.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Kick {
+    /// Seconds into the step.
+    pub time: f64,
+    pub particle: usize,
+    /// The change of its velocity, m/s.
+    pub velocity: DVec2,
+    /// The change of its spin, rad/s.
+    pub spin: f64,
+}
+
+/// Every particle's mass (kg) and radius (m).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Sizes<'a> {
+    pub mass: &'a [f64],
+    pub radius: &'a [f64],
+}
 
 /// The spins and orientations of a scene's particles, for scenes with any particle that
 /// turns.
@@ -117,24 +137,26 @@ impl Turning {
         self.start_spin.clone_from(&self.spin);
     }
 
-    /// The step's end, `taken` seconds after its start (where the particles were at
-    /// `start` and moved at `start_velocity`; `mass` and `radius` are theirs): adds each
+    /// The step's end, `taken` seconds after its `start` state, now at `end`: adds each
     /// particle's turning through the step to its orientation, and surface friction's
-    /// share to its spin. `kicks` are the impacts applied inside the step: (instant,
-    /// particle, Δv, Δω). Returns the energy slipping friction took, joules: with its
-    /// force fixed for the step, its work on the slip, −m f ∫ (v·t − ω r) dt, is exact.
+    /// share to its spin. `kicks` are the impacts applied inside the step. Returns the
+    /// energy slipping friction took, joules: with its force fixed for the step, its work
+    /// on the slip, −m f ∫ (v·t − ω r) dt, is exact.
     pub fn end_step(
         &mut self,
         taken: f64,
-        (start, start_velocity): (&[DVec2], &[DVec2]),
-        (end, end_velocity): (&[DVec2], &[DVec2]),
-        (mass, radius): (&[f64], &[f64]),
-        kicks: &[(f64, usize, DVec2, f64)],
+        start: &State,
+        end: &State,
+        particles: Sizes<'_>,
+        kicks: &[Kick],
     ) -> f64 {
+        let Sizes { mass, radius } = particles;
+        let (start, start_velocity) = (&start.position, &start.velocity);
+        let (end, end_velocity) = (&end.position, &end.velocity);
         // Each particle's turn through the step, radians.
         let mut turned: Vec<f64> = self.start_spin.iter().map(|spin| spin * taken).collect();
-        for &(time, p, _, spin) in kicks {
-            turned[p] += spin * (taken - time);
+        for kick in kicks {
+            turned[kick.particle] += kick.spin * (taken - kick.time);
         }
         let mut lost = 0.0;
         for p in 0..self.spin.len() {
@@ -148,11 +170,9 @@ impl Turning {
                         (end[p] - start[p]).dot(tangent) - speed * taken,
                         end_velocity[p].dot(tangent) - start_velocity[p].dot(tangent),
                     );
-                    for &(time, q, dv, _) in kicks {
-                        if q == p {
-                            moved -= dv.dot(tangent) * (taken - time);
-                            gained -= dv.dot(tangent);
-                        }
+                    for kick in kicks.iter().filter(|kick| kick.particle == p) {
+                        moved -= kick.velocity.dot(tangent) * (taken - kick.time);
+                        gained -= kick.velocity.dot(tangent);
                     }
                     self.spin[p] += gained / radius[p];
                     turned[p] += moved / radius[p];

@@ -17,7 +17,7 @@ use glam::DVec2;
 use super::broad_phase::Aabb;
 use super::time_of_impact::{Region, control_points, earliest_entry};
 use super::{
-    Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness, larger, particles_of,
+    Applied, Contacts, Impact, InStep, TOUCHING, fat_margin, half_thickness, larger, particles_of,
     velocity_changes,
 };
 use crate::forces::ForceModel;
@@ -678,17 +678,17 @@ impl Contacts {
     }
 
     /// The impacts of particle `p` with the surfaces it rested on at the step's start
-    /// that it closes on faster than a resting contact's speed `time` seconds into the
-    /// step (of `h`) while still apart from them (by less than a resting contact's speed
+    /// that it closes on faster than a resting contact's speed at `at` while still apart from them (by less than a resting contact's speed
     /// times the step: it left them that slowly), each with the instant it meets the
     /// surface at that speed. The impact search leaves the surfaces a particle rests on to
     /// the resting contacts; a blow that sends it back into one makes an impact there.
     pub fn closing_on_rests(
         &self,
         p: usize,
-        (time, h): (f64, f64),
+        at: InStep,
         members: &Members<'_>,
     ) -> Vec<(f64, Impact)> {
+        let InStep { time, step: h } = at;
         let resting_speed = self.resting_speed(h);
         let first = self
             .touching
@@ -758,7 +758,7 @@ impl Contacts {
     }
 
     /// The contacts of particle `p` (its `neighbours`, [`Self::neighbours_at`], and the
-    /// obstacles) that touch `time` seconds into the step (of `h`) and close faster than a
+    /// obstacles) that touch at `at` and close faster than a
     /// resting contact's speed, in a fixed order: what a blow at that instant passes on
     /// at once, as the step's start passes a blow along a row of touching balls. Coupled
     /// particles are read from `members`, the others from their paths.
@@ -766,10 +766,11 @@ impl Contacts {
         &self,
         p: usize,
         neighbours: &[usize],
-        (time, h): (f64, f64),
+        at: InStep,
         members: &Members<'_>,
         forces: &ForceModel,
     ) -> Vec<Impact> {
+        let InStep { time, step: h } = at;
         let resting_speed = self.resting_speed(h);
         let closing = |impact: Impact| {
             let (gap, _, approach) = self.measure_inside(impact, time, h, Some(members));

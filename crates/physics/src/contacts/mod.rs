@@ -74,6 +74,13 @@ use crate::state::State;
 use crate::tuning::{FAT_RADII, FAT_STEPS, FAT_TRAVEL_RADII, TOUCHING};
 use crate::turning::{Body, Grip, Turning};
 
+/// An instant inside a step: `time` seconds into a step of `step` seconds.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct InStep {
+    pub time: f64,
+    pub step: f64,
+}
+
 /// What hits what.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub(crate) enum Impact {

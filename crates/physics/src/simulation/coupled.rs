@@ -42,7 +42,7 @@ use crate::method::Integrator;
 use crate::profile::Stage;
 use crate::state::State;
 
-use super::{Simulation, refine_instant};
+use super::{Bracket, Simulation, refine_instant};
 use crate::tuning::CARRIED;
 
 /// The coupled particles as a system of their own.
@@ -367,7 +367,8 @@ impl Simulation {
         while let Some((estimate, impact)) = next {
             let (from, reach) = (scratch.from, self.contacts.reach(impact));
             let contacts = &self.contacts;
-            let time = refine_instant(estimate.max(from), (from, taken), reach, |time| {
+            let within = Bracket::new(from, taken);
+            let time = refine_instant(estimate.max(from), within, reach, |time| {
                 scratch.move_to(time, taken, method);
                 let at = Members {
                     local: &local,

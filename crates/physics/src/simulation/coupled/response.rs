@@ -70,13 +70,13 @@ use std::sync::Arc;
 use glam::DVec2;
 
 use crate::constraints::End;
-use crate::contacts::{Contacts, Impact, Members, hermite, hermite_position};
+use crate::contacts::{Contacts, Impact, InStep, Members, hermite, hermite_position};
 use crate::forces::ForceModel;
 use crate::integrators::Workspace;
 use crate::profile::Stage;
 use crate::state::State;
 
-use super::super::{Simulation, refine_instant};
+use super::super::{Bracket, Simulation, refine_instant};
 use super::{Scratch, catch_on_surfaces, write_members};
 use crate::tuning::{PASSES, STIFF, TRUSTED};
 
@@ -659,7 +659,8 @@ impl Simulation {
                     motion.write(k, time, taken, at, forces);
                 }
             };
-            let time = refine_instant(estimate.max(from), (from, taken), reach, |time| {
+            let within = Bracket::new(from, taken);
+            let time = refine_instant(estimate.max(from), within, reach, |time| {
                 move_to(time, at);
                 let members = Members {
                     local: &local,
@@ -811,7 +812,9 @@ fn answer_blow(
     let members_at = Members { local, state: at };
     let rests: Vec<(f64, Impact)> = struck
         .iter()
-        .flat_map(|&(k, _)| contacts.closing_on_rests(members[k], (time, h), &members_at))
+        .flat_map(|&(k, _)| {
+            contacts.closing_on_rests(members[k], InStep { time, step: h }, &members_at)
+        })
         .collect();
     let apart = |p: usize| rests.iter().any(|&(_, impact)| impact.involves(p));
     let is_caught = |p: usize| {
@@ -882,7 +885,7 @@ fn pass_on(
         }
         let closing = {
             let at = Members { local, state: at };
-            contacts.closing_at(p, &neighbours, (time, h), &at, forces)
+            contacts.closing_at(p, &neighbours, InStep { time, step: h }, &at, forces)
         };
         for impact in closing {
             if strikes == PASSES {

@@ -189,8 +189,8 @@ pub(crate) fn advance(
 /// rk4's step where every particle's acceleration is constant through it (the field, an
 /// applied acceleration, and the surfaces' answer to them: no pair forces, springs, rods
 /// or strings): x + v h + a h²/2, v + a h, which rk4 gives exactly for such motion, here
-/// from one evaluation instead of four (the ball pit's integration, 0 to 1 s: 12 µs a
-/// step against 3; it agrees with rk4's arithmetic to rounding, not bit for bit).
+/// from one evaluation instead of four (it agrees with rk4's arithmetic to rounding, not
+/// bit for bit; docs/performance.md has what it saves).
 pub(crate) fn ballistic(forces: &ForceModel, state: &mut State, h: f64, work: &mut Workspace) {
     from_accelerations(forces, state, work, |x, v, a| {
         *x += *v * h + a * (0.5 * h * h);

@@ -42,6 +42,7 @@ use crate::method::Integrator;
 use crate::profile::Stage;
 use crate::state::State;
 
+use super::step::StepContext;
 use super::{Bracket, Simulation, refine_instant};
 use crate::tuning::CARRIED;
 
@@ -342,8 +343,8 @@ impl Simulation {
 
     /// Applies the coupled impacts of a step of `taken` seconds in time order, `first`
     /// the first of them, each at its instant on the coupled system's integrated state,
-    /// and goes on with the impact search after each (see the module doc). Returns the
-    /// step taken: `taken`, or the instant of an impact that drove a coupled particle
+    /// and goes on with the impact search after each (see the module doc). The step's
+    /// context then holds the step taken: as it was, or the instant of an impact that drove a coupled particle
     /// into the surface it rests on faster than a resting contact's speed, where the step
     /// then ends (so that the next step starts with that impact, as it did when every
     /// coupled impact ended the step: the surface's support of a sinking coupled particle
@@ -351,12 +352,16 @@ impl Simulation {
     /// slower one is caught on its surface at once ([`catch_on_surfaces`]), as the next
     /// step's start would, and the step goes on. (With rk4 a faster one bounces off its
     /// surface there and then, and the step goes on too: [`response`].)
-    pub(super) fn coupled_impacts_in_step(&mut self, first: (f64, Impact), taken: f64) -> f64 {
+    pub(super) fn coupled_impacts_in_step(&mut self, first: (f64, Impact), step: &mut StepContext) {
+        let taken = step.taken;
         if self.integrator == Integrator::Rk4 && !self.forces.has_stiff_springs(taken) {
-            return self.coupled_responses_in_step(first, taken);
+            // rk4 keeps no acceleration for the next step: `moved` changes nothing.
+            step.taken = self.coupled_responses_in_step(first, taken);
+            step.moved = true;
+            return;
         }
         let Some(system) = self.coupled.as_mut() else {
-            return taken;
+            return;
         };
         let method = self.integrator;
         let local = Arc::clone(&system.local);
@@ -398,8 +403,9 @@ impl Simulation {
                     write_members(&members, &scratch.at, &mut self.state);
                     self.contacts.end_at(time, taken, &mut self.state, &local);
                     self.state.time = self.start.time + time;
-                    self.work.start_acceleration = None;
-                    return time;
+                    step.taken = time;
+                    step.moved = true;
+                    return;
                 };
                 self.contacts.caught_in_step += energy;
                 scratch.restart(time, taken, method);
@@ -422,9 +428,8 @@ impl Simulation {
         }
         if restarted {
             write_members(&members, &scratch.end, &mut self.state);
-            self.work.start_acceleration = None;
+            step.moved = true;
         }
-        taken
     }
 }
 

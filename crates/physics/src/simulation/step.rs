@@ -29,7 +29,7 @@ pub(super) struct StepContext {
     max_step: f64,
     /// The step as taken so far, seconds: the trial step, then shortened to the first
     /// event or impact that ends it.
-    taken: f64,
+    pub(super) taken: f64,
     /// How many impacts had been applied before this step's own: the contacts' applied
     /// impacts from this index on are those inside the step.
     begun: usize,
@@ -43,6 +43,10 @@ pub(super) struct StepContext {
     /// With a ledger: the dissipated power over the step, when it was measured before the
     /// impact that ends the step was applied.
     power_before_struck: Option<PowerOverStep>,
+    /// Whether a stage after the integration moved anything: the acceleration the
+    /// integrator kept for the next step's start is then not that state's, and the step's
+    /// end forgets it ([`Simulation::advance`], the one place that does).
+    pub(super) moved: bool,
 }
 
 /// What the step's start took from the motion impulsively (impacts due, surfaces
@@ -84,9 +88,12 @@ impl Simulation {
         self.impacts_inside(&mut step);
         self.log_impacts();
         let books = self.books_before_settling(&step);
-        self.resting(&step, books);
+        self.resting(&mut step, books);
         self.profiler.lap(Stage::RestingSolver);
-        self.projection()?;
+        self.projection(&mut step)?;
+        if step.moved {
+            self.work.start_acceleration = None;
+        }
         self.end_step(step.taken)
     }
 
@@ -107,6 +114,7 @@ impl Simulation {
             tie_event: None,
             struck: None,
             power_before_struck: None,
+            moved: false,
         }
     }
 
@@ -150,11 +158,9 @@ impl Simulation {
             &self.forces,
             &mut self.profiler,
         );
-        if self.contacts.changed_paths() {
-            self.work.start_acceleration = None;
-        }
+        step.moved |= self.contacts.changed_paths();
         if let Some(first) = interruption.filter(|_| self.coupled_in_step()) {
-            step.taken = self.coupled_impacts_in_step(first, step.taken);
+            self.coupled_impacts_in_step(first, step);
             self.profiler.lap(Stage::CoupledImpacts);
         } else if let Some((time, impact)) = interruption {
             // The impact comes first; a string's event, if still due, is found again.
@@ -168,7 +174,7 @@ impl Simulation {
             self.contacts
                 .apply(impact, &mut self.state, &self.forces, step.taken);
             self.answer_through_ties(impact);
-            self.work.start_acceleration = None;
+            step.moved = true;
             step.struck = Some(impact);
             self.profiler.lap(Stage::CoupledImpacts);
         }
@@ -197,12 +203,12 @@ impl Simulation {
 
     /// Stage 4: a string's event applied, resting contact ([`Self::settle`]), the
     /// turning particles turned, and the step booked.
-    fn resting(&mut self, step: &StepContext, books: Option<EndBooks>) {
+    fn resting(&mut self, step: &mut StepContext, books: Option<EndBooks>) {
         if let Some((k, _)) = step.tie_event {
             self.apply_tie_event(k);
-            self.work.start_acceleration = None;
+            step.moved = true;
         }
-        let lifted = self.settle(step.taken, step.struck);
+        let lifted = self.settle(step);
         let slipped = self.end_turning(step.taken, step.begun);
         if let (Some(start), Some(end)) = (step.start_books, books) {
             self.book(step, start, end, end.supported + lifted);
@@ -211,9 +217,9 @@ impl Simulation {
     }
 
     /// Stage 5: positions and velocities back onto the rods' and taut strings' lengths.
-    fn projection(&mut self) -> Result<(), SimulationError> {
+    fn projection(&mut self, step: &mut StepContext) -> Result<(), SimulationError> {
         if !self.forces.constraints.is_empty() {
-            self.work.start_acceleration = None;
+            step.moved = true;
             // A value gone non-finite is the first thing wrong, and says so.
             self.project_onto_ties()
                 .or_else(|tie| self.check_finite().and(Err(tie)))?;
@@ -260,15 +266,14 @@ impl Simulation {
         let before = self
             .ledger
             .map(|_| (self.kinetic_energy(), self.state.position.clone()));
-        if self.contacts.begin_step(
+        let caught = self.contacts.begin_step(
             &mut self.state,
             &mut self.forces,
             max_step,
             &mut self.profiler,
-        ) {
-            self.work.start_acceleration = None;
-        }
-        if self.begin_ties(max_step) {
+        );
+        // What the start moved is not where the last step's kept acceleration was taken.
+        if caught | self.begin_ties(max_step) {
             self.work.start_acceleration = None;
         }
         before.map(|(kinetic, position)| {
@@ -282,17 +287,14 @@ impl Simulation {
         })
     }
 
-    /// Resting contact after a step of `taken` ([`Contacts::settle`]). With a ledger,
-    /// returns the potential energy its position correction gave (a pile at rest sinks
-    /// ½ g h² a step under gravity, and the correction lifts it back), or 0.
-    fn settle(&mut self, taken: f64, struck: Option<Impact>) -> f64 {
+    /// Resting contact at the step's end ([`Contacts::settle`]). With a ledger, returns
+    /// the potential energy its position correction gave (a pile at rest sinks ½ g h² a
+    /// step under gravity, and the correction lifts it back), or 0.
+    fn settle(&mut self, step: &mut StepContext) -> f64 {
         let before = self.ledger.map(|_| self.state.position.clone());
-        if self
+        step.moved |= self
             .contacts
-            .settle(&mut self.state, &self.forces, taken, struck)
-        {
-            self.work.start_acceleration = None;
-        }
+            .settle(&mut self.state, &self.forces, step.taken, step.struck);
         before.map_or(0.0, |position| {
             diagnostics::potential_change(&self.forces, &position, &self.state.position)
         })

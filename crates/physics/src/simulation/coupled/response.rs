@@ -704,7 +704,6 @@ impl Simulation {
                     write_members(&members, at, &mut self.state);
                     self.contacts.end_at(time, taken, &mut self.state, &local);
                     self.state.time = self.start.time + time;
-                    self.work.start_acceleration = None;
                     self.forget_surfaces(&released);
                     return time;
                 }
@@ -729,7 +728,6 @@ impl Simulation {
             for (k, &p) in members.iter().enumerate() {
                 (self.state.position[p], self.state.velocity[p]) = motion.at(k, taken, taken);
             }
-            self.work.start_acceleration = None;
         }
         self.forget_surfaces(&released);
         taken

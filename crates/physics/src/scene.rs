@@ -15,6 +15,7 @@ pub mod instruments;
 mod joint;
 pub mod lesson;
 mod links;
+mod object;
 mod presentation;
 pub mod series;
 mod validate;
@@ -32,6 +33,7 @@ pub use instruments::{Instruments, Protractor, Stopwatch, Trigger};
 pub(crate) use joint::in_frame;
 pub use joint::{Joint, JointKind, Motor};
 pub use lesson::{Lesson, Question, Slider, Verdict};
+pub use object::{ObjectId, ObjectKind};
 pub use presentation::{Follow, Graph, Series, View};
 pub use validate::{Rule, check_value};
 

@@ -7,7 +7,9 @@
 
 use numpy::{PyReadonlyArray1, PyReadonlyArray2};
 use physics::fields::{self, Field};
-use physics::{Body, Endpoint, Joint, Motor, Particle, Ramp, Shape, Spring, Tie, TieKind, Vector};
+use physics::{
+    Body, Endpoint, Joint, Motor, ObjectKind, Particle, Ramp, Shape, Spring, Tie, TieKind, Vector,
+};
 use pyo3::exceptions::PyTypeError;
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
@@ -15,39 +17,18 @@ use pyo3::types::PyDict;
 use crate::scene::{Scene, SceneObject, What, checked, from_python, number};
 use crate::scene_error;
 
-/// The kind of object an `add_…` method makes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum New {
-    Particle,
-    Spring,
-    Rod,
-    String,
-    Ramp,
-    Body,
+/// The `add_…` method that makes an object of `kind`: `add_` and the file's table name.
+fn method(kind: ObjectKind) -> String {
+    format!("add_{}", kind.as_str())
 }
 
-impl New {
-    fn method(self) -> &'static str {
-        match self {
-            Self::Particle => "add_particle",
-            Self::Spring => "add_spring",
-            Self::Rod => "add_rod",
-            Self::String => "add_string",
-            Self::Ramp => "add_ramp",
-            Self::Body => "add_body",
-        }
-    }
-
-    /// The name a file gives the `n`-th of its kind (from 1) that has none.
-    fn default_name(self, n: usize) -> String {
-        match self {
-            Self::Particle => format!("p{n}"),
-            Self::Spring => format!("s{n}"),
-            Self::Rod => format!("rod{n}"),
-            Self::String => format!("string{n}"),
-            Self::Ramp => format!("r{n}"),
-            Self::Body => format!("body{n}"),
-        }
+/// The name a file gives the `n`-th object of `kind` (from 1) that has none.
+fn default_name(kind: ObjectKind, n: usize) -> String {
+    match kind {
+        ObjectKind::Particle => format!("p{n}"),
+        ObjectKind::Spring => format!("s{n}"),
+        ObjectKind::Ramp => format!("r{n}"),
+        other => format!("{}{n}", other.as_str()),
     }
 }
 
@@ -118,22 +99,11 @@ fn python_key(key: &str) -> &str {
 
 /// A name no object of `scene` has: the one a file would give the next of its kind, or
 /// the next number free.
-fn free_name(scene: &physics::Scene, new: New) -> String {
-    let count = match new {
-        New::Particle => scene.particles.len(),
-        New::Spring => scene.springs.len(),
-        New::Rod => scene.ties.iter().filter(|t| t.kind == TieKind::Rod).count(),
-        New::String => scene
-            .ties
-            .iter()
-            .filter(|t| t.kind == TieKind::String)
-            .count(),
-        New::Ramp => scene.ramps.len(),
-        New::Body => scene.bodies.len(),
-    };
+fn free_name(scene: &physics::Scene, new: ObjectKind) -> String {
+    let count = scene.objects_of(new).len();
     let names = all_names(scene).count();
     first_free(
-        |n| new.default_name(n),
+        |n| default_name(new, n),
         count + 1,
         names,
         |name| taken(scene, name),
@@ -194,30 +164,31 @@ fn all_names(scene: &physics::Scene) -> impl Iterator<Item = String> + '_ {
 /// Adds an object of kind `new` made from `kwargs` to `scene` and returns it.
 pub(crate) fn add(
     scene: &Bound<'_, Scene>,
-    new: New,
+    new: ObjectKind,
     name: Option<String>,
     kwargs: Option<&Bound<'_, PyDict>>,
 ) -> PyResult<SceneObject> {
-    let method = new.method();
+    let method_name = method(new);
+    let method = method_name.as_str();
     let given = given(kwargs)?;
     let mut changed = scene.borrow().inner.clone();
     let name = name.unwrap_or_else(|| free_name(&changed, new));
     let origin = || Endpoint::Point(Vector::ZERO);
     let what = match new {
-        New::Particle => {
+        ObjectKind::Particle => {
             let mut particle = Particle::new(name.clone(), 1.0);
             fill(method, fields::PARTICLE, &[], &mut particle, &given)?;
             changed.particles.push(particle);
-            What::Particle(name)
+            What::Object(new, name)
         }
-        New::Spring => {
+        ObjectKind::Spring => {
             let mut spring = Spring::new(name.clone(), origin(), origin(), 0.0, 0.0);
             fill(method, fields::SPRING, &[], &mut spring, &given)?;
             changed.springs.push(spring);
-            What::Spring(name)
+            What::Object(new, name)
         }
-        New::Rod | New::String => {
-            let kind = if new == New::Rod {
+        ObjectKind::Rod | ObjectKind::String => {
+            let kind = if new == ObjectKind::Rod {
                 TieKind::Rod
             } else {
                 TieKind::String
@@ -241,13 +212,9 @@ pub(crate) fn add(
                 TieKind::String => changed.ties.len(),
             };
             changed.ties.insert(at, tie);
-            if kind == TieKind::Rod {
-                What::Rod(name)
-            } else {
-                What::String(name)
-            }
+            What::Object(new, name)
         }
-        New::Ramp => {
+        ObjectKind::Ramp => {
             let mut ramp = Ramp::new(name.clone(), Vector::ZERO, Vector::ZERO);
             fill(
                 method,
@@ -261,13 +228,19 @@ pub(crate) fn add(
                     Some(number(value, &format!("{method}(): static_friction"))?);
             }
             changed.ramps.push(ramp);
-            What::Ramp(name)
+            What::Object(new, name)
         }
-        New::Body => {
+        ObjectKind::Body => {
             changed
                 .bodies
                 .push(body_from(method, name.clone(), &given)?);
-            What::Body(name)
+            What::Object(new, name)
+        }
+        // Joints and forces name what they join or act on: their own methods make them.
+        ObjectKind::Pin | ObjectKind::Hinge | ObjectKind::Pulley | ObjectKind::Force => {
+            return Err(PyTypeError::new_err(format!(
+                "{method}() takes the objects it joins or acts on; see its own signature"
+            )));
         }
     };
     scene.borrow_mut().inner = checked(changed)?;
@@ -489,7 +462,7 @@ pub(crate) fn add_particles(
     let mut names = Vec::with_capacity(n);
     for (i, position) in positions.into_iter().enumerate() {
         let (number, name) = first_free(
-            |n| New::Particle.default_name(n),
+            |n| default_name(ObjectKind::Particle, n),
             next,
             taken.len(),
             |name| taken.contains(name),

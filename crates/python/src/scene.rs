@@ -6,7 +6,9 @@
 use std::path::PathBuf;
 
 use physics::fields::{self, Field, Kind, Value};
-use physics::{Bounds, Color, Endpoint, Integrator, PairForces, Section, Vector};
+use physics::{
+    Bounds, Color, Endpoint, Integrator, ObjectId, ObjectKind, PairForces, Section, Vector,
+};
 use pyo3::exceptions::{
     PyAttributeError, PyFileNotFoundError, PyIsADirectoryError, PyOSError, PyPermissionError,
     PyTypeError,
@@ -28,15 +30,11 @@ pub struct Scene {
     pub(crate) inner: physics::Scene,
 }
 
-/// Which object of a scene a [`SceneObject`] is.
+/// Which object of a scene a [`SceneObject`] is: an object by its kind and name, or a
+/// section that is always there.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) enum What {
-    Particle(String),
-    Spring(String),
-    Rod(String),
-    String(String),
-    Ramp(String),
-    Body(String),
+    Object(ObjectKind, String),
     World,
     Simulation,
 }
@@ -44,12 +42,7 @@ pub(crate) enum What {
 impl What {
     fn kind(&self) -> &'static str {
         match self {
-            Self::Particle(_) => "particle",
-            Self::Spring(_) => "spring",
-            Self::Rod(_) => "rod",
-            Self::String(_) => "string",
-            Self::Ramp(_) => "ramp",
-            Self::Body(_) => "body",
+            Self::Object(kind, _) => kind.as_str(),
             Self::World => "world",
             Self::Simulation => "simulation",
         }
@@ -57,87 +50,34 @@ impl What {
 
     fn name(&self) -> Option<&str> {
         match self {
-            Self::Particle(n)
-            | Self::Spring(n)
-            | Self::Rod(n)
-            | Self::String(n)
-            | Self::Ramp(n)
-            | Self::Body(n) => Some(n),
+            Self::Object(_, name) => Some(name),
             Self::World | Self::Simulation => None,
         }
     }
 
     /// Where the object is in `scene`, or why it is not there.
     fn section(&self, scene: &physics::Scene) -> PyResult<Section> {
-        let missing = |name: &str, names: Vec<&str>| {
-            scene_error(format!(
-                "the scene has no {} named '{name}'; its {}s are: {}",
-                self.kind(),
-                self.kind(),
-                if names.is_empty() {
-                    "none".to_owned()
-                } else {
-                    names.join(", ")
-                }
-            ))
+        let (kind, name) = match self {
+            Self::Object(kind, name) => (*kind, name),
+            Self::World => return Ok(Section::World),
+            Self::Simulation => return Ok(Section::Simulation),
         };
-        let tie = |name: &str, kind: physics::TieKind| {
-            let ties = || {
-                scene
-                    .ties
-                    .iter()
-                    .enumerate()
-                    .filter(|(_, t)| t.kind == kind)
-            };
-            ties()
-                .find(|(_, t)| t.name == name)
-                .map(|(i, _)| Section::Tie(i))
-                .ok_or_else(|| missing(name, ties().map(|(_, t)| t.name.as_str()).collect()))
-        };
-        match self {
-            Self::Particle(name) => scene
-                .particles
-                .iter()
-                .position(|p| p.name == *name)
-                .map(Section::Particle)
-                .ok_or_else(|| {
-                    missing(
-                        name,
-                        scene.particles.iter().map(|p| p.name.as_str()).collect(),
-                    )
-                }),
-            Self::Spring(name) => scene
-                .springs
-                .iter()
-                .position(|s| s.name == *name)
-                .map(Section::Spring)
-                .ok_or_else(|| {
-                    missing(
-                        name,
-                        scene.springs.iter().map(|s| s.name.as_str()).collect(),
-                    )
-                }),
-            Self::Rod(name) => tie(name, physics::TieKind::Rod),
-            Self::String(name) => tie(name, physics::TieKind::String),
-            Self::Ramp(name) => scene
-                .ramps
-                .iter()
-                .position(|r| r.name == *name)
-                .map(Section::Ramp)
-                .ok_or_else(|| {
-                    missing(name, scene.ramps.iter().map(|r| r.name.as_str()).collect())
-                }),
-            Self::Body(name) => scene
-                .bodies
-                .iter()
-                .position(|b| b.name == *name)
-                .map(Section::Body)
-                .ok_or_else(|| {
-                    missing(name, scene.bodies.iter().map(|b| b.name.as_str()).collect())
-                }),
-            Self::World => Ok(Section::World),
-            Self::Simulation => Ok(Section::Simulation),
-        }
+        scene
+            .find_object(kind, name)
+            .map(ObjectId::section)
+            .ok_or_else(|| {
+                let names: Vec<&str> = scene.objects_of(kind).into_iter().map(|(_, n)| n).collect();
+                scene_error(format!(
+                    "the scene has no {} named '{name}'; its {}s are: {}",
+                    self.kind(),
+                    self.kind(),
+                    if names.is_empty() {
+                        "none".to_owned()
+                    } else {
+                        names.join(", ")
+                    }
+                ))
+            })
     }
 }
 
@@ -542,33 +482,33 @@ impl Scene {
 
     /// The particle called `name`, its fields as attributes.
     fn particle(slf: Bound<'_, Self>, name: &str) -> PyResult<SceneObject> {
-        SceneObject::of(slf, What::Particle(name.to_owned()))
+        SceneObject::of(slf, What::Object(ObjectKind::Particle, name.to_owned()))
     }
 
     /// The spring called `name`.
     fn spring(slf: Bound<'_, Self>, name: &str) -> PyResult<SceneObject> {
-        SceneObject::of(slf, What::Spring(name.to_owned()))
+        SceneObject::of(slf, What::Object(ObjectKind::Spring, name.to_owned()))
     }
 
     /// The rod called `name`.
     fn rod(slf: Bound<'_, Self>, name: &str) -> PyResult<SceneObject> {
-        SceneObject::of(slf, What::Rod(name.to_owned()))
+        SceneObject::of(slf, What::Object(ObjectKind::Rod, name.to_owned()))
     }
 
     /// The string called `name`.
     fn string(slf: Bound<'_, Self>, name: &str) -> PyResult<SceneObject> {
-        SceneObject::of(slf, What::String(name.to_owned()))
+        SceneObject::of(slf, What::Object(ObjectKind::String, name.to_owned()))
     }
 
     /// The ramp called `name`.
     fn ramp(slf: Bound<'_, Self>, name: &str) -> PyResult<SceneObject> {
-        SceneObject::of(slf, What::Ramp(name.to_owned()))
+        SceneObject::of(slf, What::Object(ObjectKind::Ramp, name.to_owned()))
     }
 
     /// The rigid body called `name`: its table's fields as attributes (`block.angle`,
     /// `block.mass`); its shape stays as the file gives it.
     fn body(slf: Bound<'_, Self>, name: &str) -> PyResult<SceneObject> {
-        SceneObject::of(slf, What::Body(name.to_owned()))
+        SceneObject::of(slf, What::Object(ObjectKind::Body, name.to_owned()))
     }
 
     /// Adds a particle and returns it: the scene file's keys as keywords (`mass` and
@@ -579,7 +519,7 @@ impl Scene {
         name: Option<String>,
         fields: Option<Bound<'_, PyDict>>,
     ) -> PyResult<SceneObject> {
-        crate::build::add(&slf, crate::build::New::Particle, name, fields.as_ref())
+        crate::build::add(&slf, ObjectKind::Particle, name, fields.as_ref())
     }
 
     /// Adds a spring (`from_`, `to`, `stiffness`, `natural_length`, …) and returns it.
@@ -589,7 +529,7 @@ impl Scene {
         name: Option<String>,
         fields: Option<Bound<'_, PyDict>>,
     ) -> PyResult<SceneObject> {
-        crate::build::add(&slf, crate::build::New::Spring, name, fields.as_ref())
+        crate::build::add(&slf, ObjectKind::Spring, name, fields.as_ref())
     }
 
     /// Adds a rod (`from_`, `to`; `length` defaults to their distance) and returns it.
@@ -599,7 +539,7 @@ impl Scene {
         name: Option<String>,
         fields: Option<Bound<'_, PyDict>>,
     ) -> PyResult<SceneObject> {
-        crate::build::add(&slf, crate::build::New::Rod, name, fields.as_ref())
+        crate::build::add(&slf, ObjectKind::Rod, name, fields.as_ref())
     }
 
     /// Adds a string (`from_`, `to`; `length` defaults to their distance) and returns it.
@@ -609,7 +549,7 @@ impl Scene {
         name: Option<String>,
         fields: Option<Bound<'_, PyDict>>,
     ) -> PyResult<SceneObject> {
-        crate::build::add(&slf, crate::build::New::String, name, fields.as_ref())
+        crate::build::add(&slf, ObjectKind::String, name, fields.as_ref())
     }
 
     /// Adds a ramp (`from_`, `to`, `friction`, `static_friction`, …) and returns it.
@@ -619,7 +559,7 @@ impl Scene {
         name: Option<String>,
         fields: Option<Bound<'_, PyDict>>,
     ) -> PyResult<SceneObject> {
-        crate::build::add(&slf, crate::build::New::Ramp, name, fields.as_ref())
+        crate::build::add(&slf, ObjectKind::Ramp, name, fields.as_ref())
     }
 
     /// Adds a rigid body and returns it: `shape="box"` with `width` and `height`, or a
@@ -632,7 +572,7 @@ impl Scene {
         name: Option<String>,
         fields: Option<Bound<'_, PyDict>>,
     ) -> PyResult<SceneObject> {
-        crate::build::add(&slf, crate::build::New::Body, name, fields.as_ref())
+        crate::build::add(&slf, ObjectKind::Body, name, fields.as_ref())
     }
 
     /// Adds a pin holding `body` to the world at the point `at` (on or off the body);
@@ -894,12 +834,7 @@ impl SceneObject {
             changed.rename(section, &new);
             scene.inner = checked(changed)?;
             self.what = match &self.what {
-                What::Particle(_) => What::Particle(new),
-                What::Spring(_) => What::Spring(new),
-                What::Rod(_) => What::Rod(new),
-                What::String(_) => What::String(new),
-                What::Ramp(_) => What::Ramp(new),
-                What::Body(_) => What::Body(new),
+                What::Object(kind, _) => What::Object(*kind, new),
                 other => other.clone(),
             };
             return Ok(());

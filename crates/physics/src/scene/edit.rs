@@ -2,7 +2,7 @@
 //! springs, rods, strings, forces, graphs and camera follow it; a deleted particle takes its
 //! springs, rods, strings, the forces on it alone and graph series with it. The app's inspector, canvas and keyboard all edit through these.
 
-use super::{Endpoint, Scene, Section};
+use super::{Endpoint, ObjectId, Scene, Section};
 
 impl Scene {
     /// The name of the object of `section`, if there is one.
@@ -58,29 +58,21 @@ impl Scene {
     /// Removes the objects of `sections` ([`Self::remove`] of each, found by name as the
     /// lists close up; a link a removed particle took with it is gone already).
     pub fn remove_all(&mut self, sections: &[Section]) {
-        let named: Vec<(Section, String)> = sections
+        let named: Vec<(ObjectId, String)> = sections
             .iter()
-            .filter_map(|&section| Some((section, self.name_of(section)?.to_owned())))
+            .filter_map(|&section| {
+                Some((ObjectId::of(section)?, self.name_of(section)?.to_owned()))
+            })
             .collect();
-        for (section, name) in named {
-            // The same kind of object at index i, while there is one.
-            let kind = |i: usize| match section {
-                Section::Particle(_) => Some(Section::Particle(i)),
-                Section::Spring(_) => Some(Section::Spring(i)),
-                Section::Tie(_) => Some(Section::Tie(i)),
-                Section::Ramp(_) => Some(Section::Ramp(i)),
-                Section::Body(_) => Some(Section::Body(i)),
-                _ => None,
-            };
+        for (id, name) in named {
+            // The object of the same list with that name, while the list has one.
             let now = (0..)
-                .map_while(|i| {
-                    let at = kind(i)?;
-                    Some((at, self.name_of(at)?))
-                })
+                .map(|i| id.with_index(i))
+                .map_while(|at| Some((at, self.name_of(at.section())?)))
                 .find(|&(_, now)| now == name)
                 .map(|(at, _)| at);
-            if let Some(section) = now {
-                self.remove(section);
+            if let Some(at) = now {
+                self.remove(at.section());
             }
         }
     }

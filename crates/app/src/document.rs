@@ -181,7 +181,7 @@ impl Document {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::edit::Object;
+    use physics::ObjectKind;
     use physics::Particle;
 
     /// Names are unique among all objects, bodies too: a particle placed beside a body
@@ -200,7 +200,7 @@ mod tests {
     fn undo_and_redo_without_limit() {
         let mut document = Document::new(Scene::new());
         for i in 0..500 {
-            document.apply(Edit::Add(Object::Particle), |scene| {
+            document.apply(Edit::Add(ObjectKind::Particle), |scene| {
                 scene.particles.push(Particle::new(format!("p{i}"), 1.0));
             });
         }

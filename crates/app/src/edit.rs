@@ -2,18 +2,9 @@
 //! words Edit → Undo and Redo show. A type, not a string, so that every edit has its
 //! words in every language (a test asks each language for each kind).
 
-use crate::i18n::{Arg, tr, tr_with};
+use physics::ObjectKind;
 
-/// A kind of object the tools add and Delete removes.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Object {
-    Particle,
-    Spring,
-    Rod,
-    String,
-    Ramp,
-    Body,
-}
+use crate::i18n::{Arg, tr, tr_with};
 
 /// One undoable change of the scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -24,8 +15,8 @@ pub enum Edit {
         kind: &'static str,
         key: &'static str,
     },
-    Add(Object),
-    Delete(Object),
+    Add(ObjectKind),
+    Delete(ObjectKind),
     /// A new name typed in the inspector.
     Rename,
     MoveParticle,
@@ -62,19 +53,27 @@ pub enum Edit {
 impl Edit {
     /// Every edit but [`Edit::Set`]'s fields, for the tests.
     #[cfg(test)]
-    const ALL: [Self; 35] = [
-        Self::Add(Object::Particle),
-        Self::Add(Object::Spring),
-        Self::Add(Object::Rod),
-        Self::Add(Object::String),
-        Self::Add(Object::Ramp),
-        Self::Add(Object::Body),
-        Self::Delete(Object::Particle),
-        Self::Delete(Object::Spring),
-        Self::Delete(Object::Rod),
-        Self::Delete(Object::String),
-        Self::Delete(Object::Ramp),
-        Self::Delete(Object::Body),
+    const ALL: [Self; 43] = [
+        Self::Add(ObjectKind::Particle),
+        Self::Add(ObjectKind::Spring),
+        Self::Add(ObjectKind::Rod),
+        Self::Add(ObjectKind::String),
+        Self::Add(ObjectKind::Ramp),
+        Self::Add(ObjectKind::Body),
+        Self::Add(ObjectKind::Pin),
+        Self::Add(ObjectKind::Hinge),
+        Self::Add(ObjectKind::Pulley),
+        Self::Add(ObjectKind::Force),
+        Self::Delete(ObjectKind::Particle),
+        Self::Delete(ObjectKind::Spring),
+        Self::Delete(ObjectKind::Rod),
+        Self::Delete(ObjectKind::String),
+        Self::Delete(ObjectKind::Ramp),
+        Self::Delete(ObjectKind::Body),
+        Self::Delete(ObjectKind::Pin),
+        Self::Delete(ObjectKind::Hinge),
+        Self::Delete(ObjectKind::Pulley),
+        Self::Delete(ObjectKind::Force),
         Self::Rename,
         Self::MoveParticle,
         Self::MoveRamp,
@@ -104,18 +103,26 @@ impl Edit {
     fn message(self) -> &'static str {
         match self {
             Self::Set { .. } => "edit-set",
-            Self::Add(Object::Particle) => "edit-add-particle",
-            Self::Add(Object::Spring) => "edit-add-spring",
-            Self::Add(Object::Rod) => "edit-add-rod",
-            Self::Add(Object::String) => "edit-add-string",
-            Self::Add(Object::Ramp) => "edit-add-ramp",
-            Self::Add(Object::Body) => "edit-add-body",
-            Self::Delete(Object::Particle) => "edit-delete-particle",
-            Self::Delete(Object::Spring) => "edit-delete-spring",
-            Self::Delete(Object::Rod) => "edit-delete-rod",
-            Self::Delete(Object::String) => "edit-delete-string",
-            Self::Delete(Object::Ramp) => "edit-delete-ramp",
-            Self::Delete(Object::Body) => "edit-delete-body",
+            Self::Add(ObjectKind::Particle) => "edit-add-particle",
+            Self::Add(ObjectKind::Spring) => "edit-add-spring",
+            Self::Add(ObjectKind::Rod) => "edit-add-rod",
+            Self::Add(ObjectKind::String) => "edit-add-string",
+            Self::Add(ObjectKind::Ramp) => "edit-add-ramp",
+            Self::Add(ObjectKind::Body) => "edit-add-body",
+            Self::Add(ObjectKind::Pin) => "edit-add-pin",
+            Self::Add(ObjectKind::Hinge) => "edit-add-hinge",
+            Self::Add(ObjectKind::Pulley) => "edit-add-pulley",
+            Self::Add(ObjectKind::Force) => "edit-add-force",
+            Self::Delete(ObjectKind::Particle) => "edit-delete-particle",
+            Self::Delete(ObjectKind::Spring) => "edit-delete-spring",
+            Self::Delete(ObjectKind::Rod) => "edit-delete-rod",
+            Self::Delete(ObjectKind::String) => "edit-delete-string",
+            Self::Delete(ObjectKind::Ramp) => "edit-delete-ramp",
+            Self::Delete(ObjectKind::Body) => "edit-delete-body",
+            Self::Delete(ObjectKind::Pin) => "edit-delete-pin",
+            Self::Delete(ObjectKind::Hinge) => "edit-delete-hinge",
+            Self::Delete(ObjectKind::Pulley) => "edit-delete-pulley",
+            Self::Delete(ObjectKind::Force) => "edit-delete-force",
             Self::Rename => "edit-rename",
             Self::MoveParticle => "edit-move-particle",
             Self::MoveRamp => "edit-move-ramp",

@@ -73,7 +73,7 @@ use web_time::Instant;
 pub use action::Action;
 pub use canvas::{FieldKind, Instrument, Selection, Tool};
 pub use document::Document;
-use edit::{Edit, Object};
+use edit::Edit;
 use files::{Choice, Files, Pending, Purpose};
 use i18n::{Arg, tr, tr_with};
 use plots::Graphs;
@@ -552,9 +552,14 @@ impl App {
         self.document.apply(Edit::Paste, |scene| {
             added = scene.paste(&part, offset);
         });
-        self.selection = added.first().and_then(|&section| Selection::of(section));
+        self.selection = added
+            .first()
+            .and_then(|&section| Selection::of(section).filter(|&id| canvas::selectable(id)));
         // Several objects pasted are selected together, to be moved as one.
-        self.canvas.group = added.iter().filter_map(|&s| Selection::of(s)).collect();
+        self.canvas.group = added
+            .iter()
+            .filter_map(|&s| Selection::of(s).filter(|&id| canvas::selectable(id)))
+            .collect();
         if self.canvas.group.len() < 2 {
             self.canvas.group.clear();
         }
@@ -577,16 +582,10 @@ impl App {
             return;
         }
         if let Some(selected) = self.selection.take() {
-            let edit = match selected {
-                Selection::Particle(_) => Edit::Delete(Object::Particle),
-                Selection::Spring(_) => Edit::Delete(Object::Spring),
-                Selection::Tie(i) => match self.document.scene().ties.get(i).map(|t| t.kind) {
-                    Some(physics::TieKind::String) => Edit::Delete(Object::String),
-                    _ => Edit::Delete(Object::Rod),
-                },
-                Selection::Ramp(_) => Edit::Delete(Object::Ramp),
-                Selection::Body(_) => Edit::Delete(Object::Body),
+            let Some(kind) = self.document.scene().kind_of(selected) else {
+                return;
             };
+            let edit = Edit::Delete(kind);
             self.document
                 .apply(edit, |scene| scene.remove(selected.section()));
         }

@@ -267,7 +267,7 @@ pub(super) fn describe(scene: &Scene, frame: &Frame, selection: Option<Selection
                 centre.y
             ))
         }),
-        None => None,
+        Some(Selection::Joint(_) | Selection::Force(_)) | None => None,
     };
     if let Some(selected) = selected {
         text.push_str(" Selected: ");

@@ -24,7 +24,7 @@ mod tools;
 mod view;
 
 use egui::{Pos2, Rect, Sense, Ui, Vec2};
-use physics::{DVec2, Endpoint, Follow, Particle, Scene, Section};
+use physics::{DVec2, Endpoint, Follow, Particle, Scene};
 
 use crate::document::Document;
 use crate::i18n::{Arg, tr_with};
@@ -94,41 +94,15 @@ impl Tool {
     }
 }
 
-/// The selected object.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Selection {
-    Particle(usize),
-    Spring(usize),
-    /// A rod or a string.
-    Tie(usize),
-    Ramp(usize),
-    /// A rigid body.
-    Body(usize),
-}
+/// The selected object: the scene's own identity of an object ([`physics::ObjectId`]),
+/// so a section, an edit and a selection name it alike. The canvas selects particles,
+/// springs, rods and strings, ramps and bodies.
+pub type Selection = physics::ObjectId;
 
-impl Selection {
-    /// The selection of the object of `section`, if it is an object.
-    pub fn of(section: Section) -> Option<Self> {
-        match section {
-            Section::Particle(i) => Some(Self::Particle(i)),
-            Section::Spring(i) => Some(Self::Spring(i)),
-            Section::Tie(i) => Some(Self::Tie(i)),
-            Section::Ramp(i) => Some(Self::Ramp(i)),
-            Section::Body(i) => Some(Self::Body(i)),
-            _ => None,
-        }
-    }
-
-    /// The scene section of the selected object.
-    pub fn section(self) -> Section {
-        match self {
-            Self::Particle(i) => Section::Particle(i),
-            Self::Spring(i) => Section::Spring(i),
-            Self::Tie(i) => Section::Tie(i),
-            Self::Ramp(i) => Section::Ramp(i),
-            Self::Body(i) => Section::Body(i),
-        }
-    }
+/// Whether the canvas selects `id`: its particles, springs, rods and strings, ramps and
+/// bodies; a joint or a force is reached through what it holds or acts on.
+pub const fn selectable(id: Selection) -> bool {
+    !matches!(id, Selection::Joint(_) | Selection::Force(_))
 }
 
 /// Which overlays are drawn.

@@ -6,12 +6,12 @@
 //! places points on a grid step chosen from the zoom (hold Alt to place freely).
 
 use egui::{Pos2, Rect, Ui};
-use physics::{DVec2, Endpoint, Particle, Ramp, Scene, Spring, Tie, Vector};
+use physics::{DVec2, Endpoint, ObjectKind, Particle, Ramp, Scene, Spring, Tie, Vector};
 
 use super::view::nice_length;
 use super::{Canvas, Frame, Selection, Tool, VELOCITY_ARROW_SECONDS};
 use crate::document::Document;
-use crate::edit::{Edit, Object};
+use crate::edit::Edit;
 
 /// A drag in progress.
 #[derive(Clone, Copy, Debug)]
@@ -520,7 +520,7 @@ impl Canvas {
         let name = document.unused_name("p");
         let mut particle = Particle::new(name, 1.0).position(position);
         particle.radius = nice_length(12.0 / self.view.pixels_per_metre).min(0.5);
-        document.apply(Edit::Add(Object::Particle), |scene| {
+        document.apply(Edit::Add(ObjectKind::Particle), |scene| {
             scene.particles.push(particle);
         });
         Selection::Particle(document.scene().particles.len() - 1)
@@ -541,7 +541,7 @@ pub(super) fn add_link(
     let from = from.as_str();
     if tool == Tool::Spring {
         let spring = Spring::new(document.unused_name("s"), from, target, 10.0, length);
-        document.apply(Edit::Add(Object::Spring), |scene| {
+        document.apply(Edit::Add(ObjectKind::Spring), |scene| {
             scene.springs.push(spring);
         });
         return Some(Selection::Spring(document.scene().springs.len() - 1));
@@ -552,13 +552,13 @@ pub(super) fn add_link(
     let (tie, edit) = if tool == Tool::Rod {
         (
             Tie::rod(document.unused_name("rod"), from, target, length),
-            Edit::Add(Object::Rod),
+            Edit::Add(ObjectKind::Rod),
         )
     } else {
         let name = document.unused_name("string");
         (
             Tie::string(name, from, target, length),
-            Edit::Add(Object::String),
+            Edit::Add(ObjectKind::String),
         )
     };
     document.apply(edit, |scene| scene.ties.push(tie));
@@ -577,7 +577,7 @@ pub(super) fn add_polygon(document: &mut Document, corners: &[DVec2]) -> Option<
     let local: Vec<DVec2> = hull.iter().map(|&v| v - moments.centroid).collect();
     let name = document.unused_name("polygon");
     let body = physics::Body::polygon(name, local, 1.0).position(moments.centroid);
-    document.apply(Edit::Add(Object::Body), |scene| scene.bodies.push(body));
+    document.apply(Edit::Add(ObjectKind::Body), |scene| scene.bodies.push(body));
     Some(Selection::Body(document.scene().bodies.len() - 1))
 }
 
@@ -616,13 +616,13 @@ pub(super) fn convex_hull(points: &[DVec2]) -> Vec<DVec2> {
 pub(super) fn add_box(document: &mut Document, at: DVec2, size: DVec2) -> Selection {
     let name = document.unused_name("box");
     let body = physics::Body::rectangle(name, size.x, size.y, 1.0).position(at);
-    document.apply(Edit::Add(Object::Body), |scene| scene.bodies.push(body));
+    document.apply(Edit::Add(ObjectKind::Body), |scene| scene.bodies.push(body));
     Selection::Body(document.scene().bodies.len() - 1)
 }
 
 pub(super) fn add_ramp(document: &mut Document, from: DVec2, to: DVec2) -> Selection {
     let name = document.unused_name("r");
-    document.apply(Edit::Add(Object::Ramp), |scene| {
+    document.apply(Edit::Add(ObjectKind::Ramp), |scene| {
         scene.ramps.push(Ramp::new(name, from, to));
     });
     Selection::Ramp(document.scene().ramps.len() - 1)
@@ -669,7 +669,10 @@ fn move_group(scene: &mut Scene, group: &[Selection], delta: DVec2) {
                     body.position = keep_form(body.position, body.position.to_dvec2() + delta);
                 }
             }
-            Selection::Spring(_) | Selection::Tie(_) => {}
+            Selection::Spring(_)
+            | Selection::Tie(_)
+            | Selection::Joint(_)
+            | Selection::Force(_) => {}
         }
     }
 }

@@ -4,7 +4,8 @@ use egui::{Key, Modifiers};
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use newtonlab_app::App;
-use newtonlab_app::edit::{Edit, Object};
+use newtonlab_app::edit::Edit;
+use physics::ObjectKind;
 use physics::Scene;
 
 use crate::common::{example_scene, harness, one_ball};
@@ -58,7 +59,7 @@ fn save_then_open_round_trips_a_scene() {
     harness
         .state_mut()
         .document
-        .apply(Edit::Delete(Object::Particle), |s| s.particles.clear());
+        .apply(Edit::Delete(ObjectKind::Particle), |s| s.particles.clear());
     harness.get_by_label("File").click();
     harness.run();
     harness.get_by_label_contains("Open…").click();

@@ -4,8 +4,9 @@
 
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
-use newtonlab_app::edit::{Edit, Object};
+use newtonlab_app::edit::Edit;
 use newtonlab_app::{App, share};
+use physics::ObjectKind;
 
 use crate::common::{example_scene, harness, one_ball};
 
@@ -101,7 +102,7 @@ fn a_pasted_link_asks_before_unsaved_changes_go() {
     harness
         .state_mut()
         .document
-        .apply(Edit::Delete(Object::Particle), |s| s.particles.clear());
+        .apply(Edit::Delete(ObjectKind::Particle), |s| s.particles.clear());
     paste_link(&mut harness, "http://127.0.0.1:8080/#example=collision");
     assert!(
         harness.state().document.scene().particles.is_empty(),

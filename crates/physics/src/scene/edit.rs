@@ -7,14 +7,7 @@ use super::{Endpoint, ObjectId, Scene, Section};
 impl Scene {
     /// The name of the object of `section`, if there is one.
     pub fn name_of(&self, section: Section) -> Option<&str> {
-        match section {
-            Section::Particle(i) => self.particles.get(i).map(|p| p.name.as_str()),
-            Section::Spring(i) => self.springs.get(i).map(|s| s.name.as_str()),
-            Section::Tie(i) => self.ties.get(i).map(|t| t.name.as_str()),
-            Section::Ramp(i) => self.ramps.get(i).map(|r| r.name.as_str()),
-            Section::Body(i) => self.bodies.get(i).map(|b| b.name.as_str()),
-            _ => None,
-        }
+        self.name_of_object(ObjectId::of(section)?)
     }
 
     /// Renames the object of `section`; everything that names a renamed particle (spring

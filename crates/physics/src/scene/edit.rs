@@ -1,6 +1,7 @@
 //! Edits that are rules of the scene rather than of any one screen: a renamed particle's
 //! springs, rods, strings, forces, graphs and camera follow it; a deleted particle takes its
-//! springs, rods, strings, the forces on it alone and graph series with it. The app's inspector, canvas and keyboard all edit through these.
+//! springs, rods, strings, the forces on it alone and graph series with it; a deleted body
+//! takes the pins, hinges and pulleys that hold it. The app's inspector, canvas and keyboard all edit through these.
 
 use super::{Endpoint, ObjectId, Scene, Section};
 
@@ -105,7 +106,22 @@ impl Scene {
             }
             Section::Body(i) if i < self.bodies.len() => {
                 let name = self.bodies.remove(i).name;
+                // A joint is nothing without a body it holds: it goes with it, as a
+                // spring with its particle, and so do the graphs of it.
+                let holds = |joint: &super::Joint| {
+                    joint.body == name || joint.other() == Some(name.as_str())
+                };
+                let joints: Vec<String> = self
+                    .joints
+                    .iter()
+                    .filter(|j| holds(j))
+                    .map(|j| j.name.clone())
+                    .collect();
+                self.joints.retain(|j| !holds(j));
                 self.forget_in_presentation(&name);
+                for joint in joints {
+                    self.forget_in_presentation(&joint);
+                }
             }
             _ => {}
         }
@@ -292,6 +308,32 @@ mod tests {
             scene.view.unwrap().follow,
             Some(Follow::Particle("C".to_owned()))
         );
+    }
+
+    /// A deleted board takes the pin that held it and the hinge that hung a block from
+    /// it, and the graph of the pin's angle; the block stays, and the scene is valid.
+    #[test]
+    fn a_deleted_body_takes_its_joints_and_their_graphs() {
+        use crate::{Body, Joint};
+        let mut scene = Scene::new()
+            .with_body(Body::rectangle("board", 2.0, 0.1, 1.0).position([0.0, 1.0]))
+            .with_body(Body::rectangle("block", 0.2, 0.2, 1.0).position([0.8, 0.7]))
+            .with_body(Body::rectangle("other", 0.2, 0.2, 1.0).position([3.0, 0.7]));
+        scene.joints.push(Joint::pin("nail", "board", [0.0, 1.0]));
+        scene
+            .joints
+            .push(Joint::hinge("hook", "board", "block", [0.8, 0.95]));
+        scene.joints.push(Joint::pin("peg", "other", [3.0, 0.9]));
+        scene
+            .graphs
+            .push(Graph::of(["nail.angle", "nail.torque", "peg.angle"]).expect("quantities"));
+        assert!(scene.validate().is_empty(), "{:?}", scene.validate());
+        scene.remove(Section::Body(0));
+        let names: Vec<&str> = scene.joints.iter().map(|j| j.name.as_str()).collect();
+        assert_eq!(names, ["peg"]);
+        let plotted: Vec<String> = scene.graphs[0].y.iter().map(ToString::to_string).collect();
+        assert_eq!(plotted, ["peg.angle"]);
+        assert!(scene.validate().is_empty(), "{:?}", scene.validate());
     }
 
     #[test]

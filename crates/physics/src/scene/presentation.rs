@@ -210,12 +210,12 @@ impl Scene {
         }
     }
 
-    /// Drops every reference to the particle, rod or string `name` from the graphs, the
-    /// series (each series about it) and the view (a graph's x axis falls back to time),
-    /// as deleting a particle does for its springs.
+    /// Drops every reference to the object `name` (a particle, a body, a rod or string, a
+    /// joint) from the graphs, the series (each series about it) and the view (a graph's
+    /// x axis falls back to time), as deleting a particle does for its springs.
     pub(super) fn forget_in_presentation(&mut self, name: &str) {
         let names = |quantity: &Quantity| match quantity {
-            Quantity::Particle(n, _) | Quantity::Link(n, _) => n == name,
+            Quantity::Particle(n, _) | Quantity::Link(n, _) | Quantity::Joint(n, _) => n == name,
             _ => false,
         };
         for graph in &mut self.graphs {

@@ -2,17 +2,19 @@
 //! words Edit → Undo and Redo show. A type, not a string, so that every edit has its
 //! words in every language (a test asks each language for each kind).
 
-use physics::ObjectKind;
+use std::borrow::Cow;
+
+use physics::{ObjectKind, SectionKind};
 
 use crate::i18n::{Arg, tr, tr_with};
 
 /// One undoable change of the scene.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Edit {
-    /// A field typed in the inspector or the settings: the section's kind (`particle`,
-    /// `world`, …) and the scene file's key.
+    /// A field typed in the inspector or the settings: the kind of its section and the
+    /// scene file's key.
     Set {
-        kind: &'static str,
+        section: SectionKind,
         key: &'static str,
     },
     Add(ObjectKind),
@@ -51,29 +53,10 @@ pub enum Edit {
 }
 
 impl Edit {
-    /// Every edit but [`Edit::Set`]'s fields, for the tests.
+    /// Every edit but [`Edit::Set`]'s fields and those of each kind of object
+    /// ([`Edit::Add`], [`Edit::Delete`]), for the tests.
     #[cfg(test)]
-    const ALL: [Self; 43] = [
-        Self::Add(ObjectKind::Particle),
-        Self::Add(ObjectKind::Spring),
-        Self::Add(ObjectKind::Rod),
-        Self::Add(ObjectKind::String),
-        Self::Add(ObjectKind::Ramp),
-        Self::Add(ObjectKind::Body),
-        Self::Add(ObjectKind::Pin),
-        Self::Add(ObjectKind::Hinge),
-        Self::Add(ObjectKind::Pulley),
-        Self::Add(ObjectKind::Force),
-        Self::Delete(ObjectKind::Particle),
-        Self::Delete(ObjectKind::Spring),
-        Self::Delete(ObjectKind::Rod),
-        Self::Delete(ObjectKind::String),
-        Self::Delete(ObjectKind::Ramp),
-        Self::Delete(ObjectKind::Body),
-        Self::Delete(ObjectKind::Pin),
-        Self::Delete(ObjectKind::Hinge),
-        Self::Delete(ObjectKind::Pulley),
-        Self::Delete(ObjectKind::Force),
+    const OTHERS: [Self; 23] = [
         Self::Rename,
         Self::MoveParticle,
         Self::MoveRamp,
@@ -99,30 +82,14 @@ impl Edit {
         Self::Ask,
     ];
 
-    /// The message of its words, but for [`Edit::Set`] (whose words name the field).
-    fn message(self) -> &'static str {
-        match self {
+    /// The message of its words, but for [`Edit::Set`] (whose words name the field):
+    /// an object added or deleted is `edit-add-KIND`, `edit-delete-KIND` by the file's
+    /// table name.
+    fn message(self) -> Cow<'static, str> {
+        Cow::Borrowed(match self {
             Self::Set { .. } => "edit-set",
-            Self::Add(ObjectKind::Particle) => "edit-add-particle",
-            Self::Add(ObjectKind::Spring) => "edit-add-spring",
-            Self::Add(ObjectKind::Rod) => "edit-add-rod",
-            Self::Add(ObjectKind::String) => "edit-add-string",
-            Self::Add(ObjectKind::Ramp) => "edit-add-ramp",
-            Self::Add(ObjectKind::Body) => "edit-add-body",
-            Self::Add(ObjectKind::Pin) => "edit-add-pin",
-            Self::Add(ObjectKind::Hinge) => "edit-add-hinge",
-            Self::Add(ObjectKind::Pulley) => "edit-add-pulley",
-            Self::Add(ObjectKind::Force) => "edit-add-force",
-            Self::Delete(ObjectKind::Particle) => "edit-delete-particle",
-            Self::Delete(ObjectKind::Spring) => "edit-delete-spring",
-            Self::Delete(ObjectKind::Rod) => "edit-delete-rod",
-            Self::Delete(ObjectKind::String) => "edit-delete-string",
-            Self::Delete(ObjectKind::Ramp) => "edit-delete-ramp",
-            Self::Delete(ObjectKind::Body) => "edit-delete-body",
-            Self::Delete(ObjectKind::Pin) => "edit-delete-pin",
-            Self::Delete(ObjectKind::Hinge) => "edit-delete-hinge",
-            Self::Delete(ObjectKind::Pulley) => "edit-delete-pulley",
-            Self::Delete(ObjectKind::Force) => "edit-delete-force",
+            Self::Add(kind) => return Cow::Owned(format!("edit-add-{}", kind.as_str())),
+            Self::Delete(kind) => return Cow::Owned(format!("edit-delete-{}", kind.as_str())),
             Self::Rename => "edit-rename",
             Self::MoveParticle => "edit-move-particle",
             Self::MoveRamp => "edit-move-ramp",
@@ -146,17 +113,17 @@ impl Edit {
             Self::DeleteGroup => "edit-delete-group",
             Self::Slide => "edit-slide",
             Self::Ask => "edit-ask",
-        }
+        })
     }
 
     /// What the edit did, in the language of the app ("set mass", "Masse setzen").
     pub fn words(self) -> String {
         match self {
-            Self::Set { kind, key } => {
-                let field = tr(&field_message(kind, key));
+            Self::Set { section, key } => {
+                let field = tr(&field_message(section, key));
                 tr_with("edit-set", &[("what", Arg::Text(&field))])
             }
-            other => tr(other.message()),
+            other => tr(&other.message()),
         }
     }
 }
@@ -164,8 +131,8 @@ impl Edit {
 /// The message of a field's label in the inspector (`field-particle-mass`); its help is
 /// the same with `-help`. English says what the field table says (a test holds them
 /// equal), German and Spanish translate it; the scene file's key stays the same.
-pub fn field_message(section: &str, key: &str) -> String {
-    format!("field-{section}-{}", key.replace('_', "-"))
+pub fn field_message(section: SectionKind, key: &str) -> String {
+    format!("field-{}-{}", section.as_str(), key.replace('_', "-"))
 }
 
 #[cfg(test)]
@@ -177,13 +144,17 @@ mod tests {
     /// and a field's edit names the field as the inspector does.
     #[test]
     fn every_edit_has_its_words() {
-        for edit in Edit::ALL {
-            assert!(i18n::has(edit.message()), "{edit:?} has no message");
+        let objects = ObjectKind::ALL
+            .into_iter()
+            .flat_map(|kind| [Edit::Add(kind), Edit::Delete(kind)]);
+        for edit in objects.chain(Edit::OTHERS) {
+            assert!(i18n::has(&edit.message()), "{edit:?} has no message");
         }
+        let section = SectionKind::Object(ObjectKind::Particle);
         let set = Edit::Set {
-            kind: "particle",
+            section,
             key: "mass",
         };
-        assert!(i18n::has(&field_message("particle", "mass")), "{set:?}");
+        assert!(i18n::has(&field_message(section, "mass")), "{set:?}");
     }
 }

@@ -9,7 +9,9 @@ use std::collections::HashMap;
 
 use egui::{Color32, Id, RichText, Ui};
 use physics::fields::{self, Field, Kind, Place, Value};
-use physics::{Endpoint, FieldRef, Rule, Scene, Section, Vector, check_value};
+use physics::{
+    Endpoint, FieldRef, ObjectKind, Rule, Scene, Section, SectionKind, Vector, check_value,
+};
 
 use crate::action::Action;
 use crate::canvas::Selection;
@@ -707,7 +709,7 @@ fn inertia_presets(ui: &mut Ui, document: &mut Document, i: usize) {
                     field: "inertia",
                 };
                 let edit = Edit::Set {
-                    kind: "particle",
+                    section: SectionKind::Object(ObjectKind::Particle),
                     key: "inertia",
                 };
                 // Every preset is valid for every particle: nothing to report.
@@ -793,7 +795,7 @@ fn table<T: Clone + 'static>(
     // Only the section is copied, not the scene, every frame.
     let target = read(document.scene()).clone();
     let names = document.scene().particle_names();
-    let kind = section_kind(document.scene(), section);
+    let kind = document.scene().section_kind(section);
     let mut problem = None;
     for f in fields.iter().filter(|f| f.place == Place::Inspector) {
         let field_id = id.with(f.key);
@@ -805,7 +807,10 @@ fn table<T: Clone + 'static>(
         };
         let result = try_apply(
             document,
-            Edit::Set { kind, key: f.key },
+            Edit::Set {
+                section: kind,
+                key: f.key,
+            },
             FieldRef {
                 section,
                 field: f.key,
@@ -817,25 +822,6 @@ fn table<T: Clone + 'static>(
         }
     }
     problem
-}
-
-/// The scene file's name of a section's kind: `world`, `particle`, `rod`, …
-fn section_kind(scene: &Scene, section: Section) -> &'static str {
-    match section {
-        Section::World => "world",
-        Section::Simulation => "simulation",
-        Section::Particle(_) => "particle",
-        Section::Spring(_) => "spring",
-        Section::Tie(i) => scene.ties.get(i).map_or("rod", |tie| tie.kind.as_str()),
-        Section::Ramp(_) => "ramp",
-        Section::Body(_) => "body",
-        Section::Joint(i) => scene.joints.get(i).map_or("pin", |j| j.kind_str()),
-        Section::Force(_) => "force",
-        Section::Graph(_) => "graph",
-        Section::Series(_) => "series",
-        Section::Root | Section::View | Section::Instruments | Section::Stopwatch => "scene",
-        Section::Lesson | Section::Slider(_) | Section::Question(_) => "lesson",
-    }
 }
 
 /// One field's widget, with its label and help in the user's language; returns a new

@@ -8,7 +8,7 @@
 
 use egui::text::LayoutJob;
 use egui::{Color32, RichText, TextFormat, Ui};
-use physics::series::Setting;
+use physics::series::{MeasureError, Setting};
 use physics::{Lesson, Scene, Verdict};
 use pulldown_cmark::{Event, Options, Parser, Tag, TagEnd};
 
@@ -32,7 +32,7 @@ pub enum Checked {
     /// The answer is no quantity of the question's unit.
     Unreadable(String),
     /// The simulation has no answer (an event that never happens, a run that failed).
-    Unmeasured(String),
+    Unmeasured(MeasureError),
 }
 
 /// The lesson's answers typed so far and what Check said of them.
@@ -43,7 +43,7 @@ pub struct LessonPanel {
     /// What Check said of each, by index.
     pub checked: Vec<Option<Checked>>,
     /// The scene last measured, and what it measured for each question.
-    measured: Option<(Scene, Result<physics::series::Measured, String>)>,
+    measured: Option<(Scene, Result<physics::series::Measured, MeasureError>)>,
 }
 
 impl LessonPanel {
@@ -194,8 +194,11 @@ fn result_ui(ui: &mut Ui, checked: &Checked, unit: &str) {
                 ui.label(tr_with("lesson-revealed", &[("value", Arg::Text(&value))]));
             }
         }
-        Checked::Unreadable(why) | Checked::Unmeasured(why) => {
+        Checked::Unreadable(why) => {
             ui.label(RichText::new(why).color(NOT_YET));
+        }
+        Checked::Unmeasured(why) => {
+            ui.label(RichText::new(why.to_string()).color(NOT_YET));
         }
     }
 }

@@ -14,6 +14,7 @@ use krilla::geom::{PathBuilder, Point, Size, Transform};
 use krilla::page::PageSettings;
 use krilla::surface::Surface;
 use krilla::text::{Font, TextDirection};
+use physics::series::MeasureError;
 use physics::{Lesson, Scene};
 
 use crate::document;
@@ -44,7 +45,7 @@ pub fn pdf(scene: &Scene, key: bool) -> Result<Vec<u8>, String> {
         .ok_or_else(|| tr("worksheet-no-lesson"))?;
     let picture = scene_picture(scene)?;
     let answers = if key {
-        Some(lesson.answers(scene)?)
+        Some(lesson.answers(scene).map_err(|why| why.to_string())?)
     } else {
         None
     };
@@ -310,7 +311,7 @@ impl Writer {
     }
 
     /// The answer key on a page of its own: each question's value and what is right.
-    fn key(&mut self, lesson: &Lesson, answers: &[Result<f64, String>]) {
+    fn key(&mut self, lesson: &Lesson, answers: &[Result<f64, MeasureError>]) {
         self.page();
         let title = tr_with(
             "worksheet-key-title",
@@ -333,7 +334,10 @@ impl Writer {
                 }
                 Err(why) => tr_with(
                     "worksheet-key-none",
-                    &[("id", Arg::Text(&question.id)), ("why", Arg::Text(why))],
+                    &[
+                        ("id", Arg::Text(&question.id)),
+                        ("why", Arg::Text(&why.to_string())),
+                    ],
                 ),
             };
             self.paragraph(&format!("{}. ", i + 1), &question.prompt, BODY, 0.0);

@@ -5,26 +5,27 @@
 
 use newtonlab_app::i18n::SOURCES;
 use physics::fields::{self, Field};
+use physics::{ObjectKind, SectionKind};
+
+type Words = (SectionKind, &'static str, &'static str, &'static str);
 
 /// (section, key, label, help) of every field.
-fn every_field() -> Vec<(&'static str, &'static str, &'static str, &'static str)> {
-    fn of<T>(
-        section: &'static str,
-        table: &[Field<T>],
-    ) -> Vec<(&'static str, &'static str, &'static str, &'static str)> {
+fn every_field() -> Vec<Words> {
+    fn of<T>(section: SectionKind, table: &[Field<T>]) -> Vec<Words> {
         table
             .iter()
             .map(|f| (section, f.key, f.label, f.help))
             .collect()
     }
-    let mut all = of("world", fields::WORLD);
-    all.extend(of("simulation", fields::SIMULATION));
-    all.extend(of("particle", fields::PARTICLE));
-    all.extend(of("spring", fields::SPRING));
-    all.extend(of("rod", fields::ROD));
-    all.extend(of("string", fields::STRING));
-    all.extend(of("ramp", fields::RAMP));
-    all.extend(of("body", fields::BODY));
+    let object = SectionKind::Object;
+    let mut all = of(SectionKind::World, fields::WORLD);
+    all.extend(of(SectionKind::Simulation, fields::SIMULATION));
+    all.extend(of(object(ObjectKind::Particle), fields::PARTICLE));
+    all.extend(of(object(ObjectKind::Spring), fields::SPRING));
+    all.extend(of(object(ObjectKind::Rod), fields::ROD));
+    all.extend(of(object(ObjectKind::String), fields::STRING));
+    all.extend(of(object(ObjectKind::Ramp), fields::RAMP));
+    all.extend(of(object(ObjectKind::Body), fields::BODY));
     all
 }
 

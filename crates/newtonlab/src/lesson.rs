@@ -51,12 +51,15 @@ pub(crate) fn lesson(args: &LessonArgs) -> Result<(), Failure> {
         .iter()
         .map(|text| read_answer(lesson, text))
         .collect::<Result<Vec<_>, _>>()?;
-    let measured = lesson.answers(&scene).map_err(Failure::Simulation)?;
+    let measured = lesson
+        .answers(&scene)
+        .map_err(|why| Failure::Simulation(why.to_string()))?;
     for (index, value) in answers {
         let question = &lesson.questions[index];
         let verdict = match &measured[index] {
             Ok(measured) => Verdict::of(value, *measured, question.tolerance),
             Err(why) => {
+                let why = why.to_string();
                 let words = [("id", question.id.as_str()), ("why", why.as_str())];
                 return Err(Failure::Simulation(say("cli-lesson-unmeasured", &words)));
             }

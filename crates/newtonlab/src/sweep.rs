@@ -133,7 +133,10 @@ fn report_problems(args: &SweepArgs, rows: &[Row]) {
         match &row.measured {
             Err(why) => eprintln!(
                 "{}",
-                say("sweep-run-failed", &[("run", &run), ("why", why)])
+                say(
+                    "sweep-run-failed",
+                    &[("run", &run), ("why", &why.to_string())]
+                )
             ),
             Ok(measured) => {
                 for (text, m) in args.measure.iter().zip(measured) {
@@ -142,7 +145,11 @@ fn report_problems(args: &SweepArgs, rows: &[Row]) {
                             "{}",
                             say(
                                 "sweep-no-measure",
-                                &[("run", &run), ("measure", text.trim()), ("why", why)]
+                                &[
+                                    ("run", &run),
+                                    ("measure", text.trim()),
+                                    ("why", &why.to_string())
+                                ]
                             )
                         );
                     }

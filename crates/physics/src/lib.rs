@@ -124,8 +124,8 @@ pub use scene::series::{MAX_STEPS, MAX_WORK};
 pub use scene::{
     Body, Bounds, Color, Endpoint, FieldRef, Follow, Force, Graph, Instruments, Joint, JointKind,
     Lesson, Moments, Motor, ObjectId, ObjectKind, PairForces, Particle, Protractor, Question, Ramp,
-    Rule, Scene, Section, Series, Settings, Shape, Slider, Spring, Stopwatch, Tie, TieKind,
-    Trigger, Vector, Verdict, View, World, check_value, lesson, moments,
+    Rule, Scene, Section, SectionKind, Series, Settings, Shape, Slider, Spring, Stopwatch, Tie,
+    TieKind, Trigger, Vector, Verdict, View, World, check_value, lesson, moments,
 };
 pub use simulation::{Ledger, Simulation, SimulationError};
 pub use trajectory::{

@@ -33,7 +33,7 @@ pub use instruments::{Instruments, Protractor, Stopwatch, Trigger};
 pub(crate) use joint::in_frame;
 pub use joint::{Joint, JointKind, Motor};
 pub use lesson::{Lesson, Question, Slider, Verdict};
-pub use object::{ObjectId, ObjectKind};
+pub use object::{ObjectId, ObjectKind, SectionKind};
 pub use presentation::{Follow, Graph, Series, View};
 pub use validate::{Rule, check_value};
 

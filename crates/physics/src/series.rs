@@ -15,10 +15,14 @@
 //! one thread, and come back in the series' order, so the results are the same bits for
 //! any number of threads.
 
+mod error;
+
+pub use error::MeasureError;
+
 use crate::cycle::NoCycle;
 use crate::events::{Located, Watch};
 use crate::quantity::{Event, Reading, Turn};
-use crate::scene::{Lesson, Question, Scene, say};
+use crate::scene::{Lesson, Question, Scene};
 use crate::simulation::{Simulation, SimulationError};
 
 pub use crate::scene::series::{
@@ -33,16 +37,12 @@ pub use crate::scene::series::{
 /// # Errors
 /// The scene does not load, a measure names an object it does not have, an instant
 /// outside the run, or the run failed (in words).
-pub fn measure(
-    scene: &Scene,
-    until: f64,
-    measures: &[Measure],
-) -> Result<Vec<Result<f64, String>>, String> {
+pub fn measure(scene: &Scene, until: f64, measures: &[Measure]) -> Result<Measured, MeasureError> {
     measure_tracing(scene, until, measures, None).map(|(measured, _)| measured)
 }
 
 /// Each measure's number, or why there is none.
-pub type Measured = Vec<Result<f64, String>>;
+pub type Measured = Vec<Result<f64, MeasureError>>;
 
 /// Samples of a path a traced run keeps at most.
 const MOST_PATH_SAMPLES: usize = 1000;
@@ -58,8 +58,8 @@ pub fn measure_tracing(
     until: f64,
     measures: &[Measure],
     trace: Option<()>,
-) -> Result<(Measured, Vec<Vec<glam::DVec2>>), String> {
-    let mut simulation = Simulation::new(scene).map_err(|e| e.to_string())?;
+) -> Result<(Measured, Vec<Vec<glam::DVec2>>), MeasureError> {
+    let mut simulation = Simulation::new(scene).map_err(MeasureError::Scene)?;
     let mut runs = Measuring::new(measures, &simulation, until)?;
     let start = simulation.keyframe();
     runs.begin(&start);
@@ -81,7 +81,7 @@ pub fn measure_tracing(
                 runs.after_step(before, after)
             }),
         )
-        .map_err(|e| e.to_string())?;
+        .map_err(MeasureError::Run)?;
     Ok((runs.finish(&simulation), paths))
 }
 
@@ -109,7 +109,11 @@ struct Measuring<'a> {
 }
 
 impl<'a> Measuring<'a> {
-    fn new(measures: &'a [Measure], simulation: &Simulation, until: f64) -> Result<Self, String> {
+    fn new(
+        measures: &'a [Measure],
+        simulation: &Simulation,
+        until: f64,
+    ) -> Result<Self, MeasureError> {
         let readings = measures
             .iter()
             .map(|m| m.quantity().reading(simulation))
@@ -118,14 +122,11 @@ impl<'a> Measuring<'a> {
             if let Measure::AtTime(_, t) = m
                 && !(simulation.time()..=until).contains(t)
             {
-                return Err(say(
-                    "measure-instant",
-                    &[
-                        ("instant", &t.to_string()),
-                        ("from", &simulation.time().to_string()),
-                        ("until", &until.to_string()),
-                    ],
-                ));
+                return Err(MeasureError::Instant {
+                    instant: *t,
+                    from: simulation.time(),
+                    until,
+                });
             }
         }
         let (events, watched): (Vec<Event>, Vec<usize>) = measures
@@ -236,38 +237,29 @@ impl<'a> Measuring<'a> {
         Ok(())
     }
 
-    fn finish(self, end: &Simulation) -> Vec<Result<f64, String>> {
-        let until = end.time().to_string();
+    fn finish(self, end: &Simulation) -> Measured {
+        let until = end.time();
         self.measures
             .iter()
             .enumerate()
             .map(|(k, m)| match m {
                 Measure::Period(_) => match crate::cycle(&self.maxima[k]) {
                     Ok(cycle) => Ok(cycle.period),
-                    Err(NoCycle::TooFew(count)) => Err(say(
-                        "measure-no-period",
-                        &[("count", &count.to_string()), ("until", &until)],
-                    )),
-                    Err(NoCycle::Irregular(count)) => Err(say(
-                        "measure-irregular-period",
-                        &[("count", &count.to_string()), ("until", &until)],
-                    )),
+                    Err(NoCycle::TooFew(count)) => Err(MeasureError::NoPeriod { count, until }),
+                    Err(NoCycle::Irregular(count)) => {
+                        Err(MeasureError::IrregularPeriod { count, until })
+                    }
                 },
                 Measure::At { event, nth, .. } => {
                     let w = self.watched.iter().position(|&w| w == k).unwrap_or(0);
-                    self.found[k].ok_or_else(|| {
-                        say(
-                            "measure-no-event",
-                            &[
-                                ("event", &event.to_string()),
-                                ("count", &self.counts[w].to_string()),
-                                ("nth", &nth.to_string()),
-                                ("until", &until),
-                            ],
-                        )
+                    self.found[k].ok_or_else(|| MeasureError::NoEvent {
+                        event: event.to_string(),
+                        count: self.counts[w],
+                        nth: *nth,
+                        until,
                     })
                 }
-                _ => self.found[k].ok_or_else(|| say("measure-none", &[("until", &until)])),
+                _ => self.found[k].ok_or(MeasureError::Nothing { until }),
             })
             .collect()
     }
@@ -280,7 +272,7 @@ pub struct Row {
     /// Each setting's value in this run.
     pub values: Vec<f64>,
     /// Each measure's number or why there is none; or why the run failed.
-    pub measured: Result<Vec<Result<f64, String>>, String>,
+    pub measured: Result<Measured, MeasureError>,
     /// Each particle's path, when the series traces them ([`Sweep::trace`]; else empty).
     pub paths: Vec<Vec<glam::DVec2>>,
 }
@@ -309,7 +301,7 @@ impl Sweep {
     /// The first problem, in words.
     pub fn check(&self, scene: &Scene) -> Result<(), String> {
         let simulation = Simulation::new(scene).map_err(|e| e.to_string())?;
-        Measuring::new(&self.measures, &simulation, self.until)?;
+        Measuring::new(&self.measures, &simulation, self.until).map_err(|e| e.to_string())?;
         self.extent(scene)
     }
 
@@ -384,7 +376,7 @@ impl Lesson {
     /// # Errors
     /// A measure that does not read, or a scene that does not run (in words); a measure
     /// the run does not reach (an event that never happens) is that question's error.
-    pub fn answers(&self, scene: &Scene) -> Result<Vec<Result<f64, String>>, String> {
+    pub fn answers(&self, scene: &Scene) -> Result<Measured, MeasureError> {
         let measures = self
             .questions
             .iter()

@@ -347,10 +347,7 @@ impl Simulation {
             let last = remaining <= self.time_step * (1.0 + 1e-9);
             let step = if last { remaining } else { self.time_step };
             self.check_drag(step)?;
-            let taken = self.advance(step)?;
-            if last && taken >= remaining {
-                self.state.time = time;
-            }
+            self.advance(step, last.then_some(time))?;
             if let (Some(observe), Some(before)) = (observe.as_deref_mut(), before) {
                 observe(&before, self)?;
             }
@@ -416,7 +413,7 @@ impl Simulation {
             return;
         };
         let w = &self.forces.inverse_mass;
-        let Some(applied) = self.contacts.applied.last_mut() else {
+        let Some(applied) = self.contacts.report.applied.last_mut() else {
             return;
         };
         let change = applied.approach * (1.0 + applied.restitution);
@@ -433,7 +430,7 @@ impl Simulation {
     fn log_impacts(&mut self) {
         if let Some(log) = &mut self.impact_log {
             let w = &self.forces.inverse_mass;
-            for applied in &self.contacts.applied {
+            for applied in &self.contacts.report.applied {
                 let (particle, other) = match applied.impact {
                     Impact::Pair(i, j) => (i, ImpactTarget::Particle(j)),
                     Impact::Obstacle(p, k) => (p, self.contacts.obstacle_target(k)),
@@ -511,7 +508,7 @@ impl Simulation {
             return 0.0;
         };
         let mut kicks = Vec::new();
-        for applied in &self.contacts.applied[begun..] {
+        for applied in &self.contacts.report.applied[begun..] {
             let (first, second) = match applied.impact {
                 Impact::Pair(i, j) => (i, Some(j)),
                 Impact::Obstacle(p, _) => (p, None),
@@ -545,7 +542,7 @@ impl Simulation {
         let Some(ledger) = &mut self.ledger else {
             return;
         };
-        let applied = &self.contacts.applied;
+        let applied = &self.contacts.report.applied;
         let at_start: f64 = applied[..begun].iter().map(|a| a.grip.lost).sum();
         let inside: f64 = applied[begun..].iter().map(|a| a.grip.lost).sum();
         ledger.friction += at_start + inside + slipped;

@@ -21,10 +21,10 @@ fn measured(sweep: &Sweep, scene: &Scene) -> Result<Vec<(f64, Vec<f64>)>, Failur
         .map(|row| {
             let values = row
                 .measured
-                .map_err(Failure::Simulation)?
+                .map_err(|why| Failure::Simulation(why.to_string()))?
                 .into_iter()
-                .collect::<Result<Vec<f64>, String>>()
-                .map_err(Failure::Simulation)?;
+                .collect::<Result<Vec<f64>, _>>()
+                .map_err(|why| Failure::Simulation(why.to_string()))?;
             Ok((row.values[0], values))
         })
         .collect()

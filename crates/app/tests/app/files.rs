@@ -5,14 +5,14 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use newtonlab_app::App;
 use newtonlab_app::edit::Edit;
-use physics::ObjectKind;
 use physics::Scene;
+use physics::{ObjectKind, SectionKind};
 
 use crate::common::{example_scene, harness, one_ball};
 
 /// A mass typed in the inspector.
 const MASS: Edit = Edit::Set {
-    kind: "particle",
+    section: SectionKind::Object(ObjectKind::Particle),
     key: "mass",
 };
 

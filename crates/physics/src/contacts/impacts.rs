@@ -438,7 +438,7 @@ impl Contacts {
             velocity_changes(impact, normal, approach * (1.0 + restitution), forces);
         applied.kick = (dv_first + applied.grip.dv.0, dv_second + applied.grip.dv.1);
         let (dv_first, dv_second) = applied.kick;
-        self.applied.push(applied);
+        self.report.applied.push(applied);
         let mut kicked = Vec::with_capacity(2);
         for (p, dv) in std::iter::once((first, dv_first)).chain(second.map(|j| (j, dv_second))) {
             if dv == DVec2::ZERO {

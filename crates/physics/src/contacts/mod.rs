@@ -132,22 +132,39 @@ pub(crate) struct Contacts {
     pub workers: Workers,
     /// Whether each particle feels a pairwise force or a spring (see the module doc).
     coupled: Vec<bool>,
-    /// The impacts applied in this step.
-    pub applied: Vec<Applied>,
+    /// What the contacts did in this step, for the ledger and the log of impacts.
+    pub report: StepReport,
     /// Whether the impacts at the step's start are kept in `applied` for a log of
     /// impacts: nothing else reads them but turning particles' books (the books read
     /// those inside the step), and keeping tens of thousands a step is a measurable
     /// share of a pile's.
     pub logs_start: bool,
-    /// The kinetic energy taken in this step by catching coupled particles that an impact
-    /// inside it left sinking slowly into their surfaces (`simulation/coupled.rs`), J.
-    pub caught_in_step: f64,
-    /// The work the surfaces' normal force did in this step on coupled particles a blow
-    /// sent off them inside it, up to the blow (`simulation/coupled/response.rs`), J:
-    /// their contacts are off the step's books after it.
-    pub released_in_step: f64,
     /// The spins, when any particle turns.
     pub turning: Option<Turning>,
+}
+
+/// What the contacts did in one step, begun afresh at its start
+/// ([`Contacts::begin_step`]) and read by the ledger and the log of impacts.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct StepReport {
+    /// The impacts applied, in order: those of the step's start, then those inside it.
+    pub applied: Vec<Applied>,
+    /// The kinetic energy taken by catching coupled particles that an impact inside the
+    /// step left sinking slowly into their surfaces (`simulation/coupled.rs`), J.
+    pub caught: f64,
+    /// The work the surfaces' normal force did on coupled particles a blow sent off them
+    /// inside the step, up to the blow (`simulation/coupled/response.rs`), J: their
+    /// contacts are off the step's books after it.
+    pub released: f64,
+}
+
+impl StepReport {
+    /// Begun afresh, keeping the list's memory.
+    fn clear(&mut self) {
+        self.applied.clear();
+        self.caught = 0.0;
+        self.released = 0.0;
+    }
 }
 
 /// An impact as it was applied.
@@ -204,10 +221,8 @@ impl Contacts {
                             || forces.constraints.touches(i))
                 })
                 .collect(),
-            applied: Vec::new(),
+            report: StepReport::default(),
             logs_start: false,
-            caught_in_step: 0.0,
-            released_in_step: 0.0,
             turning: Turning::new(scene),
         }
     }
@@ -224,7 +239,7 @@ impl Contacts {
         self.search = ImpactSearch::default();
         self.resting.drop_scratch();
         self.strips = Strips::default();
-        self.applied = Vec::new();
+        self.report.applied = Vec::new();
     }
 
     /// The bytes of what [`Self::drop_scratch`] keeps, by length.
@@ -333,7 +348,7 @@ impl Contacts {
             state.velocity[j] += applied.kick.1;
         }
         self.turn(&applied);
-        self.applied.push(applied);
+        self.report.applied.push(applied);
     }
 
     /// `applied` with its friction and whole velocity changes worked out, for particles

@@ -245,7 +245,7 @@ impl Contacts {
         resting_speed: f64,
         inelastic: bool,
     ) -> bool {
-        let mut applied = std::mem::take(&mut self.applied);
+        let mut applied = std::mem::take(&mut self.report.applied);
         let pass = Pass {
             contacts: self,
             forces,
@@ -286,7 +286,7 @@ impl Contacts {
                 any = true;
             }
         }
-        self.applied = applied;
+        self.report.applied = applied;
         any
     }
 }

@@ -59,9 +59,7 @@ impl Contacts {
         profiler: &mut Profiler,
     ) -> bool {
         let had_surface_contacts = !forces.surface_contacts.is_empty();
-        self.applied.clear();
-        self.caught_in_step = 0.0;
-        self.released_in_step = 0.0;
+        self.report.clear();
         forces.surface_contacts.clear();
         self.find_touching(state, forces, h, profiler);
         let resting_speed = self.resting_speed(h);

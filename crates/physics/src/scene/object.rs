@@ -152,7 +152,65 @@ impl ObjectId {
     }
 }
 
+/// What kind of section a field belongs to: an object's kind, or one of the scene's
+/// own sections. It names the field's words in the app (`field-particle-mass`) and an
+/// edit of a field in its history.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SectionKind {
+    /// An object's table: `[[particle]]`, `[[rod]]`, …
+    Object(ObjectKind),
+    /// `[world]`.
+    World,
+    /// `[simulation]`.
+    Simulation,
+    /// A `[[graph]]`.
+    Graph,
+    /// A `[[series]]`.
+    Series,
+    /// The file's top level, its view and its instruments.
+    Scene,
+    /// The lesson, its sliders and its questions.
+    Lesson,
+}
+
+impl SectionKind {
+    /// The section's word in the scene file and in the app's messages.
+    pub const fn as_str(self) -> &'static str {
+        match self {
+            Self::Object(kind) => kind.as_str(),
+            Self::World => "world",
+            Self::Simulation => "simulation",
+            Self::Graph => "graph",
+            Self::Series => "series",
+            Self::Scene => "scene",
+            Self::Lesson => "lesson",
+        }
+    }
+}
+
 impl Scene {
+    /// What kind of section `section` is; an object missing from the scene is the kind
+    /// its list first holds (a rod, a pin).
+    pub fn section_kind(&self, section: Section) -> SectionKind {
+        if let Some(id) = ObjectId::of(section) {
+            let first_of_its_list = || {
+                let list = id.with_index(0);
+                ObjectKind::ALL.into_iter().find(|kind| kind.at(0) == list)
+            };
+            if let Some(kind) = self.kind_of(id).or_else(first_of_its_list) {
+                return SectionKind::Object(kind);
+            }
+        }
+        match section {
+            Section::World => SectionKind::World,
+            Section::Simulation => SectionKind::Simulation,
+            Section::Graph(_) => SectionKind::Graph,
+            Section::Series(_) => SectionKind::Series,
+            Section::Lesson | Section::Slider(_) | Section::Question(_) => SectionKind::Lesson,
+            _ => SectionKind::Scene,
+        }
+    }
+
     /// The name of object `id`; `None` when the scene has no such object.
     pub fn name_of_object(&self, id: ObjectId) -> Option<&str> {
         let i = id.index();

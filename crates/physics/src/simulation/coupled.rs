@@ -402,12 +402,11 @@ impl Simulation {
                 let Some(energy) = caught else {
                     write_members(&members, &scratch.at, &mut self.state);
                     self.contacts.end_at(time, taken, &mut self.state, &local);
-                    self.state.time = self.start.time + time;
                     step.taken = time;
                     step.moved = true;
                     return;
                 };
-                self.contacts.caught_in_step += energy;
+                self.contacts.report.caught += energy;
                 scratch.restart(time, taken, method);
                 self.contacts.restart_paths(
                     &members,

@@ -10,7 +10,8 @@
 //!    turning particle starting to roll;
 //! 3. [`Simulation::impacts_inside`] ([`Stage::TimeOfImpact`], [`Stage::CoupledImpacts`]):
 //!    impacts on the paths through the step, applied in time order; a coupled impact
-//!    answered inside the step, or the whole system integrated to one that ends it;
+//!    answered inside the step, or the whole system integrated to one that ends it; the
+//!    step's length is then final, and [`Simulation::end_time`] sets the clock;
 //! 4. [`Simulation::resting`] ([`Stage::RestingSolver`]): a string's event applied,
 //!    touching particles kept apart, turning particles turned, and the ledger's books;
 //! 5. [`Simulation::projection`]: positions and velocities back onto the rods' and
@@ -27,6 +28,9 @@ use crate::profile::Stage;
 pub(super) struct StepContext {
     /// The longest the step may be, seconds: the time step, or less to land on a target.
     max_step: f64,
+    /// The instant the step lands on when it is taken whole: the end of a run, whose
+    /// clock then reads it exactly rather than the start plus the step's length.
+    lands_on: Option<f64>,
     /// The step as taken so far, seconds: the trial step, then shortened to the first
     /// event or impact that ends it.
     pub(super) taken: f64,
@@ -77,15 +81,20 @@ struct EndBooks {
 }
 
 impl Simulation {
-    /// One step of at most `max_step` seconds: every stage in order. Returns the step
-    /// taken.
-    pub(super) fn advance(&mut self, max_step: f64) -> Result<f64, SimulationError> {
+    /// One step of at most `max_step` seconds, landing on `lands_on` when taken whole:
+    /// every stage in order.
+    pub(super) fn advance(
+        &mut self,
+        max_step: f64,
+        lands_on: Option<f64>,
+    ) -> Result<(), SimulationError> {
         self.profiler.start();
-        let mut step = self.contacts_at_start(max_step);
+        let mut step = self.contacts_at_start(max_step, lands_on);
         self.integrate(&mut step)?;
         self.events_inside(&mut step);
         self.profiler.lap(Stage::Integration);
         self.impacts_inside(&mut step);
+        self.end_time(&step);
         self.log_impacts();
         let books = self.books_before_settling(&step);
         self.resting(&mut step, books);
@@ -99,15 +108,16 @@ impl Simulation {
 
     /// Stage 1: what happens at the step's start ([`Self::begin`]), the start kept, and
     /// the turning particles' spins noted.
-    fn contacts_at_start(&mut self, max_step: f64) -> StepContext {
+    fn contacts_at_start(&mut self, max_step: f64, lands_on: Option<f64>) -> StepContext {
         let start_books = self.begin(max_step);
-        let begun = self.contacts.applied.len();
+        let begun = self.contacts.report.applied.len();
         self.start.clone_from(&self.state);
         if let Some(turning) = &mut self.contacts.turning {
             turning.begin_step();
         }
         StepContext {
             max_step,
+            lands_on,
             taken: max_step,
             begun,
             start_books,
@@ -180,6 +190,16 @@ impl Simulation {
         }
     }
 
+    /// The clock, once the step's length is final (the impacts inside it found): the
+    /// one place it is set. The stages before integrate states of their own times; the
+    /// simulation's reads the start plus the step taken, or the instant it lands on.
+    fn end_time(&mut self, step: &StepContext) {
+        self.state.time = match step.lands_on {
+            Some(end) if step.taken >= step.max_step => end,
+            _ => self.start.time + step.taken,
+        };
+    }
+
     /// With a ledger, what it needs of the step before the resting solver moves anything.
     fn books_before_settling(&self, step: &StepContext) -> Option<EndBooks> {
         self.ledger.map(|_| {
@@ -192,7 +212,7 @@ impl Simulation {
                 &self.state.position,
                 &self.state.velocity,
                 &self.radius,
-            ) + self.contacts.released_in_step;
+            ) + self.contacts.report.released;
             EndBooks {
                 power,
                 kinetic: self.forces.kinetic_energy(&self.state.velocity),
@@ -229,7 +249,7 @@ impl Simulation {
 
     /// Stage 6, the step's last: the bodies moved through it, the count, and the checks
     /// that every value is finite and every particle still inside the bounds.
-    fn end_step(&mut self, taken: f64) -> Result<f64, SimulationError> {
+    fn end_step(&mut self, taken: f64) -> Result<(), SimulationError> {
         let books = self.bodies.advance(self.integrator, taken);
         if let Some((pulley, body)) = self.bodies.pulley_reached() {
             return Err(SimulationError::PulleyReached {
@@ -255,7 +275,7 @@ impl Simulation {
                 speed: self.state.velocity[i].length(),
             });
         }
-        Ok(taken)
+        Ok(())
     }
 
     /// The step's start: impacts due now, strings snapping taut, surfaces catching
@@ -346,12 +366,12 @@ impl Simulation {
         ledger.friction += simpson(|p| p.friction);
         ledger.drag += simpson(|p| p.drag);
         let w = &self.forces.inverse_mass;
-        let in_step: f64 = self.contacts.applied[step.begun..]
+        let in_step: f64 = self.contacts.report.applied[step.begun..]
             .iter()
             .map(|applied| impact_energy_lost(applied, w))
             .sum();
         let settled = end.kinetic - self.forces.kinetic_energy(&self.state.velocity);
-        ledger.impacts += start.caught + in_step + self.contacts.caught_in_step + settled - moved;
+        ledger.impacts += start.caught + in_step + self.contacts.report.caught + settled - moved;
     }
 
     /// The trial step of `taken` seconds just integrated, shortened to the first event

@@ -4,19 +4,7 @@
 use std::fmt;
 
 use crate::scene::fields::{self, Field, Kind, Value};
-use crate::scene::{Scene, Section, Vector, say};
-
-/// Which object a [`Setting`] writes to.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Target {
-    Particle(usize),
-    Spring(usize),
-    Tie(usize),
-    Ramp(usize),
-    Body(usize),
-    World,
-    Simulation,
-}
+use crate::scene::{ObjectKind, Scene, Section, Vector, say};
 
 /// The part of a vector a [`Setting`] writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -84,7 +72,9 @@ fn polar(vector: Vector) -> (f64, f64) {
 #[derive(Clone, Debug, PartialEq)]
 pub struct Setting {
     text: String,
-    target: Target,
+    /// The section it writes to: an object with a field table (a particle, a spring, a
+    /// rod or a string, a ramp, a body), `[world]` or `[simulation]`.
+    target: Section,
     key: &'static str,
     part: Option<Part>,
     /// The SI unit of the number written.
@@ -144,40 +134,14 @@ impl Setting {
         let unknown = |what: &str| say(what, &[("text", text)]);
         // The object: `world`, `simulation`, or the longest object name before a dot
         // (names may hold dots and spaces).
-        let objects = scene
-            .particles
-            .iter()
-            .enumerate()
-            .map(|(i, p)| (p.name.as_str(), Target::Particle(i)))
-            .chain(
-                scene
-                    .springs
-                    .iter()
-                    .enumerate()
-                    .map(|(i, s)| (s.name.as_str(), Target::Spring(i))),
-            )
-            .chain(
-                scene
-                    .ties
-                    .iter()
-                    .enumerate()
-                    .map(|(i, t)| (t.name.as_str(), Target::Tie(i))),
-            )
-            .chain(
-                scene
-                    .ramps
-                    .iter()
-                    .enumerate()
-                    .map(|(i, r)| (r.name.as_str(), Target::Ramp(i))),
-            )
-            .chain(
-                scene
-                    .bodies
-                    .iter()
-                    .enumerate()
-                    .map(|(i, b)| (b.name.as_str(), Target::Body(i))),
-            )
-            .chain([("world", Target::World), ("simulation", Target::Simulation)]);
+        let objects = ObjectKind::ALL
+            .into_iter()
+            .flat_map(|kind| scene.objects_of(kind))
+            .map(|(id, name)| (name, id.section()))
+            .chain([
+                ("world", Section::World),
+                ("simulation", Section::Simulation),
+            ]);
         let (target, rest) = objects
             .filter_map(|(name, target)| {
                 let rest = text.strip_prefix(name)?.strip_prefix('.')?;
@@ -191,13 +155,15 @@ impl Setting {
             None => (rest, None),
         };
         let found = match target {
-            Target::Particle(_) => numeric(fields::PARTICLE, key),
-            Target::Spring(_) => numeric(fields::SPRING, key),
-            Target::Tie(i) => numeric(fields::tie_fields(scene.ties[i].kind), key),
-            Target::Ramp(_) => numeric(fields::RAMP, key),
-            Target::Body(_) => numeric(fields::BODY, key),
-            Target::World => numeric(fields::WORLD, key),
-            Target::Simulation => numeric(fields::SIMULATION, key),
+            Section::Particle(_) => numeric(fields::PARTICLE, key),
+            Section::Spring(_) => numeric(fields::SPRING, key),
+            Section::Tie(i) => numeric(fields::tie_fields(scene.ties[i].kind), key),
+            Section::Ramp(_) => numeric(fields::RAMP, key),
+            Section::Body(_) => numeric(fields::BODY, key),
+            Section::World => numeric(fields::WORLD, key),
+            Section::Simulation => numeric(fields::SIMULATION, key),
+            // Joints and forces have no numbers to vary.
+            _ => None,
         };
         let (key, vector, unit) = found.ok_or_else(|| unknown("setting-key"))?;
         let part = match (vector, part) {
@@ -221,17 +187,8 @@ impl Setting {
 
     /// The field it writes, as a problem with the scene names it.
     pub fn field(&self) -> crate::scene::FieldRef {
-        let section = match self.target {
-            Target::Particle(i) => Section::Particle(i),
-            Target::Spring(i) => Section::Spring(i),
-            Target::Tie(i) => Section::Tie(i),
-            Target::Ramp(i) => Section::Ramp(i),
-            Target::Body(i) => Section::Body(i),
-            Target::World => Section::World,
-            Target::Simulation => Section::Simulation,
-        };
         crate::scene::FieldRef {
-            section,
+            section: self.target,
             field: self.key,
         }
     }
@@ -245,28 +202,29 @@ impl Setting {
     pub fn value(&self, scene: &Scene) -> f64 {
         let (key, part) = (self.key, self.part);
         match self.target {
-            Target::Particle(i) => scene
+            Section::Particle(i) => scene
                 .particles
                 .get(i)
                 .and_then(|p| read(fields::PARTICLE, p, key, part)),
-            Target::Spring(i) => scene
+            Section::Spring(i) => scene
                 .springs
                 .get(i)
                 .and_then(|s| read(fields::SPRING, s, key, part)),
-            Target::Tie(i) => scene
+            Section::Tie(i) => scene
                 .ties
                 .get(i)
                 .and_then(|t| read(fields::tie_fields(t.kind), t, key, part)),
-            Target::Ramp(i) => scene
+            Section::Ramp(i) => scene
                 .ramps
                 .get(i)
                 .and_then(|r| read(fields::RAMP, r, key, part)),
-            Target::Body(i) => scene
+            Section::Body(i) => scene
                 .bodies
                 .get(i)
                 .and_then(|b| read(fields::BODY, b, key, part)),
-            Target::World => read(fields::WORLD, &scene.world, key, part),
-            Target::Simulation => read(fields::SIMULATION, &scene.simulation, key, part),
+            Section::World => read(fields::WORLD, &scene.world, key, part),
+            Section::Simulation => read(fields::SIMULATION, &scene.simulation, key, part),
+            _ => None,
         }
         .unwrap_or(0.0)
     }
@@ -275,20 +233,21 @@ impl Setting {
     pub fn set(&self, scene: &mut Scene, value: f64) {
         let (key, part) = (self.key, self.part);
         match self.target {
-            Target::Particle(i) => {
+            Section::Particle(i) => {
                 write(fields::PARTICLE, &mut scene.particles[i], key, part, value);
             }
-            Target::Spring(i) => write(fields::SPRING, &mut scene.springs[i], key, part, value),
-            Target::Tie(i) => {
+            Section::Spring(i) => write(fields::SPRING, &mut scene.springs[i], key, part, value),
+            Section::Tie(i) => {
                 let fields = fields::tie_fields(scene.ties[i].kind);
                 write(fields, &mut scene.ties[i], key, part, value);
             }
-            Target::Ramp(i) => write(fields::RAMP, &mut scene.ramps[i], key, part, value),
-            Target::Body(i) => write(fields::BODY, &mut scene.bodies[i], key, part, value),
-            Target::World => write(fields::WORLD, &mut scene.world, key, part, value),
-            Target::Simulation => {
+            Section::Ramp(i) => write(fields::RAMP, &mut scene.ramps[i], key, part, value),
+            Section::Body(i) => write(fields::BODY, &mut scene.bodies[i], key, part, value),
+            Section::World => write(fields::WORLD, &mut scene.world, key, part, value),
+            Section::Simulation => {
                 write(fields::SIMULATION, &mut scene.simulation, key, part, value);
             }
+            _ => {}
         }
     }
 }
@@ -297,7 +256,7 @@ impl Setting {
     /// Whether it is a number of `[simulation]` (the time step, the start), which changes
     /// how long each run takes.
     pub(super) fn is_simulation(&self) -> bool {
-        self.target == Target::Simulation
+        self.target == Section::Simulation
     }
 
     /// Whether it is a vector's angle (degrees in the file, radians in a theory).
@@ -315,7 +274,7 @@ impl Setting {
             ("pi", std::f64::consts::PI),
         ];
         match self.target {
-            Target::Particle(i) => {
+            Section::Particle(i) => {
                 let p = &scene.particles[i];
                 named.extend([
                     ("m", p.mass),
@@ -331,12 +290,12 @@ impl Setting {
                     named.push(("L", tie.length));
                 }
             }
-            Target::Tie(i) => named.push(("L", scene.ties[i].length)),
-            Target::Spring(i) => {
+            Section::Tie(i) => named.push(("L", scene.ties[i].length)),
+            Section::Spring(i) => {
                 let s = &scene.springs[i];
                 named.extend([("k", s.stiffness), ("L", s.natural_length)]);
             }
-            Target::Body(i) => {
+            Section::Body(i) => {
                 let b = &scene.bodies[i];
                 named.extend([
                     ("m", b.total_mass()),
@@ -346,7 +305,7 @@ impl Setting {
                     ("w", b.width),
                 ]);
             }
-            Target::Ramp(_) | Target::World | Target::Simulation => {}
+            _ => {}
         }
         named
     }

@@ -703,7 +703,6 @@ impl Simulation {
                         .write_the_others(&written, (time, taken), at, forces);
                     write_members(&members, at, &mut self.state);
                     self.contacts.end_at(time, taken, &mut self.state, &local);
-                    self.state.time = self.start.time + time;
                     self.forget_surfaces(&released);
                     return time;
                 }
@@ -823,7 +822,7 @@ fn answer_blow(
         .flatten();
     let mut trusted = caught.is_some();
     if let Some(energy) = caught {
-        contacts.caught_in_step += energy;
+        contacts.report.caught += energy;
         let motion = &mut scratch.motion;
         // Those sent off the surface that held them first, so that their
         // answers to the blow keep their part along its normal; and those a hair
@@ -836,7 +835,7 @@ fn answer_blow(
                 && (normal_speed > resting_speed
                     || (apart(members[k]) && normal_speed < -resting_speed))
             {
-                contacts.released_in_step +=
+                contacts.report.released +=
                     motion.release(k, contact.normal, (time, h), &scratch.forces);
                 released.push((members[k], contact.normal));
             }

@@ -31,12 +31,7 @@ impl App {
         self.picture_awaited = None;
         let rect = match subject {
             picture::Subject::Canvas => self.canvas.rect,
-            picture::Subject::Graph(g) => self
-                .graphs
-                .rects
-                .get(g)
-                .copied()
-                .unwrap_or(egui::Rect::NOTHING),
+            picture::Subject::Graph(g) => self.graphs.rect(g),
         };
         match picture::png_of(&image, rect, ui.ctx().pixels_per_point()) {
             Ok(bytes) => {

@@ -232,7 +232,7 @@ fn a_graph_reads_the_period_of_its_series() {
             "at {x} m"
         );
     }
-    let readings = &app.graphs.readings[0];
+    let readings = &app.graphs.readings(0);
     let text = readings
         .iter()
         .find(|r| r.starts_with("period of bob.x"))
@@ -310,7 +310,7 @@ fn a_sine_fitted_to_a_spring_reads_its_amplitude_and_frequency() {
     scene.graphs.push(Graph::of(["bob.x"]).expect("a quantity"));
     let mut harness = crate::common::harness(App::new(scene));
     play_frames(&mut harness, 60);
-    harness.state_mut().graphs.fits[0] = Some(Model::Sine);
+    harness.state_mut().graphs.set_fit(0, Some(Model::Sine));
     harness.run();
     let app = harness.state();
     let recording = app.runner.recording.as_ref().expect("recorded");
@@ -334,11 +334,12 @@ fn a_sine_fitted_to_a_spring_reads_its_amplitude_and_frequency() {
         assert!(fit.uncertainties[k] < 1e-6, "{}", fit.uncertainties[k]);
     }
     assert!(
-        app.graphs.readings[0]
+        app.graphs
+            .readings(0)
             .iter()
             .any(|r| r.starts_with("bob.x, sine")),
         "{:?}",
-        app.graphs.readings[0]
+        app.graphs.readings(0)
     );
 }
 

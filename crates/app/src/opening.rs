@@ -9,7 +9,6 @@ use crate::files::Pending;
 use crate::files::Purpose;
 use crate::i18n::{Arg, tr, tr_with};
 use crate::recording::Recording;
-use crate::run_loop::Runner;
 use crate::{App, Document, Graphs, announcer, lesson, platform, plots, stopwatch_of};
 
 impl App {
@@ -17,7 +16,7 @@ impl App {
     /// as `label` when it has no file.
     pub(crate) fn replace(&mut self, scene: Scene, path: Option<String>, label: Option<String>) {
         let had_lesson = self.document.scene().lesson.is_some();
-        self.runner = Runner::default();
+        self.runner = self.runner.fresh();
         // Measurements, and what was said of the run, are of the scene they were taken in.
         self.announcer = announcer::Announcer::default();
         self.stopwatch = stopwatch_of(&scene, self.stopwatch.shown);

@@ -114,6 +114,10 @@ pub struct Runner {
     /// Whether the physics steps on while the app draws (desktop only: see
     /// [`Runner::step_ahead`]).
     pub ahead: bool,
+    /// Whether each frame steps all the simulated time it owes, however long that takes,
+    /// instead of stopping at the frame's budget of computing time: the tests', so that
+    /// what a number of frames plays does not depend on the machine's load.
+    pub unhurried: bool,
     /// The events the stopwatch waits for, located inside the steps.
     pub watching: Option<Watching>,
 }
@@ -139,7 +143,20 @@ impl Default for Runner {
             timeline: None,
             readout: RefCell::new(None),
             ahead: false,
+            unhurried: false,
             watching: None,
+        }
+    }
+}
+
+impl Runner {
+    /// A runner with nothing run yet, stepping as this one does (ahead, unhurried).
+    #[must_use]
+    pub fn fresh(&self) -> Self {
+        Self {
+            ahead: self.ahead,
+            unhurried: self.unhurried,
+            ..Self::default()
         }
     }
 }
@@ -404,7 +421,9 @@ impl Runner {
         }
         // Stepping ahead while the frame is drawn, the physics has a core of its own for
         // most of the frame: here it pays only what that left owing, briefly.
-        let budget = if ahead {
+        let budget = if self.unhurried {
+            f64::INFINITY
+        } else if ahead {
             AHEAD_SYNC_BUDGET
         } else {
             (TARGET_FRAME - self.other_per_frame.unwrap_or(0.0)).clamp(LEAST_BUDGET, MOST_BUDGET)
@@ -795,6 +814,27 @@ mod tests {
             time.to_bits(),
             "paused"
         );
+    }
+
+    /// Opening another scene starts a fresh runner that steps as the last did: the
+    /// desktop's stepping ahead is not lost to File → Open; an unhurried runner plays all
+    /// it owes even past a frame's budget (60 steps of a 1 ms time step in one 0.06 s
+    /// frame, whatever the machine's load).
+    #[test]
+    fn a_fresh_runner_steps_as_the_last_did() {
+        let scene = physics::example("pendulum").unwrap().scene().unwrap();
+        let old = Runner {
+            ahead: true,
+            unhurried: true,
+            ..Runner::default()
+        };
+        let mut runner = old.fresh();
+        assert!(runner.ahead && runner.unhurried);
+        runner.ahead = false;
+        runner.play(&scene).unwrap();
+        runner.advance(0.06, 1.0, false);
+        let time = runner.simulation().unwrap().time();
+        assert!((time - 0.06).abs() < 1e-9, "simulated {time} s");
     }
 
     /// Steps taken on another thread while frames are drawn are the steps taken in place:

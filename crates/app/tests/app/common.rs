@@ -18,7 +18,8 @@ pub fn tall_harness(app: App) -> Harness<'static, App> {
     harness_of_size(app, [1280.0, 1200.0])
 }
 
-fn harness_of_size(app: App, size: [f32; 2]) -> Harness<'static, App> {
+fn harness_of_size(mut app: App, size: [f32; 2]) -> Harness<'static, App> {
+    app.runner.unhurried = true;
     let mut harness = Harness::builder()
         .with_size(size)
         .build_ui_state(|ui, app: &mut App| app.ui(ui), app);

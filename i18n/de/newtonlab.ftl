@@ -564,6 +564,7 @@ cli-check-tree-and-charges = Hinweis: die Gravitation wird mit dem Barnes–Hut-
 cli-until-not-finite = --until muss eine endliche Zahl von Sekunden sein, nicht { $until }
 cli-every-invalid = --every muss eine endliche Zahl von Sekunden größer als 0 sein, nicht { $every }
 cli-event-invalid = --events: { $reason }
+cli-column-invalid = --column: { $reason }
 cli-until-negative = --until muss 0 oder mehr Sekunden sein, nicht { $until }
 cli-until-before-start = --until { $until } liegt vor der start_time { $start } s der Szene; ein Lauf geht von seinem Anfang vorwärts
 cli-too-many-rows = --until { $until } mit --every { $every } würde { $rows } Zeilen mit je { $columns } Zahlen schreiben, mehr als { $most } Zahlen; ein größeres --every wählen oder --no-limit angeben

@@ -565,6 +565,7 @@ cli-check-tree-and-charges = note: gravitation is summed with the Barnes–Hut t
 cli-until-not-finite = --until must be a finite number of seconds; got { $until }
 cli-every-invalid = --every must be a finite number of seconds greater than 0; got { $every }
 cli-event-invalid = --events: { $reason }
+cli-column-invalid = --column: { $reason }
 cli-until-negative = --until must be 0 or more seconds; got { $until }
 cli-until-before-start = --until { $until } is before the scene's start_time { $start } s; a run goes forward from its start
 cli-too-many-rows = --until { $until } with --every { $every } would write { $rows } rows of { $columns } numbers, more than { $most } numbers; choose a larger --every, or give --no-limit

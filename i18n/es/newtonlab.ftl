@@ -564,6 +564,7 @@ cli-check-tree-and-charges = nota: la gravitación se suma con el árbol de Barn
 cli-until-not-finite = --until debe ser un número finito de segundos, no { $until }
 cli-every-invalid = --every debe ser un número finito de segundos mayor que 0, no { $every }
 cli-event-invalid = --events: { $reason }
+cli-column-invalid = --column: { $reason }
 cli-until-negative = --until debe ser 0 o más segundos, no { $until }
 cli-until-before-start = --until { $until } es anterior al start_time { $start } s de la escena; una ejecución avanza desde su inicio
 cli-too-many-rows = --until { $until } con --every { $every } escribiría { $rows } filas de { $columns } números, más de { $most } números; elija un --every mayor, o indique --no-limit

@@ -27,6 +27,12 @@ pub(crate) struct RunArgs {
     /// regular rows, which are those of a run without --events, bit for bit).
     #[arg(long = "events", value_name = "EVENT")]
     events: Vec<String>,
+    /// A column of its own for QUANTITY, after the others (and before `event`): a rod's
+    /// or string's `NAME.tension`, a particle's `NAME.speed` or `NAME.kinetic_energy`, a
+    /// link's `NAME.angle` or `NAME.length`, a joint's `NAME.torque`, any quantity an
+    /// event names. May be given several times; the column is named as typed.
+    #[arg(long = "column", value_name = "QUANTITY")]
+    columns: Vec<String>,
     /// Where to write the CSV; standard output when absent or `-`.
     #[arg(long, value_name = "FILE")]
     out: Option<String>,
@@ -61,6 +67,7 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
         until: args.until,
         every: args.every,
         events: args.events.clone(),
+        columns: args.columns.clone(),
         ledger: args.ledger,
         impacts: args.impacts.is_some(),
         no_limit: args.no_limit,
@@ -165,11 +172,7 @@ fn write_csv(
     mut impacts: Option<&mut ImpactLog>,
 ) -> io::Result<Result<(), Failure>> {
     let columns = trajectory.columns();
-    let ledger_from = if trajectory.keeps_ledger() {
-        columns.len() - physics::LEDGER_COLUMNS.len()
-    } else {
-        columns.len()
-    };
+    let ledger = trajectory.ledger_columns();
     // The `event` column only where both kinds of rows are: it tells them apart.
     let named = trajectory.mixes_rows();
     let mut header: Vec<String> = columns.iter().map(|c| physics::csv_field(c)).collect();
@@ -189,10 +192,10 @@ fn write_csv(
             line.clear();
             for (k, value) in row.values.iter().enumerate() {
                 let comma = if k == 0 { "" } else { "," };
-                let _ = if k < ledger_from {
-                    write!(line, "{comma}{value:?}")
-                } else {
+                let _ = if ledger.contains(&k) {
                     write!(line, "{comma}{value}")
+                } else {
+                    write!(line, "{comma}{value:?}")
                 };
             }
             if named {

@@ -3,22 +3,7 @@
 
 mod common;
 
-use common::{newtonlab, pendulum_period, scene_file, stderr, stdout};
-
-/// The CSV's header and rows.
-fn table(text: &str) -> (Vec<String>, Vec<Vec<String>>) {
-    let mut lines = text.lines();
-    let header = lines
-        .next()
-        .expect("a header")
-        .split(',')
-        .map(str::to_owned)
-        .collect();
-    let rows = lines
-        .map(|l| l.split(',').map(str::to_owned).collect())
-        .collect();
-    (header, rows)
-}
+use common::{newtonlab, pendulum_period, scene_file, stderr, stdout, table};
 
 /// A ball thrown from 10 m at (3, 4) m/s: `--events "Ball.y crosses 0 down"` writes one
 /// row, run's columns, at t = (v + √(v² + 2 g h)) / g to 1e-9 s, y there 0 to 1e-9 m.

@@ -13,7 +13,7 @@
 use crate::Integrator;
 use crate::events::Watch;
 use crate::impact::{ImpactRecord, ImpactTarget};
-use crate::quantity::Event;
+use crate::quantity::{Event, Quantity, Reading};
 use crate::scene::series::{MAX_STEPS, MAX_WORK, run_size};
 use crate::scene::{Scene, Settings, say};
 use crate::simulation::{Simulation, SimulationError};
@@ -60,6 +60,9 @@ pub struct Plan {
     pub events: Vec<String>,
     /// Whether the rows end with the energy ledger ([`LEDGER_COLUMNS`]).
     pub ledger: bool,
+    /// Quantities as typed (`rod.tension`, `Ball.kinetic_energy`), each a column of its
+    /// own after the others: what the standard columns do not hold.
+    pub columns: Vec<String>,
     /// Whether impacts are kept, for [`Trajectory::take_impacts`].
     pub impacts: bool,
     /// Whether to run beyond [`MAX_STEPS`], [`MAX_WORK`] and [`MAX_NUMBERS`] (`--no-limit`).
@@ -84,6 +87,10 @@ impl Plan {
 
     /// The events, each as typed (trimmed) and as read, and the sampling interval.
     fn read(&self) -> Result<(Vec<Named>, Option<f64>), String> {
+        for text in &self.columns {
+            Quantity::parse(text.trim())
+                .map_err(|reason| say("cli-column-invalid", &[("reason", &reason)]))?;
+        }
         if !self.until.is_finite() {
             return Err(say(
                 "cli-until-not-finite",
@@ -137,6 +144,8 @@ pub struct Trajectory {
     note: Option<String>,
     /// The ramps' names, for the impacts' (the particles' are the simulation's).
     ramps: Vec<String>,
+    /// The quantities asked as columns of their own, as typed and as found.
+    extra: Vec<(String, Reading)>,
     values: Vec<f64>,
 }
 
@@ -173,6 +182,15 @@ impl Trajectory {
             |every| sample_times(start, plan.until, every),
         );
         let ledger_start = plan.ledger.then(|| simulation.diagnostics().energy.total());
+        let extra = plan
+            .columns
+            .iter()
+            .map(|text| {
+                let quantity = Quantity::parse(text.trim())?;
+                Ok((text.trim().to_owned(), quantity.reading(&simulation)?))
+            })
+            .collect::<Result<Vec<_>, String>>()
+            .map_err(|reason| say("cli-column-invalid", &[("reason", &reason)]))?;
         Ok(Self {
             simulation,
             times,
@@ -183,26 +201,34 @@ impl Trajectory {
             ledger_start,
             note: every.and_then(|every| sampling_note(&scene.simulation, every)),
             ramps: scene.ramps.iter().map(|r| r.name.clone()).collect(),
+            extra,
             values: Vec::new(),
         })
     }
 
-    /// The columns' names, unquoted: the state's ([`Simulation::csv_columns`]), then the
-    /// ledger's when it is kept. The event of a row is not among them ([`Row::event`]).
+    /// The columns' names, unquoted: the state's ([`Simulation::csv_columns`]), the
+    /// ledger's when it is kept, then the quantities asked as columns ([`Plan::columns`]).
+    /// The event of a row is not among them ([`Row::event`]).
     pub fn columns(&self) -> Vec<String> {
-        let mut columns = self.simulation.csv_columns();
-        if self.ledger_start.is_some() {
-            columns.extend(LEDGER_COLUMNS.map(str::to_owned));
-            if self.simulation.has_motors() {
-                columns.push(MOTOR_WORK_COLUMN.to_owned());
-            }
-        }
-        columns
+        column_names(&self.simulation, self.ledger_start, &self.extra)
     }
 
-    /// Whether the rows end with the ledger's columns ([`LEDGER_COLUMNS`]).
+    /// Whether the rows hold the ledger's columns ([`LEDGER_COLUMNS`]).
     pub fn keeps_ledger(&self) -> bool {
         self.ledger_start.is_some()
+    }
+
+    /// Where the ledger's columns are among [`Self::columns`] (empty without a ledger):
+    /// they are written in their shortest form (`0`, not `0.0`), as they always were.
+    pub fn ledger_columns(&self) -> std::ops::Range<usize> {
+        let all = self.columns().len();
+        let end = all - self.extra.len();
+        let start = if self.keeps_ledger() {
+            self.simulation.csv_columns().len()
+        } else {
+            end
+        };
+        start..end
     }
 
     /// Whether a table needs a column saying which event a row is: the rows are of both
@@ -246,8 +272,8 @@ impl Trajectory {
                 // The events located before a failure are rows all the same.
                 let mut result = Ok(());
                 for event in &found {
-                    row_values(&event.at, self.ledger_start, &mut self.values);
-                    result = finite_row(&self.values, &self.simulation, self.ledger_start);
+                    row_values(&event.at, self.ledger_start, &self.extra, &mut self.values);
+                    result = finite_row(&self.values, &event.at, self.ledger_start, &self.extra);
                     if result.is_err() {
                         break;
                     }
@@ -264,8 +290,18 @@ impl Trajectory {
             if !self.regular {
                 return Ok(());
             }
-            row_values(&self.simulation, self.ledger_start, &mut self.values);
-            finite_row(&self.values, &self.simulation, self.ledger_start)?;
+            row_values(
+                &self.simulation,
+                self.ledger_start,
+                &self.extra,
+                &mut self.values,
+            );
+            finite_row(
+                &self.values,
+                &self.simulation,
+                self.ledger_start,
+                &self.extra,
+            )?;
             // The row's instant as the grid names it (0.6, where the run stands at
             // 6 × 0.1 = 0.6000000000000001): what a reader of the table asked for.
             if let Some(t) = self.values.first_mut() {
@@ -308,14 +344,12 @@ fn finite_row(
     values: &[f64],
     simulation: &Simulation,
     ledger_start: Option<f64>,
+    extra: &[(String, Reading)],
 ) -> Result<(), SimulationError> {
     let Some(k) = values.iter().position(|v| !v.is_finite()) else {
         return Ok(());
     };
-    let mut columns = simulation.csv_columns();
-    if ledger_start.is_some() {
-        columns.extend(LEDGER_COLUMNS.map(str::to_owned));
-    }
+    let mut columns = column_names(simulation, ledger_start, extra);
     Err(SimulationError::ValueNotFinite {
         quantity: columns.swap_remove(k),
         value: values[k],
@@ -323,9 +357,32 @@ fn finite_row(
     })
 }
 
+/// The names of a row's columns: `simulation`'s state, the ledger's when `ledger_start`
+/// is set, then the quantities of `extra`.
+fn column_names(
+    simulation: &Simulation,
+    ledger_start: Option<f64>,
+    extra: &[(String, Reading)],
+) -> Vec<String> {
+    let mut columns = simulation.csv_columns();
+    if ledger_start.is_some() {
+        columns.extend(LEDGER_COLUMNS.map(str::to_owned));
+        if simulation.has_motors() {
+            columns.push(MOTOR_WORK_COLUMN.to_owned());
+        }
+    }
+    columns.extend(extra.iter().map(|(name, _)| name.clone()));
+    columns
+}
+
 /// `simulation`'s row: its state, then the ledger when `ledger_start` is the energy it
-/// started from.
-fn row_values(simulation: &Simulation, ledger_start: Option<f64>, out: &mut Vec<f64>) {
+/// started from, then the quantities of `extra`.
+fn row_values(
+    simulation: &Simulation,
+    ledger_start: Option<f64>,
+    extra: &[(String, Reading)],
+    out: &mut Vec<f64>,
+) {
     out.clear();
     simulation.csv_values(out);
     if let (Some(ledger), Some(start)) = (simulation.ledger(), ledger_start) {
@@ -341,6 +398,7 @@ fn row_values(simulation: &Simulation, ledger_start: Option<f64>, out: &mut Vec<
             out.push(ledger.motors);
         }
     }
+    out.extend(extra.iter().map(|&(_, reading)| simulation.read(reading)));
 }
 
 /// Whether the run `plan` asks of `scene`, sampled every `every`, stays within what it

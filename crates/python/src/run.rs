@@ -102,6 +102,7 @@ pub fn run(
         until,
         every,
         events: events.clone(),
+        columns: Vec::new(),
         ledger,
         impacts,
         no_limit,

@@ -27,6 +27,21 @@ pub fn stderr(output: &Output) -> String {
     String::from_utf8(output.stderr.clone()).expect("UTF-8 output")
 }
 
+/// A CSV's header and rows, split at commas (no field of `run`'s is quoted).
+pub fn table(text: &str) -> (Vec<String>, Vec<Vec<String>>) {
+    let mut lines = text.lines();
+    let header = lines
+        .next()
+        .expect("a header")
+        .split(',')
+        .map(str::to_owned)
+        .collect();
+    let rows = lines
+        .map(|l| l.split(',').map(str::to_owned).collect())
+        .collect();
+    (header, rows)
+}
+
 /// A scene file in a fresh temporary directory.
 pub fn scene_file(name: &str, text: &str) -> (tempdir::Dir, String) {
     let dir = tempdir::Dir::new();

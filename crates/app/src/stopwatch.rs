@@ -130,6 +130,20 @@ impl Stopwatch {
         }
     }
 
+    /// Why the typed event cannot be watched on `scene`, said as it is typed (before
+    /// Play): it does not read, or it names nothing in the scene. `None` when no trigger
+    /// waits for a typed event, or the event reads.
+    pub fn event_problem(&self, scene: &physics::Scene) -> Option<String> {
+        let waits = self.start_on == Trigger::Event || self.stop_on == Trigger::Event;
+        let event = self.event.trim();
+        if !waits || event.is_empty() {
+            return None;
+        }
+        physics::Event::parse(event)
+            .and_then(|e| e.quantity.check_in(scene))
+            .err()
+    }
+
     /// What a scene keeps of it: its settings, when it is shown or set to anything but
     /// the hand. An event that does not read on `scene`, or a gate without a tape
     /// (`has_tape`), is kept as the hand (the window shows why meanwhile): a file that

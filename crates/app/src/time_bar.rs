@@ -249,6 +249,9 @@ impl App {
                     State::Armed => "stopwatch-armed",
                     State::Running(_) => "stopwatch-running",
                 }));
+                // A typed event that cannot be watched is said at once, and the watch
+                // does not start on it (it would run on past the event it never sees).
+                let problem = watch.event_problem(self.document.scene());
                 ui.horizontal(|ui| {
                     let running = matches!(watch.state, State::Running(_) | State::Armed);
                     let label = tr(if running {
@@ -256,7 +259,8 @@ impl App {
                     } else {
                         "stopwatch-start"
                     });
-                    if ui.button(label).clicked() {
+                    let can = running || problem.is_none();
+                    if ui.add_enabled(can, egui::Button::new(label)).clicked() {
                         if running {
                             watch.stop(now);
                         } else {
@@ -267,7 +271,7 @@ impl App {
                         watch.reset();
                     }
                 });
-                triggers(ui, watch);
+                triggers(ui, watch, problem.as_deref());
                 laps(ui, watch);
                 // The teacher's view only: the inspector is out.
                 if let Some(measure) = self
@@ -324,7 +328,7 @@ impl App {
 
 /// The stopwatch's choices: what starts and stops it, which occurrence, and the event;
 /// first, the two settings a lesson most often wants, in one click.
-fn triggers(ui: &mut Ui, watch: &mut stopwatch::Stopwatch) {
+fn triggers(ui: &mut Ui, watch: &mut stopwatch::Stopwatch, problem: Option<&str>) {
     use stopwatch::Trigger;
     ui.horizontal(|ui| {
         if ui
@@ -379,16 +383,21 @@ fn triggers(ui: &mut Ui, watch: &mut stopwatch::Stopwatch) {
     if watch.start_on == Trigger::Event || watch.stop_on == Trigger::Event {
         ui.horizontal(|ui| {
             let label = ui.label(tr("stopwatch-event-label"));
-            ui.add(
-                egui::TextEdit::singleline(&mut watch.event)
-                    .hint_text("rod.angle crosses 0 down")
-                    .desired_width(190.0),
-            )
-            .labelled_by(label.id)
-            .on_hover_text(tr("stopwatch-event-hint"));
+            let typed = ui
+                .add(
+                    egui::TextEdit::singleline(&mut watch.event)
+                        .hint_text("rod.angle crosses 0 down")
+                        .desired_width(190.0),
+                )
+                .labelled_by(label.id)
+                .on_hover_text(tr("stopwatch-event-hint"));
+            if typed.changed() {
+                // What the run found wrong was of the text before.
+                watch.problem = None;
+            }
         });
     }
-    if let Some(problem) = &watch.problem {
+    if let Some(problem) = problem.or(watch.problem.as_deref()) {
         ui.colored_label(egui::Color32::from_rgb(200, 30, 30), problem);
     }
 }

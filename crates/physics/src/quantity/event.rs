@@ -36,26 +36,26 @@ impl Event {
     pub fn parse(text: &str) -> Result<Self, String> {
         let malformed = || newtonlab_i18n::tr_text("event-malformed", &[("text", text.trim())]);
         let (quantity, rest) = text.trim().rsplit_once(" crosses ").ok_or_else(malformed)?;
-        let mut words = rest.split_whitespace();
-        let value = words.next().ok_or_else(malformed)?;
-        let direction = match words.next() {
-            None => Direction::Either,
-            Some("up") => Direction::Up,
-            Some("down") => Direction::Down,
-            Some(_) => return Err(malformed()),
+        let rest = rest.trim();
+        let (value, direction) = match rest.rsplit_once(char::is_whitespace) {
+            Some((value, "up")) => (value.trim(), Direction::Up),
+            Some((value, "down")) => (value.trim(), Direction::Down),
+            _ => (rest, Direction::Either),
         };
-        if words.next().is_some() {
+        if value.is_empty() {
             return Err(malformed());
         }
-        let value = value
-            .parse::<f64>()
+        let quantity = Quantity::parse(quantity.trim())?;
+        // Arithmetic and units as the inspector's fields read them (`-2*cos(60°)`,
+        // `50 cm` for a position), in the quantity's own unit.
+        let value = crate::units::parse(value, quantity.unit())
             .ok()
             .filter(|v| v.is_finite())
             .ok_or_else(|| {
                 newtonlab_i18n::tr_text("event-value", &[("text", text.trim()), ("value", value)])
             })?;
         Ok(Self {
-            quantity: Quantity::parse(quantity.trim())?,
+            quantity,
             value,
             direction,
         })
@@ -121,5 +121,38 @@ mod tests {
         ] {
             assert!(Event::parse(bad).is_err(), "{bad:?} refused");
         }
+    }
+
+    /// The value takes arithmetic and units as the inspector's fields do, in the
+    /// quantity's own unit; the direction is still the last word.
+    #[test]
+    fn an_events_value_takes_arithmetic_and_units() {
+        let cases = [
+            ("Bob.y crosses -2*cos(60°)", -1.0, Direction::Either),
+            ("Bob.y crosses 50 cm down", 0.5, Direction::Down),
+            ("Bob.vx crosses 36 km/h up", 10.0, Direction::Up),
+            (
+                "t crosses pi/2",
+                std::f64::consts::FRAC_PI_2,
+                Direction::Either,
+            ),
+            ("rod.angle crosses 90 - 30", 60.0, Direction::Either),
+            (
+                "Bob.kinetic_energy crosses sqrt(2) * 2 up",
+                8_f64.sqrt(),
+                Direction::Up,
+            ),
+        ];
+        for (text, value, direction) in cases {
+            let event = Event::parse(text).unwrap_or_else(|e| panic!("{text}: {e}"));
+            assert!(
+                (event.value - value).abs() < 1e-12,
+                "{text}: {}",
+                event.value
+            );
+            assert_eq!(event.direction, direction, "{text}");
+        }
+        // A unit of another kind is no value of the quantity.
+        assert!(Event::parse("Bob.y crosses 3 s").is_err());
     }
 }

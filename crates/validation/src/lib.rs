@@ -138,7 +138,7 @@ impl Group {
                 "air resistance: linear drag's exponentials, quadratic drag's tanh fall to the terminal speed, and the energy it takes in the books"
             }
             Self::Series => {
-                "laws measured as series: a pendulum's period against its amplitude, a baseball's range against its angle with drag"
+                "laws measured as series: a pendulum's period against its amplitude, a baseball's range against its angle with drag; a series' runs reach both ends of its range"
             }
             Self::Turning => {
                 "bodies that turn: Galileo's inclined plane (slider, disc, ring), a bowled ball's slip-to-roll instant, spin at an impact"

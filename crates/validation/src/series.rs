@@ -30,6 +30,48 @@ fn measured(sweep: &Sweep, scene: &Scene) -> Result<Vec<(f64, Vec<f64>)>, Failur
         .collect()
 }
 
+/// A number of values, as a check compares it.
+#[expect(
+    clippy::cast_precision_loss,
+    reason = "a handful of runs, exact in f64"
+)]
+fn count<T>(values: &[T]) -> f64 {
+    values.len() as f64
+}
+
+/// Checks that a series' runs start at FROM, end at TO and are `runs` in all: a count
+/// off by one at either end would pass every law measured on the rest.
+fn runs_reach_their_end(
+    report: &mut Report,
+    checks: &mut Checks,
+    name: &str,
+    rows: &[(f64, Vec<f64>)],
+    (from, to, runs): (f64, f64, u32),
+) {
+    let first = rows.first().map_or(f64::NAN, |row| row.0);
+    let last = rows.last().map_or(f64::NAN, |row| row.0);
+    let scale = to.abs().max(1.0);
+    checks.check(
+        report,
+        format!("{name} series: its first value, FROM"),
+        (first, from, scale),
+        1e-12,
+    );
+    checks.check(
+        report,
+        format!("{name} series: its last value, TO"),
+        (last, to, scale),
+        1e-12,
+    );
+    let runs = f64::from(runs);
+    checks.check(
+        report,
+        format!("{name} series: its runs"),
+        (count(rows), runs, runs),
+        1e-12,
+    );
+}
+
 fn sweep(scene: &Scene, vary: &str, until: f64, measures: &[&str]) -> Result<Sweep, Failure> {
     Ok(Sweep {
         varies: vec![Vary::parse(vary, scene).map_err(Failure::Input)?],
@@ -78,6 +120,7 @@ pub(crate) fn series(report: &mut Report) -> Outcome {
         )?,
         &pendulum,
     )?;
+    runs_reach_their_end(report, &mut checks, "pendulum", &passes, (-80.0, 80.0, 9));
     for (angle, passes) in passes {
         let period = (passes[1] - passes[0]) / 2.0;
         let amplitude = angle + 90.0;
@@ -116,6 +159,21 @@ pub(crate) fn series(report: &mut Report) -> Outcome {
         )?,
         &ball,
     )?;
+    runs_reach_their_end(report, &mut checks, "baseball", &ranges, (20.0, 60.0, 9));
+    // A range's values as `sweep` lists them, at both ends.
+    let ones = physics::series::range_values(1.0, 3.0, 1.0).unwrap_or_default();
+    checks.check(
+        report,
+        "range 1:3:1: its values' count, 1, 2, 3".to_owned(),
+        (count(&ones), 3.0, 3.0),
+        1e-12,
+    );
+    checks.check(
+        report,
+        "range 1:3:1: its values' sum".to_owned(),
+        (ones.iter().sum(), 6.0, 6.0),
+        1e-12,
+    );
     let mut furthest = (0.0, 0.0);
     for (angle, range) in ranges {
         let range = range[0];

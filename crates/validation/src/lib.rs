@@ -20,6 +20,7 @@ mod paper_method;
 pub mod report;
 mod series;
 mod theory;
+mod threads;
 mod ties;
 mod turning;
 
@@ -58,11 +59,12 @@ pub enum Group {
     Bodies,
     Joints,
     Forces,
+    Threads,
 }
 
 impl Group {
     /// Every group, in the report's order.
-    pub const ALL: [Self; 16] = [
+    pub const ALL: [Self; 17] = [
         Self::Paper,
         Self::Rods,
         Self::Strings,
@@ -79,6 +81,7 @@ impl Group {
         Self::Bodies,
         Self::Joints,
         Self::Forces,
+        Self::Threads,
     ];
 
     /// Its name, as `--only` takes it.
@@ -100,6 +103,7 @@ impl Group {
             Self::Bodies => "bodies",
             Self::Joints => "joints",
             Self::Forces => "forces",
+            Self::Threads => "threads",
         }
     }
 
@@ -148,6 +152,9 @@ impl Group {
             }
             Self::Forces => {
                 "forces from what a student knows: drag from C_d and ρ, the magnetic field's cyclotron orbit, forces written as expressions (in time under every method; an anharmonic period and its books)"
+            }
+            Self::Threads => {
+                "the same bits on one thread and on many: the pair sum in blocks, contacts in strips"
             }
             Self::Joints => {
                 "pins, hinges, motors and pulleys: a physical pendulum's period at small and large amplitude, a seesaw balanced by torques and one that turns, a motor's spin-up and its work, a limit's stop, Atwood machines"
@@ -217,6 +224,7 @@ pub fn validate(
             Group::Bodies => bodies::bodies(report)?,
             Group::Joints => joints::joints(report)?,
             Group::Forces => forces::forces(report)?,
+            Group::Threads => threads::threads(report)?,
         }
     }
     Ok((report, figures))

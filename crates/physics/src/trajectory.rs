@@ -221,14 +221,8 @@ impl Trajectory {
     /// Where the ledger's columns are among [`Self::columns`] (empty without a ledger):
     /// they are written in their shortest form (`0`, not `0.0`), as they always were.
     pub fn ledger_columns(&self) -> std::ops::Range<usize> {
-        let all = self.columns().len();
-        let end = all - self.extra.len();
-        let start = if self.keeps_ledger() {
-            self.simulation.csv_columns().len()
-        } else {
-            end
-        };
-        start..end
+        // The state's columns, then the ledger's (none without it), then the asked ones.
+        self.simulation.csv_columns().len()..self.columns().len() - self.extra.len()
     }
 
     /// Whether a table needs a column saying which event a row is: the rows are of both

@@ -117,18 +117,18 @@ impl GraphPanel {
         let every = samples.div_ceil(MAX_POINTS).max(1);
         let columns = series_points(recording, x, series, every);
         self.read_series(recording, &graph, runs);
+        // Taken out while the rows below borrow the panel, and put back as it was.
+        let read = self.read.take();
         let empty = Read::default();
-        let read = self.read.take().unwrap_or_default();
-        let shown = if self.marks && *x == Quantity::Time || self.fit.is_some() {
-            &read
-        } else {
-            &empty
-        };
+        let shown = read
+            .as_ref()
+            .filter(|_| self.marks && *x == Quantity::Time || self.fit.is_some())
+            .unwrap_or(&empty);
         let plot = self.plot(ui, &graph, runs, recording, &columns, shown);
         pointer_readout(ui, &plot, x, &columns);
         self.readings_rows(ui, shown, &mut asking);
         self.rect = plot.response.rect;
-        self.read = Some(read);
+        self.read = read;
         action
     }
 

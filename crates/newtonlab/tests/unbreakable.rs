@@ -661,3 +661,59 @@ fn a_tied_ball_resting_on_a_wall_reports_rest() {
         );
     }
 }
+
+/// Two discs (inertia 0.5, radius 0.2 m, 1 kg) in a box 0.6 m wide whose walls have
+/// friction 0.5, one dropped on the other (restitution 0.3): they end wedged, the lower
+/// in a corner, the upper against the other wall and on it, at rest. They used to reach a
+/// non-finite state or leave the box within a second or so under every method (a slip of
+/// rounding, 1e-19 m/s, at rest located as a rolling start 1e-20 s into a step, and the
+/// resting solver's remembered impulses then scaled by the steps' ratio, 1e17). Under
+/// every method: exit 0, neither disc ever deeper in a wall or the floor than the overlap
+/// the resting solver allows (a thousandth of the radius), and both at rest at the end.
+#[test]
+fn discs_wedged_by_gripping_walls_come_to_rest() {
+    for method in [
+        "euler",
+        "semi-implicit-euler",
+        "verlet",
+        "rk4",
+        "pefrl",
+        "dopri5",
+    ] {
+        let (_dir, scene) = scene_file(
+            "wedged.toml",
+            &format!(
+                "version = 1\n[world]\ngravity = [0.0, -9.81]\nrestitution = 0.3\n\
+                 bounds = {{ min = [-0.3, 0.0], max = [0.3, 5.0], friction = 0.5 }}\n\
+                 [simulation]\nintegrator = \"{method}\"\ntime_step = 0.001\n\
+                 [[particle]]\nname = \"a\"\nmass = 1.0\nradius = 0.2\ninertia = 0.5\nposition = [0.05, 0.2]\n\
+                 [[particle]]\nname = \"b\"\nmass = 1.0\nradius = 0.2\ninertia = 0.5\nposition = [-0.05, 1.0]\n"
+            ),
+        );
+        let output = common::newtonlab(&["run", &scene, "--until", "3", "--every", "0.01"]);
+        assert!(output.status.success(), "{method}: {}", stderr(&output));
+        let (header, rows) = common::table(&common::stdout(&output));
+        let column = |name: &str| header.iter().position(|h| h == name).expect(name);
+        let value = |row: &[String], name: &str| -> f64 { row[column(name)].parse().expect(name) };
+        let allowed = 1e-3 * 0.2;
+        for row in &rows {
+            for disc in ["a", "b"] {
+                let (x, y) = (
+                    value(row, &format!("{disc}.x")),
+                    value(row, &format!("{disc}.y")),
+                );
+                assert!(
+                    x.abs() <= 0.1 + allowed && y >= 0.2 - allowed,
+                    "{method}: {disc} at ({x}, {y}) at t {}",
+                    row[0]
+                );
+            }
+        }
+        let last = rows.last().expect("rows");
+        for disc in ["a", "b"] {
+            let speed =
+                value(last, &format!("{disc}.vx")).hypot(value(last, &format!("{disc}.vy")));
+            assert!(speed < 1e-9, "{method}: {disc} still moves at {speed} m/s");
+        }
+    }
+}

@@ -103,7 +103,7 @@ impl Contacts {
             });
             let grip = turning.and_then(|turning| {
                 let motion = (state.velocity[p], self.radius[p]);
-                roll_or_slip(turning, p, normal, free[p], obstacle.friction, motion)
+                roll_or_slip(turning, p, normal, free[p], obstacle.friction, motion, h)
             });
             let sliding = if grip.is_some() {
                 None
@@ -365,10 +365,17 @@ impl Contacts {
 
 /// How turning particle `p`, resting on a surface of normal `normal` and coefficient of
 /// friction `friction`, with the other forces accelerating it by `free` and moving at
-/// `velocity` (its radius `radius`), turns through the step: it rolls when its contact
-/// point does not slip (to [`ROLLING`]; the spin is set to roll exactly) and rolling
-/// needs at most μN, and slips otherwise, with μN against the slip (or, not slipping,
-/// against the pull that makes it). `None` when the surface does not press on it.
+/// `velocity` (its radius `radius`), turns through the step of `h`: it rolls when its
+/// contact point does not slip (to [`ROLLING`]; the spin is set to roll exactly) and
+/// rolling needs at most μN, and slips otherwise, with μN against the slip (or, not
+/// slipping, against the pull that makes it). `None` when the surface does not press on
+/// it.
+///
+/// A slip counts as none below [`ROLLING`] of the speeds, and also below [`ROLLING`] of
+/// what friction takes off a slip in the whole step, μN h (1 + 1/k): a disc at rest has
+/// speeds of rounding (1e-19 m/s), relative to which rounding is no smaller, and
+/// friction would stop that slip some 1e-20 s into the step, a step the clock cannot
+/// tell from none, over and over.
 fn roll_or_slip(
     turning: &mut Turning,
     p: usize,
@@ -376,6 +383,7 @@ fn roll_or_slip(
     free: DVec2,
     friction: f64,
     (velocity, radius): (DVec2, f64),
+    h: f64,
 ) -> Option<Grip> {
     let pressing = -free.dot(normal);
     if pressing.is_nan() || pressing <= 0.0 {
@@ -391,7 +399,8 @@ fn roll_or_slip(
     // The contact point's velocity along the tangent: v·t + (ω × −r n)·t = v·t − ω r.
     let slip = along - rim;
     let share = k / (1.0 + k);
-    let stuck = slip.abs() <= ROLLING * (along.abs() + rim.abs());
+    let stopped_in_step = limit * h * (1.0 + 1.0 / k);
+    let stuck = slip.abs() <= ROLLING * (along.abs() + rim.abs() + stopped_in_step);
     if stuck && (pull * share).abs() <= limit {
         turning.spin[p] = along / radius;
         turning.mode[p] = Mode::Rolls {

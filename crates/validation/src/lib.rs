@@ -145,7 +145,7 @@ impl Group {
                 "laws measured as series: a pendulum's period against its amplitude, a baseball's range against its angle with drag; a series' runs reach both ends of its range"
             }
             Self::Turning => {
-                "bodies that turn: Galileo's inclined plane (slider, disc, ring), a bowled ball's slip-to-roll instant, spin at an impact"
+                "bodies that turn: Galileo's inclined plane (slider, disc, ring), a bowled ball's slip-to-roll instant, spin at an impact, a disc pushing a ring along a gripping floor"
             }
             Self::Bodies => {
                 "rigid bodies: moments of inertia from their outlines, free flight on the parabola with a steady turn, under each method"

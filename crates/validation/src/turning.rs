@@ -23,7 +23,8 @@ fn world() -> World {
 /// integrates the constant accelerations exactly, so 1e-9 s is rounding. Then a disc
 /// bowled at 6 m/s on a lane with μ = 0.2: it rolls on at 2 v₀/3, friction took
 /// ½ m v₀² − ½ m (1 + k) v², and angular momentum about the lane is kept; and a disc
-/// spinning at 12 rad/s dropped on a gripping floor, which leaves at −ω₀ r/3 with ω₀/3.
+/// spinning at 12 rad/s dropped on a gripping floor, which leaves at −ω₀ r/3 with ω₀/3;
+/// and a disc pushing a ring along a gripping floor ([`pushed`]).
 pub(crate) fn turning(report: &mut Report) -> Outcome {
     let mut galileo = Checks::new("turning");
     let scene = load("galileo-incline")?;
@@ -51,9 +52,10 @@ pub(crate) fn turning(report: &mut Report) -> Outcome {
     let mut checks = Checks::new("turning");
     bowled(report, &mut checks)?;
     bounce(report, &mut checks)?;
+    pushed(report, &mut checks)?;
     report.tables.push(checks.table(
-        "Rolling and slipping, spin at impacts",
-        "a bowled disc rolls on at v₀/(1 + k) from t* = v₀ k/((1 + k) μ g); a spinning disc on a gripping floor leaves at −ω₀ r/3 with ω₀/3, friction taking m r² ω₀²/6",
+        "Rolling and slipping, spin at impacts, a push met by the floor's grip",
+        "a bowled disc rolls on at v₀/(1 + k) from t* = v₀ k/((1 + k) μ g); a spinning disc on a gripping floor leaves at −ω₀ r/3 with ω₀/3, friction taking m r² ω₀²/6; a disc pushing a ring rolls with it at (m₁ + m₂) gₓ/(m₁(1 + k₁) + m₂(1 + k₂))",
     ));
     Ok(())
 }
@@ -169,5 +171,62 @@ fn bounce(report: &mut Report, checks: &mut Checks) -> Outcome {
     ] {
         checks.check(report, what.to_owned(), (simulated, theory, scale), 1e-12);
     }
+    Ok(())
+}
+
+/// A ring (k = 1, 1 kg) ahead of a disc (k = ½, 3 kg) touching it on a gripping floor,
+/// pulled sideways by gravity's gₓ = 2 m/s²: the disc would roll faster alone, so it
+/// pushes the ring through the resting solver, whose pushes the floor's friction meets,
+/// and they roll as one roller at a = (m₁ + m₂) gₓ/(m₁(1 + k₁) + m₂(1 + k₂)). After 1 s
+/// each moves at a to 1e-5 (the resting solver's settling, 1e-4 of 2 g h a step), and
+/// the books close (rk4 integrates the constant forces exactly).
+fn pushed(report: &mut Report, checks: &mut Checks) -> Outcome {
+    let (g_x, m, k, r) = (2.0, [1.0, 3.0], [1.0, 0.5], 0.2);
+    let a = (m[0] + m[1]) * g_x / (m[0] * (1.0 + k[0]) + m[1] * (1.0 + k[1]));
+    let mut world = world();
+    world.gravity = Vector::cartesian(g_x, -G);
+    world.bounds = Some(Bounds {
+        min: Vector::cartesian(-5.0, 0.0),
+        max: Vector::cartesian(50.0, 5.0),
+        friction: 1.0,
+        static_friction: None,
+    });
+    let scene = Scene::new()
+        .with_world(world)
+        .with_particle(
+            Particle::new("Ring", m[0])
+                .radius(r)
+                .position([r, r])
+                .turning(k[0], 0.0),
+        )
+        .with_particle(
+            Particle::new("Disc", m[1])
+                .radius(r)
+                .position([-r, r])
+                .turning(k[1], 0.0),
+        )
+        .with_integrator(Integrator::Rk4, 1e-3);
+    let mut simulation = start(&scene)?;
+    simulation.keep_ledger();
+    let start_energy = simulation.diagnostics().energy.total();
+    step_to(&mut simulation, 1.0)?;
+    let ledger = simulation
+        .ledger()
+        .ok_or_else(|| Failure::Simulation("no ledger".to_owned()))?;
+    let energy = simulation.diagnostics().energy;
+    let residual = energy.total() + ledger.total() - start_energy;
+    let v = simulation.velocities();
+    for (what, simulated, theory) in [
+        ("pushed: the ring's speed at 1 s (m/s)", v[0].x, a),
+        ("pushed: the disc's speed at 1 s (m/s)", v[1].x, a),
+    ] {
+        checks.check(report, what.to_owned(), (simulated, theory, a), 1e-5);
+    }
+    checks.check(
+        report,
+        "pushed: the books' residual over the kinetic energy".to_owned(),
+        (residual, 0.0, energy.kinetic),
+        1e-9,
+    );
     Ok(())
 }

@@ -457,12 +457,18 @@ impl Contacts {
         struck: Option<Impact>,
     ) -> bool {
         let resting_speed = self.resting_speed(h);
+        let (inertia, spin) = match &mut self.turning {
+            Some(turning) => (Some(&turning.inertia[..]), &mut turning.spin[..]),
+            None => (None, &mut [][..]),
+        };
         let touching = Touching {
             pairs: &self.touching.pairs,
             surfaces: &self.touching.surfaces,
             obstacles: &self.obstacles,
             radius: &self.radius,
             inverse_mass: &forces.inverse_mass,
+            inertia,
+            spare_friction: &self.touching.spare_friction,
         };
         let is_changed = &self.search.is_changed;
         let is_struck = |i: usize| {
@@ -470,7 +476,7 @@ impl Contacts {
                 || is_changed.get(i).copied().unwrap_or(false)
         };
         self.resting
-            .solve(&touching, state, h, resting_speed, is_struck)
+            .solve(&touching, state, h, resting_speed, is_struck, spin)
     }
 }
 

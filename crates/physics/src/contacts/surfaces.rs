@@ -12,10 +12,11 @@
 use glam::DVec2;
 
 use super::broad_phase::Aabb;
+use super::resting::settled_speed;
 use super::strips::strip_count;
 use super::{
-    Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness, particles_of, separation,
-    velocity_changes,
+    Applied, Contacts, Impact, TOUCHING, fat_margin, half_thickness, larger, particles_of,
+    separation, velocity_changes,
 };
 use crate::forces::normal::Grip;
 use crate::forces::{ForceModel, SurfaceContact};
@@ -34,6 +35,11 @@ pub(super) struct StartContacts {
     pub surfaces: Vec<(u32, u32)>,
     /// Scratch: each touching contact and its normal.
     pub normals: Normals,
+    /// Per surface contact, in `surfaces`' order: the friction its smooth normal force
+    /// could still give, m/s² (μ times how hard the other forces press, less what rolling
+    /// or holding still takes of it; none for one slipping, or not pressed). The resting
+    /// solver's friction may take it besides μ times its own pushes.
+    pub spare_friction: Vec<f64>,
 }
 
 impl StartContacts {
@@ -78,7 +84,10 @@ impl Contacts {
         if let Some(turning) = &mut self.turning {
             turning.mode.fill(Mode::Free);
         }
-        for &(p, k) in &self.touching.surfaces {
+        let spare = &mut self.touching.spare_friction;
+        spare.clear();
+        spare.resize(self.touching.surfaces.len(), 0.0);
+        for (&(p, k), spare) in self.touching.surfaces.iter().zip(spare) {
             let (p, obstacle) = (p as usize, &self.obstacles[k as usize]);
             // Measured again, not taken from the touching test: sitting on an earlier
             // surface (a wall beside a ramp) may have moved the ball.
@@ -102,19 +111,31 @@ impl Contacts {
                 obstacle.friction > 0.0 && turning.inertia[p] > 0.0 && turning.mode[p] == Mode::Free
             });
             let grip = turning.and_then(|turning| {
-                let motion = (state.velocity[p], self.radius[p]);
-                roll_or_slip(turning, p, normal, free[p], obstacle.friction, motion, h)
+                let surface = Surface {
+                    normal,
+                    friction: obstacle.friction,
+                    settled: settled_speed(resting_speed),
+                };
+                let velocity = &mut state.velocity[p];
+                roll_or_slip(turning, p, surface, free[p], velocity, self.radius[p])
             });
-            let sliding = if grip.is_some() {
+            // How hard the other forces press it in and pull it along (none are asked
+            // for where no surface has friction).
+            let (pressing, pull) = free.get(p).map_or((0.0, DVec2::ZERO), |&a| {
+                (-a.dot(normal), a - normal * a.dot(normal))
+            });
+            let limit = obstacle.friction * pressing.max(0.0);
+            let sliding = if let Some(grip) = grip {
+                if let Grip::Rolls { share } = grip {
+                    *spare = larger(limit - (pull.length() * share), 0.0);
+                }
                 None
             } else if obstacle.friction > 0.0 {
-                let (pressing, pull) =
-                    (-free[p].dot(normal), free[p] - normal * free[p].dot(normal));
-                let limit = obstacle.friction * pressing.max(0.0);
                 if tangential.length() <= limit * h && pull.length() <= limit {
                     // Friction stops it within this step and can hold it: static.
                     state.velocity[p] -= tangential;
                     changed |= tangential != DVec2::ZERO;
+                    *spare = limit - pull.length();
                     None
                 } else {
                     // Sliding, or about to start sliding the way it is pulled.
@@ -363,34 +384,44 @@ impl Contacts {
     }
 }
 
-/// How turning particle `p`, resting on a surface of normal `normal` and coefficient of
-/// friction `friction`, with the other forces accelerating it by `free` and moving at
-/// `velocity` (its radius `radius`), turns through the step of `h`: it rolls when its
-/// contact point does not slip (to [`ROLLING`]; the spin is set to roll exactly) and
-/// rolling needs at most μN, and slips otherwise, with μN against the slip (or, not
-/// slipping, against the pull that makes it). `None` when the surface does not press on
-/// it.
+/// The surface a turning particle rests on, as [`roll_or_slip`] needs it: its unit
+/// `normal` (towards the particle), its coefficient of `friction`, and the resting
+/// solver's [`settled_speed`] for the step.
+#[derive(Clone, Copy, Debug)]
+struct Surface {
+    normal: DVec2,
+    friction: f64,
+    settled: f64,
+}
+
+/// How turning particle `p`, resting on `surface`, with the other forces accelerating it
+/// by `free` and moving at `velocity` (its radius `radius`), turns through the step: it
+/// rolls when its contact point does not slip and rolling needs at most μN, and slips
+/// otherwise, with μN against the slip (or, not slipping, against the pull that makes
+/// it). `None` when the surface does not press on it.
 ///
-/// A slip counts as none below [`ROLLING`] of the speeds, and also below [`ROLLING`] of
-/// what friction takes off a slip in the whole step, μN h (1 + 1/k): a disc at rest has
-/// speeds of rounding (1e-19 m/s), relative to which rounding is no smaller, and
-/// friction would stop that slip some 1e-20 s into the step, a step the clock cannot
-/// tell from none, over and over.
+/// Not slipping: to [`ROLLING`] of its speeds (the slip left where a rolling start was
+/// located; the spin is set to roll exactly), or, slower, below the resting solver's
+/// [`Surface::settled`] speed, which is what the sweeps leave on a disc held in a pile or
+/// a corner (some 1e-9 m/s): friction takes that slip at once, the impulse it would
+/// give over the 1e-10 s it would take, so the disc rolls on (or rests) instead of
+/// slipping through the step under full kinetic friction that the solver then takes
+/// back. Its position differs from slipping's by slip² / 2a, some 1e-13 m at most.
 fn roll_or_slip(
     turning: &mut Turning,
     p: usize,
-    normal: DVec2,
+    surface: Surface,
     free: DVec2,
-    friction: f64,
-    (velocity, radius): (DVec2, f64),
-    h: f64,
+    velocity: &mut DVec2,
+    radius: f64,
 ) -> Option<Grip> {
+    let normal = surface.normal;
     let pressing = -free.dot(normal);
     if pressing.is_nan() || pressing <= 0.0 {
         return None;
     }
     let (tangent, k) = (normal.perp(), turning.inertia[p]);
-    let limit = friction * pressing;
+    let limit = surface.friction * pressing;
     let (pull, along, rim) = (
         free.dot(tangent),
         velocity.dot(tangent),
@@ -399,9 +430,16 @@ fn roll_or_slip(
     // The contact point's velocity along the tangent: v·t + (ω × −r n)·t = v·t − ω r.
     let slip = along - rim;
     let share = k / (1.0 + k);
-    let stopped_in_step = limit * h * (1.0 + 1.0 / k);
-    let stuck = slip.abs() <= ROLLING * (along.abs() + rim.abs() + stopped_in_step);
-    if stuck && (pull * share).abs() <= limit {
+    let rolls = slip.abs() <= ROLLING * (along.abs() + rim.abs());
+    let settled = !rolls && slip.abs() <= surface.settled;
+    if (rolls || settled) && (pull * share).abs() <= limit {
+        if settled {
+            // The friction impulse (per unit mass) −s k/(1 + k) that stops the slip s:
+            // the speed along the tangent changes by it, the rim's by −1/k of it, and
+            // the spin set below to roll is the one it leaves.
+            *velocity -= tangent * (slip * share);
+        }
+        let along = velocity.dot(tangent);
         turning.spin[p] = along / radius;
         turning.mode[p] = Mode::Rolls {
             tangent,
@@ -409,7 +447,12 @@ fn roll_or_slip(
         };
         return Some(Grip::Rolls { share });
     }
-    let against = -limit * if stuck { pull.signum() } else { slip.signum() };
+    let against = -limit
+        * if rolls || settled {
+            pull.signum()
+        } else {
+            slip.signum()
+        };
     turning.mode[p] = Mode::Slips {
         tangent,
         friction: against,

@@ -187,14 +187,15 @@ impl Simulation {
 
     /// Total kinetic energy, translational and rotational, joules.
     pub(super) fn kinetic_energy(&self) -> f64 {
-        let translational = self.forces.kinetic_energy(&self.state.velocity);
-        self.contacts
-            .turning
-            .as_ref()
-            .map_or(translational, |turning| {
-                let (m, w, r) = (&self.forces.mass, &self.forces.inverse_mass, &self.radius);
-                translational + turning.kinetic_energy(m, w, r)
-            })
+        self.forces.kinetic_energy(&self.state.velocity) + self.rotational_energy()
+    }
+
+    /// The turning particles' kinetic energy of their spins, joules.
+    pub(super) fn rotational_energy(&self) -> f64 {
+        self.contacts.turning.as_ref().map_or(0.0, |turning| {
+            let (m, w, r) = (&self.forces.mass, &self.forces.inverse_mass, &self.radius);
+            turning.kinetic_energy(m, w, r)
+        })
     }
 }
 

@@ -221,17 +221,22 @@ impl Simulation {
         })
     }
 
-    /// Stage 4: a string's event applied, resting contact ([`Self::settle`]), the
-    /// turning particles turned, and the step booked.
+    /// Stage 4: a string's event applied, the turning particles turned through the
+    /// step, resting contact ([`Self::settle`]), and the step booked. The turning comes
+    /// first: a rolling particle's spin follows what the smooth forces did to its speed,
+    /// and the resting solver's pushes then turn it only through the friction they meet.
     fn resting(&mut self, step: &mut StepContext, books: Option<EndBooks>) {
         if let Some((k, _)) = step.tie_event {
             self.apply_tie_event(k);
             step.moved = true;
         }
-        let lifted = self.settle(step);
         let slipped = self.end_turning(step.taken, step.begun);
+        let spinning = books.map(|_| self.rotational_energy());
+        let lifted = self.settle(step);
         if let (Some(start), Some(end)) = (step.start_books, books) {
-            self.book(step, start, end, end.supported + lifted);
+            // What the resting solver's friction took from the spins, with its pushes.
+            let despun = spinning.unwrap_or(0.0) - self.rotational_energy();
+            self.book(step, start, end, end.supported + lifted - despun);
             self.book_friction(step.begun, slipped);
         }
     }

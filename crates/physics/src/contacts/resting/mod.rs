@@ -27,6 +27,13 @@ use super::{separation, smaller};
 use crate::state::State;
 use crate::tuning::{ALLOWED_OVERLAP, CORRECTION, POSITION_SWEEPS, RESTING_SWEEPS};
 
+/// The speed below which the sweeps count a contact as settled, m/s, when a resting
+/// contact approaches at `resting_speed`: what they leave of an approach (or of a slip)
+/// is below it, so a speed this small on a resting particle is the solver's, not motion.
+pub(crate) fn settled_speed(resting_speed: f64) -> f64 {
+    1e-4 * resting_speed.max(1e-9)
+}
+
 /// What every row of the solver accumulates.
 #[derive(Clone, Copy, Debug)]
 struct Accumulator {
@@ -88,6 +95,75 @@ struct SurfaceRow {
     /// metres: where it was when the row was built, plus the overlap beyond the
     /// tolerance then.
     reach: f64,
+}
+
+/// Friction where a particle rests on a surface with friction, answering the normal
+/// impulse of its [`SurfaceRow`]: the surface's normal force from the smooth forces
+/// carries its own friction (`forces/normal.rs`), and this row is friction's share of
+/// the push that other particles press it into the surface with (a disc wedged between
+/// a wall and a disc, a disc rolling on a floor that a disc above pushes along). Coulomb:
+/// the impulse that stops its contact point slipping, at most μ times the normal row's.
+#[derive(Clone, Copy, Debug)]
+struct FrictionRow {
+    /// The normal row's place in the arranged surface rows.
+    surface: u32,
+    particle: u32,
+    /// The surface's tangent (its normal turned a quarter counter-clockwise).
+    tangent: DVec2,
+    /// μ, the surface's coefficient of (kinetic) friction.
+    friction: f64,
+    /// The friction impulse the smooth normal force leaves unused over the step, N·s:
+    /// friction may give that besides μ times the normal row's impulse.
+    spare: f64,
+    /// 1/m, 1/kg.
+    inverse_mass: f64,
+    /// The impulse per unit of slip stopped, kg: 1 / (w (1 + 1/k)) for a particle that
+    /// turns (its spin takes a share), 1 / w for a point.
+    mass: f64,
+    /// Metres, and the spin an impulse of 1 N·s along the tangent gives, −w / (k r)
+    /// rad/s (its torque at the contact point −r n); 0 for a point.
+    radius: f64,
+    spin_per_impulse: f64,
+    /// Accumulated impulse along the tangent, N·s.
+    impulse: f64,
+}
+
+impl FrictionRow {
+    /// Its contact point's velocity along the tangent, m/s: v·t − ω r.
+    fn slip(&self, velocity: &[DVec2], spin: &[f64]) -> f64 {
+        let p = self.particle as usize;
+        let turning = if self.spin_per_impulse == 0.0 {
+            0.0
+        } else {
+            spin[p] * self.radius
+        };
+        velocity[p].dot(self.tangent) - turning
+    }
+}
+
+/// One sweep of the friction rows, each bounded by its normal row's accumulated impulse
+/// in `surfaces`. Returns the largest change of a slip it made, m/s.
+fn sweep_friction(
+    rows: &mut [FrictionRow],
+    surfaces: &[SurfaceRow],
+    velocity: &mut [DVec2],
+    spin: &mut [f64],
+) -> f64 {
+    let mut largest: f64 = 0.0;
+    for row in rows {
+        let limit = row.friction * surfaces[row.surface as usize].solved.impulse + row.spare;
+        let wanted = row.impulse - row.slip(velocity, spin) * row.mass;
+        let accumulated = wanted.max(-limit).min(limit);
+        let change = accumulated - row.impulse;
+        row.impulse = accumulated;
+        let p = row.particle as usize;
+        velocity[p] += row.tangent * (change * row.inverse_mass);
+        if row.spin_per_impulse != 0.0 {
+            spin[p] += change * row.spin_per_impulse;
+        }
+        largest = largest.max((change / row.mass).abs());
+    }
+    largest
 }
 
 /// A contact as the sweeps see it.
@@ -240,6 +316,11 @@ pub(crate) struct Touching<'a> {
     pub radius: &'a [f64],
     /// 1/kg, per particle; zero for fixed particles.
     pub inverse_mass: &'a [f64],
+    /// k = I/(m r²) per particle, when any turns.
+    pub inertia: Option<&'a [f64]>,
+    /// Per surface contact, in `surfaces`' order: the friction its smooth normal force
+    /// leaves unused, m/s² ([`super::surfaces::StartContacts::spare_friction`]).
+    pub spare_friction: &'a [f64],
 }
 
 /// The resting solver's memory from step to step, and its scratch rows.
@@ -253,6 +334,7 @@ pub(crate) struct RestingSolver {
     /// The rows, in the order the sweeps take them ([`Schedule`]).
     pairs: PairColumns,
     surfaces: Vec<SurfaceRow>,
+    friction: Vec<FrictionRow>,
     schedule: Schedule,
     /// Scratch: the rows as built, in the touching lists' order.
     built_surfaces: Vec<SurfaceRow>,
@@ -264,6 +346,7 @@ impl RestingSolver {
     pub fn drop_scratch(&mut self) {
         self.pairs = PairColumns::default();
         self.surfaces = Vec::new();
+        self.friction = Vec::new();
         self.schedule = Schedule::default();
         self.built_surfaces = Vec::new();
     }
@@ -284,6 +367,7 @@ impl RestingSolver {
         h: f64,
         resting_speed: f64,
         is_struck: impl Fn(usize) -> bool,
+        spin: &mut [f64],
     ) -> bool {
         // Scaled down after a longer step, never up after a shorter one: what a short
         // step's rows took is mostly the approach they stopped, not the weight they
@@ -354,17 +438,24 @@ impl RestingSolver {
             &self.schedule.surfaces,
             &mut self.surfaces,
         );
+        self.build_friction(touching, h);
         changed |= self.pairs.warm_start(velocity, resting_speed, &is_struck);
         changed |= warm_start(&mut self.surfaces, velocity, resting_speed, |r| {
             is_struck(r.particle as usize)
         });
-        let tolerance = 1e-4 * resting_speed.max(1e-9);
+        let tolerance = settled_speed(resting_speed);
         for _ in 0..RESTING_SWEEPS {
             let pairs = self.pairs.sweep(&self.schedule.pair_levels, velocity);
             let surfaces = sweep(&mut self.surfaces, velocity);
-            let largest = match (pairs, surfaces) {
-                (None, None) => break,
-                (a, b) => a.unwrap_or(0.0).max(b.unwrap_or(0.0)),
+            let friction = if self.friction.is_empty() {
+                None
+            } else {
+                let slipped = sweep_friction(&mut self.friction, &self.surfaces, velocity, spin);
+                (slipped > 0.0).then_some(slipped)
+            };
+            let largest = match (pairs, surfaces, friction) {
+                (None, None, None) => break,
+                (a, b, c) => a.unwrap_or(0.0).max(b.unwrap_or(0.0)).max(c.unwrap_or(0.0)),
             };
             changed = true;
             if largest <= tolerance {
@@ -387,6 +478,54 @@ impl RestingSolver {
         }
         self.last_step = h;
         changed
+    }
+
+    /// The friction rows of the arranged surface rows whose surface has friction and
+    /// whose particle touches another (which alone can push it on the surface: a lone
+    /// particle's normal row only takes an approach of rounding, and its friction is the
+    /// smooth normal force's), for a step of `h`, in their order.
+    fn build_friction(&mut self, touching: &Touching<'_>, h: f64) {
+        self.friction.clear();
+        let frictional = |row: &SurfaceRow| {
+            touching.obstacles[row.obstacle as usize].friction > 0.0 && row.inverse_mass > 0.0
+        };
+        if !self.surfaces.iter().any(frictional) {
+            return;
+        }
+        let mut pushed = vec![false; touching.radius.len()];
+        for &(i, j) in touching.pairs {
+            pushed[i as usize] = true;
+            pushed[j as usize] = true;
+        }
+        for ((place, row), &contact) in (0_u32..).zip(&self.surfaces).zip(&self.schedule.surfaces) {
+            let p = row.particle as usize;
+            if !frictional(row) || !pushed[p] {
+                continue;
+            }
+            let friction = touching.obstacles[row.obstacle as usize].friction;
+            let k = touching.inertia.map_or(0.0, |inertia| inertia[p]);
+            let (w, radius) = (row.inverse_mass, touching.radius[p]);
+            let (turns, spin_per_impulse) = if k > 0.0 {
+                (w / k, -w / (k * radius))
+            } else {
+                (0.0, 0.0)
+            };
+            self.friction.push(FrictionRow {
+                surface: place,
+                particle: row.particle,
+                tangent: row.normal.perp(),
+                friction,
+                spare: touching
+                    .spare_friction
+                    .get(contact as usize)
+                    .map_or(0.0, |a| a * h / w),
+                inverse_mass: w,
+                mass: 1.0 / (w + turns),
+                radius,
+                spin_per_impulse,
+                impulse: 0.0,
+            });
+        }
     }
 
     /// Pushes apart overlaps beyond the tolerance, a share at a time over a few sweeps
@@ -549,13 +688,15 @@ mod tests {
             obstacles: &obstacles,
             radius: &[0.1, 0.1],
             inverse_mass: &inverse_mass,
+            inertia: None,
+            spare_friction: &[],
         };
         let mut state = State {
             time: 0.0,
             position: position.to_vec(),
             velocity: vec![DVec2::ZERO; 2],
         };
-        RestingSolver::default().solve(&touching, &mut state, 1e-3, 0.02, |_| false);
+        RestingSolver::default().solve(&touching, &mut state, 1e-3, 0.02, |_| false, &mut []);
         state.position
     }
 
@@ -588,6 +729,8 @@ mod tests {
             obstacles: &obstacles,
             radius: &[0.2, 0.2],
             inverse_mass: &[1.0, 1.0],
+            inertia: None,
+            spare_friction: &[],
         };
         let mut state = State {
             time: 0.0,
@@ -598,9 +741,9 @@ mod tests {
             velocity: vec![DVec2::ZERO, DVec2::new(0.0, -1e-5)],
         };
         let mut solver = RestingSolver::default();
-        solver.solve(&touching, &mut state, 1e-20, 0.02, |_| false);
+        solver.solve(&touching, &mut state, 1e-20, 0.02, |_| false, &mut []);
         state.velocity = vec![DVec2::new(0.0, -9.81e-3); 2];
-        solver.solve(&touching, &mut state, 1e-3, 0.02, |_| false);
+        solver.solve(&touching, &mut state, 1e-3, 0.02, |_| false, &mut []);
         for (disc, v) in ["A", "B"].iter().zip(&state.velocity) {
             assert!(v.length() <= 9.81e-3, "{disc} ends at {v} m/s");
         }

@@ -48,6 +48,9 @@ impl Event {
         let quantity = Quantity::parse(quantity.trim())?;
         // Arithmetic and units as the inspector's fields read them (`-2*cos(60°)`,
         // `50 cm` for a position), in the quantity's own unit.
+        if let Some(reason) = crate::units::too_big(value.trim()) {
+            return Err(reason);
+        }
         let value = crate::units::parse(value, quantity.unit())
             .ok()
             .filter(|v| v.is_finite())

@@ -129,6 +129,9 @@ impl Law {
     /// It is no expression, or names something else, in words.
     pub fn parse(text: &str, potential: bool) -> Result<Self, String> {
         use exmex::Express as _;
+        if let Some(reason) = crate::units::too_big(text.trim()) {
+            return Err(reason);
+        }
         let spelled = text.trim().replace('π', "pi").replace("**", "^");
         let expression = exmex::FlatEx::<f64>::parse(&spelled)
             .map_err(|_| say("scene-force-unreadable", &[("text", text.trim())]))?;

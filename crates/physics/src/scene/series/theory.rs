@@ -35,6 +35,9 @@ impl Theory {
     pub fn parse(text: &str, scene: &Scene, vary: &str) -> Result<Self, String> {
         use exmex::Express as _;
         let setting = Setting::parse(vary, scene)?;
+        if let Some(reason) = crate::units::too_big(text.trim()) {
+            return Err(reason);
+        }
         let expression = exmex::FlatEx::<f64, TheoryOps>::parse(text.trim())
             .map_err(|_| say("theory-unreadable", &[("text", text.trim())]))?;
         let named = setting.constants(scene);

@@ -84,8 +84,9 @@ pub(crate) fn run(args: &RunArgs) -> Result<(), Failure> {
     if let Some(note) = trajectory.note() {
         eprintln!("{note}");
     }
-    let sink: Box<dyn Write> = match args.out.as_deref() {
-        None | Some("-") => Box::new(io::stdout().lock()),
+    // Sendable: the rows of events are written from the step's thread as they are found.
+    let sink: Box<dyn Write + Send> = match args.out.as_deref() {
+        None | Some("-") => Box::new(io::stdout()),
         Some(path) => Box::new(std::fs::File::create(path).map_err(|error| {
             Failure::Input(say(
                 "cli-cannot-create",
@@ -168,7 +169,7 @@ fn save_state(simulation: &Simulation, scene: &physics::Scene, path: &str) -> Re
 /// always was).
 fn write_csv(
     trajectory: &mut Trajectory,
-    out: &mut impl Write,
+    out: &mut (impl Write + Send),
     mut impacts: Option<&mut ImpactLog>,
 ) -> io::Result<Result<(), Failure>> {
     let columns = trajectory.columns();

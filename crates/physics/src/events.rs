@@ -231,6 +231,32 @@ impl Simulation {
             }),
         )
     }
+
+    /// [`Self::step_to_watching`], handing each event to `each` at the end of the step it
+    /// is located in rather than keeping them: a run with many events holds none (each
+    /// is a whole simulation at its instant). An error from `each` stops the run there.
+    ///
+    /// # Errors
+    /// As [`Self::step_to_watching`], or `each`'s.
+    pub fn step_to_watching_each(
+        &mut self,
+        time: f64,
+        watch: &mut Watch,
+        each: &mut (dyn FnMut(Located) -> Result<(), SimulationError> + Send),
+    ) -> Result<(), SimulationError> {
+        let mut found = Vec::new();
+        self.step_to_observed(
+            time,
+            Some(&mut |before: &Simulation, after: &Simulation| {
+                let located = watch.after_step(before, after, &mut found);
+                // Those located before a failure to locate another are rows all the same.
+                for event in found.drain(..) {
+                    each(event)?;
+                }
+                located
+            }),
+        )
+    }
 }
 
 /// Golden-section trials at most: each narrows the bracket by 0.618, so 120 take it

@@ -255,28 +255,26 @@ impl Trajectory {
     /// the failure were given; the run stops there).
     pub fn advance(
         &mut self,
-        each: &mut dyn FnMut(Row<'_>),
+        each: &mut (dyn FnMut(Row<'_>) + Send),
     ) -> Option<Result<(), SimulationError>> {
         let &t = self.times.get(self.next)?;
         self.next += 1;
         let stepped = match &mut self.watch {
             Some((watch, names)) => {
-                let mut found = Vec::new();
-                let stepped = self.simulation.step_to_watching_into(t, watch, &mut found);
-                // The events located before a failure are rows all the same.
-                let mut result = Ok(());
-                for event in &found {
-                    row_values(&event.at, self.ledger_start, &self.extra, &mut self.values);
-                    result = finite_row(&self.values, &event.at, self.ledger_start, &self.extra);
-                    if result.is_err() {
-                        break;
-                    }
-                    each(Row {
-                        values: &self.values,
-                        event: Some(&names[event.event]),
-                    });
-                }
-                result.and(stepped)
+                // Each event's row goes out at the end of its step: a run of events alone
+                // is one instant, and its rows stream rather than wait for the end.
+                let (values, ledger_start, extra) =
+                    (&mut self.values, self.ledger_start, &self.extra);
+                self.simulation
+                    .step_to_watching_each(t, watch, &mut |event| {
+                        row_values(&event.at, ledger_start, extra, values);
+                        finite_row(values, &event.at, ledger_start, extra)?;
+                        each(Row {
+                            values,
+                            event: Some(&names[event.event]),
+                        });
+                        Ok(())
+                    })
             }
             None => self.simulation.step_to(t),
         };

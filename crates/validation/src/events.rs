@@ -59,6 +59,21 @@ pub(crate) fn events(report: &mut Report) -> Outcome {
             1e-12,
         );
     }
+    // The same at a coarse step, 0.05 s, dropped from rest: the instant is located inside
+    // a step some thirty times the landing's own scale of error, √(2h/g) to 1e-9 s.
+    let coarse = Scene::new()
+        .with_world(World::gravity_only())
+        .with_integrator(Integrator::Rk4, 0.05)
+        .with_particle(Particle::new("Ball", 1.0).radius(0.1).position([0.0, h]));
+    let found = instants(&coarse, "Ball.y crosses 0 down", 3.0)?;
+    let t = found.first().map_or(f64::NAN, Located::time);
+    row(
+        report,
+        "landing from rest, rk4 at 0.05 s (s)".to_owned(),
+        t,
+        (2.0 * h / G).sqrt(),
+        1e-9,
+    );
     let theta = 60.0_f64.to_radians();
     let pendulum = Scene::new()
         .with_world(World::gravity_only())

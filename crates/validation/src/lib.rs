@@ -136,7 +136,7 @@ impl Group {
             }
             Self::SavedState => "a saved state reopens and continues its run",
             Self::Events => {
-                "events are located inside a step: a landing, a pendulum's turning points, a spring's maxima at their closed-form instants"
+                "events are located inside a step: a landing (also at a 0.05 s step), a pendulum's turning points, a spring's maxima at their closed-form instants"
             }
             Self::Drag => {
                 "air resistance: linear drag's exponentials, quadratic drag's tanh fall to the terminal speed, and the energy it takes in the books"
@@ -145,7 +145,7 @@ impl Group {
                 "laws measured as series: a pendulum's period against its amplitude, a baseball's range against its angle with drag; a series' runs reach both ends of its range"
             }
             Self::Turning => {
-                "bodies that turn: Galileo's inclined plane (slider, disc, ring), a bowled ball's slip-to-roll instant, spin at an impact, a disc pushing a ring along a gripping floor"
+                "bodies that turn: Galileo's inclined plane (slider, disc, ring), a bowled ball's slip-to-roll instant, a backspun one that reverses, then rolls, spin at an impact, a disc pushing a ring along a gripping floor"
             }
             Self::Bodies => {
                 "rigid bodies: moments of inertia from their outlines, free flight on the parabola with a steady turn, under each method"

@@ -24,7 +24,8 @@ fn world() -> World {
 /// bowled at 6 m/s on a lane with μ = 0.2: it rolls on at 2 v₀/3, friction took
 /// ½ m v₀² − ½ m (1 + k) v², and angular momentum about the lane is kept; and a disc
 /// spinning at 12 rad/s dropped on a gripping floor, which leaves at −ω₀ r/3 with ω₀/3;
-/// and a disc pushing a ring along a gripping floor ([`pushed`]).
+/// a backspun disc that reverses, then rolls ([`backspun`]); and a disc pushing a ring
+/// along a gripping floor ([`pushed`]).
 pub(crate) fn turning(report: &mut Report) -> Outcome {
     let mut galileo = Checks::new("turning");
     let scene = load("galileo-incline")?;
@@ -51,11 +52,12 @@ pub(crate) fn turning(report: &mut Report) -> Outcome {
     ));
     let mut checks = Checks::new("turning");
     bowled(report, &mut checks)?;
+    backspun(report, &mut checks)?;
     bounce(report, &mut checks)?;
     pushed(report, &mut checks)?;
     report.tables.push(checks.table(
         "Rolling and slipping, spin at impacts, a push met by the floor's grip",
-        "a bowled disc rolls on at v₀/(1 + k) from t* = v₀ k/((1 + k) μ g); a spinning disc on a gripping floor leaves at −ω₀ r/3 with ω₀/3, friction taking m r² ω₀²/6; a disc pushing a ring rolls with it at (m₁ + m₂) gₓ/(m₁(1 + k₁) + m₂(1 + k₂))",
+        "a bowled disc rolls on at v₀/(1 + k) from t* = v₀ k/((1 + k) μ g), a backspun one at (v₀ − k ω₀ r)/(1 + k) from (v₀ + ω₀ r)/(μ g (1 + 1/k)); a spinning disc on a gripping floor leaves at −ω₀ r/3 with ω₀/3, friction taking m r² ω₀²/6; a disc pushing a ring rolls with it at (m₁ + m₂) gₓ/(m₁(1 + k₁) + m₂(1 + k₂))",
     ));
     Ok(())
 }
@@ -226,6 +228,49 @@ fn pushed(report: &mut Report, checks: &mut Checks) -> Outcome {
         report,
         "pushed: the books' residual over the kinetic energy".to_owned(),
         (residual, 0.0, energy.kinetic),
+        1e-9,
+    );
+    Ok(())
+}
+
+/// A second slip-to-roll geometry: a disc (k ½, r 0.2 m) sent at 2 m/s along a floor
+/// with μ = 0.3 and a backspin of 30 rad/s. Its contact point slips forward at v₀ + ω₀ r,
+/// so friction slows it and unwinds the spin until it rolls, at t* = (v₀ + ω₀ r)/(μ g
+/// (1 + 1/k)), on at (v₀ − k ω₀ r)/(1 + k) = −2/3 m/s: it has reversed and rolls back. rk4
+/// at 1 ms, the instant located inside its step: the speed to 1e-12, the position at 2 s
+/// to 1e-9 m.
+fn backspun(report: &mut Report, checks: &mut Checks) -> Outcome {
+    let (m, r, v0, spin, mu, k) = (1.5, 0.2, 2.0, 30.0, 0.3, 0.5);
+    let scene = Scene::new()
+        .with_world(world())
+        .with_ramp(
+            Ramp::new("floor", [-100.0, 0.0], [100.0, 0.0])
+                .thickness(0.0)
+                .friction(mu),
+        )
+        .with_particle(
+            Particle::new("Ball", m)
+                .radius(r)
+                .position([0.0, r])
+                .velocity([v0, 0.0])
+                .turning(k, spin),
+        )
+        .with_integrator(Integrator::Rk4, 1e-3);
+    let mut simulation = start(&scene)?;
+    step_to(&mut simulation, 2.0)?;
+    let t_star = (v0 + spin * r) / (mu * G * (1.0 + 1.0 / k));
+    let v = (v0 - k * spin * r) / (1.0 + k);
+    let x = v0 * t_star - 0.5 * mu * G * t_star * t_star + v * (2.0 - t_star);
+    checks.check(
+        report,
+        "backspin: rolls back at (m/s)".to_owned(),
+        (simulation.velocities()[0].x, v, v0),
+        1e-12,
+    );
+    checks.check(
+        report,
+        "backspin: x at 2 s (m)".to_owned(),
+        (simulation.positions()[0].x, x, x.abs()),
         1e-9,
     );
     Ok(())

@@ -338,6 +338,8 @@ pub(crate) struct RestingSolver {
     schedule: Schedule,
     /// Scratch: the rows as built, in the touching lists' order.
     built_surfaces: Vec<SurfaceRow>,
+    /// Scratch: whether each particle touches another, for the friction rows.
+    pushed: Vec<bool>,
 }
 
 impl RestingSolver {
@@ -349,6 +351,7 @@ impl RestingSolver {
         self.friction = Vec::new();
         self.schedule = Schedule::default();
         self.built_surfaces = Vec::new();
+        self.pushed = Vec::new();
     }
 
     /// The bytes of the last impulses, by length.
@@ -492,7 +495,9 @@ impl RestingSolver {
         if !self.surfaces.iter().any(frictional) {
             return;
         }
-        let mut pushed = vec![false; touching.radius.len()];
+        let pushed = &mut self.pushed;
+        pushed.clear();
+        pushed.resize(touching.radius.len(), false);
         for &(i, j) in touching.pairs {
             pushed[i as usize] = true;
             pushed[j as usize] = true;

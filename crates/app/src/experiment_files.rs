@@ -3,12 +3,8 @@
 
 use crate::App;
 #[cfg(not(target_arch = "wasm32"))]
-use crate::figure::{Curve, Figure};
-#[cfg(not(target_arch = "wasm32"))]
 use crate::files::Purpose;
 use crate::i18n::tr;
-#[cfg(not(target_arch = "wasm32"))]
-use crate::i18n::{Arg, tr_with};
 use crate::{experiments, picture};
 
 impl App {
@@ -41,33 +37,10 @@ impl App {
             }
             #[cfg(not(target_arch = "wasm32"))]
             Some(format) => {
-                let scene = self.document.scene();
-                let mut curves: Vec<Curve> = experiments::columns(results)
-                    .into_iter()
-                    .map(|(label, points)| Curve {
-                        label,
-                        points: points.iter().map(|p| (p[0], p[1])).collect(),
-                        dots: true,
-                    })
-                    .collect();
-                if let Some(law) = experiments::law(scene, &results.series) {
-                    curves.push(Curve {
-                        label: law.name,
-                        points: law.curve.iter().map(|p| (p[0], p[1])).collect(),
-                        dots: false,
-                    });
-                }
-                let title = tr_with(
-                    "experiment-title",
-                    &[("number", Arg::Text(&(index + 1).to_string()))],
-                );
-                let figure = Figure {
-                    title: &title,
-                    x_label: results.series.vary.clone(),
-                    y_label: String::new(),
-                    curves: &curves,
-                };
-                match (figure.encode(format), format) {
+                match (
+                    experiments::figure(self.document.scene(), results, format),
+                    format,
+                ) {
                     (Ok(bytes), picture::Format::Png) => {
                         self.picture_ready = Some(bytes);
                         self.files.ask(Purpose::ExportPng, None, "series.png");

@@ -307,7 +307,7 @@ impl Experiments {
                 ] {
                     let hint = format!("experiment-{key}-hint");
                     if let Some(v) = text(ui, key, format::field(value), &hint)
-                        && let Ok(number) = v.parse::<f64>()
+                        && let Ok(number) = format::typed(&v).trim().parse::<f64>()
                         && number.to_bits() != value.to_bits()
                     {
                         match key {
@@ -584,6 +584,78 @@ pub fn columns(results: &Results) -> Vec<(String, Vec<[f64; 2]>)> {
             (name.clone(), points)
         })
         .collect()
+}
+
+/// A series' results as a figure to print, `format`'s bytes: the measured points, the
+/// law's curve, a title that says what was measured against what, both axes with units.
+///
+/// # Errors
+/// Drawing or encoding failed (in words).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn figure(
+    scene: &Scene,
+    results: &Results,
+    format: crate::picture::Format,
+) -> Result<Vec<u8>, String> {
+    use crate::figure::{Curve, Figure};
+    let mut curves: Vec<Curve> = columns(results)
+        .into_iter()
+        .map(|(label, points)| Curve {
+            label,
+            points: points.iter().map(|p| (p[0], p[1])).collect(),
+            dots: true,
+            colour: None,
+        })
+        .collect();
+    if let Some(law) = law(scene, &results.series) {
+        curves.push(Curve {
+            label: law.name,
+            points: law.curve.iter().map(|p| (p[0], p[1])).collect(),
+            dots: false,
+            colour: None,
+        });
+    }
+    let (title, x_label, y_label) = figure_words(scene, &results.series);
+    Figure {
+        title: &title,
+        x_label,
+        y_label,
+        curves: &curves,
+    }
+    .encode(format)
+}
+
+/// A series' figure in words: its title ("period of bob.x against bob.length"), its x
+/// axis (the varied setting with its unit) and its y axis (the measure with its unit,
+/// or the units of several).
+#[cfg(not(target_arch = "wasm32"))]
+fn figure_words(scene: &Scene, series: &Series) -> (String, String, String) {
+    let unit = |unit: &str| {
+        if unit.is_empty() {
+            String::new()
+        } else {
+            format!(" ({unit})")
+        }
+    };
+    let x_unit = physics::series::Setting::parse(&series.vary, scene)
+        .map_or(String::new(), |s| unit(s.unit()));
+    let units: Vec<&str> = series
+        .measure
+        .iter()
+        .filter_map(|m| physics::series::Measure::parse(m).ok().map(|m| m.unit()))
+        .collect();
+    let y_label = match (&series.measure[..], &units[..]) {
+        ([measure], [only]) => format!("{measure}{}", unit(only)),
+        _ => crate::figure::units_label(units.into_iter()),
+    };
+    let title = tr_with(
+        "experiment-figure-title",
+        &[
+            ("measure", Arg::Text(&series.measure.join(", "))),
+            ("vary", Arg::Text(&series.vary)),
+        ],
+    );
+    (title, format!("{}{x_unit}", series.vary), y_label)
 }
 
 /// A series' law, read once: its name, the law itself, and its curve over the series'

@@ -39,14 +39,41 @@ pub fn fixed(value: f64, decimals: usize) -> String {
 }
 
 /// `value` as a text field shows it: 15 significant digits at most, so that the last
-/// bit of a sum (5.800000000000001 for 5.8) is not shown, and 0 for −0. What the field
-/// holds is not touched: only what the user types is applied.
+/// bit of a sum (5.800000000000001 for 5.8) is not shown, and 0 for −0; a power of ten
+/// (6.674e-11) far from 1, where a plain decimal would be a row of zeros to count; the
+/// decimal separator of the app's language. What the field holds is not touched: only
+/// what the user types is applied.
 pub fn field(value: f64) -> String {
     if value == 0.0 {
         return "0".to_owned();
     }
     let rounded: f64 = format!("{value:.14e}").parse().unwrap_or(value);
-    rounded.to_string()
+    if (1e-4..1e15).contains(&rounded.abs()) || !rounded.is_finite() {
+        local(rounded.to_string())
+    } else {
+        local(format!("{rounded:e}"))
+    }
+}
+
+/// `text` as the user typed it, in the notation the parsers read: where the app's
+/// language writes a decimal comma, a comma between two digits ("0,25") is a decimal
+/// point. Elsewhere a comma is left as typed, so that "1,000" in English is refused
+/// rather than read as one.
+pub fn typed(text: &str) -> String {
+    if !crate::i18n::decimal_comma() {
+        return text.to_owned();
+    }
+    let chars: Vec<char> = text.chars().collect();
+    chars
+        .iter()
+        .enumerate()
+        .map(|(i, &c)| {
+            let between_digits = i > 0
+                && chars[i - 1].is_ascii_digit()
+                && chars.get(i + 1).is_some_and(char::is_ascii_digit);
+            if c == ',' && between_digits { '.' } else { c }
+        })
+        .collect()
 }
 
 /// `text` with the decimal separator of the app's language.
@@ -114,7 +141,9 @@ mod tests {
         assert_eq!(field(0.1 + 0.2), "0.3");
         assert_eq!(field(-0.0), "0");
         assert_eq!(field(9.81), "9.81");
-        assert_eq!(field(6.674e-11), "0.00000000006674");
+        assert_eq!(field(6.674e-11), "6.674e-11");
+        assert_eq!(field(2.5e20), "2.5e20");
+        assert_eq!(field(0.000_25), "0.00025");
         assert_eq!(field(1.234_567_890_123_45), "1.23456789012345");
         assert_eq!(field(-2.5), "-2.5");
     }
@@ -142,5 +171,31 @@ mod tests {
         assert_eq!(number(6.6742e-11), "6,6742 × 10⁻¹¹");
         crate::i18n::set_language(crate::i18n::Language::English);
         assert_eq!(pair(1.5, -2.0), "(1.5, -2)");
+    }
+
+    /// A German or Spanish field shows the comma its readouts show, and reads back what
+    /// it shows as well as what a person used to a point types; English reads a comma
+    /// as typed, so "1,000" is refused rather than taken for 1.
+    #[test]
+    fn fields_write_and_read_the_languages_decimal_separator() {
+        for language in [
+            crate::i18n::Language::German,
+            crate::i18n::Language::Spanish,
+        ] {
+            crate::i18n::set_language(language);
+            assert_eq!(field(1.2), "1,2");
+            assert_eq!(field(-6.674e-11), "-6,674e-11");
+            for value in [1.2, -6.674e-11, 0.001, 123_456.789] {
+                let read = crate::units::parse(&typed(&field(value)), "m");
+                assert_eq!(read, Ok(value), "{language:?} {value}");
+            }
+            assert_eq!(typed("0,25 m + 1.5 cm"), "0.25 m + 1.5 cm");
+            assert_eq!(typed("Bob.y crosses -0,5"), "Bob.y crosses -0.5");
+            assert_eq!(typed(",5, 3,"), ",5, 3,");
+        }
+        crate::i18n::set_language(crate::i18n::Language::English);
+        assert_eq!(field(1.2), "1.2");
+        assert_eq!(typed("1,000"), "1,000");
+        assert!(crate::units::parse(&typed("1,000"), "m").is_err());
     }
 }

@@ -90,16 +90,20 @@ impl App {
     /// [`Self::export_figure`] on the desktop: plotters draws the figure.
     #[cfg(not(target_arch = "wasm32"))]
     fn draw_figure(&mut self, graph: usize, format: picture::Format) {
+        let colours = self
+            .document
+            .scene()
+            .graphs
+            .get(graph)
+            .and_then(|setup| crate::plots::object_colours(self.document.scene(), &setup.y));
         let Some((recording, setup)) = self.recorded_graph(graph) else {
             return;
         };
-        let title = setup.title.clone().unwrap_or_else(|| {
-            tr_with(
-                "graph-untitled",
-                &[("number", Arg::Text(&(graph + 1).to_string()))],
-            )
-        });
-        match figure::graph(recording, setup, &title, format) {
+        let title = setup
+            .title
+            .clone()
+            .unwrap_or_else(|| crate::plots::describe(setup));
+        match figure::graph(recording, setup, colours.as_deref(), &title, format) {
             Ok(bytes) => match format {
                 picture::Format::Png => {
                     self.picture_ready = Some(bytes);

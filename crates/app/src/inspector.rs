@@ -127,14 +127,13 @@ fn number_field(
 ) -> Option<f64> {
     let field = label.to_owned();
     let check = move |text: &str| -> Result<(), String> {
-        let value = units::parse(text, unit).map_err(|reason| format!("{field}: {reason}"))?;
+        let value = units::parse(&format::typed(text), unit)
+            .map_err(|reason| format!("{field}: {reason}"))?;
         check_value(rule, &field, value)
     };
-    let hint = format!(
-        "{hint}. Arithmetic and units are converted: 2*pi, sqrt(2)/2, 30 km/h, 5 cm, 250 g"
-    );
+    let hint = format!("{hint}. {}", tr("inspector-arithmetic-hint"));
     text_field(ui, id, label, unit, &format::field(value), &hint, &check)
-        .and_then(|t| units::parse(&t, unit).ok())
+        .and_then(|t| units::parse(&format::typed(&t), unit).ok())
 }
 
 /// A vector field, Cartesian or polar as typed, with a button to switch the form.
@@ -207,11 +206,11 @@ fn vector_field(
             if let Some(a) = number_field(
                 ui,
                 id.with("a"),
-                &format!("{label} angle"),
+                &format!("{label} {}", tr("inspector-polar-angle")),
                 "°",
                 angle,
                 Rule::Finite,
-                "degrees, counter-clockwise from +x",
+                &tr("inspector-polar-angle-hint"),
             ) {
                 result = Some(Vector::polar(magnitude, a));
             }
@@ -353,38 +352,44 @@ fn live(ui: &mut Ui, runner: &Runner, selection: Option<Selection>) {
         let p = simulation.particle(i, &accelerations);
         let vector = |v: physics::DVec2, unit: &str| format!("{} {unit}", format::pair(v.x, v.y));
         let mut rows = vec![
-            ("position", vector(p.position, "m")),
-            ("velocity", vector(p.velocity, "m/s")),
-            ("acceleration", vector(p.acceleration, "m/s²")),
-            ("speed", format::with_unit(p.speed, "m/s")),
-            ("kinetic energy", format::with_unit(p.kinetic_energy, "J")),
-            ("momentum", vector(p.momentum, "kg·m/s")),
+            ("inspector-live-position", vector(p.position, "m")),
+            ("inspector-live-velocity", vector(p.velocity, "m/s")),
+            (
+                "inspector-live-acceleration",
+                vector(p.acceleration, "m/s²"),
+            ),
+            ("inspector-live-speed", format::with_unit(p.speed, "m/s")),
+            (
+                "inspector-live-kinetic-energy",
+                format::with_unit(p.kinetic_energy, "J"),
+            ),
+            ("inspector-live-momentum", vector(p.momentum, "kg·m/s")),
         ];
         if simulation.particle_turns(i) {
             let rpm = p.spin * 60.0 / std::f64::consts::TAU;
             rows.extend([
                 (
-                    "spin",
+                    "inspector-live-spin",
                     format!(
                         "{} ({})",
                         format::with_unit(p.spin, "rad/s"),
                         format::with_unit(rpm, "rpm")
                     ),
                 ),
-                ("angle", format::with_unit(p.angle, "°")),
+                ("inspector-live-angle", format::with_unit(p.angle, "°")),
                 (
-                    "of which rotational",
+                    "inspector-live-rotational",
                     format::with_unit(p.rotational_energy, "J"),
                 ),
                 (
-                    "angular momentum",
+                    "inspector-live-angular-momentum",
                     format::with_unit(p.angular_momentum, "kg·m²/s"),
                 ),
             ]);
         }
         egui::Grid::new("live").num_columns(2).show(ui, |ui| {
             for (name, value) in rows {
-                ui.label(name);
+                ui.label(tr(name));
                 ui.monospace(value);
                 ui.end_row();
             }
@@ -458,7 +463,7 @@ fn endpoint_field(
     let mut result = None;
     let current = match end {
         Endpoint::Particle(name) => name.clone(),
-        Endpoint::Point(_) => "fixed point".to_owned(),
+        Endpoint::Point(_) => tr("inspector-fixed-point"),
     };
     ui.horizontal(|ui| {
         let label = ui.label(label);
@@ -865,10 +870,10 @@ fn field_ui<T>(
         (Kind::PairForces, Value::PairForces(mut mode)) => {
             let before = mode;
             egui::ComboBox::from_id_salt(id)
-                .selected_text(format!("{label}: {}", mode.as_str()))
+                .selected_text(format!("{label}: {}", pair_forces_words(mode)))
                 .show_ui(ui, |ui| {
                     for choice in physics::PairForces::ALL {
-                        ui.selectable_value(&mut mode, choice, choice.as_str());
+                        ui.selectable_value(&mut mode, choice, pair_forces_words(choice));
                     }
                 })
                 .response
@@ -877,6 +882,14 @@ fn field_ui<T>(
         }
         _ => None,
     }
+}
+
+/// How pair forces are summed, in the user's language (the file keeps `direct` or `tree`).
+fn pair_forces_words(mode: physics::PairForces) -> String {
+    tr(match mode {
+        physics::PairForces::Direct => "inspector-pair-forces-direct",
+        physics::PairForces::Tree => "inspector-pair-forces-tree",
+    })
 }
 
 /// The world's box: a checkbox, and its corners when there is one.

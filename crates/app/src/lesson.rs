@@ -58,7 +58,7 @@ impl LessonPanel {
         if outdated {
             self.measured = Some((scene.clone(), lesson.answers(scene)));
         }
-        let checked = match question.read_answer(&self.answers[index]) {
+        let checked = match question.read_answer(&crate::format::typed(&self.answers[index])) {
             Err(why) => Checked::Unreadable(why),
             Ok(answer) => match self.measured.as_ref().map(|(_, m)| m) {
                 Some(Ok(values)) => match &values[index] {

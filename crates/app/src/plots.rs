@@ -64,6 +64,41 @@ pub fn words(quantity: &Quantity) -> String {
     format!("{} ({})", tr(key), quantity.unit())
 }
 
+/// What an untitled graph shows, as a figure's title says it: "bob.x against t",
+/// "A.y, B.y against t".
+pub fn describe(graph: &Graph) -> String {
+    let y: Vec<String> = graph.y.iter().map(ToString::to_string).collect();
+    tr_with(
+        "graph-figure-title",
+        &[
+            ("y", Arg::Text(&y.join(", "))),
+            ("x", Arg::Text(&graph.x.to_string())),
+        ],
+    )
+}
+
+/// The colour of each of a graph's series, on screen and in its figure: the colour its
+/// particle or body has on the canvas, where every series belongs to a different one
+/// (two balls' heights, each in its ball's colour). `None` where two series share an
+/// object or one is a system's quantity: the palette then tells them apart, which one
+/// object's colour could not.
+pub fn object_colours(scene: &physics::Scene, series: &[Quantity]) -> Option<Vec<[u8; 3]>> {
+    let mut names: Vec<&str> = Vec::with_capacity(series.len());
+    for q in series {
+        let Quantity::Particle(name, _) = q else {
+            return None;
+        };
+        if names.contains(&name.as_str()) {
+            return None;
+        }
+        names.push(name);
+    }
+    names
+        .into_iter()
+        .map(|name| crate::canvas::object_rgb(scene, name))
+        .collect()
+}
+
 /// The recorded samples of `graph` as CSV: t first, then the x axis if it is not t,
 /// then each series; one row per sample, at the simulation's instants.
 pub fn to_csv(recording: &Recording, graph: &Graph) -> String {
@@ -314,4 +349,41 @@ fn impact_list(ui: &mut Ui, runner: &Runner, scene: &physics::Scene) -> Option<A
             });
     });
     action
+}
+
+#[cfg(test)]
+mod tests {
+    use physics::{Color, Particle, Quantity, Scene};
+
+    use super::object_colours;
+
+    /// Two balls' heights are drawn in the balls' own colours (a chosen one, and the
+    /// palette's for the second ball, as the canvas draws it); two quantities of one ball,
+    /// or one of the system, leave the graph's palette to tell them apart.
+    #[test]
+    fn each_series_takes_its_own_objects_colour() {
+        let mut a = Particle::new("a", 1.0);
+        a.color = Some(Color([10, 20, 30]));
+        let scene = Scene::new()
+            .with_particle(a)
+            .with_particle(Particle::new("b", 1.0).position([1.0, 0.0]));
+        let q = |text: &str| Quantity::parse(text).expect("a quantity");
+        assert_eq!(
+            object_colours(&scene, &[q("b.y"), q("a.y")]),
+            Some(vec![Color::palette(1).0, [10, 20, 30]])
+        );
+        assert_eq!(object_colours(&scene, &[q("a.x"), q("a.y")]), None);
+        assert_eq!(
+            object_colours(&scene, &[q("a.y"), q("kinetic_energy")]),
+            None
+        );
+    }
+
+    /// An untitled graph's figure is titled by what it plots: "Graph 1" says nothing.
+    #[test]
+    fn an_untitled_graph_is_described_by_its_quantities() {
+        let q = |text: &str| Quantity::parse(text).expect("a quantity");
+        let graph = physics::Graph::against_time([q("a.y"), q("b.y")]);
+        assert_eq!(super::describe(&graph), "a.y, b.y against t");
+    }
 }

@@ -130,12 +130,19 @@ impl Stopwatch {
         }
     }
 
+    /// The typed event as the parser and the scene file read it: trimmed, a decimal
+    /// comma typed in German or Spanish written as a point.
+    fn event_text(&self) -> String {
+        crate::format::typed(self.event.trim())
+    }
+
     /// Why the typed event cannot be watched on `scene`, said as it is typed (before
     /// Play): it does not read, or it names nothing in the scene. `None` when no trigger
     /// waits for a typed event, or the event reads.
     pub fn event_problem(&self, scene: &physics::Scene) -> Option<String> {
         let waits = self.start_on == Trigger::Event || self.stop_on == Trigger::Event;
-        let event = self.event.trim();
+        let event = self.event_text();
+        let event = event.as_str();
         if !waits || event.is_empty() {
             return None;
         }
@@ -149,7 +156,8 @@ impl Stopwatch {
     /// (`has_tape`), is kept as the hand (the window shows why meanwhile): a file that
     /// would not open again is never written.
     pub fn saved(&self, scene: &physics::Scene, has_tape: bool) -> Option<physics::Stopwatch> {
-        let event = self.event.trim();
+        let event = self.event_text();
+        let event = event.as_str();
         let event_reads = physics::Event::parse(event)
             .and_then(|e| e.quantity.check_in(scene))
             .is_ok();
@@ -174,7 +182,8 @@ impl Stopwatch {
     /// `scene`, a scene starting at t = 0 (the measure is the event's instant), no laps.
     /// None for what no measure says (a gate, impacts, the hand).
     pub fn question(&self, scene: &physics::Scene) -> Option<String> {
-        let event = self.event.trim();
+        let event = self.event_text();
+        let event = event.as_str();
         let reads = physics::Event::parse(event)
             .and_then(|e| e.quantity.check_in(scene))
             .is_ok();
@@ -244,7 +253,7 @@ impl Stopwatch {
         let uses = |trigger| waiting && (self.start_on == trigger || self.stop_on == trigger);
         Wanted {
             event: (uses(Trigger::Event) && !self.event.trim().is_empty())
-                .then(|| self.event.trim().to_owned()),
+                .then(|| self.event_text()),
             gate: gate.filter(|_| uses(Trigger::Gate)),
         }
     }

@@ -137,7 +137,7 @@ impl App {
             .on_hover_text(tr("timeline-go-to-hint"));
         ui.data_mut(|d| d.insert_temp(id, text.clone()));
         if response.lost_focus() && ui.input(|i| i.key_pressed(egui::Key::Enter)) {
-            match crate::units::parse(&text, "s") {
+            match crate::units::parse(&crate::format::typed(&text), "s") {
                 Ok(time) => {
                     self.runner.go_to_time(time);
                     ui.data_mut(|d| d.remove::<String>(id));

@@ -89,6 +89,8 @@ pub fn ui(
             .add(
                 egui::Slider::new(&mut time_scale, 0.01..=100.0)
                     .logarithmic(true)
+                    .custom_formatter(|v, _| crate::format::number(v))
+                    .custom_parser(|s| crate::format::typed(s).trim().parse().ok())
                     .text("×"),
             )
             .on_hover_text(tr("toolbar-time-scale-hint"));
@@ -137,11 +139,8 @@ pub fn ui(
                         .labelled_by(label.id)
                         .on_hover_text(tr("toolbar-time-step-hint"));
                     ui.label("s");
-                    let parsed = text
-                        .trim()
-                        .parse::<f64>()
-                        .map_err(|_| "not a number".to_owned())
-                        .and_then(|v| {
+                    let parsed =
+                        crate::units::parse(&crate::format::typed(&text), "s").and_then(|v| {
                             check_value(Rule::Positive, &tr("field-simulation-time-step"), v)
                                 .map(|()| v)
                         });

@@ -648,11 +648,32 @@ fn string_points(a: DVec2, b: DVec2, length: f64) -> Vec<DVec2> {
 
 /// Body `i`'s colour: its own, or the palette's after the particles'.
 fn body_colour(scene: &Scene, i: usize) -> Color32 {
-    let [r, g, b] = scene.bodies[i]
+    let [r, g, b] = body_rgb(scene, i);
+    Color32::from_rgb(r, g, b)
+}
+
+fn body_rgb(scene: &Scene, i: usize) -> [u8; 3] {
+    scene.bodies[i]
         .color
         .unwrap_or_else(|| physics::Color::palette(scene.particles.len() + i))
-        .0;
-    Color32::from_rgb(r, g, b)
+        .0
+}
+
+fn particle_rgb(scene: &Scene, i: usize) -> [u8; 3] {
+    scene.particles[i]
+        .color
+        .unwrap_or_else(|| physics::Color::palette(i))
+        .0
+}
+
+/// The colour the canvas draws the particle or body named `name` in, for what shows
+/// it elsewhere (its curves on a graph).
+pub(crate) fn object_rgb(scene: &Scene, name: &str) -> Option<[u8; 3]> {
+    if let Some(i) = scene.particles.iter().position(|p| p.name == name) {
+        return Some(particle_rgb(scene, i));
+    }
+    let i = scene.bodies.iter().position(|b| b.name == name)?;
+    Some(body_rgb(scene, i))
 }
 
 /// The centroid of a convex outline, metres.
@@ -669,10 +690,7 @@ fn outline_centroid(outline: &[DVec2]) -> DVec2 {
 }
 
 fn particle_colour(scene: &Scene, i: usize) -> Color32 {
-    let [r, g, b] = scene.particles[i]
-        .color
-        .unwrap_or_else(|| physics::Color::palette(i))
-        .0;
+    let [r, g, b] = particle_rgb(scene, i);
     Color32::from_rgb(r, g, b)
 }
 

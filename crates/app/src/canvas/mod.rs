@@ -30,6 +30,7 @@ use crate::document::Document;
 use crate::i18n::{Arg, tr_with};
 use crate::recording::Recording;
 use crate::run_loop::Runner;
+pub(crate) use draw::object_rgb;
 pub use instruments::{
     FieldKind, Instrument, Instruments, Mark, probe_lines, protractor_reading, tape_ends,
     tape_reading,

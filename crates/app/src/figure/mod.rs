@@ -9,7 +9,7 @@
 use plotters::prelude::*;
 use plotters::style::FontStyle;
 
-use physics::{Graph, Quantity};
+use physics::Graph;
 
 use crate::recording::Recording;
 
@@ -17,8 +17,14 @@ pub mod canvas;
 
 /// The figure's size, pixels.
 pub const SIZE: (u32, u32) = (1200, 800);
-/// The legend's width beside the plot, pixels.
+/// The legend's width beside the plot, pixels: at least this, more for longer labels...
 const LEGEND_WIDTH: u32 = 260;
+/// ...up to this, beyond which a label wraps onto further lines.
+const LEGEND_WIDEST: u32 = 480;
+/// The legend's text size, pixels.
+const LEGEND_FONT: u32 = 22;
+/// From the legend's left edge to its text (the mark goes before), pixels.
+const LEGEND_INDENT: u32 = 60;
 
 pub use crate::picture::Format;
 
@@ -51,47 +57,47 @@ pub fn register_font() -> Result<(), String> {
         .ok_or_else(|| "the bundled font could not be loaded".to_owned())
 }
 
-/// The figure of `graph` over `recording`, titled `title`, as `format`'s bytes.
+/// The figure of `graph` over `recording`, titled `title`, as `format`'s bytes; each
+/// series in its object's colour where `colours` gives them (as
+/// [`crate::plots::object_colours`] does), else in the palette's.
 ///
 /// # Errors
 /// Nothing to draw (no sample, no series), or drawing or encoding failed (in words).
 pub fn graph(
     recording: &Recording,
     graph: &Graph,
+    colours: Option<&[[u8; 3]]>,
     title: &str,
     format: Format,
 ) -> Result<Vec<u8>, String> {
     let x = graph.x.clone();
-    let series: Vec<(Quantity, Vec<(f64, f64)>)> = graph
+    let mut units = Vec::new();
+    let curves: Vec<Curve> = graph
         .y
         .iter()
-        .filter_map(|q| {
+        .enumerate()
+        .filter_map(|(k, q)| {
             let (across, up) = (recording.column(&x)?, recording.column(q)?);
             let points = (0..recording.len())
                 .map(|k| (recording.at(k, across), recording.at(k, up)))
                 .filter(|(a, b)| a.is_finite() && b.is_finite())
                 .collect();
-            Some((q.clone(), points))
+            units.push(q.unit());
+            Some(Curve {
+                label: crate::plots::label(q),
+                points,
+                dots: false,
+                colour: colours.and_then(|c| c.get(k).copied()),
+            })
         })
         .collect();
-    if recording.is_empty() || series.is_empty() {
+    if recording.is_empty() || curves.is_empty() {
         return Err(crate::i18n::tr("notice-nothing-to-export"));
     }
-    // One y axis: its label names the unit when every series shares it.
-    let units: Vec<&str> = series.iter().map(|(q, _)| q.unit()).collect();
-    let y_label = match &series[..] {
-        [(only, _)] => crate::plots::label(only),
-        _ if units.windows(2).all(|w| w[0] == w[1]) => format!("({})", units[0]),
-        _ => String::new(),
+    let y_label = match &curves[..] {
+        [only] => only.label.clone(),
+        _ => units_label(units.into_iter()),
     };
-    let curves: Vec<Curve> = series
-        .into_iter()
-        .map(|(q, points)| Curve {
-            label: crate::plots::label(&q),
-            points,
-            dots: false,
-        })
-        .collect();
     let figure = Figure {
         title,
         x_label: crate::plots::label(&x),
@@ -99,6 +105,18 @@ pub fn graph(
         curves: &curves,
     };
     figure.encode(format)
+}
+
+/// One y axis for several quantities: its label names their unit, "(m)", or their
+/// units in order where they differ, "(m/s, rad/s)".
+pub fn units_label<'a>(units: impl Iterator<Item = &'a str>) -> String {
+    let mut distinct: Vec<&str> = Vec::new();
+    for unit in units {
+        if !distinct.contains(&unit) {
+            distinct.push(unit);
+        }
+    }
+    format!("({})", distinct.join(", "))
 }
 
 /// A figure's content: labelled curves (lines, or dots for measured points) on one pair
@@ -116,6 +134,8 @@ pub struct Curve {
     pub points: Vec<(f64, f64)>,
     /// Drawn as dots (measurements) rather than a line.
     pub dots: bool,
+    /// Its own colour (its object's on the canvas); the palette's where `None`.
+    pub colour: Option<[u8; 3]>,
 }
 
 impl Figure<'_> {
@@ -159,7 +179,19 @@ impl Figure<'_> {
             .titled(self.title, ("sans-serif", 32))
             .map_err(|e| fail(&e))?;
         let (width, _) = root.dim_in_pixel();
-        let (plot, legend) = root.split_horizontally(width.saturating_sub(LEGEND_WIDTH));
+        let labels: Vec<Vec<String>> = self
+            .curves
+            .iter()
+            .map(|c| wrap(&c.label, LEGEND_WIDEST - LEGEND_INDENT))
+            .collect();
+        let widest = labels
+            .iter()
+            .flatten()
+            .map(|l| text_width(l))
+            .max()
+            .unwrap_or(0);
+        let legend_width = (widest + LEGEND_INDENT + 20).clamp(LEGEND_WIDTH, LEGEND_WIDEST);
+        let (plot, legend) = root.split_horizontally(width.saturating_sub(legend_width));
         let ((x0, x1), (y0, y1)) = extent(self.curves);
         let mut chart = ChartBuilder::on(&plot)
             .margin(20)
@@ -176,7 +208,7 @@ impl Figure<'_> {
             .draw()
             .map_err(|e| fail(&e))?;
         for (k, curve) in self.curves.iter().enumerate() {
-            let colour = COLOURS[k % COLOURS.len()];
+            let colour = curve.rgb(k);
             let points = curve.points.iter().copied();
             if curve.dots {
                 chart
@@ -188,15 +220,12 @@ impl Figure<'_> {
                     .map_err(|e| fail(&e))?;
             }
         }
-        // The legend beside the plot: a mark of each colour and the curve's label.
-        for (k, curve) in self.curves.iter().enumerate() {
-            let colour = COLOURS[k % COLOURS.len()];
-            #[expect(
-                clippy::cast_possible_truncation,
-                clippy::cast_possible_wrap,
-                reason = "a few rows"
-            )]
-            let y = 40 + 36 * k as i32;
+        // The legend beside the plot: a mark of each colour and the curve's label, a long
+        // label on as many lines as it needs.
+        let line_height = 30;
+        let mut y = 40;
+        for (k, (curve, lines)) in self.curves.iter().zip(&labels).enumerate() {
+            let colour = curve.rgb(k);
             if curve.dots {
                 legend
                     .draw(&Circle::new((30, y), 6, colour.filled()))
@@ -209,16 +238,55 @@ impl Figure<'_> {
                     ))
                     .map_err(|e| fail(&e))?;
             }
-            legend
-                .draw(&Text::new(
-                    curve.label.clone(),
-                    (60, y - 11),
-                    ("sans-serif", 22).into_font(),
-                ))
-                .map_err(|e| fail(&e))?;
+            for line in lines {
+                legend
+                    .draw(&Text::new(
+                        line.clone(),
+                        (i32::try_from(LEGEND_INDENT).unwrap_or(60), y - 11),
+                        ("sans-serif", LEGEND_FONT).into_font(),
+                    ))
+                    .map_err(|e| fail(&e))?;
+                y += line_height;
+            }
+            y += 6;
         }
         Ok(())
     }
+}
+
+impl Curve {
+    /// Its colour: its own, or the palette's `k`th.
+    fn rgb(&self, k: usize) -> RGBColor {
+        self.colour
+            .map_or(COLOURS[k % COLOURS.len()], |[r, g, b]| RGBColor(r, g, b))
+    }
+}
+
+/// How wide `text` is in the legend's font, pixels (a rough width where the font fails).
+pub fn text_width(text: &str) -> u32 {
+    ("sans-serif", LEGEND_FONT)
+        .into_font()
+        .box_size(text)
+        .map_or_else(
+            |_| LEGEND_FONT * u32::try_from(text.chars().count()).unwrap_or(0) / 2,
+            |(w, _)| w,
+        )
+}
+
+/// `text` on lines at most `width` pixels wide in the legend's font, broken between
+/// words (a single word wider than that stays whole on its line).
+pub fn wrap(text: &str, width: u32) -> Vec<String> {
+    let mut lines: Vec<String> = Vec::new();
+    for word in text.split_whitespace() {
+        match lines.last_mut() {
+            Some(line) if text_width(&format!("{line} {word}")) <= width => {
+                line.push(' ');
+                line.push_str(word);
+            }
+            _ => lines.push(word.to_owned()),
+        }
+    }
+    lines
 }
 
 /// The range of the points across and up, widened by 5 % (and around a single value).
@@ -259,4 +327,35 @@ pub(crate) fn encode_png(pixels: &[u8], (w, h): (u32, u32)) -> Result<Vec<u8>, S
     writer.write_image_data(pixels).map_err(fail)?;
     writer.finish().map_err(fail)?;
     Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{register_font, text_width, units_label, wrap};
+
+    /// A long legend label breaks between words into lines that each fit, losing no
+    /// word; a short one stays on one line.
+    #[test]
+    fn a_long_label_wraps_into_lines_that_fit() {
+        register_font().expect("the bundled font");
+        let label = "period of Bob.x from Bob.y crosses 0 down to the second such crossing";
+        let lines = wrap(label, 200);
+        assert!(lines.len() >= 3, "{lines:?}");
+        assert!(lines.iter().all(|l| text_width(l) <= 200), "{lines:?}");
+        assert_eq!(lines.join(" "), label);
+        assert_eq!(wrap("bob.x (m)", 200), ["bob.x (m)"]);
+        assert!(
+            text_width("Ball.x at Ball.y crosses 0 down") > 200,
+            "a real width"
+        );
+    }
+
+    #[test]
+    fn one_axis_names_each_unit_once_in_order() {
+        assert_eq!(units_label(["m", "m"].into_iter()), "(m)");
+        assert_eq!(
+            units_label(["m/s", "rad/s", "m/s"].into_iter()),
+            "(m/s, rad/s)"
+        );
+    }
 }

@@ -124,7 +124,15 @@ impl GraphPanel {
             .as_ref()
             .filter(|_| self.marks && *x == Quantity::Time || self.fit.is_some())
             .unwrap_or(&empty);
-        let plot = self.plot(ui, &graph, runs, recording, &columns, shown);
+        let colours = super::object_colours(document.scene(), series);
+        let plot = self.plot(
+            ui,
+            (&graph, colours.as_deref()),
+            runs,
+            recording,
+            &columns,
+            shown,
+        );
         pointer_readout(ui, &plot, x, &columns);
         self.readings_rows(ui, shown, &mut asking);
         self.rect = plot.response.rect;
@@ -253,7 +261,7 @@ impl GraphPanel {
     fn plot(
         &mut self,
         ui: &mut Ui,
-        graph: &Graph,
+        (graph, colours): (&Graph, Option<&[[u8; 3]]>),
         runs: Runs<'_>,
         recording: &Recording,
         columns: &[(Quantity, Vec<[f64; 2]>)],
@@ -276,6 +284,8 @@ impl GraphPanel {
             plot = plot.reset();
         }
         let earlier_lines = earlier_lines(runs.earlier, x, series);
+        // The fitted curve in the theme's strongest text colour: seen on dark and light.
+        let fit_colour = ui.visuals().strong_text_color();
         plot.show(ui, |plot| {
             for points in &earlier_lines {
                 plot.line(
@@ -285,7 +295,14 @@ impl GraphPanel {
                 );
             }
             for (q, points) in columns {
-                plot.line(Line::new(words(q), PlotPoints::from(points.clone())));
+                let mut line = Line::new(words(q), PlotPoints::from(points.clone()));
+                if let Some([r, g, b]) = colours
+                    .zip(series.iter().position(|y| y == q))
+                    .map(|(colours, k)| colours[k])
+                {
+                    line = line.color(egui::Color32::from_rgb(r, g, b));
+                }
+                plot.line(line);
             }
             for analysis in &read.analyses {
                 analysis.draw(plot);
@@ -300,7 +317,7 @@ impl GraphPanel {
                 plot.line(
                     Line::new(format!("{name} fit"), curve)
                         .style(LineStyle::dashed_loose())
-                        .color(egui::Color32::from_rgb(60, 60, 60)),
+                        .color(fit_colour),
                 );
             }
             if let (Quantity::Time, Some(t)) = (x, runs.cursor) {

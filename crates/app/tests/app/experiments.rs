@@ -12,16 +12,7 @@ use crate::common::{example_scene, tall_harness};
 /// is `sweep`'s.
 #[test]
 fn the_range_series_runs_and_follows_the_sine_law() {
-    let mut harness = tall_harness(App::new(example_scene("projectile-range")));
-    harness
-        .get_all_by_label("Run the series")
-        .next()
-        .expect("a run button")
-        .click();
-    harness.step();
-    let ctx = harness.ctx.clone();
-    harness.state_mut().experiments.finish(&ctx);
-    harness.step();
+    let harness = range_series_run();
     let results = harness.state().experiments.results[0]
         .clone()
         .expect("results");
@@ -47,6 +38,21 @@ fn the_range_series_runs_and_follows_the_sine_law() {
     let csv = newtonlab_app::experiments::to_csv(&results);
     assert!(csv.starts_with("Ball.velocity.angle,Ball.x at Ball.y crosses 0 down\n10,"));
     assert_eq!(csv.lines().count(), 16);
+}
+
+/// The range example with its series run to the end.
+fn range_series_run() -> egui_kittest::Harness<'static, App> {
+    let mut harness = tall_harness(App::new(example_scene("projectile-range")));
+    harness
+        .get_all_by_label("Run the series")
+        .next()
+        .expect("a run button")
+        .click();
+    harness.step();
+    let ctx = harness.ctx.clone();
+    harness.state_mut().experiments.finish(&ctx);
+    harness.step();
+    harness
 }
 
 /// "Add an experiment series" adds one for the selected particle; a field typed in it
@@ -98,5 +104,49 @@ fn a_series_is_added_and_edited_in_place() {
         harness.state().document.scene().series[0].measure,
         ["max Ball.y", "t at Ball.y crosses 0 down"],
         "added from the menu"
+    );
+}
+
+/// A series exports as a figure that says what it shows: titled by its measure against
+/// its setting, the x axis with the setting's unit, the y axis with the measure's, and
+/// the legend's long label inside the page (1200 px wide) rather than cut off at its edge.
+#[test]
+fn a_series_figure_is_titled_labelled_and_keeps_its_legend_on_the_page() {
+    use newtonlab_app::figure::Format;
+    let harness = range_series_run();
+    let app = harness.state();
+    let results = app.experiments.results[0].clone().expect("results");
+    let svg = newtonlab_app::experiments::figure(app.document.scene(), &results, Format::Svg)
+        .expect("an SVG");
+    let svg = String::from_utf8(svg).expect("text");
+    let label = "Ball.x at Ball.y crosses 0 down";
+    for expected in [
+        format!("{label} against Ball.velocity.angle"),
+        "Ball.velocity.angle (°)".to_owned(),
+        format!("{label} (m)"),
+    ] {
+        assert!(svg.contains(&expected), "{expected} in the SVG");
+    }
+    assert!(!svg.contains("Series 1"), "a title that says what it is");
+    // The legend's entry: where it starts, and its width in the figure's font.
+    let entry = svg
+        .split("<text")
+        .find(|t| {
+            t.split_once('>')
+                .and_then(|(_, rest)| rest.split_once("</text>"))
+                .is_some_and(|(content, _)| content.trim() == label)
+        })
+        .expect("the legend's entry");
+    let x: f64 = entry
+        .split("x=\"")
+        .nth(1)
+        .and_then(|rest| rest.split('"').next())
+        .and_then(|n| n.parse().ok())
+        .expect("its x");
+    let width = newtonlab_app::figure::text_width(label);
+    assert!(
+        x + f64::from(width) <= 1200.0,
+        "the entry ends at {} px",
+        x + f64::from(width)
     );
 }

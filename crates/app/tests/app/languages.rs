@@ -165,3 +165,66 @@ fn getting_started_opens_on_the_first_run_and_from_help() {
     newtonlab_app::i18n::set_language(newtonlab_app::i18n::Language::English);
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// In German the inspector speaks German while a run goes (a turning particle's live
+/// readouts, a tie's fixed end, how pair forces are summed), writes its fields with the
+/// decimal comma its readouts write, and reads a value typed with a comma as well as one
+/// typed with a point.
+#[test]
+fn german_fields_and_live_readouts_speak_german_with_a_decimal_comma() {
+    use egui::{Key, Modifiers};
+    use newtonlab_app::i18n::{Language, set_language};
+    use physics::{Particle, Scene, World};
+    let scene = Scene::new().with_world(World::weightless()).with_particle(
+        Particle::new("ball", 1.5)
+            .radius(0.25)
+            .turning(0.5, 3.0)
+            .velocity([1.0, 0.0]),
+    );
+    set_language(Language::German);
+    let mut harness = harness(App::new(scene));
+    harness.state_mut().selection = Some(Selection::Particle(0));
+    harness.run();
+    let value = |harness: &Harness<'_, App>, label: &str| {
+        harness.get_by_label(label).value().unwrap_or_default()
+    };
+    assert_eq!(value(&harness, "Masse"), "1,5");
+    assert_eq!(value(&harness, "Radius"), "0,25");
+    harness.get_by_label("Masse").focus();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.get_by_label("Masse").type_text("2,75");
+    harness.key_press(Key::Enter);
+    harness.run();
+    assert_eq!(harness.state().document.scene().particles[0].mass, 2.75);
+    harness.get_by_label("Radius").focus();
+    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
+    harness.get_by_label("Radius").type_text("0.5");
+    harness.key_press(Key::Enter);
+    harness.run();
+    assert_eq!(harness.state().document.scene().particles[0].radius, 0.5);
+    harness.get_by_label("Simulation").click();
+    harness.run();
+    harness.get_by_value("Paarkräfte: direkt (jedes Paar, exakt)");
+    harness.get_by_label("Start").click();
+    harness.run_steps(3);
+    for german in [
+        "Geschwindigkeitsbetrag",
+        "Winkelgeschwindigkeit",
+        "Drehimpuls",
+    ] {
+        harness.get_by_label(german);
+    }
+    for english in [
+        "position",
+        "velocity",
+        "spin",
+        "angular momentum",
+        "kinetic energy",
+    ] {
+        assert!(
+            harness.query_by_label(english).is_none(),
+            "'{english}' on screen in German"
+        );
+    }
+    set_language(Language::English);
+}

@@ -263,7 +263,8 @@ fn a_graph_exports_as_a_figure_with_axes_and_units() {
     let app = harness.state();
     let recording = app.runner.recording.as_ref().expect("recorded");
     let graph = &app.document.scene().graphs[0];
-    let png = figure::graph(recording, graph, "Swing of the bob", Format::Png).expect("a PNG");
+    let png =
+        figure::graph(recording, graph, None, "Swing of the bob", Format::Png).expect("a PNG");
     let decoder = png::Decoder::new(std::io::Cursor::new(png));
     let mut reader = decoder.read_info().expect("a PNG that reads back");
     let mut pixels = vec![0; reader.output_buffer_size().expect("a size")];
@@ -277,7 +278,8 @@ fn a_graph_exports_as_a_figure_with_axes_and_units() {
         coloured > 1000,
         "the curve is drawn: {coloured} coloured pixels"
     );
-    let svg = figure::graph(recording, graph, "Swing of the bob", Format::Svg).expect("an SVG");
+    let svg =
+        figure::graph(recording, graph, None, "Swing of the bob", Format::Svg).expect("an SVG");
     let svg = String::from_utf8(svg).expect("text");
     for expected in [
         "<svg",

@@ -189,18 +189,37 @@ impl Island<'_> {
             .sum()
     }
 
-    fn free(&self) -> Vec<Push> {
+    pub(super) fn free(&self) -> Vec<Push> {
         self.members.iter().map(Rigid::free).collect()
     }
 
     /// The bodies' accelerations now under what they rest on (no impact applied), and
     /// the forces of their contacts on each, by body.
+    ///
+    /// Read between steps, a body turning about a corner is found a little off its
+    /// surface: held through one step by constant accelerations, the corner leaves it at
+    /// some 1e-8 m/s, falls back through the next and is stopped by its impact at a
+    /// resting speed. Through the steps the surface holds it, so the reading does too:
+    /// a point within the distance a step's fall covers (g h²/2), meeting or leaving at
+    /// no more than the resting speed (g h), is read as resting on it, the approach
+    /// taken as the step's impact would take it.
     pub fn now(&self, poses: &[Pose], h: f64) -> (Vec<Push>, Vec<(usize, Applied)>) {
-        let touching = self.touching(poses, TOUCHING * self.size());
+        let resting_speed = self.gravity() * h;
+        let band = TOUCHING * self.size();
+        let touching: Vec<Site> = self
+            .touching(poses, band + 0.5 * resting_speed * h)
+            .into_iter()
+            .filter(|s| {
+                s.touch.gap <= band
+                    || s.touch.normal.dot(s.relative_velocity(poses)).abs() <= resting_speed
+            })
+            .collect();
         if touching.is_empty() {
             return (self.free(), Vec::new());
         }
-        let held = self.hold(poses, &touching, self.gravity() * h);
+        let mut settled = poses.to_vec();
+        self.strike(&mut settled, &touching, resting_speed);
+        let held = self.hold(&settled, &touching, (resting_speed, resting_speed));
         (held.pushes, held.applied)
     }
 
@@ -227,7 +246,7 @@ impl Island<'_> {
                 let before = self.kinetic_energy(poses);
                 self.strike(poses, &touching, resting_speed);
                 struck += before - self.kinetic_energy(poses);
-                let held = self.hold(poses, &touching, resting_speed);
+                let held = self.hold(poses, &touching, (resting_speed, 0.0));
                 (pushes, slides) = (held.pushes, held.slides);
             }
             events += 1;
@@ -491,7 +510,16 @@ impl Island<'_> {
     /// point from sinking (and pull none), friction that holds a patch still within μ N
     /// or slides against its motion with μ N. Returns the bodies' accelerations under
     /// them, the patches that slide and each force where it acts.
-    fn hold(&self, poses: &[Pose], touching: &[Site], resting_speed: f64) -> Held {
+    ///
+    /// A point leaving at no more than `leaving` (m/s) still rests: a reading between
+    /// steps allows what a step's constant accelerations leave (see [`Self::now`]); the
+    /// step itself allows none, so that a body lifting off is let go.
+    fn hold(
+        &self,
+        poses: &[Pose],
+        touching: &[Site],
+        (resting_speed, leaving): (f64, f64),
+    ) -> Held {
         let free = Held {
             pushes: self.free(),
             slides: Vec::new(),
@@ -506,7 +534,10 @@ impl Island<'_> {
         // Only points that neither leave nor strike rest: a bouncing body's points leave.
         let resting: Vec<&Site> = touching
             .iter()
-            .filter(|s| s.touch.normal.dot(s.relative_velocity(poses)).abs() <= still)
+            .filter(|s| {
+                let u = s.touch.normal.dot(s.relative_velocity(poses));
+                u.abs() <= still || (u > 0.0 && u <= 1e-4 * leaving)
+            })
             .collect();
         if resting.is_empty() {
             return free;

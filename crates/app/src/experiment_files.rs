@@ -38,7 +38,7 @@ impl App {
             #[cfg(not(target_arch = "wasm32"))]
             Some(format) => {
                 match (
-                    experiments::figure(self.document.scene(), results, format),
+                    crate::figure::series(self.document.scene(), results, format),
                     format,
                 ) {
                     (Ok(bytes), picture::Format::Png) => {

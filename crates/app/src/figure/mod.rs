@@ -11,6 +11,7 @@ use plotters::style::FontStyle;
 
 use physics::Graph;
 
+use crate::i18n::{Arg, tr_with};
 use crate::recording::Recording;
 
 pub mod canvas;
@@ -105,6 +106,75 @@ pub fn graph(
         curves: &curves,
     };
     figure.encode(format)
+}
+
+/// A series' results as a figure to print, `format`'s bytes: the measured points, the
+/// law's curve, a title that says what was measured against what, both axes with units.
+///
+/// # Errors
+/// Drawing or encoding failed (in words).
+pub fn series(
+    scene: &physics::Scene,
+    results: &crate::experiments::Results,
+    format: Format,
+) -> Result<Vec<u8>, String> {
+    let mut curves: Vec<Curve> = crate::experiments::columns(results)
+        .into_iter()
+        .map(|(label, points)| Curve {
+            label,
+            points: points.iter().map(|p| (p[0], p[1])).collect(),
+            dots: true,
+            colour: None,
+        })
+        .collect();
+    if let Some(law) = crate::experiments::law(scene, &results.series) {
+        curves.push(Curve {
+            label: law.name,
+            points: law.curve.iter().map(|p| (p[0], p[1])).collect(),
+            dots: false,
+            colour: None,
+        });
+    }
+    let (title, x_label, y_label) = figure_words(scene, &results.series);
+    Figure {
+        title: &title,
+        x_label,
+        y_label,
+        curves: &curves,
+    }
+    .encode(format)
+}
+
+/// A series' figure in words: its title ("period of bob.x against bob.length"), its x
+/// axis (the varied setting with its unit) and its y axis (the measure with its unit,
+/// or the units of several).
+fn figure_words(scene: &physics::Scene, series: &physics::Series) -> (String, String, String) {
+    let unit = |unit: &str| {
+        if unit.is_empty() {
+            String::new()
+        } else {
+            format!(" ({unit})")
+        }
+    };
+    let x_unit = physics::series::Setting::parse(&series.vary, scene)
+        .map_or(String::new(), |s| unit(s.unit()));
+    let units: Vec<&str> = series
+        .measure
+        .iter()
+        .filter_map(|m| physics::series::Measure::parse(m).ok().map(|m| m.unit()))
+        .collect();
+    let y_label = match (&series.measure[..], &units[..]) {
+        ([measure], [only]) => format!("{measure}{}", unit(only)),
+        _ => units_label(units.into_iter()),
+    };
+    let title = tr_with(
+        "experiment-figure-title",
+        &[
+            ("measure", Arg::Text(&series.measure.join(", "))),
+            ("vary", Arg::Text(&series.vary)),
+        ],
+    );
+    (title, format!("{}{x_unit}", series.vary), y_label)
 }
 
 /// One y axis for several quantities: its label names their unit, "(m)", or their

@@ -116,8 +116,8 @@ fn a_series_figure_is_titled_labelled_and_keeps_its_legend_on_the_page() {
     let harness = range_series_run();
     let app = harness.state();
     let results = app.experiments.results[0].clone().expect("results");
-    let svg = newtonlab_app::experiments::figure(app.document.scene(), &results, Format::Svg)
-        .expect("an SVG");
+    let svg =
+        newtonlab_app::figure::series(app.document.scene(), &results, Format::Svg).expect("an SVG");
     let svg = String::from_utf8(svg).expect("text");
     let label = "Ball.x at Ball.y crosses 0 down";
     for expected in [

@@ -10,6 +10,9 @@ use physics::{Graph, LinkOf, Of, Particle, Quantity, Scene, Total};
 
 use super::read::{Analysis, Read, ReadKey, series_points};
 use super::{MAX_POINTS, fit_words, impact_marks, model_name, words};
+
+/// A graph's plot, points (before Play as through the run).
+const PLOT_HEIGHT: f32 = 220.0;
 use crate::action::Action;
 use crate::analysis;
 use crate::document::Document;
@@ -105,7 +108,10 @@ impl GraphPanel {
         let samples = runs.recording.map_or(0, Recording::len);
         let mut action = export_row(ui, samples, g);
         let Some(recording) = runs.recording else {
-            ui.label(tr("graph-press-play"));
+            // The rows and the plot a run fills, there and empty: nothing below them
+            // moves when Play starts.
+            ui.add_enabled_ui(false, |ui| self.analysis_row(ui, false, g));
+            empty_plot(ui, &graph.x);
             return action;
         };
         action = self
@@ -198,7 +204,9 @@ impl GraphPanel {
     /// Marks, the fit, forgetting earlier runs and resetting the view.
     fn analysis_row(&mut self, ui: &mut Ui, earlier: bool, g: usize) -> Option<Action> {
         let mut action = None;
-        ui.horizontal(|ui| {
+        // Wrapped: one row wider than the panel would widen it, and the canvas beside it
+        // would narrow the moment a run starts.
+        ui.horizontal_wrapped(|ui| {
             ui.checkbox(&mut self.marks, tr("graph-marks"))
                 .on_hover_text(tr("graph-marks-hint"));
             let fit = &mut self.fit;
@@ -279,7 +287,7 @@ impl GraphPanel {
                     .label(words(x))
                     .label_spacing(24.0..=40.0),
             ])
-            .height(220.0);
+            .height(PLOT_HEIGHT);
         if std::mem::take(&mut self.reset) {
             plot = plot.reset();
         }
@@ -520,6 +528,24 @@ fn earlier_lines(earlier: &[Recording], x: &Quantity, series: &[Quantity]) -> Ve
 }
 
 /// The values under the pointer: where it is across, and each series there.
+/// The plot before Play: its axes as the run will have them, the same height, and what
+/// fills it written in its middle.
+fn empty_plot(ui: &mut Ui, x: &Quantity) {
+    Plot::new("graph")
+        .allow_scroll(false)
+        .allow_drag(false)
+        .allow_zoom(false)
+        .custom_x_axes(vec![AxisHints::new_x().label(words(x))])
+        .height(PLOT_HEIGHT)
+        .show(ui, |plot| {
+            plot.text(egui_plot::Text::new(
+                "press play",
+                egui_plot::PlotPoint::new(0.5, 0.5),
+                tr("graph-press-play"),
+            ));
+        });
+}
+
 fn pointer_readout(
     ui: &mut Ui,
     plot: &egui_plot::PlotResponse<()>,

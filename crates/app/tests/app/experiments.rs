@@ -55,12 +55,26 @@ fn range_series_run() -> egui_kittest::Harness<'static, App> {
     harness
 }
 
+/// Clicks the control labelled `label`, scrolled into view first as a user would: the
+/// series are below the graphs, past the window's height.
+fn click_in_view(harness: &mut egui_kittest::Harness<'_, App>, label: &str) {
+    harness.get_by_label(label).scroll_to_me();
+    harness.run();
+    harness.get_by_label(label).click();
+    harness.run();
+}
+
 /// "Add an experiment series" adds one for the selected particle; a field typed in it
 /// changes the scene's series (undoably), a bad one is shown in red words, "choose…"
 /// offers the particle's numbers to vary and "add a measure…" measures of it.
 #[test]
 fn a_series_is_added_and_edited_in_place() {
     let mut harness = tall_harness(App::new(example_scene("projectile")));
+    // Below the graph's plot, out of the window's height: scrolled to, as a user would.
+    harness
+        .get_by_label("Add an experiment series")
+        .scroll_to_me();
+    harness.run();
     harness.get_by_label("Add an experiment series").click();
     harness.run();
     let series = &harness.state().document.scene().series;
@@ -87,8 +101,7 @@ fn a_series_is_added_and_edited_in_place() {
         harness.state().document.scene().series[0].vary,
         "Ball.velocity.angle"
     );
-    harness.get_by_label("choose…").click();
-    harness.run();
+    click_in_view(&mut harness, "choose…");
     harness.get_by_label("Ball.quadratic_drag").click();
     harness.run();
     assert_eq!(
@@ -96,8 +109,7 @@ fn a_series_is_added_and_edited_in_place() {
         "Ball.quadratic_drag",
         "chosen from the particle's numbers"
     );
-    harness.get_by_label("add a measure…").click();
-    harness.run();
+    click_in_view(&mut harness, "add a measure…");
     harness.get_by_label("t at Ball.y crosses 0 down").click();
     harness.run();
     assert_eq!(

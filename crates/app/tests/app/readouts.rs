@@ -4,7 +4,9 @@ use egui_kittest::kittest::Queryable;
 use newtonlab_app::{App, plots};
 use physics::{Of, Particle, Quantity, Scene, World};
 
-use crate::common::{csv_rows, dropped_ball, harness, impacts_of, play_frames, played};
+use crate::common::{
+    csv_rows, dropped_ball, example_scene, harness, impacts_of, play_frames, played, tall_harness,
+};
 
 /// Switching the x axis, adding a series after the run and resetting all keep the whole
 /// run: the export has a row at t = 0 and rows at the simulation's own instants (every
@@ -373,6 +375,8 @@ fn earlier_runs_are_kept_for_the_graphs_until_forgotten() {
     );
     let last = runner.recording.as_ref().expect("the last run");
     assert!((first_y(last) - 5.0).abs() < 1e-12, "the last run from 5 m");
+    harness.get_by_label("forget earlier runs").scroll_to_me();
+    harness.run();
     harness.get_by_label("forget earlier runs").click();
     harness.run();
     assert!(harness.state().runner.earlier.is_empty(), "forgotten");
@@ -443,4 +447,29 @@ fn a_graphs_period_becomes_a_lesson_question() {
         (key - period).abs() < 1e-6,
         "key {key} s, theory {period} s"
     );
+}
+
+/// A graph does not grow when Play fills it in: before Play it has the row of marks and
+/// fits and an empty plot of the height the run's has (what fills it written inside), so
+/// what comes below a graph keeps its distance from the graph's heading. In a scene with
+/// forces of one's own, one with drag, one with a rod.
+#[test]
+fn play_does_not_move_what_is_below_a_graph() {
+    for example in ["anharmonic-oscillator", "terminal-speed", "pendulum"] {
+        let mut harness = tall_harness(App::new(example_scene(example)));
+        let scene = harness.state().document.scene().clone();
+        let title = scene.graphs[0].title.clone().expect("a titled graph");
+        // From the first graph's heading to the button below every graph that adds one.
+        let span = |harness: &egui_kittest::Harness<'_, App>| {
+            harness.get_by_label("Add a graph").rect().top()
+                - harness.get_by_label(&title).rect().top()
+        };
+        let before = span(&harness);
+        play_frames(&mut harness, 5);
+        let after = span(&harness);
+        assert!(
+            (after - before).abs() < 0.5,
+            "{example}: the graph grew from {before} to {after} px on Play"
+        );
+    }
 }

@@ -518,6 +518,8 @@ fn plot(ui: &mut Ui, scene: &Scene, results: &Results) {
         })
         .allow_scroll(false)
         .x_axis_label(results.series.vary.clone())
+        .x_axis_formatter(format::plot_tick)
+        .y_axis_formatter(format::plot_tick)
         .height(200.0);
     shown.show(ui, |plot| {
         for (name, points) in &columns {
@@ -555,6 +557,8 @@ fn plot(ui: &mut Ui, scene: &Scene, results: &Results) {
         );
         Plot::new("experiment residuals")
             .allow_scroll(false)
+            .x_axis_formatter(format::plot_tick)
+            .y_axis_formatter(format::plot_tick)
             .height(90.0)
             .show(ui, |plot| {
                 plot.points(

@@ -32,6 +32,28 @@ pub fn number(value: f64) -> String {
     }
 }
 
+/// A plot's tick at `value`, its ticks `step` apart: as [`number`] writes it (0.3, not
+/// 0.30000000000000004; the language's decimal comma), far from 1 with a power of ten
+/// (1e-11, not 0.00000000001), and 0 for the rounding a sum of steps leaves where the
+/// tick is 0.
+pub fn tick(value: f64, step: f64) -> String {
+    if value.abs() <= 1e-9 * step.abs() {
+        return "0".to_owned();
+    }
+    if (1e-4..1e6).contains(&value.abs()) {
+        return number(value);
+    }
+    // The plot's font has no superscripts: 1e-11 rather than 1 × 10⁻¹¹.
+    let text = format!("{value:.4e}");
+    let (mantissa, exponent) = text.split_once('e').unwrap_or((&text, "0"));
+    local(format!("{}e{exponent}", trim_zeros(mantissa)))
+}
+
+/// [`tick`] as a plot's axis asks for it.
+pub fn plot_tick(mark: egui_plot::GridMark, _range: &std::ops::RangeInclusive<f64>) -> String {
+    tick(mark.value, mark.step_size)
+}
+
 /// `value` with exactly `decimals` decimals, in the app's decimal separator: a reading
 /// whose precision is known (a located instant to the microsecond), not trimmed.
 pub fn fixed(value: f64, decimals: usize) -> String {
@@ -171,6 +193,22 @@ mod tests {
         assert_eq!(number(6.6742e-11), "6,6742 × 10⁻¹¹");
         crate::i18n::set_language(crate::i18n::Language::English);
         assert_eq!(pair(1.5, -2.0), "(1.5, -2)");
+    }
+
+    /// Tick numbers read as a person writes them, in every plot: no run of zeros for a
+    /// residual's scale, no last bit of a sum of steps.
+    #[test]
+    fn ticks_are_written_as_numbers_are() {
+        assert_eq!(tick(1e-11, 1e-11), "1e-11");
+        assert_eq!(tick(-2.000_000_000_000_000_4e-11, 1e-11), "-2e-11");
+        assert_eq!(tick(2.5e7, 5e6), "2.5e7");
+        assert_eq!(tick(0.1 + 0.2, 0.1), "0.3");
+        assert_eq!(tick(1.3e-17, 0.5), "0");
+        assert_eq!(tick(250.0, 50.0), "250");
+        crate::i18n::set_language(crate::i18n::Language::German);
+        assert_eq!(tick(0.25, 0.05), "0,25");
+        assert_eq!(tick(2.5e-11, 5e-12), "2,5e-11");
+        crate::i18n::set_language(crate::i18n::Language::English);
     }
 
     /// A German or Spanish field shows the comma its readouts show, and reads back what

@@ -18,6 +18,7 @@ use physics::{DVec2, Endpoint, Scene, field_at};
 
 use super::View;
 use crate::format;
+use crate::i18n::{Arg, tr_with};
 
 /// The instruments.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -106,6 +107,13 @@ pub struct Instruments {
 }
 
 impl Instruments {
+    /// Whether the probe's reading is drawn beside it: while the probe is the instrument
+    /// in hand. Put away (another tool, Escape), the probe keeps its place, marked by its
+    /// cross alone, so that its box does not sit over what the next tool works on.
+    pub fn shows_probe_reading(&self) -> bool {
+        self.probe.is_some() && self.active == Some(Instrument::Probe)
+    }
+
     /// Takes away the tape, the protractor and the probe (a measurement is of the scene
     /// it was taken in).
     pub fn clear(&mut self) {
@@ -236,26 +244,38 @@ fn number(value: f64) -> String {
     }
 }
 
-/// The probe's readout as lines of text.
+/// The probe's readout as lines of text, in the user's language.
 pub fn probe_lines(scene: &Scene, positions: &[DVec2], at: DVec2) -> Vec<String> {
     let f = field_at(scene, positions, at);
+    // A pair split as the language splits it: "(1,5; 2)" where the comma is decimal.
+    let separator = if crate::i18n::decimal_comma() {
+        ";"
+    } else {
+        ","
+    };
+    let pair = |v: DVec2| format!("({}{separator} {})", number(v.x), number(v.y));
     let vector = |v: DVec2, unit: &str| {
-        format!(
-            "({}, {}) {unit}, size {} {unit}",
-            number(v.x),
-            number(v.y),
-            number(v.length()),
+        tr_with(
+            "instrument-probe-vector",
+            &[
+                ("vector", Arg::Text(&pair(v))),
+                ("size", Arg::Text(&number(v.length()))),
+                ("unit", Arg::Text(unit)),
+            ],
         )
     };
     vec![
-        format!("at ({}, {}) m", number(at.x), number(at.y)),
+        tr_with("instrument-probe-at", &[("position", Arg::Text(&pair(at)))]),
         format!("g = {}", vector(f.gravity, "N/kg")),
         format!("E = {}", vector(f.electric, "N/C")),
-        format!(
-            "gravitational potential {} J/kg",
-            number(f.gravitational_potential)
+        tr_with(
+            "instrument-probe-gravitational-potential",
+            &[("value", Arg::Text(&number(f.gravitational_potential)))],
         ),
-        format!("electric potential {} V", number(f.electric_potential)),
+        tr_with(
+            "instrument-probe-electric-potential",
+            &[("value", Arg::Text(&number(f.electric_potential)))],
+        ),
     ]
 }
 
@@ -349,6 +369,9 @@ impl Instruments {
             let cross = Stroke::new(1.5, probe_colour);
             painter.line_segment([p - Vec2::new(7.0, 0.0), p + Vec2::new(7.0, 0.0)], cross);
             painter.line_segment([p - Vec2::new(0.0, 7.0), p + Vec2::new(0.0, 7.0)], cross);
+            if !self.shows_probe_reading() {
+                return;
+            }
             let lines = probe_lines(scene, positions, at);
             label(
                 painter,

@@ -285,8 +285,10 @@ impl GraphPanel {
             .custom_x_axes(vec![
                 AxisHints::new_x()
                     .label(words(x))
-                    .label_spacing(24.0..=40.0),
+                    .label_spacing(24.0..=40.0)
+                    .formatter(format::plot_tick),
             ])
+            .y_axis_formatter(format::plot_tick)
             .height(PLOT_HEIGHT);
         if std::mem::take(&mut self.reset) {
             plot = plot.reset();
@@ -535,7 +537,12 @@ fn empty_plot(ui: &mut Ui, x: &Quantity) {
         .allow_scroll(false)
         .allow_drag(false)
         .allow_zoom(false)
-        .custom_x_axes(vec![AxisHints::new_x().label(words(x))])
+        .custom_x_axes(vec![
+            AxisHints::new_x()
+                .label(words(x))
+                .formatter(format::plot_tick),
+        ])
+        .y_axis_formatter(format::plot_tick)
         .height(PLOT_HEIGHT)
         .show(ui, |plot| {
             plot.text(egui_plot::Text::new(

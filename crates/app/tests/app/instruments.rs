@@ -521,3 +521,35 @@ fn ask_about_this_turns_the_stopwatchs_reading_into_a_lesson_question() {
     harness.state_mut().undo();
     assert!(harness.state().document.scene().lesson.is_none(), "undone");
 }
+
+/// The probe's box is drawn while the probe is in hand and not once another tool is
+/// taken up (its cross stays where it was put); its lines speak the user's language and
+/// split a pair as the language does.
+#[test]
+fn the_probe_reads_while_in_hand_and_in_the_users_language() {
+    use newtonlab_app::canvas::probe_lines;
+    use newtonlab_app::i18n::{Language, set_language};
+    let mut harness = harness(App::new(small_ball()));
+    harness.key_press(Key::P);
+    harness.run();
+    let instruments = &harness.state().canvas.instruments;
+    assert!(instruments.shows_probe_reading(), "in hand");
+    let put = instruments.probe;
+    harness.get_by_label("Spring").click();
+    harness.run();
+    let instruments = &harness.state().canvas.instruments;
+    assert!(
+        !instruments.shows_probe_reading(),
+        "put away for the spring"
+    );
+    assert_eq!(instruments.probe, put, "where it was put");
+    let scene = harness.state().document.scene().clone();
+    let at = physics::DVec2::new(1.5, -2.0);
+    set_language(Language::German);
+    let lines = probe_lines(&scene, &[physics::DVec2::ZERO], at);
+    set_language(Language::English);
+    assert_eq!(lines[0], "bei (1,5; -2) m");
+    assert!(lines[3].starts_with("Gravitationspotential"), "{lines:?}");
+    let english = probe_lines(&scene, &[physics::DVec2::ZERO], at);
+    assert_eq!(english[0], "at (1.5, -2) m");
+}

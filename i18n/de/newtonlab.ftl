@@ -177,7 +177,8 @@ readout-potential-springs = potentiell: Federn (J)
 readout-potential-gravitation = potentiell: Gravitation (J)
 readout-potential-electrostatic = potentiell: elektrostatisch (J)
 readout-potential-own = potentiell: eigene Kräfte (J)
-readout-press-play = Start drücken, um Energien und Impuls zu sehen.
+readout-press-play = vor dem Start
+readout-at = Bei t = { $time }
 readout-kinetic = kinetisch (J)
 readout-total = gesamt (J)
 readout-total-at-play = gesamt beim Start (J)

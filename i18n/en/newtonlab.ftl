@@ -178,7 +178,8 @@ readout-potential-springs = potential: springs (J)
 readout-potential-gravitation = potential: gravitation (J)
 readout-potential-electrostatic = potential: electrostatic (J)
 readout-potential-own = potential: your forces (J)
-readout-press-play = Press Play to see the energies and momentum.
+readout-press-play = before Play
+readout-at = At t = { $time }
 readout-kinetic = kinetic (J)
 readout-total = total (J)
 readout-total-at-play = total at Play (J)

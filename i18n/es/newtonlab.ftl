@@ -177,7 +177,8 @@ readout-potential-springs = potencial: resortes (J)
 readout-potential-gravitation = potencial: gravitación (J)
 readout-potential-electrostatic = potencial: electrostática (J)
 readout-potential-own = potencial: fuerzas propias (J)
-readout-press-play = Pulse Reproducir para ver las energías y el momento.
+readout-press-play = antes de reproducir
+readout-at = En t = { $time }
 readout-kinetic = cinética (J)
 readout-total = total (J)
 readout-total-at-play = total al reproducir (J)

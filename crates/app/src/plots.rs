@@ -125,7 +125,7 @@ pub fn to_csv(recording: &Recording, graph: &Graph) -> String {
 impl Graphs {
     /// The readouts and the graphs. Returns an action the user asked for (export).
     pub fn ui(&mut self, ui: &mut Ui, document: &mut Document, runner: &Runner) -> Option<Action> {
-        crate::readouts::ui(ui, runner);
+        crate::readouts::ui(ui, runner, document.scene());
         let mut action = impact_list(ui, runner, document.scene());
         ui.separator();
         let count = document.scene().graphs.len();
@@ -277,24 +277,25 @@ pub fn impact_marks(recording: &Recording, series: &[Quantity]) -> Vec<f64> {
 /// hit what, the impulse and the kinetic energy each took. Only the rows in view are
 /// laid out, so a run of a hundred thousand impacts costs what twenty do.
 fn impact_list(ui: &mut Ui, runner: &Runner, scene: &physics::Scene) -> Option<Action> {
-    let Some(recording) = &runner.recording else {
-        return None;
-    };
+    // Before Play too, so that the panel below does not move when Play starts.
+    let impacts = runner
+        .recording
+        .as_ref()
+        .map_or(&[][..], |recording| recording.impacts());
     // With the run's keyframes, a click on an impact's time shows the run at its
     // located instant.
     let can_go = runner.timeline.is_some();
     let mut action = None;
-    let impacts = recording.impacts();
     egui::CollapsingHeader::new(tr_with(
         "impacts-title",
         &[("count", Arg::Number(impacts.len() as f64))],
     ))
     .id_salt("impacts")
     .show(ui, |ui| {
-        if impacts.is_empty() {
+        let Some(recording) = runner.recording.as_ref().filter(|_| !impacts.is_empty()) else {
             ui.label(tr("impacts-none"));
             return;
-        }
+        };
         let names = recording.names();
         let name = |i: usize| names.get(i).map_or("?", String::as_str);
         let row_height = ui.text_style_height(&egui::TextStyle::Body) + 4.0;

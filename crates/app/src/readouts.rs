@@ -4,23 +4,82 @@
 //! as a table and as bars.
 
 use egui::Ui;
-use physics::Total;
+use physics::{Scene, Total};
 
 use crate::format;
-use crate::i18n::tr;
+use crate::i18n::{Arg, tr, tr_with};
 use crate::run_loop::Runner;
 
+/// Which rows the readouts have for a scene: decided by the scene, not by the values, so
+/// that the rows before Play (their values a dash) are those while it runs and the
+/// panel below them does not move when Play fills them in.
+#[derive(Clone, Copy)]
+#[expect(
+    clippy::struct_excessive_bools,
+    reason = "four independent rows, each there or not"
+)]
+struct Rows {
+    /// A force of one's own with a potential.
+    own_potential: bool,
+    /// Air resistance on some particle.
+    drag: bool,
+    /// A motor on some joint.
+    motors: bool,
+    /// Rods or strings (listed at 0: constraints do no work).
+    ties: bool,
+    /// Which potentials have a bar, in the table's order: height, springs, gravitation,
+    /// electrostatics (the table lists all four).
+    potentials: [bool; 4],
+}
+
+impl Rows {
+    fn of(scene: &Scene) -> Self {
+        let air = scene.world.air_density;
+        Self {
+            own_potential: scene.forces.iter().any(|f| f.potential.is_some()),
+            drag: scene
+                .particles
+                .iter()
+                .any(|p| p.linear_drag > 0.0 || p.quadratic_drag_in(air) > 0.0),
+            motors: scene.joints.iter().any(|j| j.motor.is_some()),
+            ties: !scene.ties.is_empty(),
+            potentials: [
+                scene.world.gravity.to_dvec2() != physics::DVec2::ZERO,
+                !scene.springs.is_empty(),
+                scene.world.gravitation && scene.particles.len() > 1,
+                scene.world.electrostatics && scene.particles.iter().any(|p| p.charge != 0.0),
+            ],
+        }
+    }
+}
+
 /// Energies by kind, the energy ledger, momentum: live while running, the last recorded
-/// values after a failure.
-pub(crate) fn ui(ui: &mut Ui, runner: &Runner) {
-    let heading = ui.add(
-        egui::Label::new(egui::RichText::new(tr("readout-heading")).heading())
-            .sense(egui::Sense::focusable_noninteractive()),
-    );
-    crate::landmarks::mark(ui, crate::landmarks::Region::Graphs, heading.id);
+/// values after a failure, a dash for each before Play.
+pub(crate) fn ui(ui: &mut Ui, runner: &Runner, scene: &Scene) {
+    let shown = Rows::of(scene);
+    // The heading and, beside it on its line, what the values are of (before Play, at
+    // an instant, after a failure): a line of the same height in every state.
+    let status = match (runner.simulation(), &runner.failure, &runner.recording) {
+        (Some(_), Some(_), Some(_)) => tr("readout-failed"),
+        (Some(simulation), _, _) => tr_with(
+            "readout-at",
+            &[(
+                "time",
+                Arg::Text(&format::with_unit(simulation.time(), "s")),
+            )],
+        ),
+        (None, _, _) => tr("readout-press-play"),
+    };
+    ui.horizontal(|ui| {
+        let heading = ui.add(
+            egui::Label::new(egui::RichText::new(tr("readout-heading")).heading())
+                .sense(egui::Sense::focusable_noninteractive()),
+        );
+        crate::landmarks::mark(ui, crate::landmarks::Region::Graphs, heading.id);
+        ui.add(egui::Label::new(egui::RichText::new(status).weak()).truncate());
+    });
     let energy = match (runner.simulation(), &runner.failure, &runner.recording) {
         (Some(_), Some(_), Some(recording)) => {
-            ui.label(tr("readout-failed"));
             let get = |t| recording.last_total(t).unwrap_or(f64::NAN);
             Energies {
                 kinetic: get(Total::KineticEnergy),
@@ -40,10 +99,7 @@ pub(crate) fn ui(ui: &mut Ui, runner: &Runner) {
                     d.energy.electrostatic,
                 ),
             ];
-            if runner
-                .simulation()
-                .is_some_and(physics::Simulation::has_own_potential)
-            {
+            if shown.own_potential {
                 potential.push((tr("readout-potential-own"), d.energy.own));
             }
             Energies {
@@ -54,7 +110,30 @@ pub(crate) fn ui(ui: &mut Ui, runner: &Runner) {
             }
         }
         (None, _, _) => {
-            ui.label(tr("readout-press-play"));
+            let mut potential = vec![
+                (tr("readout-potential-field"), f64::NAN),
+                (tr("readout-potential-springs"), f64::NAN),
+                (tr("readout-potential-gravitation"), f64::NAN),
+                (tr("readout-potential-electrostatic"), f64::NAN),
+            ];
+            if shown.own_potential {
+                potential.push((tr("readout-potential-own"), f64::NAN));
+            }
+            let blank = Energies {
+                kinetic: f64::NAN,
+                potential,
+                total: f64::NAN,
+                momentum: [f64::NAN; 2],
+            };
+            let nothing = physics::Ledger {
+                damping: f64::NAN,
+                friction: f64::NAN,
+                impacts: f64::NAN,
+                drag: f64::NAN,
+                motors: f64::NAN,
+            };
+            table(ui, &blank, nothing, f64::NAN, shown);
+            energy_bars(ui, &books(&blank, nothing, 0.0, 0.0, shown));
             return;
         }
     };
@@ -67,7 +146,23 @@ pub(crate) fn ui(ui: &mut Ui, runner: &Runner) {
         .and_then(physics::Simulation::ledger)
         .unwrap_or_default();
     let residual_joules = energy.total + ledger.total() - start;
-    let residual = if start == 0.0 {
+    table(ui, &energy, ledger, start, shown);
+    energy_bars(ui, &books(&energy, ledger, residual_joules, start, shown));
+}
+
+/// The readouts' table: a dash for a value not known yet (before Play).
+fn table(ui: &mut Ui, energy: &Energies, ledger: physics::Ledger, start: f64, shown: Rows) {
+    let number = |value: f64| {
+        if value.is_nan() {
+            "—".to_owned()
+        } else {
+            format::number(value)
+        }
+    };
+    let residual_joules = energy.total + ledger.total() - start;
+    let residual = if residual_joules.is_nan() {
+        "—".to_owned()
+    } else if start == 0.0 {
         format::with_unit(residual_joules, "J")
     } else {
         format!(
@@ -79,60 +174,64 @@ pub(crate) fn ui(ui: &mut Ui, runner: &Runner) {
         .num_columns(2)
         .striped(true)
         .show(ui, |ui| {
-            let mut rows = vec![(tr("readout-kinetic"), format::number(energy.kinetic))];
+            let mut rows = vec![(tr("readout-kinetic"), number(energy.kinetic))];
             rows.extend(
                 energy
                     .potential
                     .iter()
-                    .map(|(name, value)| (name.clone(), format::number(*value))),
+                    .map(|(name, value)| (name.clone(), number(*value))),
             );
-            rows.push((tr("readout-total"), format::number(energy.total)));
-            rows.push((tr("readout-total-at-play"), format::number(start)));
-            rows.push((tr("readout-damping"), format::number(ledger.damping)));
-            rows.push((tr("readout-friction"), format::number(ledger.friction)));
-            rows.push((tr("readout-impacts"), format::number(ledger.impacts)));
-            if ledger.drag != 0.0 {
-                rows.push((tr("readout-drag"), format::number(ledger.drag)));
+            rows.push((tr("readout-total"), number(energy.total)));
+            rows.push((tr("readout-total-at-play"), number(start)));
+            rows.push((tr("readout-damping"), number(ledger.damping)));
+            rows.push((tr("readout-friction"), number(ledger.friction)));
+            rows.push((tr("readout-impacts"), number(ledger.impacts)));
+            if shown.drag {
+                rows.push((tr("readout-drag"), number(ledger.drag)));
             }
-            if ledger.motors != 0.0 {
-                rows.push((tr("readout-motors"), format::number(ledger.motors)));
+            if shown.motors {
+                rows.push((tr("readout-motors"), number(ledger.motors)));
             }
-            if runner
-                .simulation()
-                .is_some_and(|s| !s.tie_names().is_empty())
-            {
+            if shown.ties {
                 // Listed so that nobody looks for them: constraints do no work.
                 rows.push((tr("readout-ties"), "0".to_owned()));
             }
             rows.push((tr("readout-error"), residual));
-            rows.push((
-                tr("readout-momentum"),
-                format::pair(energy.momentum[0], energy.momentum[1]),
-            ));
+            let momentum = if energy.momentum[0].is_nan() {
+                "—".to_owned()
+            } else {
+                format::pair(energy.momentum[0], energy.momentum[1])
+            };
+            rows.push((tr("readout-momentum"), momentum));
             for (name, value) in rows {
                 ui.label(name);
                 ui.monospace(value);
                 ui.end_row();
             }
         });
-    energy_bars(ui, &books(&energy, ledger, residual_joules, start));
 }
 
-/// The bars of the energy books: kinetic, each potential there is, what dissipation
-/// took, the numerical error and the energy at Play, joules.
+/// The bars of the energy books: kinetic, each potential of the table, what dissipation
+/// took, the numerical error and the energy at Play, joules; the same bars before Play
+/// and through the run (a value not known yet, or 0, has no bar but its name).
 fn books(
     energy: &Energies,
     ledger: physics::Ledger,
     residual: f64,
     start: f64,
+    shown: Rows,
 ) -> Vec<(String, f64, egui::Color32)> {
     let mut bars = vec![(tr("bar-kinetic"), energy.kinetic, KINETIC)];
     bars.extend(
         energy
             .potential
             .iter()
-            .filter(|(_, value)| *value != 0.0)
-            .map(|(name, value)| {
+            .enumerate()
+            // After a failure the recording has the potentials' sum alone: its bar stays.
+            .filter(|&(k, _)| {
+                energy.potential.len() == 1 || shown.potentials.get(k).copied().unwrap_or(true)
+            })
+            .map(|(_, (name, value))| {
                 let name = name.trim_end_matches(" (J)");
                 let name = name.split_once(": ").map_or(name, |(_, kind)| kind);
                 (name.to_owned(), *value, POTENTIAL)
@@ -143,10 +242,10 @@ fn books(
         (tr("bar-friction"), ledger.friction, DISSIPATED),
         (tr("bar-impacts"), ledger.impacts, DISSIPATED),
     ]);
-    if ledger.drag != 0.0 {
+    if shown.drag {
         bars.push((tr("bar-drag"), ledger.drag, DISSIPATED));
     }
-    if ledger.motors != 0.0 {
+    if shown.motors {
         bars.push((tr("bar-motors"), ledger.motors, GIVEN));
     }
     bars.extend([
@@ -211,7 +310,11 @@ fn energy_bars(ui: &mut Ui, bars: &[(String, f64, egui::Color32)]) {
             );
             painter.rect_filled(bar, 1.0, colour);
         }
-        response.on_hover_text(format!("{name}: {} J", format::number(value)));
+        if value.is_nan() {
+            response.on_hover_text(format!("{name}: —"));
+        } else {
+            response.on_hover_text(format!("{name}: {} J", format::number(value)));
+        }
     }
 }
 

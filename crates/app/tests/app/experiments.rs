@@ -43,6 +43,13 @@ fn the_range_series_runs_and_follows_the_sine_law() {
 /// The range example with its series run to the end.
 fn range_series_run() -> egui_kittest::Harness<'static, App> {
     let mut harness = tall_harness(App::new(example_scene("projectile-range")));
+    let run = harness
+        .get_all_by_label("Run the series")
+        .next()
+        .expect("a run button");
+    // Below the readouts and the graphs, past the window's height: scrolled to first.
+    run.scroll_to_me();
+    harness.run();
     harness
         .get_all_by_label("Run the series")
         .next()

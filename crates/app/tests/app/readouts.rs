@@ -449,27 +449,43 @@ fn a_graphs_period_becomes_a_lesson_question() {
     );
 }
 
-/// A graph does not grow when Play fills it in: before Play it has the row of marks and
-/// fits and an empty plot of the height the run's has (what fills it written inside), so
-/// what comes below a graph keeps its distance from the graph's heading. In a scene with
-/// forces of one's own, one with drag, one with a rod.
+/// Nothing in the right panel moves when Play fills it in: before Play the readouts
+/// have the rows (each value a dash) and the bars they have while the run plays, the
+/// impacts' list is there, and a graph has its row of marks and fits and an empty plot
+/// of the run's height; so the first graph's heading, and the button below every graph,
+/// stand where they stood. In a scene with forces of one's own, one with drag, one with
+/// a rod.
 #[test]
-fn play_does_not_move_what_is_below_a_graph() {
+fn play_does_not_move_the_graphs() {
     for example in ["anharmonic-oscillator", "terminal-speed", "pendulum"] {
         let mut harness = tall_harness(App::new(example_scene(example)));
         let scene = harness.state().document.scene().clone();
         let title = scene.graphs[0].title.clone().expect("a titled graph");
-        // From the first graph's heading to the button below every graph that adds one.
-        let span = |harness: &egui_kittest::Harness<'_, App>| {
-            harness.get_by_label("Add a graph").rect().top()
-                - harness.get_by_label(&title).rect().top()
+        let tops = |harness: &egui_kittest::Harness<'_, App>| {
+            [
+                harness.get_by_label(&title).rect().top(),
+                harness.get_by_label("Add a graph").rect().top(),
+            ]
         };
-        let before = span(&harness);
-        play_frames(&mut harness, 5);
-        let after = span(&harness);
+        let before = tops(&harness);
         assert!(
-            (after - before).abs() < 0.5,
-            "{example}: the graph grew from {before} to {after} px on Play"
+            harness.query_all_by_label("—").next().is_some(),
+            "{example}: no dashes before Play"
         );
+        play_frames(&mut harness, 5);
+        assert!(
+            harness.query_all_by_label("—").next().is_none(),
+            "{example}"
+        );
+        let after = tops(&harness);
+        for (what, (before, after)) in ["the first graph's heading", "Add a graph"]
+            .into_iter()
+            .zip(before.into_iter().zip(after))
+        {
+            assert!(
+                (after - before).abs() < 0.5,
+                "{example}: {what} moved from {before} to {after} px on Play"
+            );
+        }
     }
 }

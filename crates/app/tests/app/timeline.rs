@@ -73,7 +73,12 @@ fn play_from_a_moment_gone_back_to_branches_the_run() {
     let middle = end / 2;
     harness.state_mut().perform(Action::GoTo(middle));
     harness.run();
-    play_frames(&mut harness, 2);
+    // Two frames of play, paused at once: the frames a click on Pause takes to settle
+    // could reach the old end.
+    harness.get_by_label("Play").click();
+    harness.run_steps(2);
+    harness.state_mut().perform(Action::PlayPause);
+    harness.run();
     let runner = &harness.state().runner;
     let timeline = runner.timeline.as_ref().expect("kept");
     assert_eq!(timeline.shown, None, "playing, not looking back");

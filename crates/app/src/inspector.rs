@@ -390,7 +390,9 @@ fn live(ui: &mut Ui, runner: &Runner, selection: Option<Selection>) {
         egui::Grid::new("live").num_columns(2).show(ui, |ui| {
             for (name, value) in rows {
                 ui.label(tr(name));
-                ui.monospace(value);
+                // Wrapped within the panel: a vector with powers of ten is wider than a
+                // narrow inspector, and its end would be cut off.
+                ui.add(egui::Label::new(RichText::new(value).monospace()).wrap());
                 ui.end_row();
             }
         });

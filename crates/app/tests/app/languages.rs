@@ -173,6 +173,7 @@ fn getting_started_opens_on_the_first_run_and_from_help() {
 #[test]
 fn german_fields_and_live_readouts_speak_german_with_a_decimal_comma() {
     use egui::{Key, Modifiers};
+    use egui_kittest::kittest::NodeT as _;
     use newtonlab_app::i18n::{Language, set_language};
     use physics::{Particle, Scene, World};
     let scene = Scene::new().with_world(World::weightless()).with_particle(
@@ -213,6 +214,16 @@ fn german_fields_and_live_readouts_speak_german_with_a_decimal_comma() {
         "Drehimpuls",
     ] {
         harness.get_by_label(german);
+    }
+    // Each value within the inspector, left of the canvas: wrapped, not cut off.
+    let edge = harness.state().canvas.rect.left();
+    for value in harness.query_all_by_label_contains("rad/s") {
+        assert!(
+            value.rect().right() <= edge,
+            "{:?} ends at {} past {edge}",
+            value.accesskit_node().label(),
+            value.rect().right()
+        );
     }
     for english in [
         "position",

@@ -189,7 +189,7 @@ impl Island<'_> {
             .sum()
     }
 
-    pub(super) fn free(&self) -> Vec<Push> {
+    fn free(&self) -> Vec<Push> {
         self.members.iter().map(Rigid::free).collect()
     }
 
@@ -224,7 +224,8 @@ impl Island<'_> {
     }
 
     /// Moves the island `h` seconds on with `method`; returns each body's accelerations
-    /// over the last part of the step, and what its impacts (the kinetic energy they
+    /// over the last part of the step (as [`Self::now`] reads them where that part was
+    /// free after a touch), and what its impacts (the kinetic energy they
     /// took) and its sliding friction (μ N times the distance slid) took, joules.
     pub fn advance(&self, poses: &mut [Pose], method: Integrator, h: f64) -> (Vec<Push>, Taken) {
         let band = TOUCHING * self.size();
@@ -237,8 +238,10 @@ impl Island<'_> {
         let mut events = 0;
         let (mut struck, mut rubbed) = (0.0, 0.0);
         let most = MOST_EVENTS * self.members.len();
+        let mut touched = false;
         while left > 0.0 {
             let touching = self.touching(poses, band);
+            touched |= !touching.is_empty();
             let mut slides = Vec::new();
             if touching.is_empty() {
                 pushes = self.free();
@@ -269,6 +272,11 @@ impl Island<'_> {
             left = if span >= left { 0.0 } else { left - span };
         }
         self.lift_out(poses);
+        if touched && pushes == self.free() {
+            // Free through the step's last part after a touch, perhaps only a turning
+            // corner's hop off its surface: read as the surface holds it now.
+            pushes = self.now(poses, h).0;
+        }
         (
             pushes,
             Taken {

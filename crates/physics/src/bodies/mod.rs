@@ -587,12 +587,7 @@ impl Bodies {
         };
         for members in self.islands(2.0 * fastest * h) {
             let (island, mut poses) = self.island(&members);
-            let (mut pushes, books) = island.advance(&mut poses, method, h);
-            if pushes == island.free() {
-                // Free through the step's last part, perhaps only a turning corner's hop
-                // off its surface: read as the surface holds it now (see `Island::now`).
-                pushes = island.now(&poses, h).0;
-            }
+            let (pushes, books) = island.advance(&mut poses, method, h);
             taken.impacts += books.impacts;
             taken.friction += books.friction;
             for ((&i, pose), push) in members.iter().zip(poses).zip(pushes) {

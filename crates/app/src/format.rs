@@ -109,12 +109,18 @@ fn local(text: String) -> String {
 
 /// Two numbers as a pair: "(1.5, 2)", or "(1,5; 2)" where the comma is decimal.
 pub fn pair(x: f64, y: f64) -> String {
+    pair_of(&number(x), &number(y))
+}
+
+/// Two numbers already written, as a pair split as the app's language splits one: by a
+/// semicolon where the comma is decimal.
+pub fn pair_of(x: &str, y: &str) -> String {
     let separator = if crate::i18n::decimal_comma() {
         ";"
     } else {
         ","
     };
-    format!("({}{separator} {})", number(x), number(y))
+    format!("({x}{separator} {y})")
 }
 
 /// `value` and its unit: "15.7378 J".

@@ -57,19 +57,62 @@ impl Rows {
 /// values after a failure, a dash for each before Play.
 pub(crate) fn ui(ui: &mut Ui, runner: &Runner, scene: &Scene) {
     let shown = Rows::of(scene);
+    // The books: what damping, friction and impacts took since Play, and what is left
+    // unaccounted, the numerical error (the integrator's, and the position correction
+    // of piles), as a share of the energy at Play (in joules when that was 0).
+    let ledger = || {
+        runner
+            .simulation()
+            .and_then(physics::Simulation::ledger)
+            .unwrap_or_default()
+    };
+    let (status, energy, ledger, start) =
+        match (runner.simulation(), &runner.failure, &runner.recording) {
+            (Some(_), Some(_), Some(recording)) => {
+                let get = |t| recording.last_total(t).unwrap_or(f64::NAN);
+                let energy = Energies {
+                    kinetic: get(Total::KineticEnergy),
+                    potential: vec![(tr("readout-potential"), get(Total::PotentialEnergy))],
+                    total: get(Total::TotalEnergy),
+                    momentum: [get(Total::MomentumX), get(Total::MomentumY)],
+                };
+                (tr("readout-failed"), energy, ledger(), runner.start_energy)
+            }
+            (Some(simulation), _, _) => {
+                let d = runner.diagnostics().unwrap_or_default();
+                let e = d.energy;
+                let energy = Energies {
+                    kinetic: e.kinetic,
+                    potential: potentials(
+                        [e.uniform, e.spring, e.gravitation, e.electrostatic],
+                        shown.own_potential.then_some(e.own),
+                    ),
+                    total: e.total(),
+                    momentum: [d.momentum.x, d.momentum.y],
+                };
+                let at = format::with_unit(simulation.time(), "s");
+                let status = tr_with("readout-at", &[("time", Arg::Text(&at))]);
+                (status, energy, ledger(), runner.start_energy)
+            }
+            (None, _, _) => {
+                let energy = Energies {
+                    kinetic: f64::NAN,
+                    potential: potentials([f64::NAN; 4], shown.own_potential.then_some(f64::NAN)),
+                    total: f64::NAN,
+                    momentum: [f64::NAN; 2],
+                };
+                let nothing = physics::Ledger {
+                    damping: f64::NAN,
+                    friction: f64::NAN,
+                    impacts: f64::NAN,
+                    drag: f64::NAN,
+                    motors: f64::NAN,
+                };
+                (tr("readout-press-play"), energy, nothing, f64::NAN)
+            }
+        };
     // The heading and, beside it on its line, what the values are of (before Play, at
     // an instant, after a failure): a line of the same height in every state.
-    let status = match (runner.simulation(), &runner.failure, &runner.recording) {
-        (Some(_), Some(_), Some(_)) => tr("readout-failed"),
-        (Some(simulation), _, _) => tr_with(
-            "readout-at",
-            &[(
-                "time",
-                Arg::Text(&format::with_unit(simulation.time(), "s")),
-            )],
-        ),
-        (None, _, _) => tr("readout-press-play"),
-    };
     ui.horizontal(|ui| {
         let heading = ui.add(
             egui::Label::new(egui::RichText::new(tr("readout-heading")).heading())
@@ -78,80 +121,36 @@ pub(crate) fn ui(ui: &mut Ui, runner: &Runner, scene: &Scene) {
         crate::landmarks::mark(ui, crate::landmarks::Region::Graphs, heading.id);
         ui.add(egui::Label::new(egui::RichText::new(status).weak()).truncate());
     });
-    let energy = match (runner.simulation(), &runner.failure, &runner.recording) {
-        (Some(_), Some(_), Some(recording)) => {
-            let get = |t| recording.last_total(t).unwrap_or(f64::NAN);
-            Energies {
-                kinetic: get(Total::KineticEnergy),
-                potential: vec![(tr("readout-potential"), get(Total::PotentialEnergy))],
-                total: get(Total::TotalEnergy),
-                momentum: [get(Total::MomentumX), get(Total::MomentumY)],
-            }
-        }
-        (Some(_), _, _) => {
-            let d = runner.diagnostics().unwrap_or_default();
-            let mut potential = vec![
-                (tr("readout-potential-field"), d.energy.uniform),
-                (tr("readout-potential-springs"), d.energy.spring),
-                (tr("readout-potential-gravitation"), d.energy.gravitation),
-                (
-                    tr("readout-potential-electrostatic"),
-                    d.energy.electrostatic,
-                ),
-            ];
-            if shown.own_potential {
-                potential.push((tr("readout-potential-own"), d.energy.own));
-            }
-            Energies {
-                kinetic: d.energy.kinetic,
-                potential,
-                total: d.energy.total(),
-                momentum: [d.momentum.x, d.momentum.y],
-            }
-        }
-        (None, _, _) => {
-            let mut potential = vec![
-                (tr("readout-potential-field"), f64::NAN),
-                (tr("readout-potential-springs"), f64::NAN),
-                (tr("readout-potential-gravitation"), f64::NAN),
-                (tr("readout-potential-electrostatic"), f64::NAN),
-            ];
-            if shown.own_potential {
-                potential.push((tr("readout-potential-own"), f64::NAN));
-            }
-            let blank = Energies {
-                kinetic: f64::NAN,
-                potential,
-                total: f64::NAN,
-                momentum: [f64::NAN; 2],
-            };
-            let nothing = physics::Ledger {
-                damping: f64::NAN,
-                friction: f64::NAN,
-                impacts: f64::NAN,
-                drag: f64::NAN,
-                motors: f64::NAN,
-            };
-            table(ui, &blank, nothing, f64::NAN, shown);
-            energy_bars(ui, &books(&blank, nothing, 0.0, 0.0, shown));
-            return;
-        }
-    };
-    let start = runner.start_energy;
-    // The books: what damping, friction and impacts took since Play, and what is left
-    // unaccounted, the numerical error (the integrator's, and the position correction
-    // of piles), as a share of the energy at Play (in joules when that was 0).
-    let ledger = runner
-        .simulation()
-        .and_then(physics::Simulation::ledger)
-        .unwrap_or_default();
     let residual_joules = energy.total + ledger.total() - start;
-    table(ui, &energy, ledger, start, shown);
+    table(ui, &energy, ledger, (start, residual_joules), shown);
     energy_bars(ui, &books(&energy, ledger, residual_joules, start, shown));
 }
 
+/// The potentials' rows, in the table's order (height, springs, gravitation,
+/// electrostatics, and the forces of one's own where the scene has one with a
+/// potential), each with its name in the app's language.
+fn potentials(values: [f64; 4], own: Option<f64>) -> Vec<(String, f64)> {
+    [
+        "readout-potential-field",
+        "readout-potential-springs",
+        "readout-potential-gravitation",
+        "readout-potential-electrostatic",
+    ]
+    .into_iter()
+    .zip(values)
+    .map(|(id, value)| (tr(id), value))
+    .chain(own.map(|value| (tr("readout-potential-own"), value)))
+    .collect()
+}
+
 /// The readouts' table: a dash for a value not known yet (before Play).
-fn table(ui: &mut Ui, energy: &Energies, ledger: physics::Ledger, start: f64, shown: Rows) {
+fn table(
+    ui: &mut Ui,
+    energy: &Energies,
+    ledger: physics::Ledger,
+    (start, residual_joules): (f64, f64),
+    shown: Rows,
+) {
     let number = |value: f64| {
         if value.is_nan() {
             "—".to_owned()
@@ -159,7 +158,6 @@ fn table(ui: &mut Ui, energy: &Energies, ledger: physics::Ledger, start: f64, sh
             format::number(value)
         }
     };
-    let residual_joules = energy.total + ledger.total() - start;
     let residual = if residual_joules.is_nan() {
         "—".to_owned()
     } else if start == 0.0 {

@@ -141,8 +141,7 @@ impl Stopwatch {
     /// waits for a typed event, or the event reads.
     pub fn event_problem(&self, scene: &physics::Scene) -> Option<String> {
         let waits = self.start_on == Trigger::Event || self.stop_on == Trigger::Event;
-        let event = self.event_text();
-        let event = event.as_str();
+        let event = &self.event_text();
         if !waits || event.is_empty() {
             return None;
         }
@@ -156,8 +155,7 @@ impl Stopwatch {
     /// (`has_tape`), is kept as the hand (the window shows why meanwhile): a file that
     /// would not open again is never written.
     pub fn saved(&self, scene: &physics::Scene, has_tape: bool) -> Option<physics::Stopwatch> {
-        let event = self.event_text();
-        let event = event.as_str();
+        let event = &self.event_text();
         let event_reads = physics::Event::parse(event)
             .and_then(|e| e.quantity.check_in(scene))
             .is_ok();
@@ -182,8 +180,7 @@ impl Stopwatch {
     /// `scene`, a scene starting at t = 0 (the measure is the event's instant), no laps.
     /// None for what no measure says (a gate, impacts, the hand).
     pub fn question(&self, scene: &physics::Scene) -> Option<String> {
-        let event = self.event_text();
-        let event = event.as_str();
+        let event = &self.event_text();
         let reads = physics::Event::parse(event)
             .and_then(|e| e.quantity.check_in(scene))
             .is_ok();

@@ -247,13 +247,7 @@ fn number(value: f64) -> String {
 /// The probe's readout as lines of text, in the user's language.
 pub fn probe_lines(scene: &Scene, positions: &[DVec2], at: DVec2) -> Vec<String> {
     let f = field_at(scene, positions, at);
-    // A pair split as the language splits it: "(1,5; 2)" where the comma is decimal.
-    let separator = if crate::i18n::decimal_comma() {
-        ";"
-    } else {
-        ","
-    };
-    let pair = |v: DVec2| format!("({}{separator} {})", number(v.x), number(v.y));
+    let pair = |v: DVec2| format::pair_of(&number(v.x), &number(v.y));
     let vector = |v: DVec2, unit: &str| {
         tr_with(
             "instrument-probe-vector",

@@ -10,9 +10,6 @@ use physics::{Graph, LinkOf, Of, Particle, Quantity, Scene, Total};
 
 use super::read::{Analysis, Read, ReadKey, series_points};
 use super::{MAX_POINTS, fit_words, impact_marks, model_name, words};
-
-/// A graph's plot, points (before Play as through the run).
-const PLOT_HEIGHT: f32 = 220.0;
 use crate::action::Action;
 use crate::analysis;
 use crate::document::Document;
@@ -22,6 +19,9 @@ use crate::i18n::{Arg, tr, tr_with};
 use crate::picture::Format;
 use crate::recording::Recording;
 use crate::timeline::Timeline;
+
+/// A graph's plot, points (before Play as through the run).
+const PLOT_HEIGHT: f32 = 220.0;
 
 /// An edit of one graph: what it is, for undo, and what it does.
 type GraphEdit = (Edit, Box<dyn FnOnce(&mut Graph)>);
@@ -529,7 +529,6 @@ fn earlier_lines(earlier: &[Recording], x: &Quantity, series: &[Quantity]) -> Ve
         .collect()
 }
 
-/// The values under the pointer: where it is across, and each series there.
 /// The plot before Play: its axes as the run will have them, the same height, and what
 /// fills it written in its middle.
 fn empty_plot(ui: &mut Ui, x: &Quantity) {
@@ -553,6 +552,7 @@ fn empty_plot(ui: &mut Ui, x: &Quantity) {
         });
 }
 
+/// The values under the pointer: where it is across, and each series there.
 fn pointer_readout(
     ui: &mut Ui,
     plot: &egui_plot::PlotResponse<()>,

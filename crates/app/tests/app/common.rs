@@ -59,6 +59,16 @@ pub fn click_canvas(harness: &mut Harness<'_, App>, at: Pos2) {
     harness.run();
 }
 
+/// Replaces the text of the field labelled `label` with `text` and presses Enter, as a
+/// user retypes a value.
+pub fn type_into(harness: &mut Harness<'_, App>, label: &str, text: &str) {
+    harness.get_by_label(label).focus();
+    harness.key_press_modifiers(egui::Modifiers::COMMAND, Key::A);
+    harness.get_by_label(label).type_text(text);
+    harness.key_press(Key::Enter);
+    harness.run();
+}
+
 /// A drag with the primary button on the canvas from `from` to `to`.
 pub fn drag_across(harness: &mut Harness<'_, App>, from: Pos2, to: Pos2) {
     harness.hover_at(from);

@@ -7,7 +7,9 @@ use newtonlab_app::edit::Edit;
 use newtonlab_app::{Action, App, Selection};
 use physics::{DVec2, Graph, Particle, Scene, TieKind, World};
 
-use crate::common::{click_canvas, csv_rows, drag_across, harness, one_ball, play_frames};
+use crate::common::{
+    click_canvas, csv_rows, drag_across, harness, one_ball, play_frames, type_into,
+};
 
 #[test]
 fn clicking_the_canvas_places_a_particle_where_clicked() {
@@ -245,17 +247,10 @@ fn typed_units_and_arithmetic_become_si_numbers() {
     let mut harness = harness(App::new(one_ball()));
     harness.state_mut().selection = Some(Selection::Particle(0));
     harness.run();
-    let mut type_into = |label: &str, text: &str| {
-        harness.get_by_label(label).focus();
-        harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
-        harness.get_by_label(label).type_text(text);
-        harness.key_press(Key::Enter);
-        harness.run();
-    };
-    type_into("mass", "250 g");
-    type_into("velocity x", "30 km/h");
-    type_into("radius", "sqrt(2)/2 m");
-    type_into("charge", "5 kg");
+    type_into(&mut harness, "mass", "250 g");
+    type_into(&mut harness, "velocity x", "30 km/h");
+    type_into(&mut harness, "radius", "sqrt(2)/2 m");
+    type_into(&mut harness, "charge", "5 kg");
     let particle = &harness.state().document.scene().particles[0];
     assert!(
         (particle.mass - 0.25).abs() < 1e-15,
@@ -540,13 +535,6 @@ fn a_particle_is_put_on_a_ramp_typed_by_slope_and_length() {
         .with_particle(Particle::new("ball", 1.0).radius(0.1).position([3.0, 3.0]))
         .with_ramp(physics::Ramp::new("incline", [0.0, 0.0], [4.0, 0.0]));
     let mut harness = harness(App::new(scene));
-    let type_into = |harness: &mut Harness<'static, App>, label: &str, text: &str| {
-        harness.get_by_label(label).focus();
-        harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
-        harness.get_by_label(label).type_text(text);
-        harness.key_press(Key::Enter);
-        harness.run();
-    };
     harness.state_mut().selection = Some(Selection::Ramp(0));
     harness.run();
     type_into(&mut harness, "slope", "-30");

@@ -5,7 +5,7 @@ use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use newtonlab_app::{App, Selection};
 
-use crate::common::{harness, one_ball, play_frames, small_ball};
+use crate::common::{harness, one_ball, play_frames, small_ball, type_into};
 
 /// View → Language switches live: the menus and the run controls speak German, then
 /// Spanish, the scene is untouched, and English comes back.
@@ -172,7 +172,6 @@ fn getting_started_opens_on_the_first_run_and_from_help() {
 /// typed with a point.
 #[test]
 fn german_fields_and_live_readouts_speak_german_with_a_decimal_comma() {
-    use egui::{Key, Modifiers};
     use egui_kittest::kittest::NodeT as _;
     use newtonlab_app::i18n::{Language, set_language};
     use physics::{Particle, Scene, World};
@@ -191,17 +190,9 @@ fn german_fields_and_live_readouts_speak_german_with_a_decimal_comma() {
     };
     assert_eq!(value(&harness, "Masse"), "1,5");
     assert_eq!(value(&harness, "Radius"), "0,25");
-    harness.get_by_label("Masse").focus();
-    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
-    harness.get_by_label("Masse").type_text("2,75");
-    harness.key_press(Key::Enter);
-    harness.run();
+    type_into(&mut harness, "Masse", "2,75");
     assert_eq!(harness.state().document.scene().particles[0].mass, 2.75);
-    harness.get_by_label("Radius").focus();
-    harness.key_press_modifiers(Modifiers::COMMAND, Key::A);
-    harness.get_by_label("Radius").type_text("0.5");
-    harness.key_press(Key::Enter);
-    harness.run();
+    type_into(&mut harness, "Radius", "0.5");
     assert_eq!(harness.state().document.scene().particles[0].radius, 0.5);
     harness.get_by_label("Simulation").click();
     harness.run();
